@@ -1,0 +1,231 @@
+#!/usr/bin/env python3
+"""Benchmark of the node's loop (not a test): at 1 kHz with 18 ALE wrenches
+updated at 1 kHz, measure
+
+  - the node's CPU use (utime + stime of the process over the window),
+  - the step-period jitter p50 / p99 (the node's own measurement, reported on
+    /diagnostics over the whole window: |actual period - 1 ms|),
+  - the latency from a published wrench to the first published state that
+    includes it (the peer stamps each command with its wall clock; the node
+    echoes the stamp of the newest applied input in ModalAmplitudes.input_stamp;
+    latency = arrival of the first state carrying it - the stamp),
+
+with the wrenches sent either as one annular_plate/msg/NodeWrenchArray of 18
+per millisecond (`--mode batch`) or as 18 geometry_msgs/WrenchStamped per
+millisecond on the 18 per-node topics (`--mode topics`), and idle (`--mode idle`).
+
+Run as root from the repository root after `cargo build --release` and one
+`cargo test --release` (which creates target/peer-venv):
+
+    target/peer-venv/bin/python benches/node_loop.py --mode batch --seconds 10
+
+Node and peer run in a private network namespace (loopback only). The peer
+is Python (Cyclone DDS) on the same two cores, so the latency is an upper
+bound of what a C++ client would see. docs/ros.md has the measured numbers.
+"""
+
+import argparse
+import os
+import statistics
+import subprocess
+import sys
+import tempfile
+import threading
+import time
+
+REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+sys.path.insert(0, os.path.join(REPO, "tests", "peer"))
+
+N_ALE = 18
+
+
+def scene_text():
+    radial = ", ".join(["0.6"] * N_ALE)
+    angular = ", ".join(f"{j / N_ALE:.6f}" for j in range(N_ALE))
+    return f"""/**:
+  ros__parameters:
+    plate:
+      inner_radius: 0.07
+      outer_radius: 0.153
+      thickness: 0.0181
+      density: 7850.0
+      youngs_modulus: 2.1e11
+      poisson_ratio: 0.3
+      inner_boundary: supported
+      outer_boundary: free
+      nodal_diameters: [0, 1, 2, 3, 4]
+      nodal_circles: [0]
+      damping: [0.005]
+    nodes:
+      ale_radial: [{radial}]
+      ale_angular: [{angular}]
+      lagrange_radial: [1.0]
+      lagrange_angular: [0.0]
+    joint:
+      speed: 25.0
+    simulation:
+      rate_hz: 1000.0
+      realtime_factor: 1.0
+"""
+
+
+def in_netns_main(args):
+    """Runs inside the network namespace: node + driver."""
+    from cyclonedds.core import Policy, Qos
+    from cyclonedds.domain import DomainParticipant
+    from cyclonedds.pub import DataWriter
+    from cyclonedds.sub import DataReader
+    from cyclonedds.topic import Topic
+    from cyclonedds.util import duration
+    import ros_types as T
+
+    os.environ["CYCLONEDDS_URI"] = "file://" + os.path.join(REPO, "tests", "peer", "cyclonedds.xml")
+    with tempfile.NamedTemporaryFile("w", suffix=".yaml", delete=False) as f:
+        f.write(scene_text())
+        scene = f.name
+    window = args.seconds
+    env = dict(os.environ, ROS_DOMAIN_ID="42")
+    node = subprocess.Popen(
+        [args.node, "run", scene, "--ros-args", "-p", "ros.diagnostics_period:=1.0",
+         "--log-level", "warn"],
+        env=env, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
+    try:
+        dp = DomainParticipant(42)
+        q = Qos(Policy.Reliability.Reliable(duration(milliseconds=100)), Policy.History.KeepLast(10))
+        modal = DataReader(dp, Topic(dp, "rt/annular_plate/modal_amplitudes", T.ModalAmplitudes), qos=q)
+        diag = DataReader(dp, Topic(dp, "rt/diagnostics", T.DiagnosticArray),
+                          qos=Qos(Policy.Reliability.Reliable(duration(milliseconds=100)), Policy.History.KeepLast(100)))
+        writers = []
+        if args.mode == "batch":
+            writers = [DataWriter(dp, Topic(dp, "rt/annular_plate/wrenches", T.NodeWrenchArray), qos=q)]
+        elif args.mode == "topics":
+            writers = [DataWriter(dp, Topic(dp, f"rt/annular_plate/ale_{j}/wrench", T.WrenchStamped), qos=q)
+                       for j in range(1, N_ALE + 1)]
+        deadline = time.time() + 20
+        while time.time() < deadline and (len(modal.get_matched_publications()) == 0
+                                          or any(len(w.get_matched_subscriptions()) == 0 for w in writers)):
+            time.sleep(0.01)
+        # The diagnostics window starts at the node's first report (t = 0); wait for it.
+        latencies = []
+        seen_stamps = set()
+        stop = threading.Event()
+
+        def read_states():
+            last = None
+            while not stop.is_set():
+                for m in modal.take_iter(timeout=duration(milliseconds=200)):
+                    now = time.time_ns()
+                    s = m.input_stamp.sec * 1_000_000_000 + m.input_stamp.nanosec
+                    if s and s != last:
+                        last = s
+                        if s in seen_stamps:
+                            latencies.append((now - s) / 1e3)
+                    if stop.is_set():
+                        break
+
+        reader = threading.Thread(target=read_states, daemon=True)
+        reader.start()
+        t_end = time.time() + args.warmup + window
+        t_measure = time.time() + args.warmup
+        stat0 = None
+        sent = 0
+        period = 1e-3
+        next_t = time.perf_counter()
+        k = 0
+        while time.time() < t_end:
+            if stat0 is None and time.time() >= t_measure:
+                stat0 = (cpu_ticks(node.pid), time.time())
+                latencies.clear()
+                sent = 0
+            k += 1
+            fz = -100.0 - 10.0 * (k % 10)
+            stamp = time.time_ns()
+            if args.mode == "batch":
+                msg = T.NodeWrenchArray(
+                    header=T.Header(stamp=T.Time.from_nanos(stamp)),
+                    wrenches=[T.NodeWrench(kind=0, index=j, wrench=T.Wrench(force=T.Vector3(0.0, 0.0, fz)))
+                              for j in range(1, N_ALE + 1)])
+                seen_stamps.add(stamp)
+                writers[0].write(msg)
+                sent += 1
+            elif args.mode == "topics":
+                for j, w in enumerate(writers):
+                    s = time.time_ns()
+                    seen_stamps.add(s)
+                    w.write(T.WrenchStamped(header=T.Header(stamp=T.Time.from_nanos(s)),
+                                            wrench=T.Wrench(force=T.Vector3(0.0, 0.0, fz))))
+                sent += 1
+            next_t += period
+            delay = next_t - time.perf_counter()
+            if delay > 0:
+                time.sleep(delay)
+            else:
+                next_t = time.perf_counter()
+        stat1 = (cpu_ticks(node.pid), time.time())
+        # The node's per-second reports inside the window.
+        time.sleep(1.2)
+        reports = []
+        for m in diag.take(1000):
+            t = m.header.stamp.sec + m.header.stamp.nanosec * 1e-9
+            if stat0[1] + 1.0 <= t <= stat1[1] + 0.2:
+                for st in m.status:
+                    if st.name.endswith("simulation"):
+                        reports.append({kv.key: float(kv.value) for kv in st.values
+                                        if kv.key not in ("state",)})
+        med = lambda k: statistics.median(r[k] for r in reports) if reports else float("nan")
+        mx = lambda k: max(r[k] for r in reports) if reports else float("nan")
+        stop.set()
+        reader.join(timeout=2)
+        hz = os.sysconf("SC_CLK_TCK")
+        cpu = (stat1[0] - stat0[0]) / hz / (stat1[1] - stat0[1]) * 100.0
+        lat = sorted(latencies)
+
+        def pct(p):
+            return lat[min(len(lat) - 1, int(round(p * (len(lat) - 1))))] if lat else float("nan")
+
+        print(f"mode {args.mode}: {N_ALE} ALE wrenches, {sent / (stat1[1] - stat0[1]):.0f} updates/s sent over {stat1[1] - stat0[1]:.1f} s")
+        print(f"  node CPU: {cpu:.1f} % of one core")
+        print(f"  node loop ({len(reports)} one-second /diagnostics reports): achieved {med('achieved_rate_hz'):.1f} Hz, "
+              f"step+publish mean {med('step_time_mean_us'):.1f} us (max {mx('step_time_max_us'):.0f} us), "
+              f"period jitter p50 {med('period_jitter_p50_us'):.1f} us, p99 {med('period_jitter_p99_us'):.1f} us "
+              f"(worst second {mx('period_jitter_p99_us'):.1f} us), lateness p99 {med('lateness_p99_us'):.1f} us, "
+              f"overruns {mx('overruns'):.0f}")
+        if args.mode != "idle":
+            print(f"  wrench -> first state including it: n={len(lat)} p50 {pct(0.5) / 1e3:.3f} ms "
+                  f"p90 {pct(0.9) / 1e3:.3f} ms p99 {pct(0.99) / 1e3:.3f} ms max {pct(1.0) / 1e3:.3f} ms")
+    finally:
+        node.send_signal(2)
+        try:
+            node.wait(timeout=5)
+        except subprocess.TimeoutExpired:
+            node.kill()
+
+
+def cpu_ticks(pid):
+    with open(f"/proc/{pid}/stat") as f:
+        fields = f.read().rsplit(")", 1)[1].split()
+    return int(fields[11]) + int(fields[12])  # utime + stime
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--mode", choices=["batch", "topics", "idle"], default="batch")
+    ap.add_argument("--seconds", type=float, default=10.0)
+    ap.add_argument("--warmup", type=float, default=2.0)
+    ap.add_argument("--node", default=os.path.join(REPO, "target", "release", "annular_plate"))
+    ap.add_argument("--in-netns", action="store_true", help=argparse.SUPPRESS)
+    args = ap.parse_args()
+    if args.in_netns:
+        in_netns_main(args)
+        return
+    cmd = ["unshare", "-n", "--", "sh", "-c",
+           'ip link set lo up && exec "$0" "$@"', sys.executable, os.path.abspath(__file__), "--in-netns",
+           "--mode", args.mode, "--seconds", str(args.seconds), "--warmup", str(args.warmup), "--node", args.node]
+    with open("/proc/cpuinfo") as f:
+        model = next((l.split(":", 1)[1].strip() for l in f if l.startswith("model name")), "?")
+    print(f"machine: nproc {os.cpu_count()}, {model}")
+    sys.exit(subprocess.call(cmd))
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,19 @@
+//! Command-line front ends: `modes` and `simulate` (the node is `ros::run_node`).
+
+pub mod modes;
+pub mod simulate;
+
+use crate::config::Config;
+use std::path::Path;
+
+/// Node name whose entry the CLI reads from a params file (and `/**`).
+pub const DEFAULT_NODE_NAME: &str = "annular_plate";
+
+/// Read and validate a params file, printing the geometry notes of paper 4.2 to stderr.
+pub fn load_config(path: &Path) -> anyhow::Result<Config> {
+    let config = Config::from_params_file(path, DEFAULT_NODE_NAME).map_err(|e| anyhow::anyhow!("{}: {e}", path.display()))?;
+    for note in config.plate.geometry_notes() {
+        eprintln!("note: {note}");
+    }
+    Ok(config)
+}

@@ -1,0 +1,58 @@
+//! `annular_plate modes FILE [--json]`: the mode table.
+
+use crate::model::PlateModel;
+use serde::Serialize;
+use std::io::Write;
+
+#[derive(Serialize)]
+struct JsonMode {
+    k: u32,
+    l: u32,
+    shape: &'static str,
+    frequency_hz: f64,
+    modal_mass_kg: f64,
+    damping: f64,
+}
+
+#[derive(Serialize)]
+struct JsonModes {
+    modes: Vec<JsonMode>,
+    skipped_rigid_body_modes: Vec<(u32, u32)>,
+}
+
+/// Write the table (or JSON) for `model` to `out`.
+pub fn write(model: &PlateModel, json: bool, out: &mut impl Write) -> std::io::Result<()> {
+    if json {
+        let doc = JsonModes {
+            modes: model
+                .modes()
+                .iter()
+                .map(|m| JsonMode { k: m.k, l: m.l, shape: m.shape.name(), frequency_hz: m.frequency_hz, modal_mass_kg: m.modal_mass, damping: m.damping })
+                .collect(),
+            skipped_rigid_body_modes: model.skipped_rigid_body_modes().to_vec(),
+        };
+        serde_json::to_writer_pretty(&mut *out, &doc)?;
+        writeln!(out)?;
+        return Ok(());
+    }
+    let p = model.plate();
+    writeln!(
+        out,
+        "annular plate r_i = {} m, r_a = {} m, h = {} m, {}–{}, {} radial B-splines, D = {:.6e} N·m",
+        p.inner_radius,
+        p.outer_radius,
+        p.thickness,
+        p.inner_boundary.name(),
+        p.outer_boundary.name(),
+        p.radial_splines,
+        model.rigidity()
+    )?;
+    writeln!(out, "{:>5} {:>4} {:>4} {:>13} {:>14} {:>15} {:>8}", "index", "k", "l", "shape", "frequency_Hz", "modal_mass_kg", "damping")?;
+    for (i, m) in model.modes().iter().enumerate() {
+        writeln!(out, "{:>5} {:>4} {:>4} {:>13} {:>14.4} {:>15.6} {:>8}", i + 1, m.k, m.l, m.shape.name(), m.frequency_hz, m.modal_mass, m.damping)?;
+    }
+    for (k, l) in model.skipped_rigid_body_modes() {
+        writeln!(out, "  ⟨k = {k}, l = {l}⟩ is a rigid-body motion of the free–free plate: carried by the floating frame and joint, not a mode")?;
+    }
+    Ok(())
+}

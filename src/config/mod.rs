@@ -1,0 +1,368 @@
+//! Configuration: one validated struct tree read from a ROS 2 parameter file.
+//!
+//! Data flows one way: `config` → `model` → `dynamics` → `ros` / `cli`.
+//! Every value is in SI units. [`Config::from_params_file`] reads the file
+//! (`<node name or /**>: ros__parameters: ...`, nested maps or dotted names,
+//! flat arrays only), rejects unknown keys and checks every rule; errors name
+//! the key (`plate.inner_radius`) and the rule.
+
+mod error;
+mod params_file;
+mod raw;
+mod validate;
+
+pub use error::{ConfigError, Degeneracy};
+pub use params_file::{ParamValue, Params};
+
+use serde::Serialize;
+
+/// Boundary condition at one edge of the annulus (paper section 4.1,
+/// `boundaryConditionRI` / `boundaryConditionRA`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Boundary {
+    /// No essential condition; moment and Kirchhoff shear vanish naturally.
+    Free,
+    /// Simply supported: w = 0; the radial moment vanishes naturally.
+    Supported,
+    /// w = 0 and ∂w/∂r = 0.
+    Clamped,
+}
+
+impl Boundary {
+    pub const ALL: [Boundary; 3] = [Boundary::Free, Boundary::Supported, Boundary::Clamped];
+
+    pub fn name(self) -> &'static str {
+        match self {
+            Boundary::Free => "free",
+            Boundary::Supported => "supported",
+            Boundary::Clamped => "clamped",
+        }
+    }
+
+    pub fn from_name(s: &str) -> Option<Self> {
+        match s {
+            "free" => Some(Boundary::Free),
+            "supported" => Some(Boundary::Supported),
+            "clamped" => Some(Boundary::Clamped),
+            _ => None,
+        }
+    }
+
+    /// B-splines the essential conditions of this edge remove from the radial
+    /// basis: free 0, supported 1 (w = 0), clamped 2 (w = ∂w/∂r = 0).
+    pub fn essential_conditions(self) -> usize {
+        match self {
+            Boundary::Free => 0,
+            Boundary::Supported => 1,
+            Boundary::Clamped => 2,
+        }
+    }
+}
+
+/// The plate: geometry, material and modal discretisation (`plate.*`).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct PlateConfig {
+    /// r_i, m.
+    pub inner_radius: f64,
+    /// r_a, m.
+    pub outer_radius: f64,
+    /// h, m.
+    pub thickness: f64,
+    /// ρ, kg/m³.
+    pub density: f64,
+    /// E, Pa.
+    pub youngs_modulus: f64,
+    /// ν (given directly, or from the shear modulus as ν = E/2G − 1).
+    pub poisson_ratio: f64,
+    pub inner_boundary: Boundary,
+    pub outer_boundary: Boundary,
+    /// Nodal diameters k, as given (distinct, not sorted).
+    pub nodal_diameters: Vec<u32>,
+    /// Nodal circles l, as given (distinct, not sorted).
+    pub nodal_circles: Vec<u32>,
+    /// Modal damping ratios ζ: one for all modes, or one per mode in `modes` order.
+    pub damping: Vec<f64>,
+    /// Number of cubic B-splines of the radial discretisation (before boundary conditions).
+    pub radial_splines: usize,
+}
+
+impl PlateConfig {
+    /// The paper's Table 1 / lathe disc with the defaults of the parameter reference.
+    pub fn lathe_disc() -> Self {
+        PlateConfig {
+            inner_radius: 0.075,
+            outer_radius: 0.15,
+            thickness: 0.01,
+            density: 7850.0,
+            youngs_modulus: 2.1e11,
+            poisson_ratio: 0.3,
+            inner_boundary: Boundary::Clamped,
+            outer_boundary: Boundary::Free,
+            nodal_diameters: (0..=7).collect(),
+            nodal_circles: vec![0, 1],
+            damping: vec![0.0],
+            radial_splines: DEFAULT_RADIAL_SPLINES,
+        }
+    }
+
+    /// Smallest `radial_splines` that resolves the highest requested nodal
+    /// circle: after the essential conditions remove B-splines at each edge
+    /// ([`Boundary::essential_conditions`]), at least max(l) + 4 free
+    /// coefficients must remain (and at least 4 B-splines in total).
+    pub fn min_radial_splines(&self) -> usize {
+        let max_l = self.nodal_circles.iter().copied().max().unwrap_or(0) as usize;
+        let removed = self.inner_boundary.essential_conditions() + self.outer_boundary.essential_conditions();
+        (max_l + 4 + removed).max(4)
+    }
+
+    /// Number of elastic modes: each ⟨k, l⟩ gives one mode for k = 0 and a
+    /// cos/sin pair for k ≥ 1; a free–free plate skips its rigid-body motions
+    /// ⟨0, 0⟩ (one) and ⟨1, 0⟩ (two) when requested.
+    pub fn mode_count(&self) -> usize {
+        let per_circle_set: usize = self.nodal_diameters.iter().map(|&k| if k == 0 { 1 } else { 2 }).sum();
+        let mut n = per_circle_set * self.nodal_circles.len();
+        if self.inner_boundary == Boundary::Free && self.outer_boundary == Boundary::Free && self.nodal_circles.contains(&0) {
+            if self.nodal_diameters.contains(&0) {
+                n -= 1;
+            }
+            if self.nodal_diameters.contains(&1) {
+                n -= 2;
+            }
+        }
+        n
+    }
+
+    /// Explanations (not errors) of geometries near the degenerate cases of
+    /// the paper's section 4.2; empty for an ordinary annulus.
+    pub fn geometry_notes(&self) -> Vec<String> {
+        let (ri, ra) = (self.inner_radius, self.outer_radius);
+        let mut notes = Vec::new();
+        if ri / ra < 0.01 && self.inner_boundary != Boundary::Clamped {
+            notes.push(format!(
+                "r_i/r_a = {:.3e} < 0.01 with a {} inner edge: close to a solid circular plate the displacements of \
+                 different points of the inner edge need not coincide, so they do not satisfy the compatibility \
+                 conditions (paper section 4.2); a clamped inner edge enforces them",
+                ri / ra,
+                self.inner_boundary.name()
+            ));
+        }
+        if (ra - ri) / ra < 0.02 {
+            notes.push(format!(
+                "(r_a − r_i)/r_a = {:.3e} < 0.02: a narrow ring is very stiff and its eigenfrequencies are high \
+                 (they go to infinity as r_i → r_a, paper section 4.2); the time step must resolve them",
+                (ra - ri) / ra
+            ));
+        }
+        notes
+    }
+}
+
+/// Default of `plate.radial_splines`.
+pub const DEFAULT_RADIAL_SPLINES: usize = 32;
+
+/// A point on the mid-plane in the paper's ξ coordinates (section 4.1):
+/// radial ξ_r ∈ [0, 1] from r_i to r_a, angular ξ_φ ∈ [0, 1] for 0..2π.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct NodePosition {
+    pub radial: f64,
+    pub angular: f64,
+}
+
+/// Node frames (`nodes.*`).
+#[derive(Debug, Clone, PartialEq, Default, Serialize)]
+pub struct NodesConfig {
+    /// Material points turning with the plate.
+    pub lagrange: Vec<NodePosition>,
+    /// Space-fixed points the plate slides under.
+    pub ale: Vec<NodePosition>,
+}
+
+/// A wrench: force (N) and moment (N·m), in the node frame.
+#[derive(Debug, Clone, Copy, PartialEq, Default, Serialize)]
+pub struct WrenchConfig {
+    pub force: [f64; 3],
+    pub moment: [f64; 3],
+}
+
+/// Constant wrenches held from t = 0 (`loads.*`), one per node (zero where not given).
+#[derive(Debug, Clone, PartialEq, Default, Serialize)]
+pub struct LoadsConfig {
+    pub ale: Vec<WrenchConfig>,
+    pub lagrange: Vec<WrenchConfig>,
+    /// Wrenches turn with the deformed surface (follower loads, paper 5.3).
+    pub follower: bool,
+}
+
+/// The rotational joint at the plate axis (`joint.*`).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct JointConfig {
+    /// Commanded speed Ω, rad/s; held from t = 0 and the plate starts at it.
+    pub speed: f64,
+    /// Acceleration limit of the drive, rad/s² (> 0).
+    pub max_acceleration: f64,
+    /// Torque limit of the drive, N·m; `None`: the drive is stiff (kinematic).
+    pub max_torque: Option<f64>,
+    /// Initial joint angle χ(0), rad.
+    pub initial_position: f64,
+}
+
+impl Default for JointConfig {
+    fn default() -> Self {
+        JointConfig { speed: 0.0, max_acceleration: 50.0, max_torque: None, initial_position: 0.0 }
+    }
+}
+
+/// Prescribed motion of the reference frame (`reference.*`).
+#[derive(Debug, Clone, PartialEq, Default, Serialize)]
+pub struct ReferenceConfig {
+    /// Constant tilt of the spin axis about the world x axis, rad.
+    pub tilt: f64,
+    /// Constant angular velocity of the reference frame, rad/s, in reference-frame axes.
+    pub angular_velocity: [f64; 3],
+    /// Constant linear acceleration of the reference frame origin, m/s², reference axes.
+    pub acceleration: [f64; 3],
+}
+
+/// Time integration scheme (`simulation.integrator`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum IntegratorKind {
+    /// Exact exponential per mode / mode pair for loads held over a step.
+    Exponential,
+    /// Implicit midpoint rule: A-stable, conserves the quadratic energy.
+    ImplicitMidpoint,
+    /// Classical explicit Runge–Kutta 4, sub-stepping itself below its stability limit.
+    Rk4,
+}
+
+impl IntegratorKind {
+    pub fn name(self) -> &'static str {
+        match self {
+            IntegratorKind::Exponential => "exponential",
+            IntegratorKind::ImplicitMidpoint => "implicit_midpoint",
+            IntegratorKind::Rk4 => "rk4",
+        }
+    }
+    pub fn from_name(s: &str) -> Option<Self> {
+        match s {
+            "exponential" => Some(IntegratorKind::Exponential),
+            "implicit_midpoint" => Some(IntegratorKind::ImplicitMidpoint),
+            "rk4" => Some(IntegratorKind::Rk4),
+            _ => None,
+        }
+    }
+}
+
+/// Coordinates in which the elastic equations are integrated (`simulation.coordinates`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Coordinates {
+    /// Modal amplitudes resolved in the rotating plate frame B.
+    Lagrangian,
+    /// Modal amplitudes resolved in the non-rotating frame A (eq. 20).
+    Ale,
+}
+
+/// `simulation.*`.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct SimulationConfig {
+    /// Output rate and fixed step, Hz.
+    pub rate_hz: f64,
+    /// Integration sub-steps per output step.
+    pub substeps: u32,
+    pub integrator: IntegratorKind,
+    pub coordinates: Coordinates,
+    /// 1 = wall clock, 0 = as fast as possible (the node only).
+    pub realtime_factor: f64,
+    /// Publish every `publish_divisor`-th step (the node only).
+    pub publish_divisor: u32,
+}
+
+impl Default for SimulationConfig {
+    fn default() -> Self {
+        SimulationConfig {
+            rate_hz: 1000.0,
+            substeps: 1,
+            integrator: IntegratorKind::Exponential,
+            coordinates: Coordinates::Ale,
+            realtime_factor: 1.0,
+            publish_divisor: 1,
+        }
+    }
+}
+
+/// Input plausibility limits (`limits.*`): larger wrenches are rejected as absurd.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct LimitsConfig {
+    /// N.
+    pub max_force: f64,
+    /// N·m.
+    pub max_moment: f64,
+    /// rad/s.
+    pub max_speed: f64,
+    /// Divergence guard: a modal amplitude beyond this many plate thicknesses stops the run.
+    pub max_deflection_thicknesses: f64,
+}
+
+impl Default for LimitsConfig {
+    fn default() -> Self {
+        LimitsConfig { max_force: 1.0e7, max_moment: 1.0e6, max_speed: 1.0e4, max_deflection_thicknesses: 1.0e3 }
+    }
+}
+
+/// The whole validated configuration.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Config {
+    pub plate: PlateConfig,
+    pub nodes: NodesConfig,
+    pub loads: LoadsConfig,
+    pub joint: JointConfig,
+    pub reference: ReferenceConfig,
+    /// m/s², in the world frame (the reference frame before its tilt).
+    pub gravity: [f64; 3],
+    pub simulation: SimulationConfig,
+    pub limits: LimitsConfig,
+}
+
+impl Config {
+    /// Read and validate a ROS 2 parameter file for the node `node_name`
+    /// (entries under `/**` apply to every node; a node's own entry wins).
+    pub fn from_params_file(path: &std::path::Path, node_name: &str) -> Result<Config, ConfigError> {
+        let params = Params::from_file(path, node_name)?;
+        Config::from_params(&params)
+    }
+
+    /// Read and validate the text of a ROS 2 parameter file for the node `node_name`.
+    pub fn from_yaml_str(text: &str, node_name: &str) -> Result<Config, ConfigError> {
+        let params = Params::from_yaml_str(text, node_name)?;
+        Config::from_params(&params)
+    }
+
+    /// Validate a flat parameter set (dotted names → values).
+    pub fn from_params(params: &Params) -> Result<Config, ConfigError> {
+        validate::config_from_params(params)
+    }
+
+    /// Every parameter name the configuration accepts (`plate.inner_radius`, …).
+    pub fn known_keys() -> Vec<&'static str> {
+        validate::known_keys()
+    }
+}
+
+/// The documented defaults (docs/parameters.md): what an empty
+/// `ros__parameters: {}` yields.
+impl Default for Config {
+    fn default() -> Self {
+        Config {
+            plate: PlateConfig::lathe_disc(),
+            nodes: NodesConfig::default(),
+            loads: LoadsConfig::default(),
+            joint: JointConfig::default(),
+            reference: ReferenceConfig::default(),
+            gravity: [0.0; 3],
+            simulation: SimulationConfig::default(),
+            limits: LimitsConfig::default(),
+        }
+    }
+}

@@ -1,0 +1,471 @@
+//! From a flat [`Params`] set to the validated [`Config`].
+//!
+//! Every key this crate accepts is listed once in the tables below, section
+//! by section; any other key is rejected (with the nearest known key as a
+//! suggestion). Each section has a `read_<section>` function that reads its
+//! keys with their defaults and checks their rules.
+//!
+//! Adding a section (for example `ros.*`): write its key table, add it to
+//! [`SECTIONS`], write `read_<section>` and call it in [`config_from_params`]
+//! (plus the field in [`Config`] and a row per key in `docs/parameters.md`).
+
+use std::f64::consts::FRAC_PI_2;
+
+use super::raw::{positive, Reader};
+use super::{
+    Boundary, Config, ConfigError, Coordinates, IntegratorKind, JointConfig, LimitsConfig, LoadsConfig, NodePosition,
+    NodesConfig, Params, PlateConfig, ReferenceConfig, SimulationConfig, WrenchConfig,
+};
+use super::error::Degeneracy;
+
+const PLATE_KEYS: &[&str] = &[
+    "plate.inner_radius",
+    "plate.outer_radius",
+    "plate.thickness",
+    "plate.density",
+    "plate.youngs_modulus",
+    "plate.shear_modulus",
+    "plate.poisson_ratio",
+    "plate.inner_boundary",
+    "plate.outer_boundary",
+    "plate.nodal_diameters",
+    "plate.nodal_circles",
+    "plate.damping",
+    "plate.radial_splines",
+];
+
+const NODES_KEYS: &[&str] = &["nodes.lagrange_radial", "nodes.lagrange_angular", "nodes.ale_radial", "nodes.ale_angular"];
+
+const LOADS_KEYS: &[&str] = &["loads.ale_wrench", "loads.lagrange_wrench", "loads.follower"];
+
+const JOINT_KEYS: &[&str] = &["joint.speed", "joint.max_acceleration", "joint.max_torque", "joint.initial_position"];
+
+const REFERENCE_KEYS: &[&str] = &["reference.tilt", "reference.angular_velocity", "reference.acceleration"];
+
+const SIMULATION_KEYS: &[&str] = &[
+    "simulation.rate_hz",
+    "simulation.substeps",
+    "simulation.integrator",
+    "simulation.coordinates",
+    "simulation.realtime_factor",
+    "simulation.publish_divisor",
+];
+
+const LIMITS_KEYS: &[&str] =
+    &["limits.max_force", "limits.max_moment", "limits.max_speed", "limits.max_deflection_thicknesses"];
+
+/// Top-level keys. `use_sim_time` is the parameter every ROS 2 node has
+/// (launch files often set it for all nodes under `/**`): it is accepted and
+/// type-checked here, and read by the node itself.
+const TOP_LEVEL_KEYS: &[&str] = &["gravity", "use_sim_time"];
+
+/// All key tables. Add a new section's table here.
+const SECTIONS: &[&[&str]] =
+    &[PLATE_KEYS, NODES_KEYS, LOADS_KEYS, JOINT_KEYS, REFERENCE_KEYS, SIMULATION_KEYS, LIMITS_KEYS, TOP_LEVEL_KEYS];
+
+/// Every accepted parameter name.
+pub(super) fn known_keys() -> Vec<&'static str> {
+    SECTIONS.iter().flat_map(|s| s.iter().copied()).collect()
+}
+
+const INTEGRATORS: &[&str] = &["exponential", "implicit_midpoint", "rk4"];
+const COORDINATES: &[&str] = &["ale", "lagrangian"];
+
+/// Largest nodal-diameter number k accepted.
+const MAX_NODAL_DIAMETER: i64 = 200;
+/// Largest nodal-circle number l accepted.
+const MAX_NODAL_CIRCLE: i64 = 50;
+/// Largest `plate.radial_splines`.
+const MAX_RADIAL_SPLINES: i64 = 400;
+/// Smallest r_i / r_a (paper 4.2: no solid circular plate).
+const MIN_RADIUS_RATIO: f64 = 1e-6;
+/// Smallest (r_a − r_i) / r_a (paper 4.2: frequencies of a narrow ring go to infinity).
+const MIN_RELATIVE_WIDTH: f64 = 1e-3;
+
+pub(super) fn config_from_params(params: &Params) -> Result<Config, ConfigError> {
+    let known = known_keys();
+    check_unknown_keys(params, &known)?;
+    let r = Reader::new(params, &known);
+
+    let plate = read_plate(&r)?;
+    let limits = read_limits(&r)?;
+    let nodes = read_nodes(&r)?;
+    let loads = read_loads(&r, &nodes, &limits)?;
+    let joint = read_joint(&r, &limits)?;
+    let reference = read_reference(&r)?;
+    let gravity = r.vec3("gravity", [0.0; 3])?;
+    let simulation = read_simulation(&r)?;
+    let _use_sim_time = r.bool("use_sim_time", false)?;
+
+    Ok(Config { plate, nodes, loads, joint, reference, gravity, simulation, limits })
+}
+
+// ---- unknown keys ------------------------------------------------------------
+
+fn check_unknown_keys(params: &Params, known: &[&str]) -> Result<(), ConfigError> {
+    for (key, _) in params.iter() {
+        if !known.contains(&key) {
+            return Err(ConfigError::UnknownKey { key: key.to_string(), suggestion: suggest(key, known) });
+        }
+    }
+    Ok(())
+}
+
+/// The known key a typo most likely meant: a close spelling, the same name
+/// in another section (`simulation.speed` → `joint.speed`), or a known name
+/// the given one abbreviates (`plate.poisson` → `plate.poisson_ratio`).
+fn suggest(key: &str, known: &[&str]) -> Option<String> {
+    let lower = key.to_lowercase();
+    let best = known.iter().map(|k| (levenshtein(&lower, k), *k)).min_by_key(|(d, _)| *d);
+    if let Some((d, k)) = best {
+        if d <= (k.chars().count() / 6).max(2) {
+            return Some(k.to_string());
+        }
+    }
+    let (section, last) = match lower.rsplit_once('.') {
+        Some((s, l)) => (s, l),
+        None => ("", lower.as_str()),
+    };
+    let last_of = |k: &str| k.rsplit_once('.').map_or(k, |(_, l)| l).to_string();
+    let section_of = |k: &str| k.rsplit_once('.').map_or("", |(s, _)| s).to_string();
+    if let Some(k) = known.iter().find(|k| last_of(k) == last) {
+        return Some(k.to_string());
+    }
+    if last.chars().count() >= 4 {
+        if let Some(k) = known.iter().find(|k| section_of(k) == section && last_of(k).starts_with(last)) {
+            return Some(k.to_string());
+        }
+    }
+    None
+}
+
+fn levenshtein(a: &str, b: &str) -> usize {
+    let a: Vec<char> = a.chars().collect();
+    let b: Vec<char> = b.chars().collect();
+    let mut prev: Vec<usize> = (0..=b.len()).collect();
+    let mut cur = vec![0; b.len() + 1];
+    for i in 1..=a.len() {
+        cur[0] = i;
+        for j in 1..=b.len() {
+            let cost = usize::from(a[i - 1] != b[j - 1]);
+            cur[j] = (prev[j] + 1).min(cur[j - 1] + 1).min(prev[j - 1] + cost);
+        }
+        std::mem::swap(&mut prev, &mut cur);
+    }
+    prev[b.len()]
+}
+
+// ---- plate -------------------------------------------------------------------
+
+fn read_plate(r: &Reader) -> Result<PlateConfig, ConfigError> {
+    let d = PlateConfig::lathe_disc();
+
+    let inner = r.f64("plate.inner_radius", d.inner_radius)?;
+    let outer = r.positive("plate.outer_radius", d.outer_radius)?;
+    if inner < 0.0 {
+        return Err(ConfigError::NotPositive { key: "plate.inner_radius".into(), value: inner });
+    }
+    if inner >= outer {
+        return Err(ConfigError::InnerRadiusNotBelowOuter { inner, outer });
+    }
+    if inner / outer < MIN_RADIUS_RATIO {
+        return Err(ConfigError::DegenerateGeometry { kind: Degeneracy::SolidCircularPlate, inner, outer });
+    }
+    if (outer - inner) / outer < MIN_RELATIVE_WIDTH {
+        return Err(ConfigError::DegenerateGeometry { kind: Degeneracy::NarrowRing, inner, outer });
+    }
+
+    let thickness = r.positive("plate.thickness", d.thickness)?;
+    let density = r.positive("plate.density", d.density)?;
+    let youngs_modulus = r.positive("plate.youngs_modulus", d.youngs_modulus)?;
+    let poisson_ratio = read_poisson_ratio(r, youngs_modulus, d.poisson_ratio)?;
+
+    let inner_boundary = read_boundary(r, "plate.inner_boundary", d.inner_boundary)?;
+    let outer_boundary = read_boundary(r, "plate.outer_boundary", d.outer_boundary)?;
+
+    let default_k: Vec<i64> = d.nodal_diameters.iter().map(|&k| k as i64).collect();
+    let default_l: Vec<i64> = d.nodal_circles.iter().map(|&l| l as i64).collect();
+    let nodal_diameters = read_index_list(r, "plate.nodal_diameters", &default_k, MAX_NODAL_DIAMETER)?;
+    let nodal_circles = read_index_list(r, "plate.nodal_circles", &default_l, MAX_NODAL_CIRCLE)?;
+
+    let splines = r.i64("plate.radial_splines", d.radial_splines as i64)?;
+    if splines < 0 {
+        return Err(ConfigError::Negative { key: "plate.radial_splines".into(), value: splines as f64 });
+    }
+    if splines > MAX_RADIAL_SPLINES {
+        return Err(ConfigError::AboveMaximum {
+            key: "plate.radial_splines".into(),
+            value: splines as f64,
+            max: MAX_RADIAL_SPLINES as f64,
+        });
+    }
+
+    let mut plate = PlateConfig {
+        inner_radius: inner,
+        outer_radius: outer,
+        thickness,
+        density,
+        youngs_modulus,
+        poisson_ratio,
+        inner_boundary,
+        outer_boundary,
+        nodal_diameters,
+        nodal_circles,
+        damping: Vec::new(),
+        radial_splines: splines as usize,
+    };
+
+    let needed = plate.min_radial_splines();
+    if plate.radial_splines < needed {
+        let removed = inner_boundary.essential_conditions() + outer_boundary.essential_conditions();
+        return Err(ConfigError::TooFewRadialSplines {
+            splines: plate.radial_splines,
+            needed,
+            free: plate.radial_splines.saturating_sub(removed),
+            removed,
+            max_l: plate.nodal_circles.iter().copied().max().unwrap_or(0),
+            inner: inner_boundary.name(),
+            outer: outer_boundary.name(),
+        });
+    }
+
+    let n_modes = plate.mode_count();
+    if n_modes == 0 {
+        return Err(ConfigError::NoElasticModes { skipped: rigid_body_modes_selected(&plate) });
+    }
+    let damping = r.f64_array("plate.damping", &d.damping)?;
+    for (index, &value) in damping.iter().enumerate() {
+        if !(0.0..1.0).contains(&value) {
+            return Err(ConfigError::DampingOutOfRange { index, value });
+        }
+    }
+    if damping.len() != 1 && damping.len() != n_modes {
+        return Err(ConfigError::DampingLength { len: damping.len(), n_modes });
+    }
+    plate.damping = damping;
+    Ok(plate)
+}
+
+/// ν from `plate.poisson_ratio` or from `plate.shear_modulus` (ν = E/2G − 1), exactly one of them.
+fn read_poisson_ratio(r: &Reader, youngs_modulus: f64, default: f64) -> Result<f64, ConfigError> {
+    let given = r.f64_opt("plate.poisson_ratio")?;
+    let shear = r.f64_opt("plate.shear_modulus")?;
+    let (nu, from_shear_modulus) = match (given, shear) {
+        (Some(poisson_ratio), Some(shear_modulus)) => {
+            return Err(ConfigError::PoissonAndShearModulus { poisson_ratio, shear_modulus })
+        }
+        (Some(nu), None) => (nu, false),
+        (None, Some(g)) => {
+            let g = positive("plate.shear_modulus", g)?;
+            (youngs_modulus / (2.0 * g) - 1.0, true)
+        }
+        (None, None) => (default, false),
+    };
+    if !(nu > -1.0 && nu < 0.5) {
+        return Err(ConfigError::PoissonRatioOutOfRange { nu, from_shear_modulus });
+    }
+    Ok(nu)
+}
+
+fn read_boundary(r: &Reader, key: &str, default: Boundary) -> Result<Boundary, ConfigError> {
+    let name = r.string(key, default.name())?;
+    Boundary::from_name(name.trim()).ok_or(ConfigError::UnknownBoundary { key: key.to_string(), value: name })
+}
+
+/// A non-empty list of distinct integers in 0..=max.
+fn read_index_list(r: &Reader, key: &str, default: &[i64], max: i64) -> Result<Vec<u32>, ConfigError> {
+    let values = r.i64_array(key, default)?;
+    if values.is_empty() {
+        return Err(ConfigError::Empty { key: key.to_string() });
+    }
+    let mut out: Vec<u32> = Vec::with_capacity(values.len());
+    for &v in &values {
+        if v < 0 {
+            return Err(ConfigError::Negative { key: key.to_string(), value: v as f64 });
+        }
+        if v > max {
+            return Err(ConfigError::AboveMaximum { key: key.to_string(), value: v as f64, max: max as f64 });
+        }
+        if out.contains(&(v as u32)) {
+            return Err(ConfigError::Duplicate { key: key.to_string(), value: v });
+        }
+        out.push(v as u32);
+    }
+    Ok(out)
+}
+
+/// The requested ⟨k, l⟩ that are rigid-body motions of a free–free plate.
+fn rigid_body_modes_selected(plate: &PlateConfig) -> Vec<(u32, u32)> {
+    if !(plate.inner_boundary == Boundary::Free && plate.outer_boundary == Boundary::Free) {
+        return Vec::new();
+    }
+    [(0, 0), (1, 0)]
+        .into_iter()
+        .filter(|(k, l)| plate.nodal_diameters.contains(k) && plate.nodal_circles.contains(l))
+        .collect()
+}
+
+// ---- nodes and loads ---------------------------------------------------------
+
+fn read_nodes(r: &Reader) -> Result<NodesConfig, ConfigError> {
+    Ok(NodesConfig {
+        lagrange: read_node_list(r, "nodes.lagrange_radial", "nodes.lagrange_angular")?,
+        ale: read_node_list(r, "nodes.ale_radial", "nodes.ale_angular")?,
+    })
+}
+
+fn read_node_list(r: &Reader, radial_key: &str, angular_key: &str) -> Result<Vec<NodePosition>, ConfigError> {
+    let radial = r.f64_array(radial_key, &[])?;
+    let angular = r.f64_array(angular_key, &[])?;
+    for (key, values) in [(radial_key, &radial), (angular_key, &angular)] {
+        for (index, &value) in values.iter().enumerate() {
+            if !(0.0..=1.0).contains(&value) {
+                return Err(ConfigError::NodeOutOfUnitInterval { key: key.to_string(), index, value });
+            }
+        }
+    }
+    if radial.len() != angular.len() {
+        return Err(ConfigError::LengthMismatch {
+            key_a: radial_key.to_string(),
+            len_a: radial.len(),
+            key_b: angular_key.to_string(),
+            len_b: angular.len(),
+        });
+    }
+    Ok(radial.into_iter().zip(angular).map(|(radial, angular)| NodePosition { radial, angular }).collect())
+}
+
+fn read_loads(r: &Reader, nodes: &NodesConfig, limits: &LimitsConfig) -> Result<LoadsConfig, ConfigError> {
+    Ok(LoadsConfig {
+        ale: read_wrenches(r, "loads.ale_wrench", nodes.ale.len(), limits)?,
+        lagrange: read_wrenches(r, "loads.lagrange_wrench", nodes.lagrange.len(), limits)?,
+        follower: r.bool("loads.follower", false)?,
+    })
+}
+
+/// One wrench per node: empty → zeros, else 6 numbers per node.
+fn read_wrenches(r: &Reader, key: &str, nodes: usize, limits: &LimitsConfig) -> Result<Vec<WrenchConfig>, ConfigError> {
+    let values = r.f64_array(key, &[])?;
+    if values.is_empty() {
+        return Ok(vec![WrenchConfig::default(); nodes]);
+    }
+    if values.len() != 6 * nodes {
+        return Err(ConfigError::WrenchLength { key: key.to_string(), len: values.len(), nodes });
+    }
+    let mut wrenches = Vec::with_capacity(nodes);
+    for (i, chunk) in values.chunks_exact(6).enumerate() {
+        let force = [chunk[0], chunk[1], chunk[2]];
+        let moment = [chunk[3], chunk[4], chunk[5]];
+        let checks = [
+            ("force", norm(force), "limits.max_force", limits.max_force),
+            ("moment", norm(moment), "limits.max_moment", limits.max_moment),
+        ];
+        for (what, value, limit_key, limit) in checks {
+            if value > limit {
+                return Err(ConfigError::WrenchAboveLimit { key: key.to_string(), node: i + 1, what, value, limit_key, limit });
+            }
+        }
+        wrenches.push(WrenchConfig { force, moment });
+    }
+    Ok(wrenches)
+}
+
+fn norm(v: [f64; 3]) -> f64 {
+    (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt()
+}
+
+// ---- joint, reference, simulation, limits -------------------------------------
+
+fn read_joint(r: &Reader, limits: &LimitsConfig) -> Result<JointConfig, ConfigError> {
+    let d = JointConfig::default();
+    let speed = r.f64("joint.speed", d.speed)?;
+    if speed.abs() > limits.max_speed {
+        return Err(ConfigError::SpeedAboveLimit { speed, max_speed: limits.max_speed });
+    }
+    let max_acceleration = r.positive("joint.max_acceleration", d.max_acceleration)?;
+    let max_torque = match r.f64_opt("joint.max_torque")? {
+        Some(t) => Some(positive("joint.max_torque", t)?),
+        None => d.max_torque,
+    };
+    let initial_position = r.f64("joint.initial_position", d.initial_position)?;
+    Ok(JointConfig { speed, max_acceleration, max_torque, initial_position })
+}
+
+fn read_reference(r: &Reader) -> Result<ReferenceConfig, ConfigError> {
+    let d = ReferenceConfig::default();
+    let tilt = r.f64("reference.tilt", d.tilt)?;
+    if tilt.abs() >= FRAC_PI_2 {
+        return Err(ConfigError::TiltOutOfRange { tilt });
+    }
+    Ok(ReferenceConfig {
+        tilt,
+        angular_velocity: r.vec3("reference.angular_velocity", d.angular_velocity)?,
+        acceleration: r.vec3("reference.acceleration", d.acceleration)?,
+    })
+}
+
+fn read_simulation(r: &Reader) -> Result<SimulationConfig, ConfigError> {
+    let d = SimulationConfig::default();
+    let rate_hz = r.positive("simulation.rate_hz", d.rate_hz)?;
+    if rate_hz > 1e6 {
+        return Err(ConfigError::AboveMaximum { key: "simulation.rate_hz".into(), value: rate_hz, max: 1e6 });
+    }
+    let substeps = r.u32_in("simulation.substeps", d.substeps, 1, 10_000)?;
+    let integrator = read_choice(r, "simulation.integrator", d.integrator.name(), INTEGRATORS, IntegratorKind::from_name)?;
+    let coordinates = read_choice(r, "simulation.coordinates", "ale", COORDINATES, |s| match s {
+        "ale" => Some(Coordinates::Ale),
+        "lagrangian" => Some(Coordinates::Lagrangian),
+        _ => None,
+    })?;
+    let realtime_factor = r.f64("simulation.realtime_factor", d.realtime_factor)?;
+    if realtime_factor < 0.0 {
+        return Err(ConfigError::Negative { key: "simulation.realtime_factor".into(), value: realtime_factor });
+    }
+    let publish_divisor = r.u32_in("simulation.publish_divisor", d.publish_divisor, 1, u32::MAX)?;
+    Ok(SimulationConfig { rate_hz, substeps, integrator, coordinates, realtime_factor, publish_divisor })
+}
+
+fn read_choice<T>(
+    r: &Reader,
+    key: &str,
+    default: &str,
+    allowed: &'static [&'static str],
+    parse: impl Fn(&str) -> Option<T>,
+) -> Result<T, ConfigError> {
+    let name = r.string(key, default)?;
+    parse(name.trim()).ok_or(ConfigError::UnknownChoice { key: key.to_string(), value: name, allowed })
+}
+
+fn read_limits(r: &Reader) -> Result<LimitsConfig, ConfigError> {
+    let d = LimitsConfig::default();
+    Ok(LimitsConfig {
+        max_force: r.positive("limits.max_force", d.max_force)?,
+        max_moment: r.positive("limits.max_moment", d.max_moment)?,
+        max_speed: r.positive("limits.max_speed", d.max_speed)?,
+        max_deflection_thicknesses: r.positive("limits.max_deflection_thicknesses", d.max_deflection_thicknesses)?,
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn suggestions() {
+        let known = known_keys();
+        assert_eq!(suggest("plate.inner_raduis", &known).as_deref(), Some("plate.inner_radius"));
+        assert_eq!(suggest("simulation.speed", &known).as_deref(), Some("joint.speed"));
+        assert_eq!(suggest("plate.poisson", &known).as_deref(), Some("plate.poisson_ratio"));
+        assert_eq!(suggest("Plate.Thickness", &known).as_deref(), Some("plate.thickness"));
+        assert_eq!(suggest("completely.different", &known), None);
+    }
+
+    #[test]
+    fn known_keys_are_distinct() {
+        let known = known_keys();
+        let mut unique = known.clone();
+        unique.sort();
+        unique.dedup();
+        assert_eq!(unique.len(), known.len(), "a key is listed twice");
+    }
+}

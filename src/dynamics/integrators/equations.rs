@@ -1,0 +1,82 @@
+//! The modal equations of motion in either description, for the integrators
+//! that work on the ODE itself (implicit midpoint, RK4).
+//!
+//! Lagrangian, per mode (eq. 12 plus the reference-motion terms of eq. 11):
+//!   m (q̈ + 2ζω q̇ + ω_eff² q) = f_B + [R(kχ)ᵀ f̄]
+//! ALE, per pair, from q = Rᵀ(kχ) q̄ (docs/ale.md):
+//!   q̄̈ = f̄_tot/m + 2kΩ J q̄̇ + kΩ̇ J q̄ + k²Ω² q̄ − 2ζω (q̄̇ − kΩ J q̄) − ω_eff² q̄
+//! (gyroscopic 2kΩ, softening k²Ω², circulatory 2ζωkΩ and the kΩ̇ term),
+//! with f̄_tot = f̄ + R(kχ) f_B and J = [[0, −1], [1, 0]].
+
+use crate::config::Coordinates;
+use crate::dynamics::scene::Scene;
+
+/// Per-mode constants.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ModeConstants {
+    pub mass: f64,
+    /// 2ζω.
+    pub damping_rate: f64,
+    /// ω² − (ω_x² + ω_y²).
+    pub omega_eff_sq: f64,
+}
+
+pub fn mode_constants(scene: &Scene) -> Vec<ModeConstants> {
+    let soft = scene.off_axis_rate_squared();
+    scene
+        .model
+        .modes()
+        .iter()
+        .map(|m| ModeConstants { mass: m.modal_mass, damping_rate: 2.0 * m.damping * m.omega, omega_eff_sq: m.omega * m.omega - soft })
+        .collect()
+}
+
+/// Accelerations for amplitudes (q, v) in `coords`, joint speed Ω and
+/// acceleration α, harmonics (cos kχ, sin kχ) at the instant, and the loads
+/// split by frame. Writes q̈ into `acc`.
+#[allow(clippy::too_many_arguments)]
+pub fn accelerations(
+    scene: &Scene,
+    consts: &[ModeConstants],
+    coords: Coordinates,
+    harm: &[(f64, f64)],
+    speed: f64,
+    accel: f64,
+    q: &[f64],
+    v: &[f64],
+    ale_frame: &[f64],
+    plate_frame: &[f64],
+    acc: &mut [f64],
+) {
+    let lay = &scene.layout;
+    for &i in &lay.axisymmetric {
+        let c = consts[i];
+        acc[i] = ale_frame[i] / c.mass - c.damping_rate * v[i] - c.omega_eff_sq * q[i];
+    }
+    for p in &lay.pairs {
+        let (co, si) = harm[p.k as usize];
+        let (ic, is) = (p.cos, p.sin);
+        let c = consts[ic];
+        match coords {
+            Coordinates::Lagrangian => {
+                // f = f_B + Rᵀ f̄
+                let fc = plate_frame[ic] + co * ale_frame[ic] + si * ale_frame[is];
+                let fs = plate_frame[is] - si * ale_frame[ic] + co * ale_frame[is];
+                acc[ic] = fc / c.mass - c.damping_rate * v[ic] - c.omega_eff_sq * q[ic];
+                acc[is] = fs / c.mass - c.damping_rate * v[is] - c.omega_eff_sq * q[is];
+            }
+            Coordinates::Ale => {
+                // f̄_tot = f̄ + R f_B
+                let fc = ale_frame[ic] + co * plate_frame[ic] - si * plate_frame[is];
+                let fs = ale_frame[is] + si * plate_frame[ic] + co * plate_frame[is];
+                let kw = p.k as f64 * speed;
+                let ka = p.k as f64 * accel;
+                let stiff = kw * kw - c.omega_eff_sq;
+                let skew = ka + c.damping_rate * kw; // coefficient of J q̄
+                // J x = (−x_s, x_c)
+                acc[ic] = fc / c.mass + 2.0 * kw * (-v[is]) + skew * (-q[is]) + stiff * q[ic] - c.damping_rate * v[ic];
+                acc[is] = fs / c.mass + 2.0 * kw * v[ic] + skew * q[ic] + stiff * q[is] - c.damping_rate * v[is];
+            }
+        }
+    }
+}

@@ -1,0 +1,12 @@
+//! `annular_plate`: a rotating annular Kirchhoff plate (the DLR FlexibleBodies
+//! `AnnularPlate`) as a flexible body with a floating frame of reference, a
+//! rotational joint at the axis, and Lagrangian and ALE node frames.
+//!
+//! Layers, data flowing one way: [`config`] → [`model`] → [`dynamics`] → `ros` / `cli`.
+
+pub mod cli;
+pub mod config;
+pub mod dynamics;
+pub mod model;
+#[cfg(feature = "ros")]
+pub mod ros;

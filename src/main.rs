@@ -1,0 +1,102 @@
+//! `annular_plate`: the node (default), `modes`, `simulate`.
+
+use annular_plate::cli;
+use annular_plate::dynamics::Simulation;
+use anyhow::Context;
+use clap::{Parser, Subcommand};
+use std::io::{BufWriter, IsTerminal};
+use std::path::PathBuf;
+
+#[derive(Parser)]
+#[command(name = "annular_plate", version, about = "A rotating annular Kirchhoff plate as a ROS 2 node (DLR FlexibleBodies AnnularPlate)")]
+struct Cli {
+    #[command(subcommand)]
+    command: Option<Command>,
+}
+
+#[derive(Subcommand)]
+enum Command {
+    /// Print the mode table of a params file.
+    Modes {
+        file: PathBuf,
+        /// Machine-readable output: {"modes": [{"k", "l", "shape", "frequency_hz", ...}]}.
+        #[arg(long)]
+        json: bool,
+    },
+    /// Simulate offline and write a CSV.
+    Simulate {
+        file: PathBuf,
+        /// Simulated time, s.
+        #[arg(long)]
+        duration: f64,
+        /// Output CSV file ("-" for stdout).
+        #[arg(long)]
+        csv: PathBuf,
+        /// No progress bar.
+        #[arg(long)]
+        quiet: bool,
+    },
+    /// Run the ROS 2 node (default scene: a brake test bench).
+    Run {
+        /// Params file (ROS 2 format); omitted: the built-in brake test bench.
+        file: Option<PathBuf>,
+        /// ROS arguments: --ros-args -r __node:=NAME -p name:=value --params-file F ...
+        #[arg(trailing_var_arg = true, allow_hyphen_values = true)]
+        ros_args: Vec<String>,
+    },
+}
+
+fn main() -> anyhow::Result<()> {
+    // `ros2 run` and launch files append `--ros-args ...`: split it off before clap.
+    let args: Vec<String> = std::env::args().collect();
+    let split = args.iter().position(|a| a == "--ros-args").unwrap_or(args.len());
+    let (own, ros_args) = args.split_at(split);
+    let cli = Cli::parse_from(own);
+    match cli.command {
+        None => run_node(None, ros_args),
+        Some(Command::Run { file, ros_args: mut extra }) => {
+            extra.extend_from_slice(ros_args);
+            run_node(file, &extra)
+        }
+        Some(Command::Modes { file, json }) => {
+            let config = cli::load_config(&file)?;
+            let model = annular_plate::model::PlateModel::new(&config.plate).with_context(|| format!("{}", file.display()))?;
+            let stdout = std::io::stdout();
+            cli::modes::write(&model, json, &mut stdout.lock())?;
+            Ok(())
+        }
+        Some(Command::Simulate { file, duration, csv, quiet }) => {
+            anyhow::ensure!(duration.is_finite() && duration >= 0.0, "--duration must be a finite number ≥ 0 s, got {duration}");
+            let config = cli::load_config(&file)?;
+            let mut sim = Simulation::new(config).with_context(|| format!("{}", file.display()))?;
+            let show = !quiet && std::io::stderr().is_terminal();
+            let bar = indicatif::ProgressBar::new(1000);
+            if !show {
+                bar.set_draw_target(indicatif::ProgressDrawTarget::hidden());
+            }
+            let progress = |f: f64| bar.set_position((f * 1000.0) as u64);
+            let started = std::time::Instant::now();
+            let steps = if csv.as_os_str() == "-" {
+                cli::simulate::run(&mut sim, duration, &mut BufWriter::new(std::io::stdout().lock()), progress)?
+            } else {
+                let f = std::fs::File::create(&csv).with_context(|| format!("cannot create {}", csv.display()))?;
+                cli::simulate::run(&mut sim, duration, &mut BufWriter::new(f), progress)?
+            };
+            bar.finish_and_clear();
+            if !quiet {
+                eprintln!("{steps} steps, {duration} s simulated in {:.3} s wall", started.elapsed().as_secs_f64());
+            }
+            Ok(())
+        }
+    }
+}
+
+#[cfg(feature = "ros")]
+fn run_node(file: Option<PathBuf>, ros_args: &[String]) -> anyhow::Result<()> {
+    annular_plate::ros::run_node(file, ros_args)
+}
+
+#[cfg(not(feature = "ros"))]
+fn run_node(_file: Option<PathBuf>, _ros_args: &[String]) -> anyhow::Result<()> {
+    anyhow::bail!("this build has no ROS 2 node (built without the `ros` feature); `modes` and `simulate` work")
+}

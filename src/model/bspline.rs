@@ -1,0 +1,176 @@
+//! Cubic B-splines on an open uniform knot vector over [r_i, r_a]
+//! (paper section 3.1, Fig. 4; de Boor [9]).
+//!
+//! `n` basis functions need `n − 3` spans. Only N_0 is non-zero at r_i and
+//! only N_0, N_1 have a non-zero slope there (likewise N_{n−1}, N_{n−2} at
+//! r_a), so the essential boundary conditions are imposed by dropping those.
+
+/// Degree of the radial B-splines.
+pub const DEGREE: usize = 3;
+
+/// An open uniform cubic B-spline basis on [a, b].
+#[derive(Debug, Clone, PartialEq)]
+pub struct BSplineBasis {
+    a: f64,
+    b: f64,
+    n: usize,
+    knots: Vec<f64>,
+}
+
+impl BSplineBasis {
+    /// `n ≥ 4` cubic B-splines on [a, b].
+    pub fn new(a: f64, b: f64, n: usize) -> Self {
+        assert!(n > DEGREE && b > a);
+        let spans = n - DEGREE;
+        let mut knots = Vec::with_capacity(n + DEGREE + 1);
+        knots.extend(std::iter::repeat_n(a, DEGREE + 1));
+        for i in 1..spans {
+            knots.push(a + (b - a) * i as f64 / spans as f64);
+        }
+        knots.extend(std::iter::repeat_n(b, DEGREE + 1));
+        BSplineBasis { a, b, n, knots }
+    }
+
+    pub fn len(&self) -> usize {
+        self.n
+    }
+    pub fn is_empty(&self) -> bool {
+        self.n == 0
+    }
+    pub fn spans(&self) -> usize {
+        self.n - DEGREE
+    }
+    pub fn interval(&self) -> (f64, f64) {
+        (self.a, self.b)
+    }
+    /// Knot positions bounding span `s`.
+    pub fn span_bounds(&self, s: usize) -> (f64, f64) {
+        (self.knots[s + DEGREE], self.knots[s + DEGREE + 1])
+    }
+
+    /// The span containing x (clamped to the interval).
+    pub fn span_of(&self, x: f64) -> usize {
+        let t = (x - self.a) / (self.b - self.a) * self.spans() as f64;
+        (t.floor().max(0.0) as usize).min(self.spans() - 1)
+    }
+
+    /// Values and the first three derivatives of the four basis functions
+    /// non-zero on span `s`, at x: `ders[d][j]` is the d-th derivative of
+    /// N_{s+j}. (The NURBS Book, algorithm A2.3.)
+    pub fn eval_span(&self, s: usize, x: f64) -> [[f64; 4]; 4] {
+        const P: usize = DEGREE;
+        let i = s + P; // knot index with knots[i] <= x < knots[i+1]
+        let u = &self.knots;
+        let mut ndu = [[0.0f64; 4]; 4];
+        let mut left = [0.0f64; 4];
+        let mut right = [0.0f64; 4];
+        ndu[0][0] = 1.0;
+        for j in 1..=P {
+            left[j] = x - u[i + 1 - j];
+            right[j] = u[i + j] - x;
+            let mut saved = 0.0;
+            for r in 0..j {
+                ndu[j][r] = right[r + 1] + left[j - r];
+                let temp = ndu[r][j - 1] / ndu[j][r];
+                ndu[r][j] = saved + right[r + 1] * temp;
+                saved = left[j - r] * temp;
+            }
+            ndu[j][j] = saved;
+        }
+        let mut ders = [[0.0f64; 4]; 4];
+        for j in 0..=P {
+            ders[0][j] = ndu[j][P];
+        }
+        let mut a = [[0.0f64; 4]; 2];
+        for r in 0..=P {
+            let (mut s1, mut s2) = (0usize, 1usize);
+            a[0][0] = 1.0;
+            for k in 1..=P {
+                let mut d = 0.0;
+                let rk = r as isize - k as isize;
+                let pk = P - k;
+                if r >= k {
+                    a[s2][0] = a[s1][0] / ndu[pk + 1][rk as usize];
+                    d = a[s2][0] * ndu[rk as usize][pk];
+                }
+                let j1 = if rk >= -1 { 1 } else { (-rk) as usize };
+                let j2 = if (r as isize - 1) <= pk as isize { k - 1 } else { P - r };
+                for j in j1..=j2 {
+                    let idx = (rk + j as isize) as usize;
+                    a[s2][j] = (a[s1][j] - a[s1][j - 1]) / ndu[pk + 1][idx];
+                    d += a[s2][j] * ndu[idx][pk];
+                }
+                if r <= pk {
+                    a[s2][k] = -a[s1][k - 1] / ndu[pk + 1][r];
+                    d += a[s2][k] * ndu[r][pk];
+                }
+                ders[k][r] = d;
+                std::mem::swap(&mut s1, &mut s2);
+            }
+        }
+        let mut fac = P as f64;
+        for k in 1..=P {
+            for v in ders[k].iter_mut() {
+                *v *= fac;
+            }
+            fac *= (P - k) as f64;
+        }
+        ders
+    }
+
+    /// Σ c_j N_j and its first three derivatives at x.
+    pub fn eval_combination(&self, coefficients: &[f64], x: f64) -> [f64; 4] {
+        let s = self.span_of(x);
+        let d = self.eval_span(s, x);
+        let mut out = [0.0; 4];
+        for (order, row) in d.iter().enumerate() {
+            out[order] = (0..4).map(|j| coefficients[s + j] * row[j]).sum();
+        }
+        out
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn partition_of_unity_and_derivatives_sum_to_zero() {
+        let b = BSplineBasis::new(0.1, 0.4, 11);
+        for k in 0..=200 {
+            let x = 0.1 + 0.3 * k as f64 / 200.0;
+            let d = b.eval_span(b.span_of(x), x);
+            assert!((d[0].iter().sum::<f64>() - 1.0).abs() < 1e-14);
+            for row in &d[1..] {
+                assert!(row.iter().sum::<f64>().abs() < 1e-8 * 1e3);
+            }
+        }
+    }
+
+    #[test]
+    fn reproduces_cubic_polynomials() {
+        // Greville-free check: fit by solving for coefficients is not needed —
+        // compare derivatives of a spline against finite differences instead.
+        let b = BSplineBasis::new(1.0, 2.0, 9);
+        let c: Vec<f64> = (0..9).map(|i| ((i * 7 % 5) as f64) - 1.3).collect();
+        let h = 1e-5;
+        for k in 1..40 {
+            let x = 1.0 + k as f64 / 40.0 + 1e-3;
+            let v = b.eval_combination(&c, x);
+            let vp = b.eval_combination(&c, x + h);
+            let vm = b.eval_combination(&c, x - h);
+            for order in 0..3 {
+                let fd = (vp[order] - vm[order]) / (2.0 * h);
+                assert!((fd - v[order + 1]).abs() < 1e-4 * (1.0 + v[order + 1].abs()), "order {order} at {x}: {fd} vs {}", v[order + 1]);
+            }
+        }
+    }
+
+    #[test]
+    fn only_first_two_splines_touch_the_inner_edge() {
+        let b = BSplineBasis::new(0.5, 1.0, 8);
+        let d = b.eval_span(0, 0.5);
+        assert_eq!(d[0], [1.0, 0.0, 0.0, 0.0]);
+        assert!(d[1][0] != 0.0 && d[1][1] != 0.0 && d[1][2] == 0.0 && d[1][3] == 0.0);
+    }
+}

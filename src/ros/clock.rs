@@ -1,0 +1,174 @@
+//! Time: the stamps of the outputs, `/clock`, and the pacing of the loop.
+//!
+//! Two time sources (docs/ros.md, "Time"):
+//! - **wall** (default): outputs are stamped with the system clock; the loop
+//!   runs at `simulation.rate_hz × simulation.realtime_factor` steps per
+//!   second (0 = as fast as possible);
+//! - **sim** (`ros.publish_clock: true` or `use_sim_time: true`): outputs are
+//!   stamped with simulated time, which starts at 0 and advances by exactly
+//!   1/rate_hz per step, and `/clock` (rosgraph_msgs/msg/Clock) carries it
+//!   after every step. ROS time never goes backwards: a `~/reset` returns
+//!   the plate to its initial state, but the clock keeps counting (as
+//!   Gazebo's reset_world), so tf buffers and bag files stay consistent.
+//!
+//! **The /clock type trap.** ros2-client's `Spinner` subscribes `/clock`
+//! typed `builtin_interfaces/msg/Time`; a Clock-typed writer in the same
+//! participant would leave two types on one topic (DDS tools flag it,
+//! rosbag2 refuses to record it). This node therefore never creates a
+//! Spinner: it serves the parameter services itself (`params_service.rs`),
+//! so `/clock` only ever carries `rosgraph_msgs::msg::dds_::Clock_`. The
+//! wire test `clock_has_one_type_and_monotonic_stamps` checks exactly that.
+
+use super::messages::Time;
+use std::time::{Duration, Instant};
+
+/// Stamps for the outputs: simulated (from the total step count) or wall.
+#[derive(Debug, Clone)]
+pub struct StepClock {
+    sim: bool,
+    dt: f64,
+    /// Steps since the node started (not reset by `~/reset`).
+    total_steps: u64,
+}
+
+impl StepClock {
+    pub fn new(sim: bool, dt: f64) -> Self {
+        StepClock { sim, dt, total_steps: 0 }
+    }
+
+    pub fn is_sim(&self) -> bool {
+        self.sim
+    }
+
+    /// One step taken.
+    pub fn advance(&mut self) {
+        self.total_steps += 1;
+    }
+
+    pub fn total_steps(&self) -> u64 {
+        self.total_steps
+    }
+
+    /// Simulated ROS time: total steps × dt, rounded to the nanosecond (no
+    /// drift for rates whose period is not a whole number of nanoseconds).
+    pub fn sim_time(&self) -> Time {
+        Time::from_nanos((self.total_steps as f64 * self.dt * 1e9).round() as i64)
+    }
+
+    /// The stamp for outputs of the current step.
+    pub fn stamp(&self) -> Time {
+        if self.sim {
+            self.sim_time()
+        } else {
+            Time::wall_now()
+        }
+    }
+}
+
+/// Deadlines of a fixed-rate loop. When the loop falls more than one period
+/// behind it does not try to catch up with a burst: it counts an overrun and
+/// restarts the schedule from now.
+#[derive(Debug, Clone)]
+pub struct Pacer {
+    /// None: as fast as possible.
+    period: Option<Duration>,
+    next: Instant,
+    overruns: u64,
+}
+
+impl Pacer {
+    /// `dt` simulated seconds per step, `realtime_factor` as in the config.
+    pub fn new(dt: f64, realtime_factor: f64, now: Instant) -> Self {
+        let period = (realtime_factor > 0.0).then(|| Duration::from_secs_f64(dt / realtime_factor));
+        Pacer { period, next: now, overruns: 0 }
+    }
+
+    pub fn period(&self) -> Option<Duration> {
+        self.period
+    }
+
+    /// Change the real-time factor (takes effect from now).
+    pub fn set_realtime_factor(&mut self, dt: f64, realtime_factor: f64, now: Instant) {
+        *self = Pacer { overruns: self.overruns, ..Pacer::new(dt, realtime_factor, now) };
+    }
+
+    /// When the next step is due.
+    pub fn deadline(&self) -> Instant {
+        self.next
+    }
+
+    /// The step due at `deadline()` was taken at `now`; schedule the next one.
+    pub fn stepped(&mut self, now: Instant) {
+        match self.period {
+            None => self.next = now,
+            Some(p) => {
+                self.next += p;
+                if now > self.next + p {
+                    self.overruns += 1;
+                    self.next = now;
+                }
+            }
+        }
+    }
+
+    /// Restart the schedule from `now` (after a pause).
+    pub fn restart(&mut self, now: Instant) {
+        self.next = now;
+    }
+
+    pub fn overruns(&self) -> u64 {
+        self.overruns
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn sim_time_counts_steps_without_drift() {
+        let mut c = StepClock::new(true, 1.0 / 3000.0);
+        assert_eq!(c.stamp(), Time::default());
+        for _ in 0..3000 {
+            c.advance();
+        }
+        assert_eq!(c.stamp(), Time { sec: 1, nanosec: 0 });
+        let mut c = StepClock::new(true, 1e-3);
+        c.advance();
+        assert_eq!(c.stamp(), Time { sec: 0, nanosec: 1_000_000 });
+    }
+
+    #[test]
+    fn wall_stamps_are_recent() {
+        let c = StepClock::new(false, 1e-3);
+        assert!(c.stamp().sec > 1_600_000_000);
+    }
+
+    #[test]
+    fn pacer_keeps_the_period_and_counts_overruns() {
+        let t0 = Instant::now();
+        let mut p = Pacer::new(1e-3, 1.0, t0);
+        assert_eq!(p.deadline(), t0);
+        p.stepped(t0);
+        assert_eq!(p.deadline(), t0 + Duration::from_millis(1));
+        // A little late: no overrun, the schedule holds.
+        p.stepped(t0 + Duration::from_micros(1200));
+        assert_eq!(p.deadline(), t0 + Duration::from_millis(2));
+        assert_eq!(p.overruns(), 0);
+        // Far behind: restart from now.
+        let late = t0 + Duration::from_millis(10);
+        p.stepped(late);
+        assert_eq!(p.overruns(), 1);
+        assert_eq!(p.deadline(), late);
+    }
+
+    #[test]
+    fn realtime_factor_scales_the_period() {
+        let t0 = Instant::now();
+        assert_eq!(Pacer::new(1e-3, 2.0, t0).period(), Some(Duration::from_micros(500)));
+        assert_eq!(Pacer::new(1e-3, 0.0, t0).period(), None);
+        let mut p = Pacer::new(1e-3, 0.0, t0);
+        p.stepped(t0 + Duration::from_secs(1));
+        assert_eq!(p.overruns(), 0);
+    }
+}

@@ -1,0 +1,462 @@
+//! Checking and counting what arrives on the input topics, before anything
+//! may reach the simulation. No ROS types: the subscriber tasks hand over
+//! plain values, so all of this is unit-tested without DDS.
+//!
+//! Rules (docs/ros.md, "Bad input"):
+//! - a speed command must be finite and |Ω| ≤ `limits.max_speed`;
+//! - a wrench must be finite with |F| ≤ `limits.max_force`, |M| ≤ `limits.max_moment`;
+//! - a WrenchStamped's `header.frame_id` is empty or the frame of the
+//!   topic's node (`<prefix>plate_ale_<j>`); anything else is an unknown frame;
+//! - a NodeWrenchArray is applied whole or not at all: an unknown kind, an
+//!   index of 0 or beyond the scene's nodes, the same node twice or any bad
+//!   wrench rejects the whole array;
+//! - a sample that cannot be decoded is counted as undecodable.
+//!
+//! A rejected input changes nothing; it is counted (visible in
+//! /diagnostics) and logged at most once per `ros.reject_log_period` per kind.
+
+use crate::dynamics::{InputError, NodeKind, Wrench};
+use std::sync::atomic::{AtomicU64, Ordering};
+use std::sync::Mutex;
+use std::time::{Duration, Instant};
+
+/// Why an input was refused.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum RejectReason {
+    /// NaN or ±Inf somewhere.
+    NonFinite,
+    /// Beyond the `limits.*` plausibility limits.
+    Absurd,
+    /// A WrenchStamped whose frame_id is not its node's frame.
+    UnknownFrame,
+    /// A wrench for a node the scene does not have.
+    NoSuchNode,
+    /// A NodeWrenchArray with an unknown kind or a node named twice.
+    MalformedBatch,
+    /// The sample could not be decoded (wrong type or truncated data).
+    Undecodable,
+    /// The simulation's input queue was full (inputs faster than it steps).
+    QueueFull,
+}
+
+impl RejectReason {
+    pub const ALL: [RejectReason; 7] = [
+        RejectReason::NonFinite,
+        RejectReason::Absurd,
+        RejectReason::UnknownFrame,
+        RejectReason::NoSuchNode,
+        RejectReason::MalformedBatch,
+        RejectReason::Undecodable,
+        RejectReason::QueueFull,
+    ];
+
+    pub fn name(self) -> &'static str {
+        match self {
+            RejectReason::NonFinite => "non_finite",
+            RejectReason::Absurd => "absurd",
+            RejectReason::UnknownFrame => "unknown_frame",
+            RejectReason::NoSuchNode => "no_such_node",
+            RejectReason::MalformedBatch => "malformed_batch",
+            RejectReason::Undecodable => "undecodable",
+            RejectReason::QueueFull => "queue_full",
+        }
+    }
+
+    fn index(self) -> usize {
+        RejectReason::ALL.iter().position(|r| *r == self).unwrap_or(0)
+    }
+}
+
+/// An input refused, with a sentence for the log.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Rejection {
+    pub reason: RejectReason,
+    pub detail: String,
+}
+
+impl Rejection {
+    fn new(reason: RejectReason, detail: impl Into<String>) -> Self {
+        Rejection { reason, detail: detail.into() }
+    }
+
+    fn from_input_error(e: InputError) -> Self {
+        let reason = match e {
+            InputError::NonFinite { .. } => RejectReason::NonFinite,
+            InputError::Absurd { .. } => RejectReason::Absurd,
+            InputError::NoSuchNode { .. } => RejectReason::NoSuchNode,
+        };
+        Rejection::new(reason, e.to_string())
+    }
+}
+
+/// A checked input, ready for the simulation (0-based node indices).
+#[derive(Debug, Clone, PartialEq)]
+pub enum Input {
+    Speed(f64),
+    Wrench { kind: NodeKind, node: usize, wrench: Wrench },
+    Batch(Vec<(NodeKind, usize, Wrench)>),
+}
+
+/// Which topic an input came from (for counting).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Source {
+    SpeedCommand,
+    NodeWrench,
+    WrenchArray,
+}
+
+/// `NodeWrench.kind` values of msg/NodeWrench.msg.
+pub const KIND_ALE: u8 = 0;
+pub const KIND_LAGRANGE: u8 = 1;
+
+/// The checks, with the scene's node frames and limits.
+#[derive(Debug, Clone)]
+pub struct InputValidator {
+    ale_frames: Vec<String>,
+    lagrange_frames: Vec<String>,
+    max_force: f64,
+    max_moment: f64,
+    max_speed: f64,
+}
+
+impl InputValidator {
+    /// `ale_frames[j]` / `lagrange_frames[j]`: the frame id of node j + 1.
+    pub fn new(ale_frames: Vec<String>, lagrange_frames: Vec<String>, max_force: f64, max_moment: f64, max_speed: f64) -> Self {
+        InputValidator { ale_frames, lagrange_frames, max_force, max_moment, max_speed }
+    }
+
+    fn frames(&self, kind: NodeKind) -> &[String] {
+        match kind {
+            NodeKind::Ale => &self.ale_frames,
+            NodeKind::Lagrange => &self.lagrange_frames,
+        }
+    }
+
+    pub fn speed(&self, omega: f64) -> Result<Input, Rejection> {
+        if !omega.is_finite() {
+            return Err(Rejection::new(RejectReason::NonFinite, format!("speed command {omega} is not finite")));
+        }
+        if omega.abs() > self.max_speed {
+            return Err(Rejection::new(
+                RejectReason::Absurd,
+                format!("speed command {omega:e} rad/s exceeds limits.max_speed = {:e}", self.max_speed),
+            ));
+        }
+        Ok(Input::Speed(omega))
+    }
+
+    fn check_wrench(&self, kind: NodeKind, node: usize, wrench: &Wrench) -> Result<(), Rejection> {
+        let count = self.frames(kind).len();
+        if node >= count {
+            return Err(Rejection::from_input_error(InputError::NoSuchNode { kind, index: node + 1, count }));
+        }
+        wrench
+            .validate(&format!("{}_{} wrench", kind.name(), node + 1), self.max_force, self.max_moment)
+            .map_err(Rejection::from_input_error)
+    }
+
+    /// A WrenchStamped on the topic of node `node` (0-based).
+    pub fn wrench_stamped(&self, kind: NodeKind, node: usize, frame_id: &str, wrench: Wrench) -> Result<Input, Rejection> {
+        if let Some(expected) = self.frames(kind).get(node) {
+            if !frame_id.is_empty() && frame_id != expected {
+                return Err(Rejection::new(
+                    RejectReason::UnknownFrame,
+                    format!(
+                        "{}_{} wrench has frame_id `{frame_id}`; it must be empty or `{expected}` (the wrench is expressed in the node's own frame)",
+                        kind.name(),
+                        node + 1
+                    ),
+                ));
+            }
+        }
+        self.check_wrench(kind, node, &wrench)?;
+        Ok(Input::Wrench { kind, node, wrench })
+    }
+
+    /// A NodeWrenchArray: (kind, 1-based index, wrench) per element.
+    pub fn batch(&self, entries: impl IntoIterator<Item = (u8, u32, Wrench)>) -> Result<Input, Rejection> {
+        let mut out: Vec<(NodeKind, usize, Wrench)> = Vec::new();
+        for (position, (kind, index, wrench)) in entries.into_iter().enumerate() {
+            let kind = match kind {
+                KIND_ALE => NodeKind::Ale,
+                KIND_LAGRANGE => NodeKind::Lagrange,
+                other => {
+                    return Err(Rejection::new(
+                        RejectReason::MalformedBatch,
+                        format!("wrenches[{position}].kind = {other} is neither ALE (0) nor LAGRANGE (1); the array was not applied"),
+                    ))
+                }
+            };
+            if index == 0 {
+                return Err(Rejection::new(
+                    RejectReason::NoSuchNode,
+                    format!("wrenches[{position}].index = 0, but node numbers start at 1; the array was not applied"),
+                ));
+            }
+            let node = index as usize - 1;
+            self.check_wrench(kind, node, &wrench).map_err(|r| Rejection {
+                detail: format!("wrenches[{position}]: {}; the array was not applied", r.detail),
+                ..r
+            })?;
+            if out.iter().any(|(k, n, _)| *k == kind && *n == node) {
+                return Err(Rejection::new(
+                    RejectReason::MalformedBatch,
+                    format!("wrenches[{position}] names {}_{index} a second time; the array was not applied", kind.name()),
+                ));
+            }
+            out.push((kind, node, wrench));
+        }
+        Ok(Input::Batch(out))
+    }
+}
+
+/// Counters shared by the subscriber tasks, the loop and /diagnostics.
+#[derive(Debug, Default)]
+pub struct InputStats {
+    accepted: [AtomicU64; 3],
+    rejected: [AtomicU64; RejectReason::ALL.len()],
+    expired: AtomicU64,
+}
+
+impl InputStats {
+    fn source_index(s: Source) -> usize {
+        match s {
+            Source::SpeedCommand => 0,
+            Source::NodeWrench => 1,
+            Source::WrenchArray => 2,
+        }
+    }
+
+    pub fn accept(&self, source: Source) {
+        self.accepted[Self::source_index(source)].fetch_add(1, Ordering::Relaxed);
+    }
+
+    pub fn reject(&self, reason: RejectReason) {
+        self.rejected[reason.index()].fetch_add(1, Ordering::Relaxed);
+    }
+
+    /// A held wrench dropped to zero by `ros.wrench_timeout`.
+    pub fn expire(&self) {
+        self.expired.fetch_add(1, Ordering::Relaxed);
+    }
+
+    pub fn accepted(&self, source: Source) -> u64 {
+        self.accepted[Self::source_index(source)].load(Ordering::Relaxed)
+    }
+
+    pub fn accepted_total(&self) -> u64 {
+        self.accepted.iter().map(|a| a.load(Ordering::Relaxed)).sum()
+    }
+
+    pub fn rejected(&self, reason: RejectReason) -> u64 {
+        self.rejected[reason.index()].load(Ordering::Relaxed)
+    }
+
+    pub fn rejected_total(&self) -> u64 {
+        self.rejected.iter().map(|a| a.load(Ordering::Relaxed)).sum()
+    }
+
+    pub fn expired(&self) -> u64 {
+        self.expired.load(Ordering::Relaxed)
+    }
+}
+
+/// At most one log line per reason per period; the next line says how many
+/// were suppressed in between.
+#[derive(Debug)]
+pub struct RateLimiter {
+    period: Duration,
+    state: Mutex<[(Option<Instant>, u64); RejectReason::ALL.len()]>,
+}
+
+impl RateLimiter {
+    pub fn new(period: Duration) -> Self {
+        RateLimiter { period, state: Mutex::new([(None, 0); RejectReason::ALL.len()]) }
+    }
+
+    /// `Some(suppressed since the last line)` when a line may be written now.
+    pub fn permit(&self, reason: RejectReason, now: Instant) -> Option<u64> {
+        let mut state = self.state.lock().unwrap_or_else(|e| e.into_inner());
+        let (last, suppressed) = &mut state[reason.index()];
+        match last {
+            Some(t) if now.duration_since(*t) < self.period => {
+                *suppressed += 1;
+                None
+            }
+            _ => {
+                *last = Some(now);
+                Some(std::mem::take(suppressed))
+            }
+        }
+    }
+}
+
+/// Drops held wrenches that were not renewed within `ros.wrench_timeout` of
+/// simulated time. Indexed by node; allocation only at construction.
+#[derive(Debug, Clone)]
+pub struct StaleWrenches {
+    timeout: f64,
+    ale: Vec<Option<f64>>,
+    lagrange: Vec<Option<f64>>,
+}
+
+impl StaleWrenches {
+    /// `timeout` in s; 0 disables.
+    pub fn new(timeout: f64, n_ale: usize, n_lagrange: usize) -> Self {
+        StaleWrenches { timeout, ale: vec![None; n_ale], lagrange: vec![None; n_lagrange] }
+    }
+
+    fn slots(&mut self, kind: NodeKind) -> &mut Vec<Option<f64>> {
+        match kind {
+            NodeKind::Ale => &mut self.ale,
+            NodeKind::Lagrange => &mut self.lagrange,
+        }
+    }
+
+    /// Change the timeout (0 disables).
+    pub fn set_timeout(&mut self, timeout: f64) {
+        self.timeout = timeout;
+    }
+
+    /// A wrench was set at simulated time `t`.
+    pub fn touched(&mut self, kind: NodeKind, node: usize, t: f64) {
+        if let Some(slot) = self.slots(kind).get_mut(node) {
+            *slot = Some(t);
+        }
+    }
+
+    /// Forget every set time (after a reset: the file's loads are held again).
+    pub fn clear(&mut self) {
+        self.ale.iter_mut().chain(self.lagrange.iter_mut()).for_each(|s| *s = None);
+    }
+
+    /// Call `expire(kind, node)` for each wrench older than the timeout at
+    /// time `t` and forget it.
+    pub fn expire(&mut self, t: f64, mut expire: impl FnMut(NodeKind, usize)) {
+        if self.timeout <= 0.0 {
+            return;
+        }
+        for (kind, slots) in [(NodeKind::Ale, &mut self.ale), (NodeKind::Lagrange, &mut self.lagrange)] {
+            for (node, slot) in slots.iter_mut().enumerate() {
+                if let Some(set_at) = *slot {
+                    // A small tolerance keeps "timeout = k steps" exact in floating point.
+                    if t - set_at >= self.timeout - 1e-9 {
+                        *slot = None;
+                        expire(kind, node);
+                    }
+                }
+            }
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn validator() -> InputValidator {
+        InputValidator::new(
+            vec!["plate_ale_1".into(), "plate_ale_2".into()],
+            vec!["plate_lagrange_1".into()],
+            1e4,
+            1e3,
+            500.0,
+        )
+    }
+
+    fn w(fz: f64) -> Wrench {
+        Wrench { force: [0.0, 0.0, fz], moment: [0.0; 3] }
+    }
+
+    #[test]
+    fn speed_rules() {
+        let v = validator();
+        assert_eq!(v.speed(25.0), Ok(Input::Speed(25.0)));
+        assert_eq!(v.speed(-500.0), Ok(Input::Speed(-500.0)));
+        assert_eq!(v.speed(f64::NAN).unwrap_err().reason, RejectReason::NonFinite);
+        assert_eq!(v.speed(f64::INFINITY).unwrap_err().reason, RejectReason::NonFinite);
+        assert_eq!(v.speed(501.0).unwrap_err().reason, RejectReason::Absurd);
+    }
+
+    #[test]
+    fn wrench_stamped_rules() {
+        let v = validator();
+        assert!(v.wrench_stamped(NodeKind::Ale, 0, "", w(-100.0)).is_ok());
+        assert!(v.wrench_stamped(NodeKind::Ale, 1, "plate_ale_2", w(-100.0)).is_ok());
+        assert_eq!(v.wrench_stamped(NodeKind::Ale, 0, "plate_ale_2", w(1.0)).unwrap_err().reason, RejectReason::UnknownFrame);
+        assert_eq!(v.wrench_stamped(NodeKind::Ale, 0, "map", w(1.0)).unwrap_err().reason, RejectReason::UnknownFrame);
+        assert_eq!(v.wrench_stamped(NodeKind::Ale, 0, "", w(f64::NAN)).unwrap_err().reason, RejectReason::NonFinite);
+        assert_eq!(v.wrench_stamped(NodeKind::Ale, 0, "", w(2e4)).unwrap_err().reason, RejectReason::Absurd);
+        let moment = Wrench { force: [0.0; 3], moment: [2e3, 0.0, 0.0] };
+        assert_eq!(v.wrench_stamped(NodeKind::Lagrange, 0, "", moment).unwrap_err().reason, RejectReason::Absurd);
+        assert_eq!(v.wrench_stamped(NodeKind::Lagrange, 1, "", w(1.0)).unwrap_err().reason, RejectReason::NoSuchNode);
+    }
+
+    #[test]
+    fn batch_is_all_or_nothing() {
+        let v = validator();
+        let ok = v.batch([(KIND_ALE, 1, w(-10.0)), (KIND_ALE, 2, w(-20.0)), (KIND_LAGRANGE, 1, w(5.0))]).unwrap();
+        assert_eq!(
+            ok,
+            Input::Batch(vec![(NodeKind::Ale, 0, w(-10.0)), (NodeKind::Ale, 1, w(-20.0)), (NodeKind::Lagrange, 0, w(5.0))])
+        );
+        assert_eq!(v.batch([]), Ok(Input::Batch(vec![])));
+        let reason = |entries: Vec<(u8, u32, Wrench)>| v.batch(entries).unwrap_err().reason;
+        assert_eq!(reason(vec![(KIND_ALE, 1, w(1.0)), (7, 1, w(1.0))]), RejectReason::MalformedBatch);
+        assert_eq!(reason(vec![(KIND_ALE, 1, w(1.0)), (KIND_ALE, 1, w(2.0))]), RejectReason::MalformedBatch);
+        assert_eq!(reason(vec![(KIND_ALE, 0, w(1.0))]), RejectReason::NoSuchNode);
+        assert_eq!(reason(vec![(KIND_ALE, 3, w(1.0))]), RejectReason::NoSuchNode);
+        assert_eq!(reason(vec![(KIND_ALE, 1, w(1.0)), (KIND_LAGRANGE, 1, w(f64::NEG_INFINITY))]), RejectReason::NonFinite);
+        let e = v.batch([(KIND_ALE, 2, w(1.0)), (KIND_ALE, 3, w(1.0))]).unwrap_err();
+        assert!(e.detail.contains("wrenches[1]") && e.detail.contains("not applied"), "{}", e.detail);
+    }
+
+    #[test]
+    fn stats_count() {
+        let s = InputStats::default();
+        s.accept(Source::NodeWrench);
+        s.accept(Source::NodeWrench);
+        s.accept(Source::SpeedCommand);
+        s.reject(RejectReason::Absurd);
+        s.reject(RejectReason::Undecodable);
+        s.expire();
+        assert_eq!(s.accepted(Source::NodeWrench), 2);
+        assert_eq!(s.accepted_total(), 3);
+        assert_eq!(s.rejected(RejectReason::Absurd), 1);
+        assert_eq!(s.rejected_total(), 2);
+        assert_eq!(s.expired(), 1);
+    }
+
+    #[test]
+    fn rate_limiter_suppresses_and_reports() {
+        let r = RateLimiter::new(Duration::from_secs(1));
+        let t0 = Instant::now();
+        assert_eq!(r.permit(RejectReason::NonFinite, t0), Some(0));
+        assert_eq!(r.permit(RejectReason::NonFinite, t0 + Duration::from_millis(10)), None);
+        assert_eq!(r.permit(RejectReason::NonFinite, t0 + Duration::from_millis(20)), None);
+        // Other reasons have their own budget.
+        assert_eq!(r.permit(RejectReason::Absurd, t0 + Duration::from_millis(20)), Some(0));
+        assert_eq!(r.permit(RejectReason::NonFinite, t0 + Duration::from_millis(1001)), Some(2));
+    }
+
+    #[test]
+    fn stale_wrenches_expire_after_timeout() {
+        let mut s = StaleWrenches::new(0.01, 2, 1);
+        s.touched(NodeKind::Ale, 1, 0.0);
+        s.touched(NodeKind::Lagrange, 0, 0.005);
+        let mut expired = vec![];
+        s.expire(0.009, |k, n| expired.push((k, n)));
+        assert!(expired.is_empty());
+        s.expire(0.010, |k, n| expired.push((k, n)));
+        assert_eq!(expired, vec![(NodeKind::Ale, 1)]);
+        s.expire(0.015, |k, n| expired.push((k, n)));
+        assert_eq!(expired, vec![(NodeKind::Ale, 1), (NodeKind::Lagrange, 0)]);
+        // Once expired, nothing more.
+        s.expire(1.0, |k, n| expired.push((k, n)));
+        assert_eq!(expired.len(), 2);
+        // Disabled.
+        let mut off = StaleWrenches::new(0.0, 1, 0);
+        off.touched(NodeKind::Ale, 0, 0.0);
+        off.expire(100.0, |_, _| panic!("disabled"));
+    }
+}

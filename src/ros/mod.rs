@@ -1,0 +1,38 @@
+//! The ROS 2 node (ros2-client + tokio; pure-Rust DDS, no ROS installation).
+//!
+//! `annular_plate run [FILE] [--ros-args ...]` — and `annular_plate` with no
+//! arguments, on the built-in brake-bench scene — call [`run_node`], which
+//! blocks until SIGINT or SIGTERM. docs/ros.md lists the topics, types, QoS,
+//! services and parameters.
+//!
+//! One concern per file:
+//! - [`args`]: `--ros-args` parsing, name resolution and remapping;
+//! - [`settings`]: the `ros.*` parameters;
+//! - [`messages`]: wire types (standard ROS ones and this package's `msg/`, `srv/`);
+//! - [`topics`], [`qos`]: names and QoS of every endpoint;
+//! - [`inputs`]: checking and counting incoming messages (no ROS types);
+//! - [`outputs`]: the per-step messages, preallocated;
+//! - [`clock`]: stamps, `/clock`, pacing;
+//! - [`services`], [`params_service`]: reset/pause/step and the parameter services;
+//! - [`sim_loop`]: the fixed-rate simulation thread;
+//! - [`logging`]: `/rosout` and stderr;
+//! - [`node`]: wiring and shutdown.
+//!
+//! The physics (`model`, `dynamics`) never imports anything from here.
+
+pub mod args;
+pub mod clock;
+pub mod inputs;
+pub mod logging;
+pub mod messages;
+pub mod node;
+pub mod outputs;
+pub mod params_service;
+pub mod qos;
+pub mod services;
+pub mod settings;
+pub mod sim_loop;
+pub mod topics;
+
+pub use messages::RosType;
+pub use node::{run_node, NodeSetup, DEFAULT_NODE_NAME, DEFAULT_SCENE};

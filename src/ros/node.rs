@@ -1,0 +1,343 @@
+//! The node: reads the scene and the ROS arguments, creates the DDS
+//! entities, spawns the input and service tasks and the simulation thread,
+//! and shuts everything down in order on SIGINT or SIGTERM.
+
+use super::args::{domain_id_from_env, NameResolver, RosArgs};
+use super::inputs::{Input, InputStats, InputValidator, RejectReason, Rejection, Source};
+use super::logging::{parse_level, Logger};
+use super::messages::{
+    Clock, DiagnosticArray, Float64, JointState, ModalAmplitudes, NodeWrenchArray, RosType, TFMessage, WrenchStamped,
+};
+use super::outputs::{static_transforms, FrameNames, OutputMessages, Shared};
+use super::params_service::{effective_parameters, ParamStore};
+use super::services::{self, Command};
+use super::settings::{split_ros_params, RosSettings};
+use super::sim_loop::{LoopSettings, Publishers, SimLoop};
+use super::{qos, topics};
+use crate::config::{Config, ConfigError, Params};
+use crate::dynamics::{NodeKind, Simulation, Wrench};
+use anyhow::{anyhow, Context as _};
+use futures::StreamExt;
+use ros2_client::{Context, ContextOptions, MessageTypeName, Name, Node, NodeName, NodeOptions, Publisher, QosProfile, Subscription};
+use serde::de::DeserializeOwned;
+use serde::Serialize;
+use std::path::{Path, PathBuf};
+use std::sync::mpsc::{sync_channel, SyncSender, TrySendError};
+use std::sync::{Arc, Mutex};
+use std::time::Duration;
+use tokio::task::JoinHandle;
+
+/// The node's name unless remapped with `-r __node:=NAME`.
+pub const DEFAULT_NODE_NAME: &str = "annular_plate";
+
+/// The built-in default scene (a brake test bench), used when no file is given.
+pub const DEFAULT_SCENE: &str = include_str!("../../config/brake_bench.yaml");
+
+/// Commands (inputs and service calls) waiting for the simulation loop.
+const COMMAND_QUEUE: usize = 4096;
+
+/// Everything the node needs before any DDS traffic: resolved names, the
+/// effective parameters, the validated configuration and `ros.*` settings.
+#[derive(Debug, Clone)]
+pub struct NodeSetup {
+    pub args: RosArgs,
+    pub names: NameResolver,
+    /// Parameters as given (scene file, `--params-file`, `-p`), `ros.*` included.
+    pub params: Params,
+    pub config: Config,
+    pub settings: RosSettings,
+    /// Where the scene came from, for the log.
+    pub scene: String,
+}
+
+fn config_error(source: &str, e: ConfigError) -> anyhow::Error {
+    anyhow!("{source}: {e}")
+}
+
+impl NodeSetup {
+    /// Read the scene (`None`: the built-in brake bench) and the ROS arguments.
+    pub fn load(scene: Option<&Path>, ros_args: &[String]) -> anyhow::Result<NodeSetup> {
+        let args = RosArgs::parse(ros_args).map_err(|e| anyhow!("{e}"))?;
+        let names = NameResolver::new(&args, DEFAULT_NODE_NAME).map_err(|e| anyhow!("{e}"))?;
+        let fqn = names.fully_qualified_node_name();
+        let (mut params, scene_name) = match scene {
+            Some(path) => (
+                Params::from_file(path, &fqn).map_err(|e| config_error(&path.display().to_string(), e))?,
+                path.display().to_string(),
+            ),
+            None => (
+                Params::from_yaml_str(DEFAULT_SCENE, &fqn).map_err(|e| config_error("built-in config/brake_bench.yaml", e))?,
+                "built-in config/brake_bench.yaml".to_string(),
+            ),
+        };
+        for file in &args.params_files {
+            match Params::from_file(file, &fqn) {
+                Ok(extra) => {
+                    for (k, v) in extra.iter() {
+                        params.set(k, v.clone()).map_err(|e| config_error(&file.display().to_string(), e))?;
+                    }
+                }
+                // A launch file's parameter file may hold only other nodes.
+                Err(ConfigError::NoEntryForNode { .. }) => {}
+                Err(e) => return Err(config_error(&file.display().to_string(), e)),
+            }
+        }
+        for p in args.params_for(names.node_name(), DEFAULT_NODE_NAME) {
+            params.set_override(&p.name, &p.value).map_err(|e| config_error("-p", e))?;
+        }
+        let (rest, ros) = split_ros_params(&params);
+        let mut ros_and_time = ros.clone();
+        if let Some(v) = params.get("use_sim_time") {
+            ros_and_time.set("use_sim_time", v.clone()).map_err(|e| config_error("use_sim_time", e))?;
+        }
+        let settings = RosSettings::from_params(&ros_and_time).map_err(|e| anyhow!("{scene_name}: {e}"))?;
+        let config = Config::from_params(&rest).map_err(|e| config_error(&scene_name, e))?;
+        Ok(NodeSetup { args, names, params, config, settings, scene: scene_name })
+    }
+
+    pub fn frame_names(&self) -> FrameNames {
+        FrameNames::new(&self.settings.frame_prefix, &self.settings.world_frame, self.config.nodes.ale.len(), self.config.nodes.lagrange.len())
+    }
+}
+
+/// Run the node until SIGINT or SIGTERM (see the module documentation of `ros`).
+pub fn run_node(scene: Option<PathBuf>, ros_args: &[String]) -> anyhow::Result<()> {
+    let setup = NodeSetup::load(scene.as_deref(), ros_args)?;
+    let domain = domain_id_from_env(std::env::var("ROS_DOMAIN_ID").ok().as_deref()).map_err(|e| anyhow!("{e}"))?;
+    let sim = Simulation::new(setup.config.clone()).map_err(|e| anyhow!("{}: {e}", setup.scene))?;
+    let rt = tokio::runtime::Builder::new_multi_thread()
+        .worker_threads(2)
+        .thread_name("annular_plate-io")
+        .enable_all()
+        .build()
+        .context("cannot start the tokio runtime")?;
+    rt.block_on(serve(setup, sim, domain))
+}
+
+fn publisher<T: RosType, P: Serialize>(node: &mut Node, names: &NameResolver, topic: &str, qos: &QosProfile) -> anyhow::Result<Publisher<P>> {
+    let resolved = names.resolve(topic).map_err(|e| anyhow!("{e}"))?;
+    let name = Name::parse(&resolved).map_err(|e| anyhow!("topic {resolved}: {e}"))?;
+    let t = node
+        .create_topic(&name, MessageTypeName::new(T::PACKAGE, T::NAME), qos)
+        .map_err(|e| anyhow!("cannot create the topic {resolved}: {e:?}"))?;
+    node.create_publisher::<P>(&t, Some(qos.clone())).map_err(|e| anyhow!("cannot publish {resolved}: {e:?}"))
+}
+
+fn subscription<T: RosType + 'static>(node: &mut Node, resolved: &str, qos: &QosProfile) -> anyhow::Result<Subscription<T>> {
+    let name = Name::parse(resolved).map_err(|e| anyhow!("topic {resolved}: {e}"))?;
+    let t = node
+        .create_topic(&name, MessageTypeName::new(T::PACKAGE, T::NAME), qos)
+        .map_err(|e| anyhow!("cannot create the topic {resolved}: {e:?}"))?;
+    node.create_subscription::<T>(&t, Some(qos.clone())).map_err(|e| anyhow!("cannot subscribe {resolved}: {e:?}"))
+}
+
+/// What every input task shares.
+#[derive(Clone)]
+struct InputContext {
+    validator: Arc<InputValidator>,
+    stats: Arc<InputStats>,
+    logger: Arc<Logger>,
+    tx: SyncSender<Command>,
+}
+
+impl InputContext {
+    fn reject(&self, topic: &str, r: Rejection) {
+        self.stats.reject(r.reason);
+        self.logger.rejection(topic, &r);
+    }
+}
+
+/// One task per input topic: decode, check, hand over to the loop.
+fn spawn_input<M, F>(sub: Subscription<M>, topic: String, source: Source, ctx: InputContext, check: F) -> JoinHandle<()>
+where
+    M: DeserializeOwned + Send + Sync + 'static,
+    F: Fn(&InputValidator, M) -> Result<(Input, i64), Rejection> + Send + 'static,
+{
+    tokio::spawn(async move {
+        let stream = sub.async_stream();
+        futures::pin_mut!(stream);
+        while let Some(item) = stream.next().await {
+            match item {
+                Ok((msg, _info)) => match check(&ctx.validator, msg) {
+                    Ok((input, stamp)) => match ctx.tx.try_send(Command::Input(input, source, stamp)) {
+                        Ok(()) => {}
+                        Err(TrySendError::Full(_)) => ctx.reject(
+                            &topic,
+                            Rejection { reason: RejectReason::QueueFull, detail: "the simulation's input queue is full".into() },
+                        ),
+                        Err(TrySendError::Disconnected(_)) => return,
+                    },
+                    Err(r) => ctx.reject(&topic, r),
+                },
+                Err(e) => ctx.reject(&topic, Rejection { reason: RejectReason::Undecodable, detail: format!("{e:?}") }),
+            }
+        }
+    })
+}
+
+fn to_wrench(w: &super::messages::Wrench) -> Wrench {
+    Wrench { force: w.force.to_array(), moment: w.torque.to_array() }
+}
+
+async fn serve(setup: NodeSetup, sim: Simulation, domain: u16) -> anyhow::Result<()> {
+    let names = &setup.names;
+    let settings = &setup.settings;
+    let context = Context::with_options(ContextOptions::new().domain_id(domain))
+        .map_err(|e| anyhow!("cannot join DDS domain {domain}: {e:?}"))?;
+    let mut node = context
+        .new_node(
+            NodeName::new(names.namespace(), names.node_name()).map_err(|e| anyhow!("node name: {e}"))?,
+            // No Spinner and no built-in parameter services: see clock.rs.
+            NodeOptions::new().enable_rosout(setup.args.rosout_logs).start_parameter_services(false),
+        )
+        .map_err(|e| anyhow!("cannot create the node: {e}"))?;
+    let fqn = names.fully_qualified_node_name();
+    let logger = Arc::new(Logger::new(
+        setup.args.rosout_logs.then(|| node.logging_handle()),
+        names.node_name(),
+        setup.args.stdout_logs,
+        parse_level(setup.args.log_level.as_deref()),
+        Duration::from_secs_f64(settings.reject_log_period),
+    ));
+    let frames = setup.frame_names();
+
+    // Outputs.
+    let pubs = Publishers {
+        joint_states: publisher::<JointState, Shared<JointState>>(&mut node, names, topics::JOINT_STATES, &qos::STATE)?,
+        tf: publisher::<TFMessage, Shared<TFMessage>>(&mut node, names, topics::TF, &qos::TF)?,
+        modal: publisher::<ModalAmplitudes, Shared<ModalAmplitudes>>(&mut node, names, topics::MODAL_AMPLITUDES, &qos::STATE)?,
+        clock: if settings.sim_time {
+            Some(publisher::<Clock, Clock>(&mut node, names, topics::CLOCK, &qos::CLOCK)?)
+        } else {
+            None
+        },
+        diagnostics: publisher::<DiagnosticArray, DiagnosticArray>(&mut node, names, topics::DIAGNOSTICS, &qos::DIAGNOSTICS)?,
+    };
+    let tf_static = publisher::<TFMessage, TFMessage>(&mut node, names, topics::TF_STATIC, &qos::TF_STATIC)?;
+    let static_stamp = if settings.sim_time { super::messages::Time::default() } else { super::messages::Time::wall_now() };
+    if let Err(e) = tf_static.publish(static_transforms(&frames, setup.config.reference.tilt, static_stamp)) {
+        logger.warn(&format!("could not publish /tf_static: {e:?}"));
+    }
+
+    // The loop's queue, shared by inputs and services.
+    let (tx, rx) = sync_channel::<Command>(COMMAND_QUEUE);
+    let stats = Arc::new(InputStats::default());
+    let limits = &setup.config.limits;
+    let ctx = InputContext {
+        validator: Arc::new(InputValidator::new(
+            frames.ale.clone(),
+            frames.lagrange.clone(),
+            limits.max_force,
+            limits.max_moment,
+            limits.max_speed,
+        )),
+        stats: Arc::clone(&stats),
+        logger: Arc::clone(&logger),
+        tx: tx.clone(),
+    };
+
+    let mut tasks: Vec<JoinHandle<()>> = Vec::new();
+    let resolve = |t: &str| names.resolve(t).map_err(|e| anyhow!("{e}"));
+
+    let topic = resolve(topics::SPEED_COMMAND)?;
+    let sub = subscription::<Float64>(&mut node, &topic, &qos::INPUT)?;
+    tasks.push(spawn_input(sub, topic, Source::SpeedCommand, ctx.clone(), |v, m: Float64| Ok((v.speed(m.data)?, 0))));
+
+    for (kind, count) in [(NodeKind::Ale, frames.ale.len()), (NodeKind::Lagrange, frames.lagrange.len())] {
+        for node_index in 0..count {
+            let topic = resolve(&topics::node_wrench(kind, node_index + 1))?;
+            let sub = subscription::<WrenchStamped>(&mut node, &topic, &qos::INPUT)?;
+            tasks.push(spawn_input(sub, topic, Source::NodeWrench, ctx.clone(), move |v, m: WrenchStamped| {
+                let stamp = m.header.stamp.to_nanos();
+                Ok((v.wrench_stamped(kind, node_index, &m.header.frame_id, to_wrench(&m.wrench))?, stamp))
+            }));
+        }
+    }
+
+    let topic = resolve(topics::WRENCHES)?;
+    let sub = subscription::<NodeWrenchArray>(&mut node, &topic, &qos::INPUT)?;
+    tasks.push(spawn_input(sub, topic, Source::WrenchArray, ctx.clone(), |v, m: NodeWrenchArray| {
+        let stamp = m.header.stamp.to_nanos();
+        Ok((v.batch(m.wrenches.iter().map(|w| (w.kind, w.index, to_wrench(&w.wrench))))?, stamp))
+    }));
+
+    // Services.
+    let service_names = [resolve(services::RESET)?, resolve(services::SET_PAUSED)?, resolve(services::STEP)?];
+    tasks.extend(services::spawn(
+        &mut node,
+        settings.service_mapping,
+        [&service_names[0], &service_names[1], &service_names[2]],
+        tx.clone(),
+    )?);
+    let store = Arc::new(Mutex::new(ParamStore::new(effective_parameters(&setup.params, &setup.config, settings))));
+    tasks.extend(super::params_service::spawn(&mut node, settings.service_mapping, &fqn, store, tx.clone())?);
+
+    // The simulation thread.
+    let n_modes = sim.model().n_modes();
+    let outputs = OutputMessages::new(&sim, &frames);
+    let loop_settings = LoopSettings {
+        publish_divisor: setup.config.simulation.publish_divisor,
+        realtime_factor: setup.config.simulation.realtime_factor,
+        start_paused: settings.start_paused,
+        sim_time: settings.sim_time,
+        wrench_timeout: settings.wrench_timeout,
+        diagnostics_period: Duration::from_secs_f64(settings.diagnostics_period),
+        node_name: fqn.clone(),
+    };
+    let (done_tx, done_rx) = tokio::sync::oneshot::channel::<()>();
+    let sim_loop = SimLoop::new(sim, outputs, pubs, rx, Arc::clone(&stats), Arc::clone(&logger), loop_settings);
+    let sim_thread = std::thread::Builder::new()
+        .name("annular_plate-sim".into())
+        .spawn(move || {
+            sim_loop.run();
+            let _ = done_tx.send(());
+        })
+        .context("cannot start the simulation thread")?;
+    logger.info(&format!(
+        "{fqn} up on ROS_DOMAIN_ID {domain}: scene {}, {} ALE and {} Lagrangian nodes, {} modes, {} time",
+        setup.scene,
+        frames.ale.len(),
+        frames.lagrange.len(),
+        n_modes,
+        if settings.sim_time { "simulated (/clock)" } else { "wall-clock" }
+    ));
+
+    // Wait for a signal (or the loop's end).
+    use tokio::signal::unix::{signal, SignalKind};
+    let mut sigint = signal(SignalKind::interrupt()).context("cannot handle SIGINT")?;
+    let mut sigterm = signal(SignalKind::terminate()).context("cannot handle SIGTERM")?;
+    let why = tokio::select! {
+        _ = sigint.recv() => "SIGINT",
+        _ = sigterm.recv() => "SIGTERM",
+        _ = done_rx => "the simulation loop ended",
+    };
+    logger.info(&format!("{why}: shutting down"));
+    // A hung shutdown must not keep the process: give it two seconds.
+    std::thread::spawn(|| {
+        std::thread::sleep(Duration::from_secs(2));
+        eprintln!("[annular_plate] shutdown took too long; exiting");
+        std::process::exit(1);
+    });
+
+    // Order: input and service tasks (they hold subscriptions, servers and
+    // senders), then the loop (it holds the publishers), then the node and
+    // the context.
+    for t in &tasks {
+        t.abort();
+    }
+    for t in tasks {
+        let _ = t.await;
+    }
+    let _ = tx.try_send(Command::Stop);
+    drop(tx);
+    drop(ctx);
+    let joined = tokio::task::spawn_blocking(move || sim_thread.join()).await;
+    if !matches!(joined, Ok(Ok(()))) {
+        logger.error("the simulation thread ended abnormally");
+    }
+    drop(tf_static);
+    drop(logger);
+    drop(node);
+    drop(context);
+    Ok(())
+}

@@ -1,0 +1,249 @@
+//! What the node publishes after a step: joint state, transforms, modal
+//! amplitudes, clock; and the static transform and diagnostics.
+//!
+//! The messages are built once ([`OutputMessages::new`]) and then only
+//! overwritten in place each step: no allocation on our side of the per-step
+//! path. They are handed to the DDS writer as [`Shared`] (an `Arc` that the
+//! writer serializes synchronously and drops), so publishing does not clone
+//! the strings and vectors either.
+
+use super::clock::StepClock;
+use super::messages::{
+    Clock, Header, JointState, ModalAmplitudes, Quaternion, TFMessage, Time, Transform, TransformStamped, Vector3,
+};
+use crate::dynamics::{Pose, Simulation};
+use crate::model::AngularShape;
+use serde::{Deserialize, Deserializer, Serialize, Serializer};
+use std::sync::Arc;
+
+/// Frame and joint names, with `ros.frame_prefix` applied.
+#[derive(Debug, Clone, PartialEq)]
+pub struct FrameNames {
+    pub world: String,
+    pub base: String,
+    pub rotor: String,
+    pub joint: String,
+    /// `ale[j]` is the frame of ALE node j + 1.
+    pub ale: Vec<String>,
+    pub lagrange: Vec<String>,
+}
+
+impl FrameNames {
+    pub fn new(prefix: &str, world: &str, n_ale: usize, n_lagrange: usize) -> Self {
+        FrameNames {
+            world: world.to_string(),
+            base: format!("{prefix}plate_base"),
+            rotor: format!("{prefix}plate_rotor"),
+            joint: format!("{prefix}plate_joint"),
+            ale: (1..=n_ale).map(|j| format!("{prefix}plate_ale_{j}")).collect(),
+            lagrange: (1..=n_lagrange).map(|j| format!("{prefix}plate_lagrange_{j}")).collect(),
+        }
+    }
+}
+
+/// A message shared with the writer instead of cloned: serializes as `T`.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Shared<T>(pub Arc<T>);
+
+impl<T: Serialize> Serialize for Shared<T> {
+    fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        self.0.serialize(s)
+    }
+}
+
+impl<'de, T: Deserialize<'de>> Deserialize<'de> for Shared<T> {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        T::deserialize(d).map(|t| Shared(Arc::new(t)))
+    }
+}
+
+impl<T: Serialize + for<'de> Deserialize<'de>> ros2_client::Message for Shared<T> {}
+
+impl<T> Shared<T> {
+    pub fn new(t: T) -> Self {
+        Shared(Arc::new(t))
+    }
+    /// A handle for one `publish` call.
+    pub fn handle(&self) -> Self {
+        Shared(Arc::clone(&self.0))
+    }
+}
+
+impl<T: Clone> Shared<T> {
+    /// Mutable access; copies only if a writer still holds the last handle.
+    pub fn get_mut(&mut self) -> &mut T {
+        Arc::make_mut(&mut self.0)
+    }
+}
+
+fn shape_code(s: AngularShape) -> u8 {
+    match s {
+        AngularShape::Axisymmetric => ModalAmplitudes::SHAPE_AXISYMMETRIC,
+        AngularShape::Cos => ModalAmplitudes::SHAPE_COS,
+        AngularShape::Sin => ModalAmplitudes::SHAPE_SIN,
+    }
+}
+
+fn transform(p: &Pose) -> Transform {
+    Transform { translation: Vector3::from_array(p.translation), rotation: Quaternion::from_xyzw(p.rotation) }
+}
+
+/// Rotation by `angle` about z as a quaternion.
+pub fn z_rotation(angle: f64) -> Quaternion {
+    let (s, c) = (0.5 * angle).sin_cos();
+    Quaternion { x: 0.0, y: 0.0, z: s, w: c }
+}
+
+/// Rotation by `angle` about x as a quaternion.
+pub fn x_rotation(angle: f64) -> Quaternion {
+    let (s, c) = (0.5 * angle).sin_cos();
+    Quaternion { x: s, y: 0.0, z: 0.0, w: c }
+}
+
+/// The per-step messages, preallocated for one scene.
+#[derive(Debug)]
+pub struct OutputMessages {
+    pub joint_state: Shared<JointState>,
+    /// transforms[0]: base → rotor; then base → ale_j; then rotor → lagrange_j.
+    pub tf: Shared<TFMessage>,
+    pub modal: Shared<ModalAmplitudes>,
+    n_ale: usize,
+}
+
+impl OutputMessages {
+    pub fn new(sim: &Simulation, names: &FrameNames) -> Self {
+        let header = |frame: &str| Header { stamp: Time::default(), frame_id: frame.to_string() };
+        let joint_state = JointState {
+            header: header(""),
+            name: vec![names.joint.clone()],
+            position: vec![0.0],
+            velocity: vec![0.0],
+            effort: vec![0.0],
+        };
+        let mut transforms = Vec::with_capacity(1 + sim.n_ale_nodes() + sim.n_lagrange_nodes());
+        let ts = |parent: &str, child: &str| TransformStamped {
+            header: header(parent),
+            child_frame_id: child.to_string(),
+            transform: Transform::default(),
+        };
+        transforms.push(ts(&names.base, &names.rotor));
+        for ale in &names.ale {
+            transforms.push(ts(&names.base, ale));
+        }
+        for lag in &names.lagrange {
+            transforms.push(ts(&names.rotor, lag));
+        }
+        let modes = sim.model().modes();
+        let n = modes.len();
+        let modal = ModalAmplitudes {
+            header: header(&names.base),
+            step: 0,
+            sim_time: 0.0,
+            input_stamp: Time::default(),
+            k: modes.iter().map(|m| m.k).collect(),
+            l: modes.iter().map(|m| m.l).collect(),
+            shape: modes.iter().map(|m| shape_code(m.shape)).collect(),
+            frequency_hz: modes.iter().map(|m| m.frequency_hz).collect(),
+            q_lagrange: vec![0.0; n],
+            q_dot_lagrange: vec![0.0; n],
+            q_ale: vec![0.0; n],
+            q_dot_ale: vec![0.0; n],
+        };
+        let mut out = OutputMessages {
+            joint_state: Shared::new(joint_state),
+            tf: Shared::new(TFMessage { transforms }),
+            modal: Shared::new(modal),
+            n_ale: sim.n_ale_nodes(),
+        };
+        out.update(sim, Time::default());
+        out
+    }
+
+    /// Overwrite every value from the simulation's current state.
+    pub fn update(&mut self, sim: &Simulation, stamp: Time) {
+        let j = sim.joint();
+        let js = self.joint_state.get_mut();
+        js.header.stamp = stamp;
+        js.position[0] = j.position;
+        js.velocity[0] = j.velocity;
+        js.effort[0] = j.effort;
+
+        let n_ale = self.n_ale;
+        let tf = self.tf.get_mut();
+        for (i, t) in tf.transforms.iter_mut().enumerate() {
+            t.header.stamp = stamp;
+            t.transform = if i == 0 {
+                Transform { translation: Vector3::default(), rotation: z_rotation(sim.rotor_angle()) }
+            } else if i <= n_ale {
+                transform(&sim.ale_node_pose(i - 1))
+            } else {
+                transform(&sim.lagrange_node_pose(i - 1 - n_ale))
+            };
+        }
+
+        let m = self.modal.get_mut();
+        m.header.stamp = stamp;
+        m.step = sim.step_count();
+        m.sim_time = sim.time();
+        m.q_lagrange.copy_from_slice(sim.q_lagrange());
+        m.q_dot_lagrange.copy_from_slice(sim.q_dot_lagrange());
+        m.q_ale.copy_from_slice(sim.q_ale());
+        m.q_dot_ale.copy_from_slice(sim.q_dot_ale());
+    }
+}
+
+/// The one `/tf_static` message: world → plate_base, turned by `reference.tilt` about x.
+pub fn static_transforms(names: &FrameNames, tilt: f64, stamp: Time) -> TFMessage {
+    TFMessage {
+        transforms: vec![TransformStamped {
+            header: Header { stamp, frame_id: names.world.clone() },
+            child_frame_id: names.base.clone(),
+            transform: Transform { translation: Vector3::default(), rotation: x_rotation(tilt) },
+        }],
+    }
+}
+
+/// The `/clock` message for the clock's current time.
+pub fn clock_message(clock: &StepClock) -> Clock {
+    Clock { clock: clock.sim_time() }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn frame_names_use_the_prefix() {
+        let n = FrameNames::new("left/", "world", 2, 1);
+        assert_eq!(n.base, "left/plate_base");
+        assert_eq!(n.rotor, "left/plate_rotor");
+        assert_eq!(n.joint, "left/plate_joint");
+        assert_eq!(n.ale, vec!["left/plate_ale_1", "left/plate_ale_2"]);
+        assert_eq!(n.lagrange, vec!["left/plate_lagrange_1"]);
+        assert_eq!(n.world, "world");
+    }
+
+    #[test]
+    fn quaternions_are_unit_and_right_handed() {
+        let q = z_rotation(std::f64::consts::FRAC_PI_2);
+        assert!((q.z - 0.5f64.sqrt()).abs() < 1e-15 && (q.w - 0.5f64.sqrt()).abs() < 1e-15);
+        let q = x_rotation(0.3);
+        assert!((q.x * q.x + q.w * q.w - 1.0).abs() < 1e-15);
+        assert!(q.x > 0.0);
+    }
+
+    #[test]
+    fn shared_serializes_as_its_content() {
+        let a = Shared::new(vec![1u32, 2]);
+        assert_eq!(serde_json::to_string(&a).unwrap(), "[1,2]");
+        let mut b = a.handle();
+        // A second holder forces a copy on write; the first is unchanged.
+        b.get_mut().push(3);
+        assert_eq!(*a.0, vec![1, 2]);
+        drop(a);
+        let mut c = Shared::new(5u8);
+        let p = c.0.as_ref() as *const u8;
+        *c.get_mut() = 6;
+        assert_eq!(c.0.as_ref() as *const u8, p, "sole owner writes in place");
+    }
+}

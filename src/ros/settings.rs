@@ -1,0 +1,253 @@
+//! The node's own parameters (`ros.*`, plus the standard `use_sim_time`),
+//! read and checked from the flat parameter set.
+//!
+//! Until the config validator knows the `ros.*` section, the node removes
+//! these keys before it hands the rest to [`crate::config::Config::from_params`]
+//! ([`split_ros_params`]) and validates them here. Every rule below is
+//! listed in docs/ros.md.
+
+use crate::config::{ParamValue, Params};
+use ros2_client::ServiceMapping;
+use std::fmt;
+
+/// Defaults and rules of the `ros.*` keys, one row each: (key, type, default, rule).
+pub const ROS_KEYS: &[(&str, &str, &str, &str)] = &[
+    ("ros.frame_prefix", "string", "\"\"", "prefix of every frame and joint name; letters, digits, `_`, `/`, `-`, `.`; not starting with `/`"),
+    ("ros.world_frame", "string", "\"world\"", "parent of plate_base in /tf_static (not prefixed); non-empty, same characters"),
+    ("ros.publish_clock", "bool", "false", "publish /clock and stamp outputs with simulated time (also when use_sim_time is true)"),
+    ("ros.wrench_timeout", "double", "0.0", "s of simulated time after which a wrench not renewed drops to zero; 0 = hold forever; finite, >= 0"),
+    ("ros.start_paused", "bool", "false", "start paused (resume with ~/set_paused, advance with ~/step)"),
+    ("ros.diagnostics_period", "double", "1.0", "s of wall time between /diagnostics messages; finite, > 0"),
+    ("ros.reject_log_period", "double", "1.0", "s of wall time between log lines about rejected inputs of one kind; finite, >= 0"),
+    ("ros.service_mapping", "string", "\"enhanced\"", "request/reply mapping of all services: enhanced (rmw_fastrtps, the Jazzy default), cyclone (rmw_cyclonedds_cpp) or basic"),
+];
+
+/// Validated `ros.*` settings.
+#[derive(Debug, Clone, PartialEq)]
+pub struct RosSettings {
+    pub frame_prefix: String,
+    pub world_frame: String,
+    /// `ros.publish_clock || use_sim_time`.
+    pub sim_time: bool,
+    /// s; 0 = never.
+    pub wrench_timeout: f64,
+    pub start_paused: bool,
+    pub diagnostics_period: f64,
+    pub reject_log_period: f64,
+    pub service_mapping: ServiceMapping,
+}
+
+impl Default for RosSettings {
+    fn default() -> Self {
+        RosSettings {
+            frame_prefix: String::new(),
+            world_frame: "world".to_string(),
+            sim_time: false,
+            wrench_timeout: 0.0,
+            start_paused: false,
+            diagnostics_period: 1.0,
+            reject_log_period: 1.0,
+            service_mapping: ServiceMapping::Enhanced,
+        }
+    }
+}
+
+/// A rejected `ros.*` value; names the key and the rule.
+#[derive(Debug, Clone, PartialEq)]
+pub struct SettingsError {
+    pub key: String,
+    pub message: String,
+}
+
+impl fmt::Display for SettingsError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "{}: {}", self.key, self.message)
+    }
+}
+
+impl std::error::Error for SettingsError {}
+
+fn err(key: &str, message: impl Into<String>) -> SettingsError {
+    SettingsError { key: key.to_string(), message: message.into() }
+}
+
+/// Split a parameter set into (everything else, the `ros.*` keys).
+pub fn split_ros_params(params: &Params) -> (Params, Params) {
+    let mut rest = Params::new();
+    let mut ros = Params::new();
+    for (name, value) in params.iter() {
+        let target = if name.starts_with("ros.") { &mut ros } else { &mut rest };
+        // Names come from a valid parameter set, so `set` cannot refuse them.
+        let _ = target.set(name, value.clone());
+    }
+    (rest, ros)
+}
+
+fn frame_chars_ok(s: &str) -> bool {
+    s.chars().all(|c| c.is_ascii_alphanumeric() || matches!(c, '_' | '/' | '-' | '.')) && !s.starts_with('/')
+}
+
+impl RosSettings {
+    /// Read the `ros.*` keys (and `use_sim_time`) of `params`; unknown
+    /// `ros.*` keys are refused with the list of known ones.
+    pub fn from_params(params: &Params) -> Result<RosSettings, SettingsError> {
+        let mut s = RosSettings::default();
+        for (name, _) in params.iter() {
+            if name.starts_with("ros.") && !ROS_KEYS.iter().any(|(k, ..)| *k == name) {
+                let known: Vec<&str> = ROS_KEYS.iter().map(|(k, ..)| *k).collect();
+                return Err(err(name, format!("unknown parameter (the ros.* keys are {})", known.join(", "))));
+            }
+        }
+        let string = |key: &str| -> Result<Option<String>, SettingsError> {
+            match params.get(key) {
+                None => Ok(None),
+                Some(ParamValue::String(v)) => Ok(Some(v.clone())),
+                Some(other) => Err(err(key, format!("expected a string, found {} {other}", other.type_name()))),
+            }
+        };
+        let boolean = |key: &str| -> Result<Option<bool>, SettingsError> {
+            match params.get(key) {
+                None => Ok(None),
+                Some(ParamValue::Bool(v)) => Ok(Some(*v)),
+                Some(other) => Err(err(key, format!("expected true or false, found {} {other}", other.type_name()))),
+            }
+        };
+        let double = |key: &str| -> Result<Option<f64>, SettingsError> {
+            match params.get(key) {
+                None => Ok(None),
+                Some(ParamValue::Double(v)) => Ok(Some(*v)),
+                Some(ParamValue::Integer(v)) => Ok(Some(*v as f64)),
+                Some(other) => Err(err(key, format!("expected a number, found {} {other}", other.type_name()))),
+            }
+        };
+
+        if let Some(p) = string("ros.frame_prefix")? {
+            if !frame_chars_ok(&p) {
+                return Err(err("ros.frame_prefix", format!("`{p}` may hold only letters, digits, `_`, `/`, `-`, `.` and must not start with `/` (tf2 frame ids are relative)")));
+            }
+            s.frame_prefix = p;
+        }
+        if let Some(w) = string("ros.world_frame")? {
+            if w.is_empty() || !frame_chars_ok(&w) {
+                return Err(err("ros.world_frame", format!("`{w}` must be a non-empty frame id of letters, digits, `_`, `/`, `-`, `.`, not starting with `/`")));
+            }
+            s.world_frame = w;
+        }
+        let publish_clock = boolean("ros.publish_clock")?.unwrap_or(false);
+        let use_sim_time = boolean("use_sim_time")?.unwrap_or(false);
+        s.sim_time = publish_clock || use_sim_time;
+        if let Some(t) = double("ros.wrench_timeout")? {
+            if !t.is_finite() || t < 0.0 {
+                return Err(err("ros.wrench_timeout", format!("{t} must be finite and >= 0 (0 = hold wrenches until replaced)")));
+            }
+            s.wrench_timeout = t;
+        }
+        s.start_paused = boolean("ros.start_paused")?.unwrap_or(false);
+        if let Some(p) = double("ros.diagnostics_period")? {
+            if !p.is_finite() || p <= 0.0 {
+                return Err(err("ros.diagnostics_period", format!("{p} must be finite and > 0")));
+            }
+            s.diagnostics_period = p;
+        }
+        if let Some(p) = double("ros.reject_log_period")? {
+            if !p.is_finite() || p < 0.0 {
+                return Err(err("ros.reject_log_period", format!("{p} must be finite and >= 0")));
+            }
+            s.reject_log_period = p;
+        }
+        if let Some(m) = string("ros.service_mapping")? {
+            s.service_mapping = match m.as_str() {
+                "enhanced" => ServiceMapping::Enhanced,
+                "cyclone" => ServiceMapping::Cyclone,
+                "basic" => ServiceMapping::Basic,
+                other => return Err(err("ros.service_mapping", format!("`{other}` is not one of enhanced, cyclone, basic"))),
+            };
+        }
+        Ok(s)
+    }
+
+    /// The effective value of every `ros.*` key, for the parameter services.
+    pub fn effective_params(&self) -> Vec<(&'static str, ParamValue)> {
+        vec![
+            ("ros.frame_prefix", ParamValue::String(self.frame_prefix.clone())),
+            ("ros.world_frame", ParamValue::String(self.world_frame.clone())),
+            ("ros.wrench_timeout", ParamValue::Double(self.wrench_timeout)),
+            ("ros.start_paused", ParamValue::Bool(self.start_paused)),
+            ("ros.diagnostics_period", ParamValue::Double(self.diagnostics_period)),
+            ("ros.reject_log_period", ParamValue::Double(self.reject_log_period)),
+            (
+                "ros.service_mapping",
+                ParamValue::String(
+                    match self.service_mapping {
+                        ServiceMapping::Enhanced => "enhanced",
+                        ServiceMapping::Cyclone => "cyclone",
+                        ServiceMapping::Basic => "basic",
+                    }
+                    .to_string(),
+                ),
+            ),
+        ]
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn params(pairs: &[(&str, &str)]) -> Params {
+        let mut p = Params::new();
+        for (k, v) in pairs {
+            p.set_override(k, v).unwrap();
+        }
+        p
+    }
+
+    #[test]
+    fn defaults() {
+        assert_eq!(RosSettings::from_params(&Params::new()).unwrap(), RosSettings::default());
+    }
+
+    #[test]
+    fn values_are_read_and_checked() {
+        let s = RosSettings::from_params(&params(&[
+            ("ros.frame_prefix", "left_"),
+            ("ros.publish_clock", "true"),
+            ("ros.wrench_timeout", "0.5"),
+            ("ros.start_paused", "true"),
+            ("ros.diagnostics_period", "2"),
+            ("ros.service_mapping", "cyclone"),
+        ]))
+        .unwrap();
+        assert_eq!(s.frame_prefix, "left_");
+        assert!(s.sim_time && s.start_paused);
+        assert_eq!(s.wrench_timeout, 0.5);
+        assert_eq!(s.diagnostics_period, 2.0);
+        assert_eq!(s.service_mapping, ServiceMapping::Cyclone);
+        assert!(RosSettings::from_params(&params(&[("use_sim_time", "true")])).unwrap().sim_time);
+    }
+
+    #[test]
+    fn bad_values_name_the_key() {
+        for (k, v) in [
+            ("ros.frame_prefix", "/abs"),
+            ("ros.frame_prefix", "a b"),
+            ("ros.world_frame", "\"\""),
+            ("ros.publish_clock", "1"),
+            ("ros.wrench_timeout", "-1"),
+            ("ros.diagnostics_period", "0"),
+            ("ros.service_mapping", "zenoh"),
+            ("ros.frame_prefx", "a"),
+        ] {
+            let e = RosSettings::from_params(&params(&[(k, v)])).unwrap_err();
+            assert_eq!(e.key, k, "{e}");
+        }
+    }
+
+    #[test]
+    fn split_keeps_everything() {
+        let p = params(&[("ros.frame_prefix", "a"), ("plate.thickness", "0.01"), ("use_sim_time", "true")]);
+        let (rest, ros) = split_ros_params(&p);
+        assert_eq!(ros.len(), 1);
+        assert_eq!(rest.len(), 2);
+    }
+}

@@ -1,0 +1,520 @@
+//! The fixed-rate loop: one OS thread owns the [`Simulation`], applies the
+//! checked inputs and service commands in arrival order between steps,
+//! steps, and publishes. A dedicated thread (not a tokio timer, whose
+//! resolution is 1 ms) keeps the step period; it sleeps in
+//! `recv_timeout`, so an input or a service call wakes it at once.
+//!
+//! Per step (nothing allocated on our side): drop stale wrenches, step,
+//! advance the clock, overwrite the preallocated messages, publish.
+
+use super::clock::{Pacer, StepClock};
+use super::inputs::{Input, InputStats, RejectReason, Rejection, Source, StaleWrenches};
+use super::logging::Logger;
+use super::messages::{
+    Clock, DiagnosticArray, DiagnosticStatus, Header, JointState, KeyValue, ModalAmplitudes, SetBoolResponse,
+    StepResponse, TFMessage, Time, TriggerResponse,
+};
+use super::outputs::{clock_message, OutputMessages, Shared};
+use super::params_service::RuntimeChange;
+use super::services::Command;
+use crate::dynamics::{InputError, NodeKind, Simulation, Wrench};
+use ros2_client::Publisher;
+use std::collections::VecDeque;
+use std::sync::mpsc::{Receiver, RecvTimeoutError};
+use std::sync::Arc;
+use std::time::{Duration, Instant};
+use tokio::sync::oneshot;
+
+/// The loop's writers.
+pub struct Publishers {
+    pub joint_states: Publisher<Shared<JointState>>,
+    pub tf: Publisher<Shared<TFMessage>>,
+    pub modal: Publisher<Shared<ModalAmplitudes>>,
+    /// Only with simulated time.
+    pub clock: Option<Publisher<Clock>>,
+    pub diagnostics: Publisher<DiagnosticArray>,
+}
+
+/// Settings of the loop (from the config and `ros.*`).
+#[derive(Debug, Clone)]
+pub struct LoopSettings {
+    pub publish_divisor: u32,
+    pub realtime_factor: f64,
+    pub start_paused: bool,
+    pub sim_time: bool,
+    pub wrench_timeout: f64,
+    pub diagnostics_period: Duration,
+    /// `/ns/node`, for diagnostics names.
+    pub node_name: String,
+}
+
+/// Step timing statistics between two diagnostics messages.
+struct Timing {
+    /// |actual period − nominal| of consecutive paced steps, µs.
+    period_dev_us: Vec<f32>,
+    /// Start of a paced step after its deadline, µs.
+    late_us: Vec<f32>,
+    /// Step + publish time, µs.
+    work_us_sum: f64,
+    work_us_max: f64,
+    steps: u64,
+    last_start: Option<Instant>,
+    since: Instant,
+}
+
+const TIMING_CAPACITY: usize = 1 << 15;
+
+impl Timing {
+    fn new(now: Instant) -> Self {
+        Timing {
+            period_dev_us: Vec::with_capacity(TIMING_CAPACITY),
+            late_us: Vec::with_capacity(TIMING_CAPACITY),
+            work_us_sum: 0.0,
+            work_us_max: 0.0,
+            steps: 0,
+            last_start: None,
+            since: now,
+        }
+    }
+
+    fn record(&mut self, start: Instant, deadline: Option<Instant>, nominal: Option<Duration>, work: Duration) {
+        let us = work.as_secs_f64() * 1e6;
+        self.work_us_sum += us;
+        self.work_us_max = self.work_us_max.max(us);
+        self.steps += 1;
+        if let (Some(deadline), Some(nominal)) = (deadline, nominal) {
+            if self.late_us.len() < TIMING_CAPACITY {
+                self.late_us.push(start.saturating_duration_since(deadline).as_secs_f32() * 1e6);
+            }
+            if let Some(last) = self.last_start {
+                if self.period_dev_us.len() < TIMING_CAPACITY {
+                    let period = start.duration_since(last).as_secs_f64();
+                    self.period_dev_us.push(((period - nominal.as_secs_f64()).abs() * 1e6) as f32);
+                }
+            }
+            self.last_start = Some(start);
+        } else {
+            self.last_start = None;
+        }
+    }
+
+    /// Not paced right now (paused or stepping on request): the next paced
+    /// step starts a new period measurement.
+    fn interrupt(&mut self) {
+        self.last_start = None;
+    }
+
+    fn percentile(v: &mut [f32], p: f64) -> f64 {
+        if v.is_empty() {
+            return 0.0;
+        }
+        v.sort_unstable_by(|a, b| a.total_cmp(b));
+        let i = ((v.len() - 1) as f64 * p).round() as usize;
+        v[i] as f64
+    }
+
+    /// (key, value) pairs and reset for the next period.
+    fn report(&mut self, now: Instant) -> Vec<(String, String)> {
+        let wall = now.duration_since(self.since).as_secs_f64();
+        let out = vec![
+            ("steps_in_period".into(), self.steps.to_string()),
+            ("achieved_rate_hz".into(), format!("{:.1}", if wall > 0.0 { self.steps as f64 / wall } else { 0.0 })),
+            (
+                "step_time_mean_us".into(),
+                format!("{:.1}", if self.steps > 0 { self.work_us_sum / self.steps as f64 } else { 0.0 }),
+            ),
+            ("step_time_max_us".into(), format!("{:.1}", self.work_us_max)),
+            ("period_jitter_p50_us".into(), format!("{:.1}", Self::percentile(&mut self.period_dev_us, 0.5))),
+            ("period_jitter_p99_us".into(), format!("{:.1}", Self::percentile(&mut self.period_dev_us, 0.99))),
+            ("lateness_p99_us".into(), format!("{:.1}", Self::percentile(&mut self.late_us, 0.99))),
+        ];
+        self.period_dev_us.clear();
+        self.late_us.clear();
+        self.work_us_sum = 0.0;
+        self.work_us_max = 0.0;
+        self.steps = 0;
+        self.since = now;
+        out
+    }
+}
+
+/// The loop's state.
+pub struct SimLoop {
+    sim: Simulation,
+    clock: StepClock,
+    pacer: Pacer,
+    outputs: OutputMessages,
+    pubs: Publishers,
+    rx: Receiver<Command>,
+    stats: Arc<InputStats>,
+    stale: StaleWrenches,
+    logger: Arc<Logger>,
+    settings: LoopSettings,
+    paused: bool,
+    step_requests: VecDeque<(u32, oneshot::Sender<StepResponse>)>,
+    diverged: Option<String>,
+    publish_failures: u64,
+    /// Header stamp of the newest input applied (ns; 0 = none).
+    input_stamp: i64,
+    timing: Timing,
+    next_diagnostics: Instant,
+    rejected_at_last_report: u64,
+    overruns_at_last_report: u64,
+    stop: bool,
+}
+
+impl SimLoop {
+    pub fn new(
+        sim: Simulation,
+        outputs: OutputMessages,
+        pubs: Publishers,
+        rx: Receiver<Command>,
+        stats: Arc<InputStats>,
+        logger: Arc<Logger>,
+        settings: LoopSettings,
+    ) -> Self {
+        let now = Instant::now();
+        let dt = sim.dt();
+        SimLoop {
+            clock: StepClock::new(settings.sim_time, dt),
+            pacer: Pacer::new(dt, settings.realtime_factor, now),
+            stale: StaleWrenches::new(settings.wrench_timeout, sim.n_ale_nodes(), sim.n_lagrange_nodes()),
+            paused: settings.start_paused,
+            sim,
+            outputs,
+            pubs,
+            rx,
+            stats,
+            logger,
+            step_requests: VecDeque::new(),
+            diverged: None,
+            publish_failures: 0,
+            input_stamp: 0,
+            timing: Timing::new(now),
+            next_diagnostics: now,
+            rejected_at_last_report: 0,
+            overruns_at_last_report: 0,
+            stop: false,
+            settings,
+        }
+    }
+
+    /// Run until a [`Command::Stop`] arrives or every sender is gone.
+    pub fn run(mut self) {
+        // The initial state (t = 0), so subscribers see the plate at once.
+        self.publish_state();
+        self.publish_clock();
+        self.logger.info(&format!(
+            "simulating at {} Hz ({}), {}",
+            1.0 / self.sim.dt(),
+            match self.pacer.period() {
+                Some(_) => format!("realtime_factor {}", self.settings.realtime_factor),
+                None => "as fast as possible".to_string(),
+            },
+            if self.paused { "paused" } else { "running" }
+        ));
+        while !self.stop {
+            let now = Instant::now();
+            if now >= self.next_diagnostics {
+                self.publish_diagnostics(now);
+            }
+            if !self.step_requests.is_empty() {
+                // Stepping on request: as fast as possible, commands in between.
+                self.drain_commands();
+                if self.stop || self.paused_steps_cancelled() {
+                    continue;
+                }
+                self.timing.interrupt();
+                self.step_once(None);
+                self.finish_step_request();
+            } else if self.paused || self.diverged.is_some() {
+                self.timing.interrupt();
+                let wait = self.next_diagnostics.saturating_duration_since(Instant::now());
+                self.wait_command(wait);
+                if !self.paused && self.diverged.is_none() {
+                    self.pacer.restart(Instant::now());
+                }
+            } else {
+                let deadline = self.pacer.deadline();
+                let now = Instant::now();
+                if now < deadline {
+                    let until = deadline.min(self.next_diagnostics);
+                    self.wait_command(until - now);
+                    continue;
+                }
+                // Apply everything that arrived before the deadline.
+                self.drain_commands();
+                if self.stop || self.paused {
+                    continue;
+                }
+                let start = Instant::now();
+                self.step_once(Some(deadline));
+                self.pacer.stepped(start);
+            }
+        }
+        self.logger.info("simulation loop stopped");
+    }
+
+    fn wait_command(&mut self, timeout: Duration) {
+        match self.rx.recv_timeout(timeout) {
+            Ok(cmd) => self.handle(cmd),
+            Err(RecvTimeoutError::Timeout) => {}
+            Err(RecvTimeoutError::Disconnected) => self.stop = true,
+        }
+    }
+
+    fn drain_commands(&mut self) {
+        while let Ok(cmd) = self.rx.try_recv() {
+            self.handle(cmd);
+            if self.stop {
+                return;
+            }
+        }
+    }
+
+    /// A resume while steps were requested ends those requests.
+    fn paused_steps_cancelled(&mut self) -> bool {
+        if self.paused && self.diverged.is_none() {
+            return false;
+        }
+        let reason = if self.diverged.is_some() { "the simulation diverged" } else { "the simulation was resumed" };
+        while let Some((left, reply)) = self.step_requests.pop_front() {
+            let _ = reply.send(self.step_response(false, format!("{reason}; {left} requested steps were not taken")));
+        }
+        true
+    }
+
+    fn finish_step_request(&mut self) {
+        if let Some(front) = self.step_requests.front_mut() {
+            front.0 = front.0.saturating_sub(1);
+            if front.0 == 0 {
+                let (_, reply) = self.step_requests.pop_front().expect("front exists");
+                let resp = self.step_response(self.diverged.is_none(), String::new());
+                let _ = reply.send(resp);
+            }
+        }
+    }
+
+    fn step_response(&self, success: bool, message: String) -> StepResponse {
+        let message = if message.is_empty() {
+            format!("at step {} (t = {} s)", self.sim.step_count(), self.sim.time())
+        } else {
+            message
+        };
+        StepResponse { success, message, step: self.sim.step_count(), sim_time: self.sim.time() }
+    }
+
+    fn handle(&mut self, cmd: Command) {
+        match cmd {
+            Command::Input(input, source, stamp) => self.apply(input, source, stamp),
+            Command::Reset(reply) => {
+                self.sim.reset();
+                self.stale.clear();
+                self.diverged = None;
+                self.pacer.restart(Instant::now());
+                self.logger.info("reset to the initial state");
+                let _ = reply.send(TriggerResponse { success: true, message: "reset to t = 0 (the ROS clock keeps counting)".into() });
+            }
+            Command::SetPaused(pause, reply) => {
+                let was = self.paused;
+                self.paused = pause;
+                if !pause && was {
+                    self.pacer.restart(Instant::now());
+                }
+                let message = match (was, pause) {
+                    (false, true) => "paused".to_string(),
+                    (true, false) => "resumed".to_string(),
+                    (_, true) => "already paused".to_string(),
+                    (_, false) => "already running".to_string(),
+                };
+                let _ = reply.send(SetBoolResponse { success: true, message });
+            }
+            Command::Step(n, reply) => {
+                if !self.paused {
+                    let _ = reply.send(self.step_response(
+                        false,
+                        "the simulation is running; pause it first (~/set_paused with data: true)".into(),
+                    ));
+                } else if let Some(why) = &self.diverged {
+                    let msg = format!("the simulation diverged ({why}); call ~/reset first");
+                    let _ = reply.send(self.step_response(false, msg));
+                } else if n == 0 {
+                    let _ = reply.send(self.step_response(true, String::new()));
+                } else {
+                    self.step_requests.push_back((n, reply));
+                }
+            }
+            Command::Runtime(RuntimeChange::RealtimeFactor(f)) => {
+                self.settings.realtime_factor = f;
+                self.pacer.set_realtime_factor(self.sim.dt(), f, Instant::now());
+                self.logger.info(&format!("simulation.realtime_factor set to {f}"));
+            }
+            Command::Runtime(RuntimeChange::WrenchTimeout(t)) => {
+                self.stale.set_timeout(t);
+                self.logger.info(&format!("ros.wrench_timeout set to {t} s"));
+            }
+            Command::Stop => self.stop = true,
+        }
+    }
+
+    fn set_wrench(&mut self, kind: NodeKind, node: usize, w: Wrench) -> Result<(), InputError> {
+        match kind {
+            NodeKind::Ale => self.sim.set_ale_wrench(node, w),
+            NodeKind::Lagrange => self.sim.set_lagrange_wrench(node, w),
+        }?;
+        self.stale.touched(kind, node, self.sim.time());
+        Ok(())
+    }
+
+    fn apply(&mut self, input: Input, source: Source, stamp: i64) {
+        let result = match input {
+            Input::Speed(omega) => self.sim.set_speed_command(omega),
+            Input::Wrench { kind, node, wrench } => self.set_wrench(kind, node, wrench),
+            Input::Batch(items) => {
+                // Checked as a whole before; the simulation's own checks are the same.
+                let mut r = Ok(());
+                for (kind, node, wrench) in items {
+                    if let Err(e) = self.set_wrench(kind, node, wrench) {
+                        r = Err(e);
+                    }
+                }
+                r
+            }
+        };
+        match result {
+            Ok(()) => {
+                self.stats.accept(source);
+                if stamp != 0 {
+                    self.input_stamp = stamp;
+                }
+            }
+            Err(e) => {
+                let reason = match e {
+                    InputError::NonFinite { .. } => RejectReason::NonFinite,
+                    InputError::Absurd { .. } => RejectReason::Absurd,
+                    InputError::NoSuchNode { .. } => RejectReason::NoSuchNode,
+                };
+                self.stats.reject(reason);
+                self.logger.rejection("input", &Rejection { reason, detail: e.to_string() });
+            }
+        }
+    }
+
+    fn step_once(&mut self, deadline: Option<Instant>) {
+        let start = Instant::now();
+        let t = self.sim.time();
+        {
+            let (sim, stats) = (&mut self.sim, &self.stats);
+            self.stale.expire(t, |kind, node| {
+                let _ = match kind {
+                    NodeKind::Ale => sim.set_ale_wrench(node, Wrench::default()),
+                    NodeKind::Lagrange => sim.set_lagrange_wrench(node, Wrench::default()),
+                };
+                stats.expire();
+            });
+        }
+        match self.sim.step() {
+            Ok(()) => {
+                self.clock.advance();
+                self.publish_clock();
+                if self.clock.total_steps() % self.settings.publish_divisor.max(1) as u64 == 0 {
+                    self.publish_state();
+                }
+            }
+            Err(e) => {
+                let msg = e.to_string();
+                self.logger.error(&format!("{msg}; the simulation is paused with its last good state; call ~/reset to start again"));
+                self.diverged = Some(msg);
+            }
+        }
+        self.timing.record(start, deadline, deadline.and(self.pacer.period()), start.elapsed());
+    }
+
+    fn publish_clock(&mut self) {
+        if let Some(p) = &self.pubs.clock {
+            if p.publish(clock_message(&self.clock)).is_err() {
+                self.publish_failures += 1;
+            }
+        }
+    }
+
+    fn publish_state(&mut self) {
+        let stamp = self.clock.stamp();
+        self.outputs.update(&self.sim, stamp);
+        self.outputs.modal.get_mut().input_stamp = Time::from_nanos(self.input_stamp);
+        let failures = [
+            self.pubs.joint_states.publish(self.outputs.joint_state.handle()).is_err(),
+            self.pubs.tf.publish(self.outputs.tf.handle()).is_err(),
+            self.pubs.modal.publish(self.outputs.modal.handle()).is_err(),
+        ];
+        self.publish_failures += failures.iter().filter(|f| **f).count() as u64;
+    }
+
+    fn publish_diagnostics(&mut self, now: Instant) {
+        self.next_diagnostics = now + self.settings.diagnostics_period;
+        let name = &self.settings.node_name;
+        let kv = |k: &str, v: String| KeyValue { key: k.to_string(), value: v };
+
+        let overruns = self.pacer.overruns();
+        let new_overruns = overruns - self.overruns_at_last_report;
+        self.overruns_at_last_report = overruns;
+        let (level, message) = match (&self.diverged, self.paused) {
+            (Some(why), _) => (DiagnosticStatus::ERROR, format!("diverged: {why}")),
+            (None, true) => (DiagnosticStatus::OK, "paused".to_string()),
+            (None, false) if new_overruns > 0 => {
+                (DiagnosticStatus::WARN, format!("{new_overruns} overruns: the loop fell behind real time"))
+            }
+            (None, false) => (DiagnosticStatus::OK, "running".to_string()),
+        };
+        let mut values = vec![
+            kv("state", if self.diverged.is_some() { "diverged" } else if self.paused { "paused" } else { "running" }.into()),
+            kv("step", self.sim.step_count().to_string()),
+            kv("sim_time", format!("{}", self.sim.time())),
+            kv("ros_time", format!("{}", self.clock.sim_time().to_secs())),
+            kv("rate_hz", format!("{}", 1.0 / self.sim.dt())),
+            kv("realtime_factor", format!("{}", self.settings.realtime_factor)),
+            kv("overruns", overruns.to_string()),
+            kv("publish_failures", self.publish_failures.to_string()),
+        ];
+        values.extend(self.timing.report(now).into_iter().map(|(k, v)| KeyValue { key: k, value: v }));
+        let loop_status = DiagnosticStatus {
+            level,
+            name: format!("{name}: simulation"),
+            message,
+            hardware_id: name.clone(),
+            values,
+        };
+
+        let s = &self.stats;
+        let rejected = s.rejected_total();
+        let new_rejected = rejected - self.rejected_at_last_report;
+        self.rejected_at_last_report = rejected;
+        let mut values = vec![
+            kv("accepted_speed_command", s.accepted(Source::SpeedCommand).to_string()),
+            kv("accepted_node_wrench", s.accepted(Source::NodeWrench).to_string()),
+            kv("accepted_wrench_array", s.accepted(Source::WrenchArray).to_string()),
+            kv("accepted_total", s.accepted_total().to_string()),
+            kv("rejected_total", rejected.to_string()),
+        ];
+        values.extend(RejectReason::ALL.iter().map(|r| kv(&format!("rejected_{}", r.name()), s.rejected(*r).to_string())));
+        values.push(kv("expired_wrenches", s.expired().to_string()));
+        let input_status = DiagnosticStatus {
+            level: if new_rejected > 0 { DiagnosticStatus::WARN } else { DiagnosticStatus::OK },
+            name: format!("{name}: inputs"),
+            message: if new_rejected > 0 {
+                format!("{new_rejected} inputs rejected since the last report")
+            } else {
+                "all inputs accepted".to_string()
+            },
+            hardware_id: name.clone(),
+            values,
+        };
+        let msg = DiagnosticArray {
+            header: Header { stamp: self.clock.stamp(), frame_id: String::new() },
+            status: vec![loop_status, input_status],
+        };
+        if self.pubs.diagnostics.publish(msg).is_err() {
+            self.publish_failures += 1;
+        }
+    }
+}

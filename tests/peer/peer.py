@@ -1,0 +1,470 @@
+"""An independent ROS 2 peer for the integration tests: Eclipse Cyclone DDS
+(Python binding) speaking the node's topics and services under their ROS 2
+wire names, with the QoS an rclpy user would use.
+
+    python peer.py SCENARIO --domain D [--node /annular_plate] [--args JSON]
+
+Each scenario talks to a running node and prints one JSON object (its
+observations) as the last line of stdout; the Rust tests
+(tests/ros_node_on_the_wire.rs) make the assertions. Every wait is bounded.
+Discovery is loopback-only (CYCLONEDDS_URI, see harness.rs).
+"""
+
+import argparse
+import dataclasses
+import json
+import math
+import os
+import sys
+import time
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+
+from cyclonedds.builtin import BuiltinDataReader, BuiltinTopicDcpsPublication, BuiltinTopicDcpsSubscription  # noqa: E402
+from cyclonedds.core import Policy, Qos  # noqa: E402
+from cyclonedds.domain import DomainParticipant  # noqa: E402
+from cyclonedds.pub import DataWriter  # noqa: E402
+from cyclonedds.sub import DataReader  # noqa: E402
+from cyclonedds.topic import Topic  # noqa: E402
+from cyclonedds.util import duration  # noqa: E402
+
+import ros_types as T  # noqa: E402
+
+
+def qos(reliable=True, depth=10, transient_local=False):
+    policies = [
+        Policy.Reliability.Reliable(duration(milliseconds=100)) if reliable else Policy.Reliability.BestEffort,
+        Policy.History.KeepLast(depth),
+        Policy.Durability.TransientLocal if transient_local else Policy.Durability.Volatile,
+    ]
+    return Qos(*policies)
+
+
+def todict(x):
+    return dataclasses.asdict(x)
+
+
+class Timeout(Exception):
+    pass
+
+
+class Peer:
+    """One participant; readers and writers by ROS name (`/a/b`)."""
+
+    def __init__(self, domain, node="/annular_plate"):
+        self.dp = DomainParticipant(domain)
+        self.node = node.rstrip("/")
+        self.topics = {}
+        self.services = {}
+
+    def topic(self, dds_name, typ):
+        key = (dds_name, typ.__name__)
+        if key not in self.topics:
+            self.topics[key] = Topic(self.dp, dds_name, typ)
+        return self.topics[key]
+
+    def reader(self, ros_name, typ, **q):
+        return DataReader(self.dp, self.topic("rt" + ros_name, typ), qos=qos(**q))
+
+    def writer(self, ros_name, typ, **q):
+        return DataWriter(self.dp, self.topic("rt" + ros_name, typ), qos=qos(**q))
+
+    def private(self, name):
+        return f"{self.node}/{name}"
+
+    @staticmethod
+    def wait_matched(entity, timeout=15.0):
+        deadline = time.time() + timeout
+        get = entity.get_matched_subscriptions if isinstance(entity, DataWriter) else entity.get_matched_publications
+        while time.time() < deadline:
+            if len(get()) > 0:
+                return
+            time.sleep(0.01)
+        raise Timeout(f"no match for {entity.topic.name} within {timeout} s")
+
+    @staticmethod
+    def take(reader, n=10000):
+        return list(reader.take(n))
+
+    @staticmethod
+    def wait_for(reader, predicate=lambda s: True, timeout=15.0, keep=None):
+        """Take samples until one satisfies `predicate`; returns it. `keep`
+        (a list) collects every sample seen."""
+        deadline = time.time() + timeout
+        while time.time() < deadline:
+            for s in reader.take(1000):
+                if keep is not None:
+                    keep.append(s)
+                if predicate(s):
+                    return s
+            time.sleep(0.002)
+        raise Timeout(f"no matching sample on {reader.topic.name} within {timeout} s")
+
+    # ---- services (default "enhanced" mapping: bare payloads) -------------------
+
+    def call(self, name, req_type, resp_type, request, timeout=15.0):
+        fq = self.private(name) if not name.startswith("/") else name
+        if fq not in self.services:
+            w = DataWriter(self.dp, self.topic("rq" + fq + "Request", req_type), qos=qos(depth=10))
+            r = DataReader(self.dp, self.topic("rr" + fq + "Reply", resp_type), qos=qos(depth=10))
+            self.wait_matched(w, timeout)
+            self.wait_matched(r, timeout)
+            # Matching is seen from our side first; give the node's side a moment.
+            time.sleep(0.2)
+            self.services[fq] = (w, r)
+        w, r = self.services[fq]
+        r.take(100)  # stale replies
+        w.write(request)
+        return self.wait_for(r, timeout=timeout)
+
+    def set_paused(self, paused):
+        return self.call("set_paused", T.SetBoolRequest, T.SetBoolResponse, T.SetBoolRequest(data=paused))
+
+    def step(self, n):
+        return self.call("step", T.StepRequest, T.StepResponse, T.StepRequest(steps=n), timeout=60.0)
+
+    def reset(self):
+        return self.call("reset", T.TriggerRequest, T.TriggerResponse, T.TriggerRequest())
+
+    # ---- diagnostics ---------------------------------------------------------
+
+    def diagnostics_reader(self):
+        if not hasattr(self, "_diag"):
+            self._diag = self.reader("/diagnostics", T.DiagnosticArray, depth=100)
+        return self._diag
+
+    @staticmethod
+    def diag_values(msg):
+        out = {}
+        for st in msg.status:
+            for kv in st.values:
+                out[kv.key] = kv.value
+        return out
+
+    def wait_diag(self, predicate, timeout=15.0):
+        """Wait for a /diagnostics message whose values satisfy `predicate`."""
+        r = self.diagnostics_reader()
+        msg = self.wait_for(r, lambda m: predicate(self.diag_values(m)), timeout=timeout)
+        return self.diag_values(msg), msg
+
+    # ---- discovery -------------------------------------------------------------
+
+    def endpoints(self, seconds=1.0):
+        """(kind, topic, type) of every endpoint discovered (the stand-in for `ros2 topic list -v`)."""
+        pubs = BuiltinDataReader(self.dp, BuiltinTopicDcpsPublication)
+        subs = BuiltinDataReader(self.dp, BuiltinTopicDcpsSubscription)
+        seen = set()
+        deadline = time.time() + seconds
+        while time.time() < deadline:
+            for kind, r in (("pub", pubs), ("sub", subs)):
+                for s in r.take(1000):
+                    seen.add((kind, s.topic_name, s.type_name))
+            time.sleep(0.05)
+        return sorted(seen)
+
+
+def first_joint_state(p, timeout=15.0):
+    r = p.reader("/joint_states", T.JointState, depth=100)
+    return todict(p.wait_for(r, timeout=timeout))
+
+
+# ---- scenarios -----------------------------------------------------------------------
+
+
+def scenario_joint_states(p, a):
+    """First joint states; then (paused) a speed command and N steps."""
+    js = p.reader("/joint_states", T.JointState, depth=5000)
+    first = p.wait_for(js)
+    p.set_paused(True)
+    cmd = p.writer(p.private("speed_command"), T.Float64)
+    p.wait_matched(cmd)
+    cmd.write(T.Float64(data=a["speed"]))
+    p.wait_diag(lambda v: int(v.get("accepted_speed_command", 0)) >= 1)
+    before = p.step(0)
+    p.take(js)
+    resp = p.step(a["steps"])
+    target = resp.step
+    modal = p.reader(p.private("modal_amplitudes"), T.ModalAmplitudes, depth=5000)
+    seen = []
+    last = p.wait_for(js, lambda s: len(seen) >= a["steps"], keep=seen)
+    return {"first": todict(first), "before": todict(before), "step": todict(resp), "last": todict(last),
+            "received_after_step": len(seen), "target_step": target}
+
+
+def scenario_ale_wrench(p, a):
+    """Paused: a WrenchStamped on ~/ale_<j>/wrench, N steps; the state at step N."""
+    tf = p.reader("/tf", T.TFMessage, depth=10000)
+    modal = p.reader(p.private("modal_amplitudes"), T.ModalAmplitudes, depth=10000)
+    p.wait_matched(tf)
+    p.wait_matched(modal)
+    p.set_paused(True)
+    start = p.step(0)
+    # The state before the load: ask for it by stepping 0 and reading the latest published.
+    w = p.writer(p.private(f"ale_{a['node']}/wrench"), T.WrenchStamped)
+    p.wait_matched(w)
+    f = a["wrench"]
+    msg = T.WrenchStamped(
+        header=T.Header(stamp=T.Time(sec=7, nanosec=123), frame_id=a.get("frame_id", "")),
+        wrench=T.Wrench(force=T.Vector3(*f[:3]), torque=T.Vector3(*f[3:])),
+    )
+    w.write(msg)
+    p.wait_diag(lambda v: int(v.get("accepted_node_wrench", 0)) >= 1)
+    p.take(tf)
+    p.take(modal)
+    resp = p.step(a["steps"])
+    n_total = start.step + a["steps"]
+    m = p.wait_for(modal, lambda s: s.step == resp.step)
+    # /tf of the same step: sim-time stamps are total steps x dt.
+    stamp_ns = round(n_total * a["dt"] * 1e9)
+    t = p.wait_for(tf, lambda s: s.transforms and s.transforms[0].header.stamp.to_nanos() == stamp_ns)
+    return {"step": todict(resp), "modal": todict(m), "tf": todict(t)}
+
+
+def scenario_tf(p, a):
+    """One /tf message and the joint state of the same stamp (sim time, paused)."""
+    tf = p.reader("/tf", T.TFMessage, depth=1000)
+    js = p.reader("/joint_states", T.JointState, depth=1000)
+    p.wait_matched(tf)
+    p.wait_matched(js)
+    p.set_paused(True)
+    resp = p.step(a["steps"])
+    stamp_ns = round(resp.step * a["dt"] * 1e9)
+    t = p.wait_for(tf, lambda s: s.transforms[0].header.stamp.to_nanos() == stamp_ns)
+    j = p.wait_for(js, lambda s: s.header.stamp.to_nanos() == stamp_ns)
+    return {"step": todict(resp), "tf": todict(t), "joint_state": todict(j)}
+
+
+def scenario_tf_static(p, a):
+    """A late joiner's transient-local reader gets the one /tf_static message."""
+    r = p.reader("/tf_static", T.TFMessage, depth=1, transient_local=True)
+    msg = p.wait_for(r, timeout=15.0)
+    time.sleep(0.3)
+    more = p.take(r)
+    return {"tf_static": todict(msg), "more": len(more)}
+
+
+def scenario_clock(p, a):
+    """/clock samples across a reset; the types seen on rt/clock."""
+    r = p.reader("/clock", T.Clock, depth=100000)
+    p.wait_matched(r)
+    stamps = []
+    deadline = time.time() + a["seconds"]
+    reset_done = None
+    while time.time() < deadline:
+        for s in r.take(10000):
+            stamps.append(s.clock.to_nanos())
+        if reset_done is None and time.time() > deadline - a["seconds"] / 2:
+            reset_done = todict(p.reset())
+        time.sleep(0.01)
+    endpoints = [e for e in p.endpoints(1.0) if e[1] == "rt/clock"]
+    return {"stamps": stamps, "reset": reset_done, "endpoints": endpoints}
+
+
+def scenario_services(p, a):
+    """Pause, step N, step while running, resume, reset."""
+    out = {}
+    modal = p.reader(p.private("modal_amplitudes"), T.ModalAmplitudes, depth=10000)
+    p.wait_matched(modal)
+    out["initial"] = todict(p.step(0))  # started paused: step 0 answers with the state
+    out["step5"] = todict(p.step(5))
+    out["step0"] = todict(p.step(0))
+    seen = []
+    p.wait_for(modal, lambda s: s.step == 5, keep=seen)
+    out["published_steps"] = [s.step for s in seen]
+    out["resume"] = todict(p.set_paused(False))
+    time.sleep(0.3)
+    out["step_while_running"] = todict(p.step(3))
+    out["pause"] = todict(p.set_paused(True))
+    paused_at = p.step(0).step
+    time.sleep(0.3)
+    out["paused_at"] = paused_at
+    out["still_paused_at"] = p.step(0).step
+    out["reset"] = todict(p.reset())
+    out["after_reset"] = todict(p.step(0))
+    out["after_reset_step3"] = todict(p.step(3))
+    return out
+
+
+def wrench(fx=0.0, fy=0.0, fz=0.0, mx=0.0, my=0.0, mz=0.0):
+    return T.Wrench(force=T.Vector3(fx, fy, fz), torque=T.Vector3(mx, my, mz))
+
+
+def scenario_bad_inputs(p, a):
+    """Every kind of bad input; the counters; the node keeps publishing; the state is untouched."""
+    js = p.reader("/joint_states", T.JointState, depth=10000)
+    rosout = p.reader("/rosout", T.Log, depth=1000, transient_local=True)
+    p.wait_for(js)
+    p.set_paused(True)
+    nan, inf = float("nan"), float("inf")
+    w1 = p.writer(p.private("ale_1/wrench"), T.WrenchStamped)
+    bad_type = p.writer(p.private("ale_2/wrench"), T.TruncatedWrenchStamped)
+    batch = p.writer(p.private("wrenches"), T.NodeWrenchArray)
+    speed = p.writer(p.private("speed_command"), T.Float64)
+    for w in (w1, bad_type, batch, speed):
+        p.wait_matched(w)
+    sent = {}
+
+    def ws(frame="", **kw):
+        return T.WrenchStamped(header=T.Header(frame_id=frame), wrench=wrench(**kw))
+
+    def nw(kind, index, **kw):
+        return T.NodeWrench(kind=kind, index=index, wrench=wrench(**kw))
+
+    w1.write(ws(fz=nan)); sent["non_finite"] = 1
+    w1.write(ws(mx=-inf)); sent["non_finite"] += 1
+    w1.write(ws(fz=1e12)); sent["absurd"] = 1
+    w1.write(ws(frame="map", fz=-10.0)); sent["unknown_frame"] = 1
+    w1.write(ws(frame="plate_ale_2", fz=-10.0)); sent["unknown_frame"] += 1
+    batch.write(T.NodeWrenchArray(wrenches=[nw(T.NODE_WRENCH_ALE, 1, fz=-10.0), nw(T.NODE_WRENCH_ALE, 99, fz=-10.0)])); sent["no_such_node"] = 1
+    batch.write(T.NodeWrenchArray(wrenches=[nw(T.NODE_WRENCH_LAGRANGE, 0, fz=-1.0)])); sent["no_such_node"] += 1
+    batch.write(T.NodeWrenchArray(wrenches=[nw(7, 1, fz=-10.0)])); sent["malformed_batch"] = 1
+    batch.write(T.NodeWrenchArray(wrenches=[nw(T.NODE_WRENCH_ALE, 2, fz=-1.0), nw(T.NODE_WRENCH_ALE, 2, fz=-2.0)])); sent["malformed_batch"] += 1
+    batch.write(T.NodeWrenchArray(wrenches=[nw(T.NODE_WRENCH_ALE, 1, fz=-1.0), nw(T.NODE_WRENCH_ALE, 3, fz=nan)])); sent["non_finite"] += 1
+    speed.write(T.Float64(data=nan)); sent["non_finite"] += 1
+    speed.write(T.Float64(data=1e9)); sent["absurd"] += 1
+    bad_type.write(T.TruncatedWrenchStamped(header=T.Header(frame_id="plate_ale_2"))); sent["undecodable"] = 1
+    total = sum(sent.values())
+    values, diag = p.wait_diag(lambda v: int(v.get("rejected_total", 0)) >= total, timeout=20.0)
+    inputs_status = [s for s in diag.status if s.name.endswith("inputs")][0]
+    # Still publishing: step and watch joint states arrive.
+    p.take(js)
+    resp = p.step(10)
+    seen = []
+    p.wait_for(js, lambda s: len(seen) >= 10, keep=seen)
+    modal = p.reader(p.private("modal_amplitudes"), T.ModalAmplitudes, depth=10)
+    p.step(1)
+    m = p.wait_for(modal)
+    logs = [l.msg for l in p.take(rosout) if "rejected" in l.msg]
+    return {"sent": sent, "diag": values, "inputs_level": inputs_status.level, "inputs_message": inputs_status.message,
+            "step": todict(resp), "joint_states_after": len(seen), "last_joint_state": todict(seen[-1]),
+            "modal": todict(m), "rosout_rejections": logs}
+
+
+def scenario_first_message(p, a):
+    """Wait for the first joint state (the node is up); print it."""
+    return {"joint_state": first_joint_state(p)}
+
+
+def param_value(v):
+    return {"type": v.type, "bool": v.bool_value, "integer": v.integer_value, "double": v.double_value,
+            "string": v.string_value, "double_array": list(v.double_array_value), "integer_array": list(v.integer_array_value)}
+
+
+def scenario_params(p, a):
+    names = a["names"]
+    lst = p.call("list_parameters", T.ListParametersRequest, T.ListParametersResponse, T.ListParametersRequest())
+    get = p.call("get_parameters", T.GetParametersRequest, T.GetParametersResponse, T.GetParametersRequest(names=names))
+    types = p.call("get_parameter_types", T.GetParameterTypesRequest, T.GetParameterTypesResponse,
+                   T.GetParameterTypesRequest(names=names))
+    desc = p.call("describe_parameters", T.DescribeParametersRequest, T.DescribeParametersResponse,
+                  T.DescribeParametersRequest(names=names))
+
+    def dparam(name, x):
+        return T.Parameter(name=name, value=T.ParameterValue(type=T.PARAMETER_DOUBLE, double_value=x))
+
+    setr = p.call("set_parameters", T.SetParametersRequest, T.SetParametersResponse,
+                  T.SetParametersRequest(parameters=[dparam("plate.thickness", 0.02), dparam("simulation.realtime_factor", 2.0)]))
+    after = p.call("get_parameters", T.GetParametersRequest, T.GetParametersResponse,
+                   T.GetParametersRequest(names=["plate.thickness", "simulation.realtime_factor"]))
+    values, _ = p.wait_diag(lambda v: v.get("realtime_factor") == "2")
+    return {"list": list(lst.result.names), "prefixes": list(lst.result.prefixes),
+            "get": {n: param_value(v) for n, v in zip(names, get.values)},
+            "types": dict(zip(names, list(types.types))),
+            "describe": {d.name: {"read_only": d.read_only, "description": d.description,
+                                  "constraints": d.additional_constraints} for d in desc.descriptors},
+            "set": [{"ok": r.successful, "reason": r.reason} for r in setr.results],
+            "after": [param_value(v) for v in after.values],
+            "diag_realtime_factor": values.get("realtime_factor")}
+
+
+def scenario_names(p, a):
+    """Which endpoints the node has, by DDS name and type (after remapping)."""
+    js = p.reader(a["joint_states"], T.JointState, depth=10)
+    msg = p.wait_for(js)
+    return {"endpoints": p.endpoints(1.5), "joint_state": todict(msg)}
+
+
+def scenario_brake_example(p, a):
+    """The part of launch-scripts/brake_load_example.py, on the wire: ramp the
+    pad normal forces on ALE nodes through ~/wrenches, hold, release, and read
+    the response (same topics, types and QoS as the rclpy script)."""
+    pads_in, pads_out = a["inboard"], a["outboard"]
+    peak, ramp, hold, release = a["peak_force"], a["ramp_s"], a["hold_s"], a["release_s"]
+    mu = a["mu"]
+    pub = p.writer(p.private("wrenches"), T.NodeWrenchArray)          # rclpy: create_publisher(NodeWrenchArray, '~/wrenches', 10)
+    modal = p.reader(p.private("modal_amplitudes"), T.ModalAmplitudes, depth=10)  # rclpy default: reliable, depth 10
+    js = p.reader("/joint_states", T.JointState, depth=10)
+    p.wait_matched(pub)
+    p.wait_matched(modal)
+    per_node = 1.0 / max(len(pads_in), 1)
+
+    def batch(force, stamp_ns):
+        ws = []
+        for j in pads_in:   # inboard pad pushes along -z, friction drags along -x (against the rotation)
+            ws.append(T.NodeWrench(kind=T.NODE_WRENCH_ALE, index=j, wrench=wrench(fx=-mu * force * per_node, fz=-force * per_node)))
+        for j in pads_out:  # outboard pad pushes along +z
+            ws.append(T.NodeWrench(kind=T.NODE_WRENCH_ALE, index=j, wrench=wrench(fx=-mu * force * per_node, fz=force * per_node)))
+        return T.NodeWrenchArray(header=T.Header(stamp=T.Time.from_nanos(stamp_ns)), wrenches=ws)
+
+    log = []
+    last_modal = None
+    t0 = time.time()
+    total = ramp + hold + release
+    sent = 0
+    while True:
+        t = time.time() - t0
+        if t > total + 0.2:
+            break
+        if t < ramp:
+            f = peak * t / ramp
+        elif t < ramp + hold:
+            f = peak
+        elif t < total:
+            f = peak * max(0.0, 1.0 - (t - ramp - hold) / release)
+        else:
+            f = 0.0
+        stamp = time.time_ns()
+        pub.write(batch(f, stamp)); sent += 1
+        for m in modal.take(100):
+            last_modal = m
+            log.append({"t": t, "force": f, "step": m.step, "input_stamp": m.input_stamp.to_nanos(),
+                        "max_abs_q_ale": max((abs(x) for x in m.q_ale), default=0.0)})
+        time.sleep(0.01)
+    pub.write(batch(0.0, time.time_ns()))
+    time.sleep(0.3)
+    for m in modal.take(100):
+        last_modal = m
+    last_js = p.wait_for(js)
+    values, _ = p.wait_diag(lambda v: int(v.get("accepted_wrench_array", 0)) >= sent)
+    return {"sent": sent, "log": log, "last_modal": todict(last_modal) if last_modal else None,
+            "last_joint_state": todict(last_js), "diag": values}
+
+
+SCENARIOS = {name[len("scenario_"):]: fn for name, fn in globals().items() if name.startswith("scenario_")}
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("scenario", choices=sorted(SCENARIOS))
+    ap.add_argument("--domain", type=int, required=True)
+    ap.add_argument("--node", default="/annular_plate")
+    ap.add_argument("--args", default="{}")
+    ns = ap.parse_args()
+    p = Peer(ns.domain, ns.node)
+    result = SCENARIOS[ns.scenario](p, json.loads(ns.args))
+
+    def clean(x):
+        if isinstance(x, float) and not math.isfinite(x):
+            return repr(x)
+        if isinstance(x, dict):
+            return {k: clean(v) for k, v in x.items()}
+        if isinstance(x, (list, tuple)):
+            return [clean(v) for v in x]
+        return x
+
+    sys.stdout.write(json.dumps(clean(result)) + "\n")
+    sys.stdout.flush()
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,5 @@
+//! Shared helpers for the integration tests (each test crate does `mod support;`).
+pub mod bessel;
+pub mod exact_plate;
+pub mod scenes;
+pub mod static_plate;
