@@ -102,6 +102,9 @@ def in_netns_main(args):
             writers = [DataWriter(dp, Topic(dp, f"rt/annular_plate/ale_{j}/wrench", T.WrenchStamped), qos=q)
                        for j in range(1, N_ALE + 1)]
         deadline = time.time() + 20
+        time.sleep(0.5)
+        if node.poll() is not None:
+            sys.exit(f"the node exited at once: {node.stderr.read().decode(errors='replace')}")
         while time.time() < deadline and (len(modal.get_matched_publications()) == 0
                                           or any(len(w.get_matched_subscriptions()) == 0 for w in writers)):
             time.sleep(0.01)

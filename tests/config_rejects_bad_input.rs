@@ -670,9 +670,9 @@ fn defaults_equal_an_empty_parameter_set() {
 
 #[test]
 fn every_known_key_is_documented() {
-    let doc = std::fs::read_to_string(std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("docs/parameters.md"))
-        .expect("docs/parameters.md is readable");
+    let doc = std::fs::read_to_string(std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("README.md"))
+        .expect("README.md is readable");
     for key in Config::known_keys() {
-        assert!(doc.contains(&format!("`{key}`")), "docs/parameters.md does not document `{key}`");
+        assert!(doc.contains(&format!("`{key}`")), "the README parameter reference does not document `{key}`");
     }
 }

@@ -298,6 +298,41 @@ fn bad_inputs_are_rejected_counted_and_the_node_keeps_publishing() {
 }
 
 #[test]
+fn a_stale_wrench_drops_to_zero_after_the_wrench_timeout() {
+    let ns = Netns::new();
+    let args = ["-p", "ros.start_paused:=true", "-p", "ros.wrench_timeout:=0.01", "-p", "ros.diagnostics_period:=0.05"];
+    let node = start_node(&ns, 23, &args);
+    let out = peer(&ns, &node, "wrench_timeout", "/annular_plate", json!({"fz": -800.0, "steps": 40}));
+    assert_eq!(out["diag"]["expired_wrenches"], "1");
+    // Offline: the wrench acts for 10 steps (0.01 s), then zero.
+    let mut sim = offline(&args);
+    sim.set_ale_wrench(0, Wrench { force: [0.0, 0.0, -800.0], moment: [0.0; 3] }).unwrap();
+    for _ in 0..10 {
+        sim.step().unwrap();
+    }
+    sim.set_ale_wrench(0, Wrench::default()).unwrap();
+    for _ in 10..40 {
+        sim.step().unwrap();
+    }
+    close_all(&floats(&out["modal"]["q_ale"]), sim.q_ale(), "q_ale with the wrench expired after 10 steps");
+    close_all(&floats(&out["modal"]["q_dot_ale"]), sim.q_dot_ale(), "q_dot_ale");
+}
+
+#[test]
+fn services_also_speak_the_rmw_cyclonedds_framing() {
+    let ns = Netns::new();
+    let node = start_node(&ns, 24, &["-p", "ros.start_paused:=true", "-p", "ros.service_mapping:=cyclone"]);
+    let out = peer(&ns, &node, "cyclone_services", "/annular_plate", json!({}));
+    let replies = out["replies"].as_array().unwrap();
+    for (r, (seq, step)) in replies.iter().zip([(11, 4), (12, 4), (13, 6)]) {
+        assert_eq!(r["client"], 0x1122334455667788u64, "the request id is echoed: {r}");
+        assert_eq!(r["seq"], seq);
+        assert_eq!(r["success"], true);
+        assert_eq!(r["step"], step);
+    }
+}
+
+#[test]
 fn sigint_and_sigterm_exit_cleanly_within_a_second() {
     for (domain, sig) in [(18, "INT"), (19, "TERM")] {
         let ns = Netns::new();

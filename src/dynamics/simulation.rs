@@ -7,7 +7,7 @@ use thiserror::Error;
 use super::loads::Inputs;
 use super::scene::{NodeFrame, Scene};
 use super::state::State;
-use super::stepper::{Stepper, StepperSettings, Views};
+use super::stepper::{Stepper, StepperSettings};
 use super::wrench::{InputError, NodeKind, Wrench};
 
 #[derive(Debug, Error)]
@@ -74,8 +74,6 @@ pub struct Simulation {
     initial: State,
     stepper: Stepper,
     inputs: Inputs,
-    views: Views,
-    harm: Vec<(f64, f64)>,
     steps: u64,
 }
 
@@ -110,8 +108,6 @@ impl Simulation {
             initial,
             stepper,
             inputs: Inputs::default(),
-            views: Views::new(n),
-            harm: Vec::with_capacity(scene.layout.k_max as usize + 1),
             steps: 0,
             scene,
             config,
@@ -165,7 +161,7 @@ impl Simulation {
         let to_wrench = |w: &crate::config::WrenchConfig| Wrench { force: w.force, moment: w.moment };
         self.inputs.ale = (0..self.n_ale_nodes()).map(|j| self.config.loads.ale.get(j).map(to_wrench).unwrap_or_default()).collect();
         self.inputs.lagrange = (0..self.n_lagrange_nodes()).map(|j| self.config.loads.lagrange.get(j).map(to_wrench).unwrap_or_default()).collect();
-        self.views.update(&self.scene, &self.state, &mut self.harm);
+        self.stepper.sync_views(&self.scene, &self.state);
     }
 
     /// Replace the state (e.g. a checkpoint taken with `state().clone()`).
@@ -173,7 +169,7 @@ impl Simulation {
         assert_eq!(state.q.len(), self.scene.n_modes());
         self.state = state;
         self.steps = steps;
-        self.views.update(&self.scene, &self.state, &mut self.harm);
+        self.stepper.sync_views(&self.scene, &self.state);
     }
 
     /// Advance one output step (1/rate_hz). On error the state is unchanged.
@@ -182,7 +178,6 @@ impl Simulation {
         self.steps += 1;
         // Time as a count of steps: no drift from repeated addition.
         self.state.time = self.steps as f64 * self.dt();
-        self.views.update(&self.scene, &self.state, &mut self.harm);
         Ok(())
     }
 
@@ -248,12 +243,12 @@ impl Simulation {
 
     /// ALE node `j` (0-based), in plate_base.
     pub fn ale_node(&self, j: usize) -> NodeOutput {
-        Self::node_output(&self.scene.ale_nodes[j], &self.views.q_ale, &self.views.q_dot_ale, self.state.speed)
+        Self::node_output(&self.scene.ale_nodes[j], &self.stepper.views().q_ale, &self.stepper.views().q_dot_ale, self.state.speed)
     }
 
     /// Lagrangian node `j` (0-based), in plate_rotor.
     pub fn lagrange_node(&self, j: usize) -> NodeOutput {
-        Self::node_output(&self.scene.lagrange_nodes[j], &self.views.q_lagrange, &self.views.q_dot_lagrange, self.state.speed)
+        Self::node_output(&self.scene.lagrange_nodes[j], &self.stepper.views().q_lagrange, &self.stepper.views().q_dot_lagrange, self.state.speed)
     }
 
     /// Pose of ALE node `j` (0-based) in the reference frame (plate_base).
@@ -268,23 +263,23 @@ impl Simulation {
 
     /// Modal amplitudes (m) in `model().modes()` order, Lagrangian description.
     pub fn q_lagrange(&self) -> &[f64] {
-        &self.views.q_lagrange
+        &self.stepper.views().q_lagrange
     }
     pub fn q_dot_lagrange(&self) -> &[f64] {
-        &self.views.q_dot_lagrange
+        &self.stepper.views().q_dot_lagrange
     }
     /// Modal amplitudes (m) in the ALE description (eq. 20).
     pub fn q_ale(&self) -> &[f64] {
-        &self.views.q_ale
+        &self.stepper.views().q_ale
     }
     pub fn q_dot_ale(&self) -> &[f64] {
-        &self.views.q_dot_ale
+        &self.stepper.views().q_dot_ale
     }
     /// Elastic energy ½ Σ m_i (q̇_i² + ω_i² q_i²) (Lagrangian description), J.
     pub fn modal_energy(&self) -> f64 {
         let b = self.scene.model.body();
         (0..self.scene.n_modes())
-            .map(|i| 0.5 * (b.modal_mass[i] * self.views.q_dot_lagrange[i].powi(2) + b.modal_stiffness[i] * self.views.q_lagrange[i].powi(2)))
+            .map(|i| 0.5 * (b.modal_mass[i] * self.stepper.views().q_dot_lagrange[i].powi(2) + b.modal_stiffness[i] * self.stepper.views().q_lagrange[i].powi(2)))
             .sum()
     }
 }

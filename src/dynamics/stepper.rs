@@ -92,6 +92,16 @@ impl Stepper {
         }
     }
 
+    /// Both descriptions of the state after the last step (or [`Stepper::sync_views`]).
+    pub fn views(&self) -> &Views {
+        &self.views
+    }
+
+    /// Refill both descriptions from `state` (after a reset or restore).
+    pub fn sync_views(&mut self, scene: &Scene, state: &State) {
+        self.views.update(scene, state, &mut self.harm);
+    }
+
     pub fn last_inner_substeps(&self) -> usize {
         self.last_inner_substeps
     }
@@ -126,19 +136,22 @@ impl Stepper {
         for _ in 0..self.settings.substeps {
             if let Err(e) = self.substep(scene, state, inputs, h) {
                 state.clone_from(&self.backup);
+                self.sync_views(scene, state);
                 return Err(e);
             }
         }
         state.time = t0 + self.settings.dt;
         if let Err(e) = check(scene, state) {
             state.clone_from(&self.backup);
+            self.sync_views(scene, state);
             return Err(e);
         }
         Ok(())
     }
 
+    /// One substep. On entry `self.views` and `self.harm` describe `state`
+    /// (kept so by every step and by [`Stepper::sync_views`]); on exit too.
     fn substep(&mut self, scene: &Scene, state: &mut State, inputs: &Inputs, h: f64) -> Result<(), StepError> {
-        self.views.update(scene, state, &mut self.harm);
         node_loads(scene, inputs, &self.views.q_ale, &self.views.q_lagrange, &mut self.loads);
         let d = drive(&scene.joint, scene.polar_inertia, state.speed, inputs.speed_command, self.loads.axial_torque, h);
         let (speed0, alpha) = (state.speed, d.acceleration);
@@ -152,13 +165,18 @@ impl Stepper {
             IntegratorKind::Exponential => {
                 add_reference_motion(scene, speed_mean, &mut self.loads.ale_frame);
                 self.exponential(scene, h, speed_mean);
-                // Result is Lagrangian at χ1.
-                state.q.copy_from_slice(&self.views.q_lagrange);
-                state.q_dot.copy_from_slice(&self.views.q_dot_lagrange);
-                if state.coordinates == Coordinates::Ale {
-                    harmonics(&chi1, scene.layout.k_max, &mut self.harm_end);
-                    lagrange_to_ale(&scene.layout, &self.harm_end, speed1, &mut state.q, &mut state.q_dot);
-                }
+                // The result is the Lagrangian view at χ1: derive the ALE one.
+                let v = &mut self.views;
+                v.q_ale.copy_from_slice(&v.q_lagrange);
+                v.q_dot_ale.copy_from_slice(&v.q_dot_lagrange);
+                harmonics(&chi1, scene.layout.k_max, &mut self.harm);
+                lagrange_to_ale(&scene.layout, &self.harm, speed1, &mut v.q_ale, &mut v.q_dot_ale);
+                let (q, q_dot) = match state.coordinates {
+                    Coordinates::Lagrangian => (&v.q_lagrange, &v.q_dot_lagrange),
+                    Coordinates::Ale => (&v.q_ale, &v.q_dot_ale),
+                };
+                state.q.copy_from_slice(q);
+                state.q_dot.copy_from_slice(q_dot);
             }
             IntegratorKind::ImplicitMidpoint => {
                 add_reference_motion(scene, speed_mean, &mut self.loads.ale_frame);
@@ -186,6 +204,9 @@ impl Stepper {
         state.acceleration = alpha;
         state.effort = d.effort;
         state.time += h;
+        if self.settings.integrator != IntegratorKind::Exponential {
+            self.views.update(scene, state, &mut self.harm);
+        }
         Ok(())
     }
 

@@ -109,8 +109,8 @@ impl BSplineBasis {
             }
         }
         let mut fac = P as f64;
-        for k in 1..=P {
-            for v in ders[k].iter_mut() {
+        for (k, row) in ders.iter_mut().enumerate().skip(1) {
+            for v in row.iter_mut() {
                 *v *= fac;
             }
             fac *= (P - k) as f64;

@@ -417,7 +417,7 @@ impl SimLoop {
             Ok(()) => {
                 self.clock.advance();
                 self.publish_clock();
-                if self.clock.total_steps() % self.settings.publish_divisor.max(1) as u64 == 0 {
+                if self.clock.total_steps().is_multiple_of(self.settings.publish_divisor.max(1) as u64) {
                     self.publish_state();
                 }
             }

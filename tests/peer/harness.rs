@@ -236,6 +236,12 @@ pub fn peer(ns: &Netns, node: &NodeProcess, scenario: &str, node_name: &str, arg
     };
     let out = out_thread.join().unwrap_or_default();
     let err = err_thread.join().unwrap_or_default();
+    if node.stderr().contains("without the `ros` feature") {
+        panic!(
+            "{} was built without the `ros` feature (a concurrent `cargo build --no-default-features` in the same target dir replaces it); rebuild and rerun",
+            node_binary().display()
+        );
+    }
     let context = || format!("peer `{scenario}`:\n--- stdout\n{out}\n--- stderr\n{err}\n--- node stderr\n{}", node.stderr());
     match status {
         Some(s) if s.success() => {}

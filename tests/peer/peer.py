@@ -340,6 +340,31 @@ def scenario_bad_inputs(p, a):
             "modal": todict(m), "rosout_rejections": logs}
 
 
+def scenario_wrench_timeout(p, a):
+    """Paused: one wrench, then more steps than ros.wrench_timeout allows; the counters."""
+    modal = p.reader(p.private("modal_amplitudes"), T.ModalAmplitudes, depth=10000)
+    p.wait_matched(modal)
+    p.set_paused(True)
+    w = p.writer(p.private("ale_1/wrench"), T.WrenchStamped)
+    p.wait_matched(w)
+    w.write(T.WrenchStamped(wrench=wrench(fz=a["fz"])))
+    p.wait_diag(lambda v: int(v.get("accepted_node_wrench", 0)) >= 1)
+    resp = p.step(a["steps"])
+    m = p.wait_for(modal, lambda s: s.step == resp.step)
+    values, _ = p.wait_diag(lambda v: int(v.get("expired_wrenches", 0)) >= 1)
+    return {"step": todict(resp), "modal": todict(m), "diag": values}
+
+
+def scenario_cyclone_services(p, a):
+    """~/step with the rmw_cyclonedds request/reply framing (ros.service_mapping: cyclone)."""
+    out = []
+    for seq, steps in ((11, 4), (12, 0), (13, 2)):
+        r = p.call("step", T.CycloneStepRequest, T.CycloneStepResponse,
+                   T.CycloneStepRequest(client=0x1122334455667788, seq=seq, steps=steps))
+        out.append(todict(r))
+    return {"replies": out}
+
+
 def scenario_first_message(p, a):
     """Wait for the first joint state (the node is up); print it."""
     return {"joint_state": first_joint_state(p)}

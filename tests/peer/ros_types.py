@@ -221,6 +221,25 @@ class StepResponse(IdlStruct, typename="annular_plate::srv::dds_::Step_Response_
     sim_time: float64 = 0.0
 
 
+# The same Step service as rmw_cyclonedds_cpp frames it: a request header
+# (client id, sequence number) before the payload, echoed in the reply.
+@dataclass
+class CycloneStepRequest(IdlStruct, typename="annular_plate::srv::dds_::Step_Request_"):
+    client: uint64 = 0
+    seq: int64 = 0
+    steps: uint32 = 0
+
+
+@dataclass
+class CycloneStepResponse(IdlStruct, typename="annular_plate::srv::dds_::Step_Response_"):
+    client: uint64 = 0
+    seq: int64 = 0
+    success: bool = False
+    message: str = ""
+    step: uint64 = 0
+    sim_time: float64 = 0.0
+
+
 # rcl_interfaces (parameter services)
 
 @dataclass

@@ -29,8 +29,8 @@
 //! Per k: 8 unknowns (4 per segment `[r_i, r₀]`, `[r₀, r_a]`), 8 equations
 //! (2 edge conditions at each edge, 4 matching conditions at r₀), solved by
 //! Gaussian elimination with partial pivoting on the row- and column-equilibrated
-//! matrix plus one step of iterative refinement; the componentwise backward
-//! error is returned. For k ≥ 2 the basis on each segment is anchored where it
+//! matrix plus one step of iterative refinement; the normwise backward error of
+//! the equilibrated system is returned. For k ≥ 2 the basis on each segment is anchored where it
 //! is largest, `(r/c)^{±k}` and `(r/c)^{±k} ((r/c)² − 1)` (the second is
 //! `r^{±k+2}` minus a multiple of the first), so nothing overflows, and the two
 //! functions of one pair are not nearly parallel near the anchor even for
@@ -67,7 +67,7 @@ pub struct Harmonic {
     coefficients: [f64; 8],
     /// The force P, N.
     pub force: f64,
-    /// Componentwise backward error of the 8×8 solve (after refinement).
+    /// Normwise backward error of the equilibrated 8×8 solve (after refinement).
     pub backward_error: f64,
 }
 
@@ -337,18 +337,18 @@ impl StaticAnnulus {
         let b3 = |r: f64| [r.ln(), 1.0 / r, -1.0 / (r * r)];
         let b4 = |_r: f64| [1.0, 0.0, 0.0];
         let moment = |v: [f64; 3], r: f64| v[2] + nu * v[1] / r;
+        assert!(
+            self.inner != Edge::Free,
+            "an edge ring load on a free–free annulus is not in equilibrium"
+        );
         let inner_rows = |f: &dyn Fn(f64) -> [f64; 3]| -> [f64; 2] {
             let v = f(ri);
             match self.inner {
                 Edge::Clamped => [v[0], v[1]],
                 Edge::Supported => [v[0], moment(v, ri)],
-                Edge::Free => [moment(v, ri), 0.0], // second row: V_r(r_i) = 0 cannot hold with a load: excluded below
+                Edge::Free => unreachable!(),
             }
         };
-        assert!(
-            self.inner != Edge::Free,
-            "an edge ring load on a free–free annulus is not in equilibrium"
-        );
         let fs: [&dyn Fn(f64) -> [f64; 3]; 3] = [&b2, &b3, &b4];
         let mut m = [[0.0; 3]; 3];
         let mut rhs = [0.0; 3];
@@ -377,8 +377,11 @@ impl StaticAnnulus {
     ///   `θ_b = −(w a²/(D C₇))(r_o C₉/b − L₉)`;
     ///
     /// then `y(r) = y_b + θ_b r F₁ + M_rb r² F₂/D + Q_b r³ F₃/D − w r³ G₃/D`
-    /// (`G₃ = 0` for r ≤ r_o). Roark's y is upward, the load w downward.
-    /// Returns our w(r) (upward) for a total upward force `p` on the ring r_o.
+    /// (`G₃ = 0` for r ≤ r_o). Roark's y is upward, the load w downward; b = r_i,
+    /// a = r_a, `C_j = F_j(a)`, `L₉ = (r_o/a){(1+ν)/2 ln(a/r_o) + (1−ν)/4 [1 − (r_o/a)²]}`.
+    /// The F functions as tabulated for Table 11.2 (Roark, 7th ed.; also reproduced on
+    /// eng-calculations.com's Roark pages). Returns our w(r) (upward) for a total
+    /// upward force `p` on the ring r_o, r ≤ r_o.
     pub fn roark_ring_load_free_outer(&self, p: f64, ro: f64, r: f64) -> f64 {
         assert_eq!(self.outer, Edge::Free);
         assert!(r <= ro);
@@ -443,57 +446,61 @@ impl Harmonic {
         self.eval_segment(0, self.r0)[0]
     }
 
-    /// Residuals of the conditions, each relative to the size of its terms:
+    /// Residuals of the conditions:
     /// `[inner edge (2), continuity of W, W', W'' (3), jump of W''' (1), outer edge (2)]`.
+    /// Each is relative to the size its terms have where the solution is largest
+    /// (at the load): `|W|`, `(k + 1)|W|/r` for slopes, and the sums of the moduli of
+    /// the terms of M_r and V_r there. (Relative to the terms at a far edge, where a
+    /// high harmonic has decayed to 1e-300, a residual would only measure underflow.)
     pub fn condition_residuals(&self) -> [f64; 8] {
         let s = &self.annulus;
         let (ri, ra, r0, k) = (s.inner_radius, s.outer_radius, self.r0, self.k);
         let kk = (k as f64) * (k as f64);
-        let qty = |edge: Edge, r: f64, d: &[f64; 4]| -> [(f64, f64); 2] {
-            let (m, v) = s.moment_and_shear(k, r, d);
-            let scale_m = d[2].abs() + (d[1] / r).abs() + (kk * d[0] / (r * r)).abs();
-            let scale_v = d[3].abs()
+        let scale_m =
+            |r: f64, d: &[f64; 4]| d[2].abs() + (d[1] / r).abs() + (kk * d[0] / (r * r)).abs();
+        let scale_v = |r: f64, d: &[f64; 4]| {
+            d[3].abs()
                 + (d[2] / r).abs()
                 + (d[1] / (r * r)).abs()
-                + kk * (3.0 * (d[0] / (r * r * r)).abs() + 2.0 * (d[1] / (r * r)).abs());
-            match edge {
-                Edge::Clamped => [(d[0], 0.0), (d[1], 0.0)],
-                Edge::Supported => [(d[0], 0.0), (m, scale_m)],
-                Edge::Free => [(m, scale_m), (v, scale_v)],
-            }
+                + kk * (3.0 * (d[0] / (r * r * r)).abs() + 2.0 * (d[1] / (r * r)).abs())
         };
-        let rel = |(v, sc): (f64, f64)| if sc == 0.0 { v.abs() } else { v.abs() / sc };
-        let di = self.eval_segment(0, ri);
-        let da = self.eval_segment(1, ra);
         let d1 = self.eval_segment(0, r0);
         let d2 = self.eval_segment(1, r0);
-        // essential conditions relative to the solution's own size at the load
         let w_scale = d1[0].abs().max(d2[0].abs());
-        let slope_scale = d1[1].abs().max(d2[1].abs()).max(w_scale / (ra - ri));
-        let mut inner = qty(s.inner, ri, &di);
-        let mut outer = qty(s.outer, ra, &da);
-        for (edge, q) in [(s.inner, &mut inner), (s.outer, &mut outer)] {
+        let slope_scale = d1[1]
+            .abs()
+            .max(d2[1].abs())
+            .max((k as f64 + 1.0) * w_scale / r0);
+        let curvature_scale = d1[2]
+            .abs()
+            .max(d2[2].abs())
+            .max((kk + 1.0) * w_scale / (r0 * r0));
+        let m_scale = scale_m(r0, &d1).max(scale_m(r0, &d2));
+        let v_scale = scale_v(r0, &d1).max(scale_v(r0, &d2));
+        let edge_residuals = |edge: Edge, r: f64, d: &[f64; 4]| -> [f64; 2] {
+            let (m, v) = s.moment_and_shear(k, r, d);
+            let m_rel = m.abs() / m_scale.max(scale_m(r, d));
+            let v_rel = v.abs() / v_scale.max(scale_v(r, d));
             match edge {
-                Edge::Clamped => {
-                    q[0].1 = w_scale;
-                    q[1].1 = slope_scale;
-                }
-                Edge::Supported => q[0].1 = w_scale,
-                Edge::Free => {}
+                Edge::Clamped => [d[0].abs() / w_scale, d[1].abs() / slope_scale],
+                Edge::Supported => [d[0].abs() / w_scale, m_rel],
+                Edge::Free => [m_rel, v_rel],
             }
-        }
-        let mut out = [0.0; 8];
-        out[0] = rel(inner[0]);
-        out[1] = rel(inner[1]);
-        for n in 0..3 {
-            out[2 + n] = rel((d2[n] - d1[n], d1[n].abs() + d2[n].abs()));
-        }
+        };
+        let inner = edge_residuals(s.inner, ri, &self.eval_segment(0, ri));
+        let outer = edge_residuals(s.outer, ra, &self.eval_segment(1, ra));
         let ck = if k == 0 { 2.0 * PI } else { PI };
         let expected = self.force / (s.rigidity * ck * r0);
-        out[5] = ((d2[3] - d1[3]) - expected).abs() / expected.abs();
-        out[6] = rel(outer[0]);
-        out[7] = rel(outer[1]);
-        out
+        [
+            inner[0],
+            inner[1],
+            (d2[0] - d1[0]).abs() / w_scale,
+            (d2[1] - d1[1]).abs() / slope_scale,
+            (d2[2] - d1[2]).abs() / curvature_scale,
+            ((d2[3] - d1[3]) - expected).abs() / expected.abs(),
+            outer[0],
+            outer[1],
+        ]
     }
 
     /// Strain energy of this harmonic from the energy functional of DESIGN.md,
@@ -582,27 +589,8 @@ pub fn gauss_legendre(n: usize) -> (Vec<f64>, Vec<f64>) {
     (x, w)
 }
 
-fn solve3(mut m: [[f64; 3]; 3], mut b: [f64; 3]) -> [f64; 3] {
-    for c in 0..3 {
-        let p = (c..3)
-            .max_by(|&x, &y| m[x][c].abs().total_cmp(&m[y][c].abs()))
-            .unwrap();
-        m.swap(p, c);
-        b.swap(p, c);
-        for r in c + 1..3 {
-            let f = m[r][c] / m[c][c];
-            for cc in c..3 {
-                m[r][cc] -= f * m[c][cc];
-            }
-            b[r] -= f * b[c];
-        }
-    }
-    let mut x = [0.0; 3];
-    for r in (0..3).rev() {
-        let s: f64 = (r + 1..3).map(|c| m[r][c] * x[c]).sum();
-        x[r] = (b[r] - s) / m[r][r];
-    }
-    x
+fn solve3(m: [[f64; 3]; 3], b: [f64; 3]) -> [f64; 3] {
+    lu_solve(m, b)
 }
 
 /// Partial-pivot LU solve of a small dense system.
@@ -617,8 +605,9 @@ fn lu_solve<const N: usize>(mut a: [[f64; N]; N], mut b: [f64; N]) -> [f64; N] {
         for r in c + 1..N {
             let f = a[r][c] / a[c][c];
             if f != 0.0 {
-                for cc in c..N {
-                    a[r][cc] -= f * a[c][cc];
+                let pivot = a[c];
+                for (x, p) in a[r][c..].iter_mut().zip(&pivot[c..]) {
+                    *x -= f * p;
                 }
                 b[r] -= f * b[c];
             }
@@ -633,8 +622,8 @@ fn lu_solve<const N: usize>(mut a: [[f64; N]; N], mut b: [f64; N]) -> [f64; N] {
 }
 
 /// Row- and column-equilibrated solve with one step of iterative refinement;
-/// returns the solution (of the original system) and the componentwise backward
-/// error `max_i |A x − b|_i / (|A| |x| + |b|)_i`.
+/// returns the solution (of the original system) and the normwise backward error
+/// `‖A y − b‖∞ / (‖A‖∞ ‖y‖∞ + ‖b‖∞)` of the equilibrated system.
 fn solve_refined<const N: usize>(a: &[[f64; N]; N], b: &[f64; N]) -> ([f64; N], f64) {
     let mut s = *a;
     let mut rhs = *b;
@@ -662,12 +651,15 @@ fn solve_refined<const N: usize>(a: &[[f64; N]; N], b: &[f64; N]) -> ([f64; N], 
         y[i] += dy[i];
     }
     let r = resid(&y);
-    let mut be: f64 = 0.0;
-    for i in 0..N {
-        let scale: f64 = (0..N).map(|j| (s[i][j] * y[j]).abs()).sum::<f64>() + rhs[i].abs();
-        if scale > 0.0 {
-            be = be.max(r[i].abs() / scale);
-        }
-    }
+    // normwise (a row whose terms all vanish in the exact solution, e.g. the shear
+    // row of a free edge for k = 0, makes a componentwise measure meaningless)
+    let norm_a = s
+        .iter()
+        .map(|row| row.iter().map(|v| v.abs()).sum::<f64>())
+        .fold(0.0_f64, f64::max);
+    let norm_y = y.iter().fold(0.0_f64, |m, v| m.max(v.abs()));
+    let norm_b = rhs.iter().fold(0.0_f64, |m, v| m.max(v.abs()));
+    let norm_r = r.iter().fold(0.0_f64, |m, v| m.max(v.abs()));
+    let be = norm_r / (norm_a * norm_y + norm_b);
     (std::array::from_fn(|j| y[j] / cols[j]), be)
 }
