@@ -155,7 +155,7 @@ impl Simulation {
 
     /// Back to t = 0 with the parameter file's speed and loads.
     pub fn reset(&mut self) {
-        self.state.clone_from(&self.initial);
+        self.state.copy_from(&self.initial);
         self.steps = 0;
         self.inputs.speed_command = self.config.joint.speed;
         let to_wrench = |w: &crate::config::WrenchConfig| Wrench { force: w.force, moment: w.moment };
@@ -210,7 +210,7 @@ impl Simulation {
         };
         let count = list.len();
         let slot = list.get_mut(node).ok_or(InputError::NoSuchNode { kind, index: node + 1, count })?;
-        wrench.validate(&format!("{}_{} wrench", kind.name(), node + 1), limits.max_force, limits.max_moment)?;
+        wrench.validate(|| format!("{}_{} wrench", kind.name(), node + 1), limits.max_force, limits.max_moment)?;
         *slot = wrench;
         Ok(())
     }

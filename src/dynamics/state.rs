@@ -94,6 +94,21 @@ impl State {
         }
     }
 
+    /// Copy `other` into `self`, reusing the amplitude buffers (the derived
+    /// `clone_from` would allocate).
+    pub fn copy_from(&mut self, other: &State) {
+        self.time = other.time;
+        self.chi = other.chi;
+        self.speed = other.speed;
+        self.acceleration = other.acceleration;
+        self.effort = other.effort;
+        self.coordinates = other.coordinates;
+        self.q.clear();
+        self.q.extend_from_slice(&other.q);
+        self.q_dot.clear();
+        self.q_dot.extend_from_slice(&other.q_dot);
+    }
+
     pub fn is_finite(&self) -> bool {
         self.time.is_finite()
             && self.chi.angle.is_finite()

@@ -129,20 +129,20 @@ impl Stepper {
 
     /// Advance one output step. On error the state is as before the call.
     pub fn step(&mut self, scene: &Scene, state: &mut State, inputs: &Inputs) -> Result<(), StepError> {
-        self.backup.clone_from(state);
+        self.backup.copy_from(state);
         let h = self.h();
         let t0 = state.time;
         self.last_inner_substeps = 1;
         for _ in 0..self.settings.substeps {
             if let Err(e) = self.substep(scene, state, inputs, h) {
-                state.clone_from(&self.backup);
+                state.copy_from(&self.backup);
                 self.sync_views(scene, state);
                 return Err(e);
             }
         }
         state.time = t0 + self.settings.dt;
         if let Err(e) = check(scene, state) {
-            state.clone_from(&self.backup);
+            state.copy_from(&self.backup);
             self.sync_views(scene, state);
             return Err(e);
         }

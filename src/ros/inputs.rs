@@ -151,7 +151,7 @@ impl InputValidator {
             return Err(Rejection::from_input_error(InputError::NoSuchNode { kind, index: node + 1, count }));
         }
         wrench
-            .validate(&format!("{}_{} wrench", kind.name(), node + 1), self.max_force, self.max_moment)
+            .validate(|| format!("{}_{} wrench", kind.name(), node + 1), self.max_force, self.max_moment)
             .map_err(Rejection::from_input_error)
     }
 

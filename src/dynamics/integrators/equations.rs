@@ -9,7 +9,7 @@
 //! with f̄_tot = f̄ + R(kχ) f_B and J = [[0, −1], [1, 0]].
 
 use crate::config::Coordinates;
-use crate::dynamics::scene::Scene;
+use crate::dynamics::scene::{ModePair, Scene};
 
 /// Per-mode constants.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -29,6 +29,24 @@ pub fn mode_constants(scene: &Scene) -> Vec<ModeConstants> {
         .iter()
         .map(|m| ModeConstants { mass: m.modal_mass, damping_rate: 2.0 * m.damping * m.omega, omega_eff_sq: m.omega * m.omega - soft })
         .collect()
+}
+
+/// A pair's total force (cos, sin) resolved in `coords`, at the instant whose
+/// (cos kχ, sin kχ) is `harm_k`: Lagrangian f = f_B + Rᵀ f̄, ALE f̄ + R f_B.
+#[inline]
+pub fn pair_force(coords: Coordinates, harm_k: (f64, f64), p: &ModePair, ale_frame: &[f64], plate_frame: &[f64]) -> (f64, f64) {
+    let (co, si) = harm_k;
+    let (ic, is) = (p.cos, p.sin);
+    match coords {
+        Coordinates::Lagrangian => (
+            plate_frame[ic] + co * ale_frame[ic] + si * ale_frame[is],
+            plate_frame[is] - si * ale_frame[ic] + co * ale_frame[is],
+        ),
+        Coordinates::Ale => (
+            ale_frame[ic] + co * plate_frame[ic] - si * plate_frame[is],
+            ale_frame[is] + si * plate_frame[ic] + co * plate_frame[is],
+        ),
+    }
 }
 
 /// Accelerations for amplitudes (q, v) in `coords`, joint speed Ω and
@@ -54,21 +72,15 @@ pub fn accelerations(
         acc[i] = ale_frame[i] / c.mass - c.damping_rate * v[i] - c.omega_eff_sq * q[i];
     }
     for p in &lay.pairs {
-        let (co, si) = harm[p.k as usize];
+        let (fc, fs) = pair_force(coords, harm[p.k as usize], p, ale_frame, plate_frame);
         let (ic, is) = (p.cos, p.sin);
         let c = consts[ic];
         match coords {
             Coordinates::Lagrangian => {
-                // f = f_B + Rᵀ f̄
-                let fc = plate_frame[ic] + co * ale_frame[ic] + si * ale_frame[is];
-                let fs = plate_frame[is] - si * ale_frame[ic] + co * ale_frame[is];
                 acc[ic] = fc / c.mass - c.damping_rate * v[ic] - c.omega_eff_sq * q[ic];
                 acc[is] = fs / c.mass - c.damping_rate * v[is] - c.omega_eff_sq * q[is];
             }
             Coordinates::Ale => {
-                // f̄_tot = f̄ + R f_B
-                let fc = ale_frame[ic] + co * plate_frame[ic] - si * plate_frame[is];
-                let fs = ale_frame[is] + si * plate_frame[ic] + co * plate_frame[is];
                 let kw = p.k as f64 * speed;
                 let ka = p.k as f64 * accel;
                 let stiff = kw * kw - c.omega_eff_sq;

@@ -3,7 +3,7 @@
 //! (Lagrangian, 2×2) or per pair (ALE, 4×4, coupled by the gyroscopic terms).
 //! Node loads that depend on the state (followers) are taken at the step start.
 
-use super::equations::ModeConstants;
+use super::equations::{pair_force, ModeConstants};
 use crate::config::Coordinates;
 use crate::dynamics::scene::Scene;
 use nalgebra::{Matrix4, Vector4};
@@ -41,19 +41,15 @@ pub fn advance(
         single(consts[i], ale_frame[i], &mut q[i], &mut v[i]);
     }
     for p in &scene.layout.pairs {
-        let (co, si) = harm_mid[p.k as usize];
+        let (fc, fs) = pair_force(coords, harm_mid[p.k as usize], p, ale_frame, plate_frame);
         let (ic, is) = (p.cos, p.sin);
         let c = consts[ic];
         match coords {
             Coordinates::Lagrangian => {
-                let fc = plate_frame[ic] + co * ale_frame[ic] + si * ale_frame[is];
-                let fs = plate_frame[is] - si * ale_frame[ic] + co * ale_frame[is];
                 single(c, fc, &mut q[ic], &mut v[ic]);
                 single(consts[is], fs, &mut q[is], &mut v[is]);
             }
             Coordinates::Ale => {
-                let fc = ale_frame[ic] + co * plate_frame[ic] - si * plate_frame[is];
-                let fs = ale_frame[is] + si * plate_frame[ic] + co * plate_frame[is];
                 let kw = p.k as f64 * speed_mid;
                 let stiff = kw * kw - c.omega_eff_sq;
                 let skew = p.k as f64 * accel + c.damping_rate * kw;

@@ -1,0 +1,60 @@
+//! The fixed-step loop allocates nothing: scratch space is allocated once when
+//! the stepper is built (a counting global allocator watches the steps).
+
+use annular_plate::config::{Config, Coordinates, IntegratorKind, NodePosition, WrenchConfig};
+use annular_plate::dynamics::{Simulation, Wrench};
+use std::alloc::{GlobalAlloc, Layout, System};
+use std::sync::atomic::{AtomicUsize, Ordering};
+
+struct Counting;
+static ALLOCATIONS: AtomicUsize = AtomicUsize::new(0);
+
+unsafe impl GlobalAlloc for Counting {
+    unsafe fn alloc(&self, layout: Layout) -> *mut u8 {
+        ALLOCATIONS.fetch_add(1, Ordering::SeqCst);
+        unsafe { System.alloc(layout) }
+    }
+    unsafe fn dealloc(&self, ptr: *mut u8, layout: Layout) {
+        unsafe { System.dealloc(ptr, layout) }
+    }
+    unsafe fn realloc(&self, ptr: *mut u8, layout: Layout, new_size: usize) -> *mut u8 {
+        ALLOCATIONS.fetch_add(1, Ordering::SeqCst);
+        unsafe { System.realloc(ptr, layout, new_size) }
+    }
+}
+
+#[global_allocator]
+static GLOBAL: Counting = Counting;
+
+#[test]
+fn stepping_with_changing_inputs_allocates_nothing() {
+    for integrator in [IntegratorKind::Exponential, IntegratorKind::ImplicitMidpoint, IntegratorKind::Rk4] {
+        for coords in [Coordinates::Ale, Coordinates::Lagrangian] {
+            let mut c = Config::default();
+            c.plate.damping = vec![0.02];
+            c.joint.speed = 20.0;
+            c.loads.follower = true;
+            c.gravity = [0.0, 0.0, -9.81];
+            c.reference.angular_velocity = [0.5, 0.0, 0.0];
+            c.simulation.integrator = integrator;
+            c.simulation.coordinates = coords;
+            c.simulation.rate_hz = 10_000.0;
+            c.simulation.substeps = 2;
+            c.nodes.ale.push(NodePosition { radial: 1.0, angular: 0.0 });
+            c.nodes.lagrange.push(NodePosition { radial: 0.5, angular: 0.5 });
+            c.loads.ale.push(WrenchConfig { force: [0.0, 30.0, -100.0], moment: [0.0; 3] });
+            let mut sim = Simulation::new(c).unwrap();
+            sim.step().unwrap(); // warm-up: propagator caches
+            let before = ALLOCATIONS.load(Ordering::SeqCst);
+            for s in 0..500 {
+                sim.set_ale_wrench(0, Wrench { force: [0.0, 30.0, -100.0 - s as f64], moment: [0.0; 3] }).unwrap();
+                sim.set_lagrange_wrench(0, Wrench { force: [0.0, 0.0, 5.0], moment: [0.1, 0.0, 0.0] }).unwrap();
+                sim.set_speed_command(20.0 + 0.01 * s as f64).unwrap();
+                sim.step().unwrap();
+                std::hint::black_box((sim.q_ale()[0], sim.ale_node(0).uz, sim.joint()));
+            }
+            let after = ALLOCATIONS.load(Ordering::SeqCst);
+            assert_eq!(after - before, 0, "{integrator:?}/{coords:?} allocated {} times in 500 steps", after - before);
+        }
+    }
+}
