@@ -332,12 +332,17 @@ async fn serve(setup: NodeSetup, sim: Simulation, domain: u16) -> anyhow::Result
     drop(tx);
     drop(ctx);
     let joined = tokio::task::spawn_blocking(move || sim_thread.join()).await;
-    if !matches!(joined, Ok(Ok(()))) {
+    let result = if !matches!(joined, Ok(Ok(()))) {
         logger.error("the simulation thread ended abnormally");
-    }
+        Err(anyhow!("the simulation thread ended abnormally"))
+    } else if !why.starts_with("SIG") {
+        Err(anyhow!("{why}"))
+    } else {
+        Ok(())
+    };
     drop(tf_static);
     drop(logger);
     drop(node);
     drop(context);
-    Ok(())
+    result
 }

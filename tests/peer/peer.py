@@ -78,6 +78,9 @@ class Peer:
         get = entity.get_matched_subscriptions if isinstance(entity, DataWriter) else entity.get_matched_publications
         while time.time() < deadline:
             if len(get()) > 0:
+                # We see the node's endpoint; give the node a moment to see
+                # ours too (a volatile writer sends only to readers it knows).
+                time.sleep(0.25)
                 return
             time.sleep(0.01)
         raise Timeout(f"no match for {entity.topic.name} within {timeout} s")
@@ -184,7 +187,6 @@ def scenario_joint_states(p, a):
     p.take(js)
     resp = p.step(a["steps"])
     target = resp.step
-    modal = p.reader(p.private("modal_amplitudes"), T.ModalAmplitudes, depth=5000)
     seen = []
     last = p.wait_for(js, lambda s: len(seen) >= a["steps"], keep=seen)
     return {"first": todict(first), "before": todict(before), "step": todict(resp), "last": todict(last),
@@ -293,7 +295,10 @@ def scenario_bad_inputs(p, a):
     """Every kind of bad input; the counters; the node keeps publishing; the state is untouched."""
     js = p.reader("/joint_states", T.JointState, depth=10000)
     rosout = p.reader("/rosout", T.Log, depth=1000, transient_local=True)
+    modal = p.reader(p.private("modal_amplitudes"), T.ModalAmplitudes, depth=10)
     p.wait_for(js)
+    p.wait_matched(modal)
+    p.wait_matched(rosout)
     p.set_paused(True)
     nan, inf = float("nan"), float("inf")
     w1 = p.writer(p.private("ale_1/wrench"), T.WrenchStamped)
@@ -331,7 +336,7 @@ def scenario_bad_inputs(p, a):
     resp = p.step(10)
     seen = []
     p.wait_for(js, lambda s: len(seen) >= 10, keep=seen)
-    modal = p.reader(p.private("modal_amplitudes"), T.ModalAmplitudes, depth=10)
+    p.take(modal)
     p.step(1)
     m = p.wait_for(modal)
     logs = [l.msg for l in p.take(rosout) if "rejected" in l.msg]
