@@ -1,7 +1,9 @@
 //! Cubic B-splines on an open uniform knot vector over [r_i, r_a]
 //! (paper section 3.1, Fig. 4; de Boor [9]).
 //!
-//! `n` basis functions need `n − 3` spans. Only N_0 is non-zero at r_i and
+//! `n` basis functions need `n − 3` spans. Knots are uniform, optionally with
+//! extra knots graded geometrically towards r_i ([`BSplineBasis::graded`]).
+//! Only N_0 is non-zero at r_i and
 //! only N_0, N_1 have a non-zero slope there (likewise N_{n−1}, N_{n−2} at
 //! r_a), so the essential boundary conditions are imposed by dropping those.
 
@@ -18,17 +20,37 @@ pub struct BSplineBasis {
 }
 
 impl BSplineBasis {
-    /// `n ≥ 4` cubic B-splines on [a, b].
+    /// `n ≥ 4` cubic B-splines on [a, b] with uniform knots.
     pub fn new(a: f64, b: f64, n: usize) -> Self {
-        assert!(n > DEGREE && b > a);
-        let spans = n - DEGREE;
-        let mut knots = Vec::with_capacity(n + DEGREE + 1);
+        Self::graded(a, b, n, 0, 0.0)
+    }
+
+    /// `n_uniform` B-splines on uniform knots plus `extra` knots placed
+    /// geometrically between a and the first uniform knot, the smallest span
+    /// being `smallest` (so `n_uniform + extra` functions in all). Resolves
+    /// the boundary layer at a small pinned hole (docs/hard_cases.md).
+    pub fn graded(a: f64, b: f64, n_uniform: usize, extra: usize, smallest: f64) -> Self {
+        assert!(n_uniform > DEGREE && b > a);
+        let spans = n_uniform - DEGREE;
+        let h = (b - a) / spans as f64;
+        let mut knots = Vec::with_capacity(n_uniform + extra + DEGREE + 1);
         knots.extend(std::iter::repeat_n(a, DEGREE + 1));
+        if extra > 0 {
+            let q = (smallest / h).min(0.5).powf(1.0 / extra as f64);
+            for j in (1..=extra).rev() {
+                knots.push(a + h * q.powi(j as i32));
+            }
+        }
         for i in 1..spans {
-            knots.push(a + (b - a) * i as f64 / spans as f64);
+            knots.push(a + h * i as f64);
         }
         knots.extend(std::iter::repeat_n(b, DEGREE + 1));
-        BSplineBasis { a, b, n, knots }
+        BSplineBasis { a, b, n: n_uniform + extra, knots }
+    }
+
+    /// Greville abscissae ξ*_j = (t_{j+1} + t_{j+2} + t_{j+3})/3: Σ ξ*_j N_j(r) = r.
+    pub fn greville(&self) -> Vec<f64> {
+        (0..self.n).map(|j| (self.knots[j + 1] + self.knots[j + 2] + self.knots[j + 3]) / 3.0).collect()
     }
 
     pub fn len(&self) -> usize {
@@ -50,8 +72,9 @@ impl BSplineBasis {
 
     /// The span containing x (clamped to the interval).
     pub fn span_of(&self, x: f64) -> usize {
-        let t = (x - self.a) / (self.b - self.a) * self.spans() as f64;
-        (t.floor().max(0.0) as usize).min(self.spans() - 1)
+        // Interior knots knots[DEGREE+1 ..= DEGREE+spans−1]: the span is the number ≤ x.
+        let interior = &self.knots[DEGREE + 1..DEGREE + self.spans()];
+        interior.partition_point(|&t| t <= x)
     }
 
     /// Values and the first three derivatives of the four basis functions
@@ -164,6 +187,24 @@ mod tests {
                 assert!((fd - v[order + 1]).abs() < 1e-4 * (1.0 + v[order + 1].abs()), "order {order} at {x}: {fd} vs {}", v[order + 1]);
             }
         }
+    }
+
+    #[test]
+    fn graded_knots_keep_the_partition_of_unity_and_reproduce_r() {
+        let b = BSplineBasis::graded(1e-4, 0.15, 20, 8, 2.5e-5);
+        assert_eq!(b.len(), 28);
+        let g = b.greville();
+        for k in 0..=500 {
+            let x = 1e-4 + (0.15 - 1e-4) * (k as f64 / 500.0).powi(3);
+            let s = b.span_of(x);
+            let (lo, hi) = b.span_bounds(s);
+            assert!(lo <= x && (x < hi || s == b.spans() - 1), "{x} not in span {s} [{lo}, {hi})");
+            let d = b.eval_span(s, x);
+            assert!((d[0].iter().sum::<f64>() - 1.0).abs() < 1e-13);
+            let r: f64 = (0..4).map(|j| g[s + j] * d[0][j]).sum();
+            assert!((r - x).abs() < 1e-15 * 0.15, "{r} vs {x}");
+        }
+        assert!((b.span_bounds(0).1 - b.span_bounds(0).0 - 2.5e-5).abs() < 1e-12);
     }
 
     #[test]

@@ -8,11 +8,29 @@
 //!
 //! the same for sin(kφ). Essential conditions are built into the basis
 //! (dropped B-splines); natural ones follow from the variational form.
+//!
+//! Two refinements keep hard geometries accurate (docs/hard_cases.md):
+//! - a free–free ring (r_i/r_a ≥ [`RING_RATIO`]) spans {1, r − r_m} with those
+//!   exact functions in place of N_0, N_1: the near-rigid radial shapes of a
+//!   narrow free ring have energies far below the B-spline stiffness entries,
+//!   and summing B-spline coefficients would cancel them away (on a wide plate
+//!   the cancellation is harmless and the global functions would only mix the
+//!   1/r³ terms of a small hole into every row);
+//! - a supported or clamped hole smaller than 1 % of r_a is a point support with
+//!   a boundary layer of its own size: [`GRADED_KNOTS`] extra knots are graded
+//!   geometrically towards r_i, down to a span of r_i/4.
 
 use super::bspline::BSplineBasis;
 use super::quadrature::radial_points;
-use crate::config::PlateConfig;
+use crate::config::{Boundary, PlateConfig};
 use faer::Mat;
+
+/// Extra knots graded towards a small pinned hole.
+pub const GRADED_KNOTS: usize = 12;
+/// Holes below this fraction of r_a get graded knots when supported or clamped.
+pub const SMALL_HOLE_RATIO: f64 = 0.01;
+/// Free–free plates with r_i/r_a at least this use the exact rigid-like functions.
+pub const RING_RATIO: f64 = 0.5;
 
 /// c_k = ∫₀^{2π} cos²(kφ) dφ.
 pub fn angular_norm(k: u32) -> f64 {
@@ -41,6 +59,8 @@ pub struct RadialDiscretisation {
     pub free: Vec<usize>,
     /// Position in `free` of each global B-spline, or None if dropped.
     slot: Vec<Option<usize>>,
+    /// Free–free: slots 0 and 1 hold R = 1 and R = (r − r_m)/width instead of N_0, N_1.
+    rigid_functions: Option<(f64, f64)>,
     points: Vec<QuadPoint>,
     rigidity: f64,
     areal_density: f64,
@@ -49,7 +69,13 @@ pub struct RadialDiscretisation {
 
 impl RadialDiscretisation {
     pub fn new(plate: &PlateConfig, rigidity: f64) -> Self {
-        let basis = BSplineBasis::new(plate.inner_radius, plate.outer_radius, plate.radial_splines);
+        let (ri, ra) = (plate.inner_radius, plate.outer_radius);
+        let pinned_small_hole = plate.inner_boundary != Boundary::Free && ri / ra < SMALL_HOLE_RATIO;
+        let basis = if pinned_small_hole {
+            BSplineBasis::graded(ri, ra, plate.radial_splines, GRADED_KNOTS, 0.25 * ri)
+        } else {
+            BSplineBasis::new(ri, ra, plate.radial_splines)
+        };
         let n = basis.len();
         let drop_inner = plate.inner_boundary.essential_conditions();
         let drop_outer = plate.outer_boundary.essential_conditions();
@@ -58,6 +84,8 @@ impl RadialDiscretisation {
         for (pos, &g) in free.iter().enumerate() {
             slot[g] = Some(pos);
         }
+        let free_free = plate.inner_boundary == Boundary::Free && plate.outer_boundary == Boundary::Free;
+        let rigid_functions = (free_free && ri / ra >= RING_RATIO).then_some((0.5 * (ri + ra), ra - ri));
         let mut points = Vec::new();
         let mut buf = Vec::new();
         for s in 0..basis.spans() {
@@ -72,6 +100,7 @@ impl RadialDiscretisation {
             basis,
             free,
             slot,
+            rigid_functions,
             points,
             rigidity,
             areal_density: plate.density * plate.thickness,
@@ -92,39 +121,62 @@ impl RadialDiscretisation {
         let k2 = kf * kf;
         let nu = self.poisson;
         let ck = angular_norm(k);
+        // Up to six functions are non-zero at a point: the span's four B-splines,
+        // or for a free–free plate the rigid-like pair and the span's others.
+        let mut local: [(usize, [f64; 3]); 6] = [(0, [0.0; 3]); 6];
         for p in &self.points {
             let r = p.r;
             let w = p.weight * r * ck;
-            // Per local function: laplacian L, R'' (A), R'/r − k²R/r² (B), R'/r − R/r² (C).
-            let mut lap = [0.0; 4];
-            let mut a = [0.0; 4];
-            let mut b = [0.0; 4];
-            let mut c = [0.0; 4];
-            for j in 0..4 {
-                let (v, d1, d2) = (p.ders[0][j], p.ders[1][j], p.ders[2][j]);
-                a[j] = d2;
-                b[j] = d1 / r - k2 * v / (r * r);
-                c[j] = d1 / r - v / (r * r);
-                lap[j] = a[j] + b[j];
+            let mut count = 0;
+            if let Some((rm, width)) = self.rigid_functions {
+                local[0] = (0, [1.0, 0.0, 0.0]);
+                local[1] = (1, [(r - rm) / width, 1.0 / width, 0.0]);
+                count = 2;
             }
-            for i in 0..4 {
-                let Some(gi) = self.slot[p.span + i] else { continue };
-                for j in 0..4 {
-                    let Some(gj) = self.slot[p.span + j] else { continue };
-                    let stiff = lap[i] * lap[j] - (1.0 - nu) * (a[i] * b[j] + b[i] * a[j]) + 2.0 * (1.0 - nu) * k2 * c[i] * c[j];
+            for j in 0..4 {
+                let g = p.span + j;
+                if self.rigid_functions.is_some() && g < 2 {
+                    continue;
+                }
+                let Some(pos) = self.slot[g] else { continue };
+                local[count] = (pos, [p.ders[0][j], p.ders[1][j], p.ders[2][j]]);
+                count += 1;
+            }
+            // Per function: R'' (A), R'/r − k²R/r² (B), R'/r − R/r² (C); laplacian A + B.
+            let mut abc = [[0.0; 3]; 6];
+            for (f, &(_, [v, d1, d2])) in abc.iter_mut().zip(&local[..count]) {
+                *f = [d2, d1 / r - k2 * v / (r * r), d1 / r - v / (r * r)];
+            }
+            for i in 0..count {
+                let (gi, [vi, ..]) = local[i];
+                let [ai, bi, ci] = abc[i];
+                for j in 0..count {
+                    let (gj, [vj, ..]) = local[j];
+                    let [aj, bj, cj] = abc[j];
+                    let stiff = (ai + bi) * (aj + bj) - (1.0 - nu) * (ai * bj + bi * aj) + 2.0 * (1.0 - nu) * k2 * ci * cj;
                     kk[(gi, gj)] += self.rigidity * w * stiff;
-                    mm[(gi, gj)] += self.areal_density * w * p.ders[0][i] * p.ders[0][j];
+                    mm[(gi, gj)] += self.areal_density * w * vi * vj;
                 }
             }
         }
         (kk, mm)
     }
 
-    /// Expand free coefficients to all B-splines (zeros where dropped).
+    /// Expand free coefficients to B-spline coefficients of all splines (zeros
+    /// where dropped). The rigid-like pair of a free–free plate is re-expressed
+    /// in B-splines: 1 = Σ N_j and r = Σ ξ*_j N_j (Greville abscissae).
     pub fn expand(&self, free_coefficients: impl Iterator<Item = f64>) -> Vec<f64> {
         let mut full = vec![0.0; self.basis.len()];
         for (&g, c) in self.free.iter().zip(free_coefficients) {
             full[g] = c;
+        }
+        if let Some((rm, width)) = self.rigid_functions {
+            let (c0, c1) = (full[0], full[1]);
+            full[0] = 0.0;
+            full[1] = 0.0;
+            for (b, xi) in full.iter_mut().zip(self.basis.greville()) {
+                *b += c0 + c1 * (xi - rm) / width;
+            }
         }
         full
     }
