@@ -8,5 +8,8 @@ pub mod cli;
 pub mod config;
 pub mod dynamics;
 pub mod model;
+pub mod study;
 #[cfg(feature = "ros")]
 pub mod ros;
+#[cfg(feature = "ros")]
+pub mod bag;

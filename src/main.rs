@@ -4,7 +4,7 @@ use annular_plate::cli;
 use annular_plate::dynamics::Simulation;
 use anyhow::Context;
 use clap::{Parser, Subcommand};
-use std::io::{BufWriter, IsTerminal};
+use std::io::{BufWriter, IsTerminal, Write};
 use std::path::PathBuf;
 
 #[derive(Parser)]
@@ -23,7 +23,7 @@ enum Command {
         #[arg(long)]
         json: bool,
     },
-    /// Simulate offline and write a CSV.
+    /// Simulate offline and write a CSV and/or a rosbag2 bag.
     Simulate {
         file: PathBuf,
         /// Simulated time, s.
@@ -31,15 +31,28 @@ enum Command {
         duration: f64,
         /// Output CSV file ("-" for stdout).
         #[arg(long)]
-        csv: PathBuf,
+        csv: Option<PathBuf>,
+        /// Also (or only) write the node's topics, in simulated time, to this new rosbag2 directory (MCAP).
+        #[arg(long, value_name = "DIR")]
+        bag: Option<PathBuf>,
         /// No progress bar.
         #[arg(long)]
         quiet: bool,
     },
+    /// Draw pictures (PNG or SVG): time histories from a `simulate` CSV, mode shapes.
+    Plot {
+        #[command(subcommand)]
+        what: cli::plot::PlotCommand,
+    },
+    /// Measure accuracy against cost (radial splines, mode count, integrator and step) and recommend settings.
+    Study(cli::study::StudyArgs),
     /// Run the ROS 2 node (default scene: a brake test bench).
     Run {
         /// Params file (ROS 2 format); omitted: the built-in brake test bench.
         file: Option<PathBuf>,
+        /// Record the node's topics into this new rosbag2 directory (MCAP) until shutdown.
+        #[arg(long, value_name = "DIR")]
+        record: Option<PathBuf>,
         /// ROS arguments: --ros-args -r __node:=NAME -p name:=value --params-file F ...
         #[arg(trailing_var_arg = true, allow_hyphen_values = true)]
         ros_args: Vec<String>,
@@ -53,10 +66,10 @@ fn main() -> anyhow::Result<()> {
     let (own, ros_args) = args.split_at(split);
     let cli = Cli::parse_from(own);
     match cli.command {
-        None => run_node(None, ros_args),
-        Some(Command::Run { file, ros_args: mut extra }) => {
+        None => run_node(None, ros_args, None),
+        Some(Command::Run { file, record, ros_args: mut extra }) => {
             extra.extend_from_slice(ros_args);
-            run_node(file, &extra)
+            run_node(file, &extra, record)
         }
         Some(Command::Modes { file, json }) => {
             let config = cli::load_config(&file)?;
@@ -65,7 +78,10 @@ fn main() -> anyhow::Result<()> {
             cli::modes::write(&model, json, &mut stdout.lock())?;
             Ok(())
         }
-        Some(Command::Simulate { file, duration, csv, quiet }) => {
+        Some(Command::Plot { what }) => cli::plot::main(what),
+        Some(Command::Study(args)) => cli::study::main(args),
+        Some(Command::Simulate { file, duration, csv, bag, quiet }) => {
+            anyhow::ensure!(csv.is_some() || bag.is_some(), "simulate writes --csv OUT, --bag DIR or both: give at least one");
             anyhow::ensure!(duration.is_finite() && duration >= 0.0, "--duration must be a finite number ≥ 0 s, got {duration}");
             let config = cli::load_config(&file)?;
             let mut sim = Simulation::new(config).with_context(|| format!("{}", file.display()))?;
@@ -76,15 +92,23 @@ fn main() -> anyhow::Result<()> {
             }
             let progress = |f: f64| bar.set_position((f * 1000.0) as u64);
             let started = std::time::Instant::now();
-            let steps = if csv.as_os_str() == "-" {
-                cli::simulate::run(&mut sim, duration, &mut BufWriter::new(std::io::stdout().lock()), progress)?
-            } else {
-                let f = std::fs::File::create(&csv).with_context(|| format!("cannot create {}", csv.display()))?;
-                cli::simulate::run(&mut sim, duration, &mut BufWriter::new(f), progress)?
+            let mut out: Option<Box<dyn Write>> = match &csv {
+                None => None,
+                Some(p) if p.as_os_str() == "-" => Some(Box::new(BufWriter::new(std::io::stdout().lock()))),
+                Some(p) => Some(Box::new(BufWriter::new(
+                    std::fs::File::create(p).with_context(|| format!("cannot create {}", p.display()))?,
+                ))),
             };
+            let mut bag = bag.map(|dir| cli::record::BagOutput::create(&dir, &sim)).transpose()?;
+            let record = |s: &Simulation| bag.as_mut().map_or(Ok(()), |b| b.record(s));
+            let steps = cli::simulate::run_with(&mut sim, duration, out.as_deref_mut(), record, progress)?;
             bar.finish_and_clear();
+            let bag_line = bag.map(|b| b.finish()).transpose()?;
             if !quiet {
                 eprintln!("{steps} steps, {duration} s simulated in {:.3} s wall", started.elapsed().as_secs_f64());
+                if let Some(line) = bag_line {
+                    eprintln!("{line}");
+                }
             }
             Ok(())
         }
@@ -92,11 +116,11 @@ fn main() -> anyhow::Result<()> {
 }
 
 #[cfg(feature = "ros")]
-fn run_node(file: Option<PathBuf>, ros_args: &[String]) -> anyhow::Result<()> {
-    annular_plate::ros::run_node(file, ros_args)
+fn run_node(file: Option<PathBuf>, ros_args: &[String], record: Option<PathBuf>) -> anyhow::Result<()> {
+    annular_plate::ros::run_node(file, ros_args, record)
 }
 
 #[cfg(not(feature = "ros"))]
-fn run_node(_file: Option<PathBuf>, _ros_args: &[String]) -> anyhow::Result<()> {
+fn run_node(_file: Option<PathBuf>, _ros_args: &[String], _record: Option<PathBuf>) -> anyhow::Result<()> {
     anyhow::bail!("this build has no ROS 2 node (built without the `ros` feature); `modes` and `simulate` work")
 }

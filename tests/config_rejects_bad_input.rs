@@ -101,13 +101,19 @@ fn very_narrow_ring_is_rejected() {
 #[test]
 fn geometry_notes_explain_near_degenerate_geometry() {
     assert!(Config::default().plate.geometry_notes().is_empty());
-    let narrow = config_with("plate.inner_radius: 0.148\nplate.outer_radius: 0.15").unwrap();
+    let narrow = config_with("plate.inner_radius: 0.148\nplate.outer_radius: 0.15\nplate.thickness: 0.0004").unwrap();
     let notes = narrow.plate.geometry_notes();
     assert_eq!(notes.len(), 1, "{notes:?}");
     assert!(notes[0].contains("narrow"), "{notes:?}");
-    // A small hole with a clamped inner edge is fine; a free one is noted.
+    // A small clamped hole is a point support, not a solid plate: noted as such.
     let clamped = config_with("plate.inner_radius: 0.001").unwrap();
-    assert!(clamped.plate.geometry_notes().is_empty());
+    let notes = clamped.plate.geometry_notes();
+    assert_eq!(notes.len(), 1, "{notes:?}");
+    assert!(notes[0].contains("pinned") && notes[0].contains("not a solid"), "{notes:?}");
+    // A plate thicker than a quarter of its width is outside Kirchhoff theory: noted.
+    let thick = config_with("plate.thickness: 0.03").unwrap();
+    let notes = thick.plate.geometry_notes();
+    assert!(notes.len() == 1 && notes[0].contains("Kirchhoff"), "{notes:?}");
     let free = config_with("plate.inner_radius: 0.001\nplate.inner_boundary: free\nplate.outer_boundary: clamped").unwrap();
     assert_eq!(free.plate.geometry_notes().len(), 1);
 }

@@ -343,3 +343,42 @@ fn the_checker_catches_a_mismatch() {
     assert_eq!(f.len(), 1);
     assert!(f[0].array && f[0].ty == "float64" && f[0].name == "v");
 }
+
+/// The definitions recorded into bags (`bag::schemas`, MCAP schemas of
+/// encoding ros2msg) are the ones checked above, and each recorded type's
+/// full schema text — its own text and the appended `MSG:` blocks — is on
+/// its own enough to describe the wire struct.
+#[test]
+fn bag_schemas_describe_the_wire_structs() {
+    use annular_plate::bag::schemas;
+    let defs = Definitions::load();
+    let key = |f: &Field| (f.ty.clone(), f.array, f.name.clone());
+    for t in schemas::known_types() {
+        let short = t.replacen("/msg/", "/", 1);
+        let want = defs.by_name.get(&short).unwrap_or_else(|| panic!("{short}: not among the checked definitions"));
+        let got = parse(schemas::own_text(&t).unwrap());
+        assert_eq!(got.iter().map(key).collect::<Vec<_>>(), want.iter().map(key).collect::<Vec<_>>(), "{t}");
+    }
+    let delimiter = format!("\n{}\nMSG: ", "=".repeat(80));
+    let from_schema = |full: &str| {
+        let text = schemas::ros2msg(&full.replacen('/', "/msg/", 1)).unwrap();
+        let mut blocks = text.split(delimiter.as_str());
+        let mut by_name = BTreeMap::new();
+        by_name.insert(full.to_string(), parse(blocks.next().unwrap()));
+        for b in blocks {
+            let (name, body) = b.split_once('\n').unwrap_or((b, ""));
+            assert!(by_name.insert(name.to_string(), parse(body)).is_none(), "{full}: {name} twice");
+        }
+        Definitions { by_name }
+    };
+    let recorded = [
+        ("sensor_msgs/JointState", trace::<m::JointState>()),
+        ("tf2_msgs/TFMessage", trace::<m::TFMessage>()),
+        ("annular_plate/ModalAmplitudes", trace::<m::ModalAmplitudes>()),
+        ("rosgraph_msgs/Clock", trace::<m::Clock>()),
+        ("diagnostic_msgs/DiagnosticArray", trace::<m::DiagnosticArray>()),
+    ];
+    for (full, shape) in recorded {
+        from_schema(full).check(full, &shape, full);
+    }
+}

@@ -1,7 +1,10 @@
 //! Command-line front ends: `modes` and `simulate` (the node is `ros::run_node`).
 
 pub mod modes;
+pub mod plot;
+pub mod record;
 pub mod simulate;
+pub mod study;
 
 use crate::config::Config;
 use std::path::Path;

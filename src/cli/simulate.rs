@@ -1,7 +1,12 @@
-//! `annular_plate simulate FILE --duration S --csv OUT`: an offline run.
+//! `annular_plate simulate FILE --duration S --csv OUT [--bag DIR]`: an offline run
+//! (the bag: `bag::offline`, through `cli::record`).
 //!
 //! Columns: time, joint_position, joint_velocity, q1..qN (Lagrangian, mode
-//! order of `modes`), qale1..qaleN, ale{j}_uz, lagrange{j}_uz (m).
+//! order of `modes`), qale1..qaleN, ale{j}_uz, lagrange{j}_uz (m); then, only
+//! for scenes with load models (docs/scenes.md): joint_effort (N·m) and
+//! pad{p}_clamp_force, pad{p}_normal_force, pad{p}_friction_torque (N, N, N·m);
+//! tool_tip_z, tool_chip_thickness (m), tool_feed_force (N);
+//! link{j}_force (N).
 
 use crate::dynamics::Simulation;
 use std::io::Write;
@@ -14,6 +19,16 @@ pub fn header(sim: &Simulation) -> String {
     cols.extend((1..=n).map(|i| format!("qale{i}")));
     cols.extend((1..=sim.n_ale_nodes()).map(|j| format!("ale{j}_uz")));
     cols.extend((1..=sim.n_lagrange_nodes()).map(|j| format!("lagrange{j}_uz")));
+    if !sim.scene().load_models.is_empty() {
+        cols.push("joint_effort".into());
+    }
+    for p in 1..=sim.pad_count() {
+        cols.extend([format!("pad{p}_clamp_force"), format!("pad{p}_normal_force"), format!("pad{p}_friction_torque")]);
+    }
+    if sim.has_tool() {
+        cols.extend(["tool_tip_z".into(), "tool_chip_thickness".into(), "tool_feed_force".into()]);
+    }
+    cols.extend((1..=sim.link_count()).map(|j| format!("link{j}_force")));
     cols.join(",")
 }
 
@@ -32,24 +47,58 @@ pub fn write_row(sim: &Simulation, line: &mut String) {
     for i in 0..sim.n_lagrange_nodes() {
         let _ = write!(line, ",{:e}", sim.lagrange_node(i).uz);
     }
+    if !sim.scene().load_models.is_empty() {
+        let _ = write!(line, ",{:e}", sim.joint().effort);
+    }
+    for p in 0..sim.pad_count() {
+        let o = sim.pad_output(p);
+        let _ = write!(line, ",{:e},{:e},{:e}", o.clamp_force, o.normal_force, o.friction_torque);
+    }
+    if let Some(t) = sim.tool_output() {
+        let _ = write!(line, ",{:e},{:e},{:e}", t.tip, t.chip, t.feed_force);
+    }
+    for j in 0..sim.link_count() {
+        let _ = write!(line, ",{:e}", sim.link_force(j));
+    }
 }
 
 /// Run for `duration` seconds writing a row per output step (t = 0 included).
 /// `progress` is called with the fraction done.
-pub fn run(sim: &mut Simulation, duration: f64, out: &mut impl Write, mut progress: impl FnMut(f64)) -> anyhow::Result<u64> {
+pub fn run(sim: &mut Simulation, duration: f64, out: &mut impl Write, progress: impl FnMut(f64)) -> anyhow::Result<u64> {
+    run_with(sim, duration, Some(out), |_| Ok(()), progress)
+}
+
+/// [`run`] with the CSV optional, calling `each` with the state at t = 0
+/// and after every step (`simulate --bag` records there).
+pub fn run_with<W: Write + ?Sized>(
+    sim: &mut Simulation,
+    duration: f64,
+    mut out: Option<&mut W>,
+    mut each: impl FnMut(&Simulation) -> anyhow::Result<()>,
+    mut progress: impl FnMut(f64),
+) -> anyhow::Result<u64> {
     let steps = (duration / sim.dt()).round() as u64;
-    writeln!(out, "{}", header(sim))?;
     let mut line = String::with_capacity(4096);
-    write_row(sim, &mut line);
-    writeln!(out, "{line}")?;
+    if let Some(out) = out.as_mut() {
+        writeln!(out, "{}", header(sim))?;
+        write_row(sim, &mut line);
+        writeln!(out, "{line}")?;
+    }
+    each(sim)?;
     let report_every = (steps / 200).max(1);
     for s in 1..=steps {
         sim.step().map_err(|e| anyhow::anyhow!("{e}"))?;
-        write_row(sim, &mut line);
-        writeln!(out, "{line}")?;
+        if let Some(out) = out.as_mut() {
+            write_row(sim, &mut line);
+            writeln!(out, "{line}")?;
+        }
+        each(sim)?;
         if s % report_every == 0 {
             progress(s as f64 / steps as f64);
         }
+    }
+    if let Some(out) = out.as_mut() {
+        out.flush()?;
     }
     Ok(steps)
 }

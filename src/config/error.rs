@@ -135,6 +135,25 @@ pub enum ConfigError {
 
     #[error("reference.tilt = {tilt} rad must satisfy |tilt| < π/2")]
     TiltOutOfRange { tilt: f64 },
+
+    // ---- load models (pads, tool, links) and initial state ------------------
+    #[error("{key} names {kind} node {node} (nodes count from 1), but the scene has {} {kind} node(s) (nodes.{kind}_radial / nodes.{kind}_angular)", count)]
+    NoSuchNode { key: String, node: i64, kind: &'static str, count: usize },
+
+    #[error("{key} is given but {enabling_key} is empty or missing, so this load model is off; give {enabling_key} or remove {key}")]
+    KeyWithoutSection { key: String, enabling_key: &'static str },
+
+    #[error("pads.contact_pad: pads are numbered from 1 without gaps, but pad {pad} has no contact point (pads used: 1..={pads})")]
+    PadWithoutContacts { pad: usize, pads: usize },
+
+    #[error("pads.clamp_force has {len} values; give 1 (for every pad) or one per pad ({pads})")]
+    ClampForceLength { len: usize, pads: usize },
+
+    #[error("tool.ale_node = {node} is at ξ_r = {radial} (nodes.ale_radial[{}]); the tool cuts the rim, so its ALE node must be at ξ_r = 1", node - 1)]
+    ToolNotOnRim { node: usize, radial: f64 },
+
+    #[error("tool.depth_of_cut = {} m reaches beyond the annulus: it must be smaller than plate.outer_radius − plate.inner_radius = {} m", num(*depth), num(*width))]
+    DepthOfCutBeyondPlate { depth: f64, width: f64 },
 }
 
 /// A number for messages: plain for ordinary magnitudes, `2.1e11` for large or tiny ones.
@@ -192,7 +211,8 @@ fn degenerate_text(kind: Degeneracy, inner: f64, outer: f64) -> String {
         Degeneracy::SolidCircularPlate => format!(
             "plate.inner_radius = {} m is below 1e-6 × plate.outer_radius = {} m: the model is no solid \
              circular plate (the displacements at the inner radius fail the compatibility conditions, paper section 4.2); \
-             use a small but finite inner radius of at least 1e-6 × the outer radius, ideally with a clamped inner edge",
+             use a small but finite inner radius of at least 1e-6 × the outer radius: with a free inner edge it \
+             approaches the solid plate, with a supported or clamped one a plate pinned at its centre",
             num(inner),
             num(outer)
         ),

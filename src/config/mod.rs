@@ -138,13 +138,30 @@ impl PlateConfig {
     pub fn geometry_notes(&self) -> Vec<String> {
         let (ri, ra) = (self.inner_radius, self.outer_radius);
         let mut notes = Vec::new();
-        if ri / ra < 0.01 && self.inner_boundary != Boundary::Clamped {
+        if ri / ra < 0.01 {
+            notes.push(match self.inner_boundary {
+                Boundary::Free => format!(
+                    "r_i/r_a = {:.3e} < 0.01 with a free inner edge: the model approaches the solid circular plate, \
+                     but the displacements of different points of the inner edge need not coincide, so they do not \
+                     satisfy the compatibility conditions exactly (paper section 4.2)",
+                    ri / ra
+                ),
+                b => format!(
+                    "r_i/r_a = {:.3e} < 0.01 with a {} inner edge: this is a plate pinned at its centre (a point \
+                     support), not a solid circular plate; its k = 1 modes approach their limit only like \
+                     1/ln(r_a/r_i) (docs/hard_cases.md). Knots are graded towards the hole to resolve it",
+                    ri / ra,
+                    b.name()
+                ),
+            });
+        }
+        if self.thickness > 0.25 * (ra - ri) {
             notes.push(format!(
-                "r_i/r_a = {:.3e} < 0.01 with a {} inner edge: close to a solid circular plate the displacements of \
-                 different points of the inner edge need not coincide, so they do not satisfy the compatibility \
-                 conditions (paper section 4.2); a clamped inner edge enforces them",
-                ri / ra,
-                self.inner_boundary.name()
+                "plate.thickness = {} m is more than a quarter of the width r_a − r_i = {} m: outside Kirchhoff plate \
+                 theory (shear deformation and rotary inertia would lower the frequencies); the model computes the \
+                 Kirchhoff plate exactly",
+                self.thickness,
+                ra - ri
             ));
         }
         if (ra - ri) / ra < 0.02 {
@@ -277,6 +294,9 @@ pub struct SimulationConfig {
     pub realtime_factor: f64,
     /// Publish every `publish_divisor`-th step (the node only).
     pub publish_divisor: u32,
+    /// RK4 sub-steps itself so that h·λ_max stays below this (accuracy of the
+    /// explicit reference; its amplitude error per step is (hω)⁶/144).
+    pub rk4_step_limit: f64,
 }
 
 impl Default for SimulationConfig {
@@ -288,9 +308,15 @@ impl Default for SimulationConfig {
             coordinates: Coordinates::Ale,
             realtime_factor: 1.0,
             publish_divisor: 1,
+            rk4_step_limit: DEFAULT_RK4_STEP_LIMIT,
         }
     }
 }
+
+/// Default of `simulation.rk4_step_limit`.
+pub const DEFAULT_RK4_STEP_LIMIT: f64 = 0.2;
+/// Largest `simulation.rk4_step_limit`: RK4's stability limit on the imaginary axis is 2√2.
+pub const MAX_RK4_STEP_LIMIT: f64 = 2.5;
 
 /// Input plausibility limits (`limits.*`): larger wrenches are rejected as absurd.
 #[derive(Debug, Clone, PartialEq, Serialize)]
@@ -311,6 +337,114 @@ impl Default for LimitsConfig {
     }
 }
 
+// ---- load models (paper section 5; docs/scenes.md) ------------------------------
+
+/// One pad contact point: an ALE node with a pad on each face of the disc.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct PadContact {
+    /// ALE node, 0-based (`pads.ale_nodes` counts from 1).
+    pub node: usize,
+    /// Pad it belongs to, 0-based (`pads.contact_pad` counts from 1).
+    pub pad: usize,
+}
+
+/// How a pad's clamp force is applied (`pads.caliper`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Caliper {
+    /// The caliper is held where the clamp force puts it on an undeformed disc.
+    Fixed,
+    /// The clamp force is a force (hydraulic piston, floating caliper): each
+    /// face's pad is a rigid backing plate pressed with it.
+    Floating,
+}
+
+impl Caliper {
+    pub fn name(self) -> &'static str {
+        match self {
+            Caliper::Fixed => "fixed",
+            Caliper::Floating => "floating",
+        }
+    }
+}
+
+/// Brake pads (`pads.*`, paper 5.3 and Fig. 18): at every contact point an
+/// axial spring-damper on each face against the pad's backing plate, pressed
+/// with the pad's clamp force, and friction μN along the deformed surface.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct PadsConfig {
+    pub contacts: Vec<PadContact>,
+    /// Initial clamp force of each pad, N: the force each face of the disc is
+    /// pressed with, shared equally by the pad's contact points.
+    pub clamp_force: Vec<f64>,
+    /// Axial contact stiffness k_c per contact point and face, N/m.
+    pub contact_stiffness: f64,
+    /// Axial contact damping c_c per contact point and face, N·s/m.
+    pub contact_damping: f64,
+    /// Friction coefficient μ.
+    pub friction_coefficient: f64,
+    /// A face whose normal force would pull is released (N ≥ 0).
+    pub lift_off: bool,
+    /// Friction follows the deformed surface (the paper's follower forces).
+    pub follower_friction: bool,
+    pub caliper: Caliper,
+}
+
+impl PadsConfig {
+    /// Number of pads (the largest pad index + 1).
+    pub fn pad_count(&self) -> usize {
+        self.contacts.iter().map(|c| c.pad + 1).max().unwrap_or(0)
+    }
+}
+
+/// The lathe tool (`tool.*`, paper 5.1): fed parallel to the axis onto the
+/// rim, on a spring-damper, with the feed force of eq. (21) from the chip.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct ToolConfig {
+    /// ALE node on the rim the feed force acts at, 0-based (`tool.ale_node` counts from 1).
+    pub node: usize,
+    /// Chip width b = radial depth of cut, m.
+    pub depth_of_cut: f64,
+    /// Initial feed rate, m/s (towards −z, from the +z face through the disc).
+    pub feed_rate: f64,
+    /// Axial gap between the tool tip and the +z face at t = 0, m.
+    pub start_clearance: f64,
+    /// Spring between tool holder and tool tip, N/m.
+    pub stiffness: f64,
+    /// Damper between tool holder and tool tip, N·s/m.
+    pub damping: f64,
+    /// k_f1.1 of eq. (21): specific feed force at a 1 mm × 1 mm chip, Pa (351 N/mm² = 3.51e8 Pa).
+    pub specific_force: f64,
+    /// m_f of eq. (21).
+    pub force_exponent: f64,
+}
+
+/// Largest plausible tool feed rate, m/s (60 m/min): `tool.feed_rate` and the feed command.
+pub const MAX_TOOL_FEED_RATE: f64 = 1.0;
+
+/// Pitch links of the swash plate (`links.*`, paper 5.2): prescribed axial
+/// forces at Lagrangian nodes, cyclic in the azimuth ψ = φ + χ of the node:
+/// F_z = mean_force + cyclic_force · cos(ψ − cyclic_phase).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct LinksConfig {
+    /// Lagrangian nodes, 0-based (`links.lagrange_nodes` counts from 1).
+    pub nodes: Vec<usize>,
+    /// N.
+    pub mean_force: f64,
+    /// N.
+    pub cyclic_force: f64,
+    /// rad.
+    pub cyclic_phase: f64,
+}
+
+/// Initial elastic state (`initial.*`): Lagrangian amplitudes and rates at t = 0
+/// in `modes` order; empty: at rest.
+#[derive(Debug, Clone, PartialEq, Default, Serialize)]
+pub struct InitialConfig {
+    pub q: Vec<f64>,
+    pub q_dot: Vec<f64>,
+}
+
 /// The whole validated configuration.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct Config {
@@ -323,6 +457,14 @@ pub struct Config {
     pub gravity: [f64; 3],
     pub simulation: SimulationConfig,
     pub limits: LimitsConfig,
+    /// Brake pads (`pads.*`); `None`: no pads.
+    pub pads: Option<PadsConfig>,
+    /// Lathe tool (`tool.*`); `None`: no tool.
+    pub tool: Option<ToolConfig>,
+    /// Swash-plate pitch links (`links.*`); `None`: no links.
+    pub links: Option<LinksConfig>,
+    /// Initial elastic state (`initial.*`).
+    pub initial: InitialConfig,
 }
 
 impl Config {
@@ -363,6 +505,10 @@ impl Default for Config {
             gravity: [0.0; 3],
             simulation: SimulationConfig::default(),
             limits: LimitsConfig::default(),
+            pads: None,
+            tool: None,
+            links: None,
+            initial: InitialConfig::default(),
         }
     }
 }

@@ -25,6 +25,11 @@ impl<'a> Reader<'a> {
         self.params.get(key)
     }
 
+    /// Whether the parameter set gives `key` at all.
+    pub(super) fn has(&self, key: &str) -> bool {
+        self.get(key).is_some()
+    }
+
     /// A finite double (an integer is accepted).
     pub(super) fn f64_opt(&self, key: &str) -> Result<Option<f64>, ConfigError> {
         let x = match self.get(key) {

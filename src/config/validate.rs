@@ -13,8 +13,9 @@ use std::f64::consts::FRAC_PI_2;
 
 use super::raw::{positive, Reader};
 use super::{
-    Boundary, Config, ConfigError, Coordinates, IntegratorKind, JointConfig, LimitsConfig, LoadsConfig, NodePosition,
-    NodesConfig, Params, PlateConfig, ReferenceConfig, SimulationConfig, WrenchConfig,
+    Boundary, Caliper, Config, ConfigError, Coordinates, InitialConfig, IntegratorKind, JointConfig, LimitsConfig, LinksConfig,
+    LoadsConfig, NodePosition, NodesConfig, PadContact, PadsConfig, Params, PlateConfig, ReferenceConfig,
+    SimulationConfig, ToolConfig, WrenchConfig, MAX_TOOL_FEED_RATE,
 };
 use super::error::Degeneracy;
 
@@ -49,6 +50,7 @@ const SIMULATION_KEYS: &[&str] = &[
     "simulation.coordinates",
     "simulation.realtime_factor",
     "simulation.publish_divisor",
+    "simulation.rk4_step_limit",
 ];
 
 const LIMITS_KEYS: &[&str] =
@@ -59,9 +61,52 @@ const LIMITS_KEYS: &[&str] =
 /// type-checked here, and read by the node itself.
 const TOP_LEVEL_KEYS: &[&str] = &["gravity", "use_sim_time"];
 
+/// Load models of the paper's section 5 (docs/scenes.md): brake pads.
+const PADS_KEYS: &[&str] = &[
+    "pads.ale_nodes",
+    "pads.contact_pad",
+    "pads.clamp_force",
+    "pads.contact_stiffness",
+    "pads.contact_damping",
+    "pads.friction_coefficient",
+    "pads.lift_off",
+    "pads.follower_friction",
+    "pads.caliper",
+];
+
+/// The lathe tool (paper 5.1).
+const TOOL_KEYS: &[&str] = &[
+    "tool.ale_node",
+    "tool.depth_of_cut",
+    "tool.feed_rate",
+    "tool.start_clearance",
+    "tool.stiffness",
+    "tool.damping",
+    "tool.specific_force",
+    "tool.force_exponent",
+];
+
+/// Swash-plate pitch links (paper 5.2).
+const LINKS_KEYS: &[&str] = &["links.lagrange_nodes", "links.mean_force", "links.cyclic_force", "links.cyclic_phase"];
+
+/// Initial elastic state.
+const INITIAL_KEYS: &[&str] = &["initial.q", "initial.q_dot"];
+
 /// All key tables. Add a new section's table here.
-const SECTIONS: &[&[&str]] =
-    &[PLATE_KEYS, NODES_KEYS, LOADS_KEYS, JOINT_KEYS, REFERENCE_KEYS, SIMULATION_KEYS, LIMITS_KEYS, TOP_LEVEL_KEYS];
+const SECTIONS: &[&[&str]] = &[
+    PLATE_KEYS,
+    NODES_KEYS,
+    LOADS_KEYS,
+    JOINT_KEYS,
+    REFERENCE_KEYS,
+    SIMULATION_KEYS,
+    LIMITS_KEYS,
+    TOP_LEVEL_KEYS,
+    PADS_KEYS,
+    TOOL_KEYS,
+    LINKS_KEYS,
+    INITIAL_KEYS,
+];
 
 /// Every accepted parameter name.
 pub(super) fn known_keys() -> Vec<&'static str> {
@@ -70,6 +115,7 @@ pub(super) fn known_keys() -> Vec<&'static str> {
 
 const INTEGRATORS: &[&str] = &["exponential", "implicit_midpoint", "rk4"];
 const COORDINATES: &[&str] = &["ale", "lagrangian"];
+const CALIPERS: &[&str] = &["floating", "fixed"];
 
 /// Largest nodal-diameter number k accepted.
 const MAX_NODAL_DIAMETER: i64 = 200;
@@ -96,8 +142,12 @@ pub(super) fn config_from_params(params: &Params) -> Result<Config, ConfigError>
     let gravity = r.vec3("gravity", [0.0; 3])?;
     let simulation = read_simulation(&r)?;
     let _use_sim_time = r.bool("use_sim_time", false)?;
+    let pads = read_pads(&r, &nodes, &limits)?;
+    let tool = read_tool(&r, &plate, &nodes)?;
+    let links = read_links(&r, &nodes, &limits)?;
+    let initial = read_initial(&r, &plate, &limits)?;
 
-    Ok(Config { plate, nodes, loads, joint, reference, gravity, simulation, limits })
+    Ok(Config { plate, nodes, loads, joint, reference, gravity, simulation, limits, pads, tool, links, initial })
 }
 
 // ---- unknown keys ------------------------------------------------------------
@@ -171,7 +221,8 @@ fn read_plate(r: &Reader) -> Result<PlateConfig, ConfigError> {
     if inner / outer < MIN_RADIUS_RATIO {
         return Err(ConfigError::DegenerateGeometry { kind: Degeneracy::SolidCircularPlate, inner, outer });
     }
-    if (outer - inner) / outer < MIN_RELATIVE_WIDTH {
+    // A ring exactly 1e-3 wide must pass despite the rounding of (r_a − r_i)/r_a.
+    if (outer - inner) / outer < MIN_RELATIVE_WIDTH * (1.0 - 1e-9) {
         return Err(ConfigError::DegenerateGeometry { kind: Degeneracy::NarrowRing, inner, outer });
     }
 
@@ -422,7 +473,11 @@ fn read_simulation(r: &Reader) -> Result<SimulationConfig, ConfigError> {
         return Err(ConfigError::Negative { key: "simulation.realtime_factor".into(), value: realtime_factor });
     }
     let publish_divisor = r.u32_in("simulation.publish_divisor", d.publish_divisor, 1, u32::MAX)?;
-    Ok(SimulationConfig { rate_hz, substeps, integrator, coordinates, realtime_factor, publish_divisor })
+    let rk4_step_limit = r.positive("simulation.rk4_step_limit", d.rk4_step_limit)?;
+    if rk4_step_limit > super::MAX_RK4_STEP_LIMIT {
+        return Err(ConfigError::AboveMaximum { key: "simulation.rk4_step_limit".into(), value: rk4_step_limit, max: super::MAX_RK4_STEP_LIMIT });
+    }
+    Ok(SimulationConfig { rate_hz, substeps, integrator, coordinates, realtime_factor, publish_divisor, rk4_step_limit })
 }
 
 fn read_choice<T>(
@@ -444,6 +499,188 @@ fn read_limits(r: &Reader) -> Result<LimitsConfig, ConfigError> {
         max_speed: r.positive("limits.max_speed", d.max_speed)?,
         max_deflection_thicknesses: r.positive("limits.max_deflection_thicknesses", d.max_deflection_thicknesses)?,
     })
+}
+
+// ---- load models and initial state (paper section 5; docs/scenes.md) ------------
+
+/// Default pad data (the scene files give their own; docs/scenes.md).
+pub const DEFAULT_PAD_CONTACT_STIFFNESS: f64 = 5.0e6;
+pub const DEFAULT_PAD_CONTACT_DAMPING: f64 = 0.0;
+pub const DEFAULT_FRICTION_COEFFICIENT: f64 = 0.4;
+/// Largest plausible friction coefficient.
+const MAX_FRICTION_COEFFICIENT: f64 = 2.0;
+/// Default tool data: the paper's feed (120 mm/min) and eq. (21) constants (paper 5.1, docs/scenes.md).
+pub const DEFAULT_TOOL_DEPTH_OF_CUT: f64 = 2.0e-3;
+pub const DEFAULT_TOOL_FEED_RATE: f64 = 0.12 / 60.0;
+pub const DEFAULT_TOOL_STIFFNESS: f64 = 2.0e7;
+pub const DEFAULT_TOOL_DAMPING: f64 = 2.0e3;
+pub const DEFAULT_TOOL_SPECIFIC_FORCE: f64 = 351.0e6;
+pub const DEFAULT_TOOL_FORCE_EXPONENT: f64 = 0.7013;
+
+/// A load model whose enabling key is empty must not be given other keys.
+fn no_other_keys(r: &Reader, table: &[&'static str], enabling_key: &'static str) -> Result<(), ConfigError> {
+    match table.iter().find(|k| **k != enabling_key && r.has(k)) {
+        Some(key) => Err(ConfigError::KeyWithoutSection { key: key.to_string(), enabling_key }),
+        None => Ok(()),
+    }
+}
+
+/// Node numbers (from 1) of existing, distinct nodes of one kind → 0-based indices.
+fn node_refs(key: &str, values: &[i64], kind: &'static str, count: usize) -> Result<Vec<usize>, ConfigError> {
+    let mut out: Vec<usize> = Vec::with_capacity(values.len());
+    for (index, &v) in values.iter().enumerate() {
+        if v < 1 {
+            return Err(ConfigError::NotPositive { key: format!("{key}[{index}]"), value: v as f64 });
+        }
+        if v as usize > count {
+            return Err(ConfigError::NoSuchNode { key: format!("{key}[{index}]"), node: v, kind, count });
+        }
+        if out.contains(&(v as usize - 1)) {
+            return Err(ConfigError::Duplicate { key: key.to_string(), value: v });
+        }
+        out.push(v as usize - 1);
+    }
+    Ok(out)
+}
+
+fn non_negative(key: &str, x: f64) -> Result<f64, ConfigError> {
+    if x < 0.0 {
+        Err(ConfigError::Negative { key: key.to_string(), value: x })
+    } else {
+        Ok(x)
+    }
+}
+
+fn at_most(key: &str, x: f64, max: f64) -> Result<f64, ConfigError> {
+    if x.abs() > max {
+        Err(ConfigError::AboveMaximum { key: key.to_string(), value: x, max })
+    } else {
+        Ok(x)
+    }
+}
+
+fn read_pads(r: &Reader, nodes: &NodesConfig, limits: &LimitsConfig) -> Result<Option<PadsConfig>, ConfigError> {
+    let numbers = r.i64_array("pads.ale_nodes", &[])?;
+    if numbers.is_empty() {
+        no_other_keys(r, PADS_KEYS, "pads.ale_nodes")?;
+        return Ok(None);
+    }
+    let node_index = node_refs("pads.ale_nodes", &numbers, "ale", nodes.ale.len())?;
+    let pad_numbers = r.i64_array("pads.contact_pad", &[])?;
+    let pad_numbers = if pad_numbers.is_empty() { vec![1; node_index.len()] } else { pad_numbers };
+    if pad_numbers.len() != node_index.len() {
+        return Err(ConfigError::LengthMismatch {
+            key_a: "pads.contact_pad".into(),
+            len_a: pad_numbers.len(),
+            key_b: "pads.ale_nodes".into(),
+            len_b: node_index.len(),
+        });
+    }
+    for (index, &p) in pad_numbers.iter().enumerate() {
+        if p < 1 {
+            return Err(ConfigError::NotPositive { key: format!("pads.contact_pad[{index}]"), value: p as f64 });
+        }
+    }
+    let contacts: Vec<PadContact> =
+        node_index.iter().zip(&pad_numbers).map(|(&node, &p)| PadContact { node, pad: p as usize - 1 }).collect();
+    let pads = pad_numbers.iter().copied().max().unwrap_or(1) as usize;
+    if let Some(pad) = (0..pads).find(|p| !contacts.iter().any(|c| c.pad == *p)) {
+        return Err(ConfigError::PadWithoutContacts { pad: pad + 1, pads });
+    }
+    let clamp = r.f64_array("pads.clamp_force", &[0.0])?;
+    for (index, &f) in clamp.iter().enumerate() {
+        let key = format!("pads.clamp_force[{index}]");
+        non_negative(&key, f)?;
+        at_most(&key, f, limits.max_force)?;
+    }
+    let clamp_force = match clamp.len() {
+        1 => vec![clamp[0]; pads],
+        n if n == pads => clamp,
+        len => return Err(ConfigError::ClampForceLength { len, pads }),
+    };
+    let contact_stiffness = r.positive("pads.contact_stiffness", DEFAULT_PAD_CONTACT_STIFFNESS)?;
+    let contact_damping = non_negative("pads.contact_damping", r.f64("pads.contact_damping", DEFAULT_PAD_CONTACT_DAMPING)?)?;
+    let mu = r.f64("pads.friction_coefficient", DEFAULT_FRICTION_COEFFICIENT)?;
+    let friction_coefficient = at_most("pads.friction_coefficient", non_negative("pads.friction_coefficient", mu)?, MAX_FRICTION_COEFFICIENT)?;
+    Ok(Some(PadsConfig {
+        contacts,
+        clamp_force,
+        contact_stiffness,
+        contact_damping,
+        friction_coefficient,
+        lift_off: r.bool("pads.lift_off", false)?,
+        follower_friction: r.bool("pads.follower_friction", true)?,
+        caliper: read_choice(r, "pads.caliper", "floating", CALIPERS, |s| match s {
+            "floating" => Some(Caliper::Floating),
+            "fixed" => Some(Caliper::Fixed),
+            _ => None,
+        })?,
+    }))
+}
+
+fn read_tool(r: &Reader, plate: &PlateConfig, nodes: &NodesConfig) -> Result<Option<ToolConfig>, ConfigError> {
+    let number = r.i64("tool.ale_node", 0)?;
+    if number == 0 {
+        no_other_keys(r, TOOL_KEYS, "tool.ale_node")?;
+        return Ok(None);
+    }
+    let node = node_refs("tool.ale_node", &[number], "ale", nodes.ale.len())
+        .map_err(|e| match e {
+            ConfigError::NotPositive { value, .. } => ConfigError::Negative { key: "tool.ale_node".into(), value },
+            ConfigError::NoSuchNode { node, kind, count, .. } => ConfigError::NoSuchNode { key: "tool.ale_node".into(), node, kind, count },
+            other => other,
+        })?[0];
+    let radial = nodes.ale[node].radial;
+    if (radial - 1.0).abs() > 1e-12 {
+        return Err(ConfigError::ToolNotOnRim { node: node + 1, radial });
+    }
+    let depth_of_cut = r.positive("tool.depth_of_cut", DEFAULT_TOOL_DEPTH_OF_CUT)?;
+    let width = plate.outer_radius - plate.inner_radius;
+    if depth_of_cut >= width {
+        return Err(ConfigError::DepthOfCutBeyondPlate { depth: depth_of_cut, width });
+    }
+    let feed_rate = at_most("tool.feed_rate", r.f64("tool.feed_rate", DEFAULT_TOOL_FEED_RATE)?, MAX_TOOL_FEED_RATE)?;
+    let start_clearance = non_negative("tool.start_clearance", r.f64("tool.start_clearance", 0.0)?)?;
+    let stiffness = r.positive("tool.stiffness", DEFAULT_TOOL_STIFFNESS)?;
+    let damping = non_negative("tool.damping", r.f64("tool.damping", DEFAULT_TOOL_DAMPING)?)?;
+    let specific_force = r.positive("tool.specific_force", DEFAULT_TOOL_SPECIFIC_FORCE)?;
+    let force_exponent = non_negative("tool.force_exponent", r.f64("tool.force_exponent", DEFAULT_TOOL_FORCE_EXPONENT)?)?;
+    if force_exponent >= 1.0 {
+        return Err(ConfigError::AboveMaximum { key: "tool.force_exponent".into(), value: force_exponent, max: 1.0 });
+    }
+    Ok(Some(ToolConfig { node, depth_of_cut, feed_rate, start_clearance, stiffness, damping, specific_force, force_exponent }))
+}
+
+fn read_links(r: &Reader, nodes: &NodesConfig, limits: &LimitsConfig) -> Result<Option<LinksConfig>, ConfigError> {
+    let numbers = r.i64_array("links.lagrange_nodes", &[])?;
+    if numbers.is_empty() {
+        no_other_keys(r, LINKS_KEYS, "links.lagrange_nodes")?;
+        return Ok(None);
+    }
+    let nodes = node_refs("links.lagrange_nodes", &numbers, "lagrange", nodes.lagrange.len())?;
+    let mean_force = at_most("links.mean_force", r.f64("links.mean_force", 0.0)?, limits.max_force)?;
+    let cyclic_force = at_most("links.cyclic_force", r.f64("links.cyclic_force", 0.0)?, limits.max_force)?;
+    let cyclic_phase = r.f64("links.cyclic_phase", 0.0)?;
+    Ok(Some(LinksConfig { nodes, mean_force, cyclic_force, cyclic_phase }))
+}
+
+fn read_initial(r: &Reader, plate: &PlateConfig, limits: &LimitsConfig) -> Result<InitialConfig, ConfigError> {
+    let n = plate.mode_count();
+    let max_q = limits.max_deflection_thicknesses * plate.thickness;
+    let mut out = InitialConfig::default();
+    for (key, slot) in [("initial.q", &mut out.q), ("initial.q_dot", &mut out.q_dot)] {
+        let values = r.f64_array(key, &[])?;
+        if !values.is_empty() && values.len() != n {
+            return Err(ConfigError::WrongLength { key: key.to_string(), len: values.len(), expected: n });
+        }
+        if key == "initial.q" {
+            for (index, &q) in values.iter().enumerate() {
+                at_most(&format!("{key}[{index}]"), q, max_q)?;
+            }
+        }
+        *slot = values;
+    }
+    Ok(out)
 }
 
 #[cfg(test)]

@@ -13,6 +13,7 @@
 //! eq. (18), constant in frame A; Lagrangian ones act on the modes of (13).
 //! About the axis every wrench gives τ_z = x F_y − y F_x + M_z.
 
+use super::load_models::{LoadCommands, ModelWrenches};
 use super::scene::{NodeFrame, Scene};
 use super::wrench::Wrench;
 
@@ -20,8 +21,11 @@ use super::wrench::Wrench;
 #[derive(Debug, Clone, PartialEq, Default)]
 pub struct Inputs {
     pub speed_command: f64,
+    /// The user's held wrenches (the load models' wrenches come on top).
     pub ale: Vec<Wrench>,
     pub lagrange: Vec<Wrench>,
+    /// Commands of the load models (pad clamp forces, tool feed).
+    pub commands: LoadCommands,
 }
 
 /// Generalized forces for one step, split by the frame they are constant in.
@@ -57,10 +61,12 @@ fn add_node(node: &NodeFrame, w: &Wrench, q_own: &[f64], follower: bool, out: &m
 }
 
 /// Fill `out` with the node wrenches' generalized forces and axial torque,
-/// given the amplitudes in both descriptions (follower loads need the slope).
+/// given the amplitudes in both descriptions (follower loads need the slope):
+/// the user's held wrenches (following the surface with `loads.follower`) and
+/// the load models' wrenches `models` (each node with its own follower choice).
 /// The reference motion is added separately ([`add_reference_motion`]), as it
 /// depends on the joint speed over the step.
-pub fn compute(scene: &Scene, inputs: &Inputs, q_ale: &[f64], q_lagrange: &[f64], out: &mut StepLoads) {
+pub fn compute(scene: &Scene, inputs: &Inputs, models: &ModelWrenches, q_ale: &[f64], q_lagrange: &[f64], out: &mut StepLoads) {
     out.ale_frame.iter_mut().for_each(|v| *v = 0.0);
     out.plate_frame.iter_mut().for_each(|v| *v = 0.0);
     let follower = scene.effects.follower_loads;
@@ -73,6 +79,18 @@ pub fn compute(scene: &Scene, inputs: &Inputs, q_ale: &[f64], q_lagrange: &[f64]
     for (node, w) in scene.lagrange_nodes.iter().zip(&inputs.lagrange) {
         if *w != Wrench::default() {
             torque += add_node(node, w, q_lagrange, follower, &mut out.plate_frame);
+        }
+    }
+    if !scene.load_models.is_empty() {
+        for ((node, w), &f) in scene.ale_nodes.iter().zip(&models.ale).zip(&models.ale_follower) {
+            if *w != Wrench::default() {
+                torque += add_node(node, w, q_ale, f, &mut out.ale_frame);
+            }
+        }
+        for ((node, w), &f) in scene.lagrange_nodes.iter().zip(&models.lagrange).zip(&models.lagrange_follower) {
+            if *w != Wrench::default() {
+                torque += add_node(node, w, q_lagrange, f, &mut out.plate_frame);
+            }
         }
     }
     // k = 0 modes are the same in both descriptions: keep their force in one place.

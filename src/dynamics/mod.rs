@@ -9,16 +9,19 @@
 pub mod ale;
 pub mod integrators;
 pub mod joint;
+pub mod load_models;
 pub mod loads;
 pub mod scene;
 pub mod simulation;
+pub mod stability;
 pub mod state;
 pub mod stepper;
 pub mod wrench;
 
+pub use load_models::{LoadCommandError, LoadCommands, LoadModelState, LoadModels, ModelWrenches};
 pub use loads::Inputs;
 pub use scene::Scene;
-pub use simulation::{JointOutput, NodeOutput, Pose, Simulation, SimulationError, StepError};
+pub use simulation::{JointOutput, NodeOutput, PadOutput, Pose, Simulation, SimulationError, StepError, ToolOutput};
 pub use state::{JointAngle, State};
 pub use stepper::{Stepper, StepperSettings, Views};
 pub use wrench::{InputError, NodeKind, Wrench};

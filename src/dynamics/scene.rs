@@ -6,6 +6,7 @@ use crate::config::{Config, JointConfig, LimitsConfig, NodePosition};
 use crate::model::{PlateModel, ShapeValue};
 use std::f64::consts::TAU;
 
+use super::load_models::LoadModels;
 use super::wrench::NodeKind;
 
 /// A cos/sin mode pair with the same ⟨k, l⟩.
@@ -50,6 +51,8 @@ pub struct NodeFrame {
     pub shapes: Vec<NodeShape>,
     /// Per mode ∂w_i/∂φ (for the material velocity under an ALE point).
     pub w_phi: Vec<f64>,
+    /// Undeformed position (r cos, r sin) in the parent frame, m.
+    xy: [f64; 2],
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
@@ -69,12 +72,13 @@ impl NodeFrame {
             angle,
             shapes: values.iter().map(|s| NodeShape { w: s.w, tilt: s.tilt(radius, angle) }).collect(),
             w_phi: values.iter().map(|s| s.w_phi).collect(),
+            xy: [radius * angle.cos(), radius * angle.sin()],
         }
     }
 
     /// Position in the node's parent frame (undeformed).
     pub fn position(&self) -> [f64; 3] {
-        [self.radius * self.angle.cos(), self.radius * self.angle.sin(), 0.0]
+        [self.xy[0], self.xy[1], 0.0]
     }
 
     /// Deflection w and tilt at the node for amplitudes `q` in the node's own description.
@@ -123,13 +127,15 @@ pub struct Scene {
     pub effects: Effects,
     /// Polar inertia J_zz of the plate about the joint axis, kg·m².
     pub polar_inertia: f64,
+    /// Pads, tool, pitch links (paper section 5): only those the configuration gives.
+    pub load_models: LoadModels,
 }
 
 impl Scene {
     pub fn new(config: &Config, model: PlateModel) -> Scene {
         let layout = ModeLayout::new(&model);
-        let ale_nodes = config.nodes.ale.iter().map(|&p| NodeFrame::new(&model, NodeKind::Ale, p)).collect();
-        let lagrange_nodes = config.nodes.lagrange.iter().map(|&p| NodeFrame::new(&model, NodeKind::Lagrange, p)).collect();
+        let ale_nodes: Vec<NodeFrame> = config.nodes.ale.iter().map(|&p| NodeFrame::new(&model, NodeKind::Ale, p)).collect();
+        let lagrange_nodes: Vec<NodeFrame> = config.nodes.lagrange.iter().map(|&p| NodeFrame::new(&model, NodeKind::Lagrange, p)).collect();
         // Gravity is given in world axes; the reference frame is tilted about world x.
         let (st, ct) = config.reference.tilt.sin_cos();
         let g = config.gravity;
@@ -144,6 +150,7 @@ impl Scene {
             follower_loads: config.loads.follower,
         };
         let polar_inertia = model.body().inertia[2][2];
+        let load_models = LoadModels::new(config, &ale_nodes, &lagrange_nodes, &model.body().modal_mass);
         Scene {
             model,
             layout,
@@ -154,6 +161,7 @@ impl Scene {
             reference: ReferenceMotion { angular_velocity: w, specific_force },
             effects,
             polar_inertia,
+            load_models,
         }
     }
 

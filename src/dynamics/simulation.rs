@@ -4,6 +4,8 @@ use crate::config::{Config, IntegratorKind};
 use crate::model::{ModelError, PlateModel};
 use thiserror::Error;
 
+use super::ale::{harmonics, lagrange_to_ale};
+use super::load_models::{LoadCommandError, LoadModels, ModelWrenches, Pads, Tool};
 use super::loads::Inputs;
 use super::scene::{NodeFrame, Scene};
 use super::state::State;
@@ -16,6 +18,38 @@ pub enum SimulationError {
     Model(#[from] ModelError),
     #[error("simulation.integrator = rk4 would need {needed} substeps per step of {step:e} s for the highest mode ({frequency_hz:.0} Hz) at {speed} rad/s (limit {limit}): use exponential or implicit_midpoint, or raise simulation.rate_hz / simulation.substeps")]
     ExplicitTooCostly { needed: usize, limit: usize, step: f64, frequency_hz: f64, speed: f64 },
+    #[error("the pads (pads.contact_stiffness, pads.contact_damping) couple the modes at rates up to {rate:.0} 1/s, but simulation.integrator = {integrator} holds their forces over a substep of {step:e} s (h × rate = {:.2} > {limit}): use simulation.integrator: rk4, which evaluates the pads at every stage, or raise simulation.rate_hz / simulation.substeps", step * rate)]
+    PadsTooStiffForIntegrator { integrator: &'static str, rate: f64, step: f64, limit: f64 },
+}
+
+/// Largest h × (pad coupling rate) the integrators that hold the pad forces over a substep accept.
+pub const HELD_PAD_COUPLING_LIMIT: f64 = 0.5;
+
+/// Forces of one pad at the current state (both faces, all its contact points).
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct PadOutput {
+    /// Commanded clamp force, N.
+    pub clamp_force: f64,
+    /// Mean normal force of the two faces, summed over the contact points, N
+    /// (equals the clamp force on an undeformed disc).
+    pub normal_force: f64,
+    /// Friction force along e_θ, summed over contacts and faces, N.
+    pub friction_force: f64,
+    /// Friction torque about the axis, N·m (brakes the plate: opposite to Ω).
+    pub friction_torque: f64,
+}
+
+/// The lathe tool at the current state.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct ToolOutput {
+    /// z of the tool tip in the reference frame (the +z face is at h/2), m.
+    pub tip: f64,
+    /// Chip thickness of the last substep, m.
+    pub chip: f64,
+    /// Feed force of the last substep, N (acts on the plate along −z).
+    pub feed_force: f64,
+    /// Commanded feed rate, m/s.
+    pub feed_rate: f64,
 }
 
 /// A step that could not be taken; the state is left as it was before the step.
@@ -75,6 +109,8 @@ pub struct Simulation {
     stepper: Stepper,
     inputs: Inputs,
     steps: u64,
+    /// The load models' wrenches at the current state (for the outputs).
+    model_outputs: ModelWrenches,
 }
 
 impl Simulation {
@@ -85,6 +121,7 @@ impl Simulation {
             integrator: config.simulation.integrator,
             dt: 1.0 / config.simulation.rate_hz,
             substeps: config.simulation.substeps,
+            rk4_step_limit: config.simulation.rk4_step_limit,
         };
         let stepper = Stepper::new(&scene, settings);
         if settings.integrator == IntegratorKind::Rk4 {
@@ -101,14 +138,38 @@ impl Simulation {
                 });
             }
         }
+        if scene.load_models.pads.is_some() && settings.integrator != IntegratorKind::Rk4 {
+            let lm = &scene.load_models;
+            let rate = lm.pad_stiffness_rate_sq.sqrt() + lm.pad_damping_rate;
+            let h = stepper.h();
+            if h * rate > HELD_PAD_COUPLING_LIMIT {
+                return Err(SimulationError::PadsTooStiffForIntegrator { integrator: settings.integrator.name(), rate, step: h, limit: HELD_PAD_COUPLING_LIMIT });
+            }
+        }
         let n = scene.n_modes();
-        let initial = State::new(n, config.simulation.coordinates, config.joint.initial_position, config.joint.speed);
+        let mut initial = State::new(n, config.simulation.coordinates, config.joint.initial_position, config.joint.speed);
+        initial.load_models = scene.load_models.initial_state();
+        if !config.initial.q.is_empty() || !config.initial.q_dot.is_empty() {
+            // initial.* are Lagrangian; the state may be kept in ALE coordinates.
+            let mut q = config.initial.q.clone();
+            let mut q_dot = config.initial.q_dot.clone();
+            q.resize(n, 0.0);
+            q_dot.resize(n, 0.0);
+            if initial.coordinates == crate::config::Coordinates::Ale {
+                let mut harm = Vec::new();
+                harmonics(&initial.chi, scene.layout.k_max, &mut harm);
+                lagrange_to_ale(&scene.layout, &harm, initial.speed, &mut q, &mut q_dot);
+            }
+            initial.q = q;
+            initial.q_dot = q_dot;
+        }
         let mut sim = Simulation {
             state: initial.clone(),
             initial,
             stepper,
             inputs: Inputs::default(),
             steps: 0,
+            model_outputs: ModelWrenches::new(&scene),
             scene,
             config,
         };
@@ -161,7 +222,21 @@ impl Simulation {
         let to_wrench = |w: &crate::config::WrenchConfig| Wrench { force: w.force, moment: w.moment };
         self.inputs.ale = (0..self.n_ale_nodes()).map(|j| self.config.loads.ale.get(j).map(to_wrench).unwrap_or_default()).collect();
         self.inputs.lagrange = (0..self.n_lagrange_nodes()).map(|j| self.config.loads.lagrange.get(j).map(to_wrench).unwrap_or_default()).collect();
+        LoadModels::reset_commands(&self.config, &mut self.inputs.commands);
         self.stepper.sync_views(&self.scene, &self.state);
+        self.refresh_model_outputs();
+    }
+
+    /// Evaluate the load models at the current state for the outputs (the
+    /// tool's force is the one held over the last substep).
+    fn refresh_model_outputs(&mut self) {
+        let lm = &self.scene.load_models;
+        if lm.is_empty() {
+            return;
+        }
+        let views = self.stepper.views();
+        let tool_force = self.state.load_models.tool.as_ref().map_or(0.0, |t| t.force);
+        lm.evaluate(&self.scene.ale_nodes, &views.q_ale, &views.q_dot_ale, self.state.chi.angle, self.state.speed, &self.inputs.commands, tool_force, &mut self.model_outputs);
     }
 
     /// Replace the state (e.g. a checkpoint taken with `state().clone()`).
@@ -170,6 +245,7 @@ impl Simulation {
         self.state = state;
         self.steps = steps;
         self.stepper.sync_views(&self.scene, &self.state);
+        self.refresh_model_outputs();
     }
 
     /// Advance one output step (1/rate_hz). On error the state is unchanged.
@@ -178,6 +254,7 @@ impl Simulation {
         self.steps += 1;
         // Time as a count of steps: no drift from repeated addition.
         self.state.time = self.steps as f64 * self.dt();
+        self.refresh_model_outputs();
         Ok(())
     }
 
@@ -213,6 +290,78 @@ impl Simulation {
         wrench.validate(|| format!("{}_{} wrench", kind.name(), node + 1), limits.max_force, limits.max_moment)?;
         *slot = wrench;
         Ok(())
+    }
+
+    // ---- load models (paper section 5; docs/scenes.md) ----------------------
+
+    /// Number of brake pads (`pads.*`; 0 without pads).
+    pub fn pad_count(&self) -> usize {
+        self.scene.load_models.pads.as_ref().map_or(0, Pads::pad_count)
+    }
+
+    /// Whether the scene has a lathe tool (`tool.*`).
+    pub fn has_tool(&self) -> bool {
+        self.scene.load_models.tool.is_some()
+    }
+
+    /// Number of pitch links (`links.*`; 0 without links).
+    pub fn link_count(&self) -> usize {
+        self.scene.load_models.links.as_ref().map_or(0, |l| l.nodes.len())
+    }
+
+    /// Hold the clamp force of pad `pad` (0-based), N: the force each disc face
+    /// is pressed with, shared by the pad's contact points. Refused (and the
+    /// held commands unchanged) if the pad does not exist or the force is not
+    /// finite, negative or above `limits.max_force`.
+    pub fn set_pad_clamp_force(&mut self, pad: usize, newtons: f64) -> Result<(), LoadCommandError> {
+        self.scene.load_models.set_clamp_force(&mut self.inputs.commands, pad, newtons, &self.config.limits)?;
+        self.refresh_model_outputs();
+        Ok(())
+    }
+
+    /// Hold the tool feed rate, m/s (towards −z; negative retracts). Refused if
+    /// the scene has no tool or the rate is not finite or beyond 1 m/s.
+    pub fn set_tool_feed(&mut self, rate: f64) -> Result<(), LoadCommandError> {
+        self.scene.load_models.set_feed_rate(&mut self.inputs.commands, rate)
+    }
+
+    /// Forces of pad `pad` (0-based) at the current state.
+    pub fn pad_output(&self, pad: usize) -> PadOutput {
+        let Some(p) = &self.scene.load_models.pads else { return PadOutput::default() };
+        let mut out = PadOutput { clamp_force: self.inputs.commands.clamp_force[pad], ..PadOutput::default() };
+        for (c, f) in p.contacts.iter().zip(&self.model_outputs.contact_forces).filter(|(c, _)| c.pad == pad) {
+            out.normal_force += 0.5 * (f.top + f.bottom);
+            out.friction_force += f.tangential;
+            out.friction_torque += c.radius * f.tangential;
+        }
+        out
+    }
+
+    /// Forces at every pad contact point (order of `pads.ale_nodes`) at the current state.
+    pub fn pad_contact_forces(&self) -> &[super::load_models::ContactForces] {
+        &self.model_outputs.contact_forces
+    }
+
+    /// The lathe tool at the current state (`None` without a tool).
+    pub fn tool_output(&self) -> Option<ToolOutput> {
+        let t = self.state.load_models.tool.as_ref()?;
+        Some(ToolOutput { tip: Tool::tip(t), chip: t.chip, feed_force: t.force, feed_rate: self.inputs.commands.feed_rate })
+    }
+
+    /// Axial force of pitch link `j` (0-based) at the current joint angle, N.
+    pub fn link_force(&self, j: usize) -> f64 {
+        self.scene.load_models.links.as_ref().map_or(0.0, |l| l.force(j, self.state.chi.angle))
+    }
+
+    /// The wrench the load models apply at ALE node `j` (0-based) at the current
+    /// state, in its node frame (on top of the held user wrench).
+    pub fn ale_model_wrench(&self, j: usize) -> Wrench {
+        self.model_outputs.ale.get(j).copied().unwrap_or_default()
+    }
+
+    /// The wrench the load models apply at Lagrangian node `j` (0-based), in its node frame.
+    pub fn lagrange_model_wrench(&self, j: usize) -> Wrench {
+        self.model_outputs.lagrange.get(j).copied().unwrap_or_default()
     }
 
     pub fn joint(&self) -> JointOutput {

@@ -1,6 +1,7 @@
 //! The plain state: joint angle and speed, modal amplitudes and rates.
 //! The stepper never owns it, so reset, checkpoint and replay are clones.
 
+use super::load_models::LoadModelState;
 use crate::config::Coordinates;
 use std::f64::consts::TAU;
 
@@ -77,6 +78,8 @@ pub struct State {
     /// Modal amplitudes, m (mode order of the model).
     pub q: Vec<f64>,
     pub q_dot: Vec<f64>,
+    /// State of the load models (the tool's machined surface).
+    pub load_models: LoadModelState,
 }
 
 impl State {
@@ -91,6 +94,7 @@ impl State {
             coordinates,
             q: vec![0.0; n_modes],
             q_dot: vec![0.0; n_modes],
+            load_models: LoadModelState::default(),
         }
     }
 
@@ -107,6 +111,7 @@ impl State {
         self.q.extend_from_slice(&other.q);
         self.q_dot.clear();
         self.q_dot.extend_from_slice(&other.q_dot);
+        self.load_models.copy_from(&other.load_models);
     }
 
     pub fn is_finite(&self) -> bool {
@@ -115,6 +120,7 @@ impl State {
             && self.speed.is_finite()
             && self.effort.is_finite()
             && self.q.iter().chain(&self.q_dot).all(|v| v.is_finite())
+            && self.load_models.tool.as_ref().is_none_or(|t| t.holder.is_finite() && t.deflection.is_finite() && t.force.is_finite())
     }
 }
 

@@ -1,17 +1,20 @@
 //! The fixed-step stepper: borrows the immutable [`Scene`] and the plain
 //! [`State`], owns only scratch space allocated once (no allocation per step).
 //!
-//! Each substep: node loads at the step start (follower loads use the current
+//! Each substep: the load models (pads, tool, links) from the node kinematics,
+//! then node loads at the step start (follower loads use the current
 //! deflection), the joint drive → constant joint acceleration α over the
 //! substep (χ exact and quadratic in time), then the elastic coordinates by
-//! the chosen integrator. A step that produces a non-finite or implausible
-//! state is undone and reported.
+//! the chosen integrator, then the tool's state (the surface it cut). RK4
+//! re-evaluates the memoryless load models (pads, links) at every stage. A
+//! step that produces a non-finite or implausible state is undone and reported.
 
 use super::ale::{ale_to_lagrange, harmonics, lagrange_to_ale};
 use super::integrators::equations::{accelerations, mode_constants, ModeConstants};
 use super::integrators::exponential::ModePropagator;
 use super::integrators::{implicit_midpoint, rk4};
 use super::joint::drive;
+use super::load_models::{surface_kinematics, ModelWrenches};
 use super::loads::{add_reference_motion, compute as node_loads, Inputs, StepLoads};
 use super::scene::Scene;
 use super::simulation::StepError;
@@ -54,6 +57,8 @@ pub struct StepperSettings {
     /// Output step, s.
     pub dt: f64,
     pub substeps: u32,
+    /// RK4: h·λ_max per inner step (`simulation.rk4_step_limit`).
+    pub rk4_step_limit: f64,
 }
 
 pub struct Stepper {
@@ -70,6 +75,8 @@ pub struct Stepper {
     backup: State,
     /// RK4 substeps used in the last step (1 for the other integrators).
     last_inner_substeps: usize,
+    /// Wrenches of the load models at the last evaluation.
+    model_wrenches: ModelWrenches,
 }
 
 impl Stepper {
@@ -89,6 +96,7 @@ impl Stepper {
             rk: std::array::from_fn(|_| vec![0.0; 2 * n]),
             backup: State::new(n, Coordinates::Ale, 0.0, 0.0),
             last_inner_substeps: 1,
+            model_wrenches: ModelWrenches::new(scene),
         }
     }
 
@@ -115,16 +123,18 @@ impl Stepper {
         self.settings.dt / self.settings.substeps as f64
     }
 
-    /// RK4 substeps a step of h needs at speeds up to |Ω|.
+    /// RK4 substeps a step of h needs at speeds up to |Ω| (the pads' stiffness
+    /// and damping included, as bounded in [`LoadModels`](super::LoadModels)).
     pub fn rk4_substeps(&self, scene: &Scene, h: f64, speed: f64) -> usize {
+        let lm = &scene.load_models;
         let lam = scene
             .model
             .modes()
             .iter()
             .zip(&self.consts)
-            .map(|(m, c)| c.omega_eff_sq.abs().sqrt() + c.damping_rate + m.k as f64 * speed.abs())
+            .map(|(m, c)| (c.omega_eff_sq.abs() + lm.pad_stiffness_rate_sq).sqrt() + c.damping_rate + lm.pad_damping_rate + m.k as f64 * speed.abs())
             .fold(0.0, f64::max);
-        ((h * lam / rk4::STEP_LIMIT).ceil() as usize).max(1)
+        ((h * lam / self.settings.rk4_step_limit).ceil() as usize).max(1)
     }
 
     /// Advance one output step. On error the state is as before the call.
@@ -152,7 +162,22 @@ impl Stepper {
     /// One substep. On entry `self.views` and `self.harm` describe `state`
     /// (kept so by every step and by [`Stepper::sync_views`]); on exit too.
     fn substep(&mut self, scene: &Scene, state: &mut State, inputs: &Inputs, h: f64) -> Result<(), StepError> {
-        node_loads(scene, inputs, &self.views.q_ale, &self.views.q_lagrange, &mut self.loads);
+        let models = &scene.load_models;
+        let tool_step = match (&models.tool, &state.load_models.tool) {
+            (Some(tool), Some(ts)) => {
+                let w = surface_kinematics(&scene.ale_nodes[tool.node], &self.views.q_ale, &self.views.q_dot_ale).w;
+                Some(tool.begin(ts, w, state.chi.angle, state.speed, h))
+            }
+            _ => None,
+        };
+        let tool_force = tool_step.map_or(0.0, |s| s.force);
+        if !models.is_empty() {
+            // Prescribed link forces at the substep's mid-angle (held by the non-RK4 integrators).
+            let chi_mid = state.chi.angle + 0.5 * state.speed * h;
+            let v = &self.views;
+            models.evaluate(&scene.ale_nodes, &v.q_ale, &v.q_dot_ale, chi_mid, state.speed, &inputs.commands, tool_force, &mut self.model_wrenches);
+        }
+        node_loads(scene, inputs, &self.model_wrenches, &self.views.q_ale, &self.views.q_lagrange, &mut self.loads);
         let d = drive(&scene.joint, scene.polar_inertia, state.speed, inputs.speed_command, self.loads.axial_torque, h);
         let (speed0, alpha) = (state.speed, d.acceleration);
         let speed_mean = speed0 + 0.5 * alpha * h;
@@ -197,7 +222,10 @@ impl Stepper {
                     &mut state.q_dot,
                 );
             }
-            IntegratorKind::Rk4 => self.rk4(scene, state, inputs, h, chi0, speed0, alpha)?,
+            IntegratorKind::Rk4 => self.rk4(scene, state, inputs, h, chi0, speed0, alpha, tool_force)?,
+        }
+        if let (Some(step), Some(tool), Some(ts)) = (tool_step, &models.tool, &mut state.load_models.tool) {
+            tool.commit(ts, &step, inputs.commands.feed_rate, h);
         }
         state.chi = chi1;
         state.speed = speed1;
@@ -242,7 +270,7 @@ impl Stepper {
     }
 
     #[allow(clippy::too_many_arguments)]
-    fn rk4(&mut self, scene: &Scene, state: &mut State, inputs: &Inputs, h: f64, chi0: JointAngle, speed0: f64, alpha: f64) -> Result<(), StepError> {
+    fn rk4(&mut self, scene: &Scene, state: &mut State, inputs: &Inputs, h: f64, chi0: JointAngle, speed0: f64, alpha: f64, tool_force: f64) -> Result<(), StepError> {
         let speed_max = speed0.abs().max((speed0 + alpha * h).abs());
         let inner = self.rk4_substeps(scene, h, speed_max);
         if inner > rk4::MAX_SUBSTEPS {
@@ -254,8 +282,9 @@ impl Stepper {
         self.y[..n].copy_from_slice(&state.q);
         self.y[n..].copy_from_slice(&state.q_dot);
         self.base_ale_frame.copy_from_slice(&self.loads.ale_frame);
-        let Stepper { consts, loads, base_ale_frame, harm, views, y, rk, .. } = self;
+        let Stepper { consts, loads, base_ale_frame, harm, views, y, rk, model_wrenches, .. } = self;
         let follower = scene.effects.follower_loads;
+        let stage_models = scene.load_models.stage_dependent();
         let dt = h / inner as f64;
         let mut rhs = |t: f64, yy: &[f64], dy: &mut [f64]| {
             let mut chi = chi0;
@@ -263,10 +292,14 @@ impl Stepper {
             let speed = speed0 + alpha * t;
             harmonics(&chi, scene.layout.k_max, harm);
             let (q, v) = yy.split_at(n);
-            if follower {
+            if follower || stage_models {
                 let st = StateView { q, v, coords, speed };
                 st.fill(scene, harm, views);
-                node_loads(scene, inputs, &views.q_ale, &views.q_lagrange, loads);
+                if stage_models {
+                    let models = &scene.load_models;
+                    models.evaluate(&scene.ale_nodes, &views.q_ale, &views.q_dot_ale, chi.angle, speed, &inputs.commands, tool_force, model_wrenches);
+                }
+                node_loads(scene, inputs, model_wrenches, &views.q_ale, &views.q_lagrange, loads);
             } else {
                 loads.ale_frame.copy_from_slice(base_ale_frame);
             }

@@ -14,6 +14,7 @@
 //! - [`outputs`]: the per-step messages, preallocated;
 //! - [`clock`]: stamps, `/clock`, pacing;
 //! - [`services`], [`params_service`]: reset/pause/step and the parameter services;
+//! - [`diagnostics`]: the `/diagnostics` statuses (shared with `simulate --bag`);
 //! - [`sim_loop`]: the fixed-rate simulation thread;
 //! - [`logging`]: `/rosout` and stderr;
 //! - [`node`]: wiring and shutdown.
@@ -22,6 +23,7 @@
 
 pub mod args;
 pub mod clock;
+pub mod diagnostics;
 pub mod inputs;
 pub mod logging;
 pub mod messages;

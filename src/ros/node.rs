@@ -14,6 +14,7 @@ use super::services::{self, Command};
 use super::settings::{split_ros_params, RosSettings};
 use super::sim_loop::{LoopSettings, Publishers, SimLoop};
 use super::{qos, topics};
+use crate::bag::recorder::{NodeBag, NodeTopics, Recorder, Sample};
 use crate::config::{Config, ConfigError, Params};
 use crate::dynamics::{NodeKind, Simulation, Wrench};
 use anyhow::{anyhow, Context as _};
@@ -35,6 +36,9 @@ pub const DEFAULT_SCENE: &str = include_str!("../../config/brake_bench.yaml");
 
 /// Commands (inputs and service calls) waiting for the simulation loop.
 const COMMAND_QUEUE: usize = 4096;
+
+/// Messages waiting for the bag writer (`run --record`).
+const RECORD_QUEUE: usize = crate::bag::recorder::DEFAULT_QUEUE;
 
 /// Everything the node needs before any DDS traffic: resolved names, the
 /// effective parameters, the validated configuration and `ros.*` settings.
@@ -100,18 +104,28 @@ impl NodeSetup {
     }
 }
 
-/// Run the node until SIGINT or SIGTERM (see the module documentation of `ros`).
-pub fn run_node(scene: Option<PathBuf>, ros_args: &[String]) -> anyhow::Result<()> {
+/// Run the node until SIGINT or SIGTERM (see the module documentation of
+/// `ros`); with `record`, also write its topics into that new rosbag2
+/// directory (`run --record DIR`).
+pub fn run_node(scene: Option<PathBuf>, ros_args: &[String], record: Option<PathBuf>) -> anyhow::Result<()> {
     let setup = NodeSetup::load(scene.as_deref(), ros_args)?;
     let domain = domain_id_from_env(std::env::var("ROS_DOMAIN_ID").ok().as_deref()).map_err(|e| anyhow!("{e}"))?;
     let sim = Simulation::new(setup.config.clone()).map_err(|e| anyhow!("{}: {e}", setup.scene))?;
+    // The bag first: a directory that exists is refused before any DDS traffic.
+    let bag = match &record {
+        Some(dir) => {
+            let topics = NodeTopics::resolve(&setup.names, setup.settings.sim_time).map_err(|e| anyhow!("{e}"))?;
+            Some(NodeBag::create(dir, &topics).map_err(|e| anyhow!("--record: {e}"))?)
+        }
+        None => None,
+    };
     let rt = tokio::runtime::Builder::new_multi_thread()
         .worker_threads(2)
         .thread_name("annular_plate-io")
         .enable_all()
         .build()
         .context("cannot start the tokio runtime")?;
-    rt.block_on(serve(setup, sim, domain))
+    rt.block_on(serve(setup, sim, domain, bag))
 }
 
 fn publisher<T: RosType, P: Serialize>(node: &mut Node, names: &NameResolver, topic: &str, qos: &QosProfile) -> anyhow::Result<Publisher<P>> {
@@ -179,7 +193,7 @@ fn to_wrench(w: &super::messages::Wrench) -> Wrench {
     Wrench { force: w.force.to_array(), moment: w.torque.to_array() }
 }
 
-async fn serve(setup: NodeSetup, sim: Simulation, domain: u16) -> anyhow::Result<()> {
+async fn serve(setup: NodeSetup, sim: Simulation, domain: u16, bag: Option<NodeBag>) -> anyhow::Result<()> {
     let names = &setup.names;
     let settings = &setup.settings;
     let context = Context::with_options(ContextOptions::new().domain_id(domain))
@@ -215,7 +229,20 @@ async fn serve(setup: NodeSetup, sim: Simulation, domain: u16) -> anyhow::Result
     };
     let tf_static = publisher::<TFMessage, TFMessage>(&mut node, names, topics::TF_STATIC, &qos::TF_STATIC)?;
     let static_stamp = if settings.sim_time { super::messages::Time::default() } else { super::messages::Time::wall_now() };
-    if let Err(e) = tf_static.publish(static_transforms(&frames, setup.config.reference.tilt, static_stamp)) {
+    let static_msg = static_transforms(&frames, setup.config.reference.tilt, static_stamp);
+
+    // Recording (`run --record`): a writer thread fed by the loop.
+    let recording = match bag {
+        Some(bag) => {
+            let dir = bag.dir().display().to_string();
+            let (recorder, thread) = Recorder::start(bag, RECORD_QUEUE).context("cannot start the bag writer thread")?;
+            recorder.record(Sample::TfStatic(static_msg.clone()), static_stamp);
+            logger.info(&format!("recording the node's topics to {dir}"));
+            Some((recorder, thread))
+        }
+        None => None,
+    };
+    if let Err(e) = tf_static.publish(static_msg) {
         logger.warn(&format!("could not publish /tf_static: {e:?}"));
     }
 
@@ -285,7 +312,14 @@ async fn serve(setup: NodeSetup, sim: Simulation, domain: u16) -> anyhow::Result
         node_name: fqn.clone(),
     };
     let (done_tx, done_rx) = tokio::sync::oneshot::channel::<()>();
-    let sim_loop = SimLoop::new(sim, outputs, pubs, rx, Arc::clone(&stats), Arc::clone(&logger), loop_settings);
+    let mut sim_loop = SimLoop::new(sim, outputs, pubs, rx, Arc::clone(&stats), Arc::clone(&logger), loop_settings);
+    let record_thread = match recording {
+        Some((recorder, thread)) => {
+            sim_loop = sim_loop.with_recorder(recorder);
+            Some(thread)
+        }
+        None => None,
+    };
     let sim_thread = std::thread::Builder::new()
         .name("annular_plate-sim".into())
         .spawn(move || {
@@ -332,9 +366,41 @@ async fn serve(setup: NodeSetup, sim: Simulation, domain: u16) -> anyhow::Result
     drop(tx);
     drop(ctx);
     let joined = tokio::task::spawn_blocking(move || sim_thread.join()).await;
+    // The loop (and with it the recorder's queue) is gone: the writer
+    // thread drains the queue, finishes the MCAP file and metadata.yaml.
+    let mut record_failed = None;
+    if let Some(thread) = record_thread {
+        match tokio::task::spawn_blocking(move || thread.finish()).await {
+            Ok(r) => match &r.summary {
+                Ok(s) => {
+                    let msg = format!(
+                        "recorded {} messages on {} topics ({:.3} s, {} bytes) to {}; {} dropped",
+                        s.message_count,
+                        s.topics.len(),
+                        s.duration as f64 * 1e-9,
+                        s.bytes,
+                        s.dir.display(),
+                        r.dropped
+                    );
+                    if r.dropped > 0 || r.error.is_some() {
+                        logger.warn(&format!("{msg}{}", r.error.as_ref().map(|e| format!("; stopped early: {e}")).unwrap_or_default()));
+                    } else {
+                        logger.info(&msg);
+                    }
+                }
+                Err(e) => {
+                    logger.error(&format!("the bag could not be finished: {e}"));
+                    record_failed = Some(e.clone());
+                }
+            },
+            Err(e) => record_failed = Some(format!("the bag writer thread failed: {e}")),
+        }
+    }
     let result = if !matches!(joined, Ok(Ok(()))) {
         logger.error("the simulation thread ended abnormally");
         Err(anyhow!("the simulation thread ended abnormally"))
+    } else if let Some(e) = record_failed {
+        Err(anyhow!("--record: {e}"))
     } else if !why.starts_with("SIG") {
         Err(anyhow!("{why}"))
     } else {

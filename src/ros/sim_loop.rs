@@ -8,13 +8,15 @@
 //! advance the clock, overwrite the preallocated messages, publish.
 
 use super::clock::{Pacer, StepClock};
+use super::diagnostics::{self, LoopReport, Timing};
 use super::inputs::{Input, InputStats, RejectReason, Rejection, Source, StaleWrenches};
 use super::logging::Logger;
 use super::messages::{
-    Clock, DiagnosticArray, DiagnosticStatus, Header, JointState, KeyValue, ModalAmplitudes, SetBoolResponse,
-    StepResponse, TFMessage, Time, TriggerResponse,
+    Clock, DiagnosticArray, JointState, ModalAmplitudes, SetBoolResponse, StepResponse, TFMessage, Time,
+    TriggerResponse,
 };
 use super::outputs::{clock_message, OutputMessages, Shared};
+use crate::bag::recorder::{Recorder, Sample};
 use super::params_service::RuntimeChange;
 use super::services::Command;
 use crate::dynamics::{InputError, NodeKind, Simulation, Wrench};
@@ -48,96 +50,6 @@ pub struct LoopSettings {
     pub node_name: String,
 }
 
-/// Step timing statistics between two diagnostics messages.
-struct Timing {
-    /// |actual period − nominal| of consecutive paced steps, µs.
-    period_dev_us: Vec<f32>,
-    /// Start of a paced step after its deadline, µs.
-    late_us: Vec<f32>,
-    /// Step + publish time, µs.
-    work_us_sum: f64,
-    work_us_max: f64,
-    steps: u64,
-    last_start: Option<Instant>,
-    since: Instant,
-}
-
-const TIMING_CAPACITY: usize = 1 << 15;
-
-impl Timing {
-    fn new(now: Instant) -> Self {
-        Timing {
-            period_dev_us: Vec::with_capacity(TIMING_CAPACITY),
-            late_us: Vec::with_capacity(TIMING_CAPACITY),
-            work_us_sum: 0.0,
-            work_us_max: 0.0,
-            steps: 0,
-            last_start: None,
-            since: now,
-        }
-    }
-
-    fn record(&mut self, start: Instant, deadline: Option<Instant>, nominal: Option<Duration>, work: Duration) {
-        let us = work.as_secs_f64() * 1e6;
-        self.work_us_sum += us;
-        self.work_us_max = self.work_us_max.max(us);
-        self.steps += 1;
-        if let (Some(deadline), Some(nominal)) = (deadline, nominal) {
-            if self.late_us.len() < TIMING_CAPACITY {
-                self.late_us.push(start.saturating_duration_since(deadline).as_secs_f32() * 1e6);
-            }
-            if let Some(last) = self.last_start {
-                if self.period_dev_us.len() < TIMING_CAPACITY {
-                    let period = start.duration_since(last).as_secs_f64();
-                    self.period_dev_us.push(((period - nominal.as_secs_f64()).abs() * 1e6) as f32);
-                }
-            }
-            self.last_start = Some(start);
-        } else {
-            self.last_start = None;
-        }
-    }
-
-    /// Not paced right now (paused or stepping on request): the next paced
-    /// step starts a new period measurement.
-    fn interrupt(&mut self) {
-        self.last_start = None;
-    }
-
-    fn percentile(v: &mut [f32], p: f64) -> f64 {
-        if v.is_empty() {
-            return 0.0;
-        }
-        v.sort_unstable_by(|a, b| a.total_cmp(b));
-        let i = ((v.len() - 1) as f64 * p).round() as usize;
-        v[i] as f64
-    }
-
-    /// (key, value) pairs and reset for the next period.
-    fn report(&mut self, now: Instant) -> Vec<(String, String)> {
-        let wall = now.duration_since(self.since).as_secs_f64();
-        let out = vec![
-            ("steps_in_period".into(), self.steps.to_string()),
-            ("achieved_rate_hz".into(), format!("{:.1}", if wall > 0.0 { self.steps as f64 / wall } else { 0.0 })),
-            (
-                "step_time_mean_us".into(),
-                format!("{:.1}", if self.steps > 0 { self.work_us_sum / self.steps as f64 } else { 0.0 }),
-            ),
-            ("step_time_max_us".into(), format!("{:.1}", self.work_us_max)),
-            ("period_jitter_p50_us".into(), format!("{:.1}", Self::percentile(&mut self.period_dev_us, 0.5))),
-            ("period_jitter_p99_us".into(), format!("{:.1}", Self::percentile(&mut self.period_dev_us, 0.99))),
-            ("lateness_p99_us".into(), format!("{:.1}", Self::percentile(&mut self.late_us, 0.99))),
-        ];
-        self.period_dev_us.clear();
-        self.late_us.clear();
-        self.work_us_sum = 0.0;
-        self.work_us_max = 0.0;
-        self.steps = 0;
-        self.since = now;
-        out
-    }
-}
-
 /// The loop's state.
 pub struct SimLoop {
     sim: Simulation,
@@ -160,6 +72,9 @@ pub struct SimLoop {
     next_diagnostics: Instant,
     rejected_at_last_report: u64,
     overruns_at_last_report: u64,
+    /// `run --record`: every published message also goes to the bag writer.
+    recorder: Option<Recorder>,
+    dropped_at_last_report: u64,
     stop: bool,
 }
 
@@ -194,9 +109,17 @@ impl SimLoop {
             next_diagnostics: now,
             rejected_at_last_report: 0,
             overruns_at_last_report: 0,
+            recorder: None,
+            dropped_at_last_report: 0,
             stop: false,
             settings,
         }
+    }
+
+    /// Also hand every published message to `recorder` (`run --record`).
+    pub fn with_recorder(mut self, recorder: Recorder) -> Self {
+        self.recorder = Some(recorder);
+        self
     }
 
     /// Run until a [`Command::Stop`] arrives or every sender is gone.
@@ -432,8 +355,12 @@ impl SimLoop {
 
     fn publish_clock(&mut self) {
         if let Some(p) = &self.pubs.clock {
-            if p.publish(clock_message(&self.clock)).is_err() {
+            let msg = clock_message(&self.clock);
+            if p.publish(msg).is_err() {
                 self.publish_failures += 1;
+            }
+            if let Some(r) = &self.recorder {
+                r.record(Sample::Clock(msg), msg.clock);
             }
         }
     }
@@ -448,71 +375,50 @@ impl SimLoop {
             self.pubs.modal.publish(self.outputs.modal.handle()).is_err(),
         ];
         self.publish_failures += failures.iter().filter(|f| **f).count() as u64;
+        if let Some(r) = &self.recorder {
+            // Handles, not copies: the writer thread serializes them.
+            r.record(Sample::JointState(self.outputs.joint_state.handle()), stamp);
+            r.record(Sample::Tf(self.outputs.tf.handle()), stamp);
+            r.record(Sample::Modal(self.outputs.modal.handle()), stamp);
+        }
     }
 
     fn publish_diagnostics(&mut self, now: Instant) {
         self.next_diagnostics = now + self.settings.diagnostics_period;
         let name = &self.settings.node_name;
-        let kv = |k: &str, v: String| KeyValue { key: k.to_string(), value: v };
-
         let overruns = self.pacer.overruns();
-        let new_overruns = overruns - self.overruns_at_last_report;
+        let report = LoopReport {
+            diverged: self.diverged.clone(),
+            paused: self.paused,
+            overruns,
+            new_overruns: overruns - self.overruns_at_last_report,
+            step: self.sim.step_count(),
+            sim_time: self.sim.time(),
+            ros_time: self.clock.sim_time(),
+            rate_hz: 1.0 / self.sim.dt(),
+            realtime_factor: self.settings.realtime_factor,
+            publish_failures: self.publish_failures,
+            timing: self.timing.report(now),
+        };
         self.overruns_at_last_report = overruns;
-        let (level, message) = match (&self.diverged, self.paused) {
-            (Some(why), _) => (DiagnosticStatus::ERROR, format!("diverged: {why}")),
-            (None, true) => (DiagnosticStatus::OK, "paused".to_string()),
-            (None, false) if new_overruns > 0 => {
-                (DiagnosticStatus::WARN, format!("{new_overruns} overruns: the loop fell behind real time"))
-            }
-            (None, false) => (DiagnosticStatus::OK, "running".to_string()),
-        };
-        let mut values = vec![
-            kv("state", if self.diverged.is_some() { "diverged" } else if self.paused { "paused" } else { "running" }.into()),
-            kv("step", self.sim.step_count().to_string()),
-            kv("sim_time", format!("{}", self.sim.time())),
-            kv("ros_time", format!("{}", self.clock.sim_time().to_secs())),
-            kv("rate_hz", format!("{}", 1.0 / self.sim.dt())),
-            kv("realtime_factor", format!("{}", self.settings.realtime_factor)),
-            kv("overruns", overruns.to_string()),
-            kv("publish_failures", self.publish_failures.to_string()),
-        ];
-        values.extend(self.timing.report(now).into_iter().map(|(k, v)| KeyValue { key: k, value: v }));
-        let loop_status = DiagnosticStatus {
-            level,
-            name: format!("{name}: simulation"),
-            message,
-            hardware_id: name.clone(),
-            values,
-        };
-
-        let s = &self.stats;
-        let rejected = s.rejected_total();
+        let rejected = self.stats.rejected_total();
         let new_rejected = rejected - self.rejected_at_last_report;
         self.rejected_at_last_report = rejected;
-        let mut values = vec![
-            kv("accepted_speed_command", s.accepted(Source::SpeedCommand).to_string()),
-            kv("accepted_node_wrench", s.accepted(Source::NodeWrench).to_string()),
-            kv("accepted_wrench_array", s.accepted(Source::WrenchArray).to_string()),
-            kv("accepted_total", s.accepted_total().to_string()),
-            kv("rejected_total", rejected.to_string()),
-        ];
-        values.extend(RejectReason::ALL.iter().map(|r| kv(&format!("rejected_{}", r.name()), s.rejected(*r).to_string())));
-        values.push(kv("expired_wrenches", s.expired().to_string()));
-        let input_status = DiagnosticStatus {
-            level: if new_rejected > 0 { DiagnosticStatus::WARN } else { DiagnosticStatus::OK },
-            name: format!("{name}: inputs"),
-            message: if new_rejected > 0 {
-                format!("{new_rejected} inputs rejected since the last report")
-            } else {
-                "all inputs accepted".to_string()
-            },
-            hardware_id: name.clone(),
-            values,
-        };
-        let msg = DiagnosticArray {
-            header: Header { stamp: self.clock.stamp(), frame_id: String::new() },
-            status: vec![loop_status, input_status],
-        };
+        let mut status =
+            vec![diagnostics::simulation_status(name, &report), diagnostics::inputs_status(name, &self.stats, new_rejected)];
+        if let Some(r) = &self.recorder {
+            let rec = r.report(self.dropped_at_last_report);
+            self.dropped_at_last_report = rec.dropped;
+            if rec.new_dropped > 0 {
+                self.logger.warn(&format!("recording: {} messages dropped (the bag writer fell behind)", rec.new_dropped));
+            }
+            status.push(diagnostics::recording_status(name, &rec));
+        }
+        let stamp = self.clock.stamp();
+        let msg: DiagnosticArray = diagnostics::diagnostics_message(stamp, status);
+        if let Some(r) = &self.recorder {
+            r.record(Sample::Diagnostics(msg.clone()), stamp);
+        }
         if self.pubs.diagnostics.publish(msg).is_err() {
             self.publish_failures += 1;
         }

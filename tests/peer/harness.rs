@@ -47,9 +47,12 @@ fn run_ok(cmd: &mut Command, what: &str) -> Result<(), String> {
     }
 }
 
+/// What the peers import: Cyclone DDS, and the bag readers/writer.
+const PEER_IMPORTS: &str = "import cyclonedds.domain, cyclonedds.idl, rosbags.rosbag2, rosbags.highlevel, mcap.reader, mcap_ros2.decoder";
+
 fn peer_ready(python: &Path) -> bool {
     Command::new(python)
-        .args(["-c", "import cyclonedds.domain, cyclonedds.idl"])
+        .args(["-c", PEER_IMPORTS])
         .stdout(Stdio::null())
         .stderr(Stdio::null())
         .status()
@@ -60,21 +63,29 @@ fn peer_ready(python: &Path) -> bool {
 fn install_peer() -> Result<PathBuf, String> {
     let venv = repo().join("target/peer-venv");
     let python = venv.join("bin/python");
-    if peer_ready(&python) {
+    let requirements = repo().join("tests/peer/requirements.txt");
+    let wanted = std::fs::read_to_string(&requirements).map_err(|e| format!("{}: {e}", requirements.display()))?;
+    // The venv remembers the requirements it was made from; a change installs again.
+    let stamp = venv.join("requirements.installed");
+    let current = std::fs::read_to_string(&stamp).ok();
+    if current.as_deref() == Some(wanted.as_str()) && peer_ready(&python) {
         return Ok(python);
     }
-    let _ = std::fs::remove_dir_all(&venv);
-    let host_python = std::env::var("PYTHON").unwrap_or_else(|_| "python3".to_string());
-    run_ok(Command::new(&host_python).args(["-m", "venv"]).arg(&venv), "creating the peer's venv")?;
+    if !python.exists() {
+        let _ = std::fs::remove_dir_all(&venv);
+        let host_python = std::env::var("PYTHON").unwrap_or_else(|_| "python3".to_string());
+        run_ok(Command::new(&host_python).args(["-m", "venv"]).arg(&venv), "creating the peer's venv")?;
+    }
     run_ok(
         Command::new(&python)
             .args(["-m", "pip", "install", "--disable-pip-version-check", "-q", "-r"])
-            .arg(repo().join("tests/peer/requirements.txt")),
+            .arg(&requirements),
         "pip install -r tests/peer/requirements.txt",
     )?;
     if !peer_ready(&python) {
-        return Err("cyclonedds was installed but cannot be imported".into());
+        return Err(format!("tests/peer/requirements.txt was installed but `{PEER_IMPORTS}` fails"));
     }
+    std::fs::write(&stamp, wanted).map_err(|e| format!("{}: {e}", stamp.display()))?;
     Ok(python)
 }
 
@@ -129,7 +140,7 @@ impl Drop for Netns {
     }
 }
 
-fn temp_dir() -> PathBuf {
+pub fn temp_dir() -> PathBuf {
     let d = repo().join("target/ros-wire-tests");
     std::fs::create_dir_all(&d).expect("create target/ros-wire-tests");
     d
@@ -144,10 +155,15 @@ pub struct NodeProcess {
 
 /// Start `annular_plate run <scene> --ros-args <ros_args>` in `ns` on `domain`.
 pub fn start_node(ns: &Netns, domain: u16, ros_args: &[&str]) -> NodeProcess {
+    start_node_with(ns, domain, &[], ros_args)
+}
+
+/// Start `annular_plate run <scene> <run_args> --ros-args <ros_args>` (e.g. `--record DIR`).
+pub fn start_node_with(ns: &Netns, domain: u16, run_args: &[&OsStr], ros_args: &[&str]) -> NodeProcess {
     let stderr_path = temp_dir().join(format!("node-domain{domain}.stderr"));
     let stderr = std::fs::File::create(&stderr_path).expect("create the node's stderr file");
     let mut cmd = ns.command(node_binary());
-    cmd.arg("run").arg(scene()).arg("--ros-args").args(ros_args);
+    cmd.arg("run").arg(scene()).args(run_args).arg("--ros-args").args(ros_args);
     let child = cmd
         .env("ROS_DOMAIN_ID", domain.to_string())
         .stdin(Stdio::null())
@@ -266,4 +282,37 @@ pub fn f(v: &serde_json::Value, path: &str) -> f64 {
 
 pub fn floats(v: &serde_json::Value) -> Vec<f64> {
     v.as_array().unwrap_or_else(|| panic!("not an array: {v}")).iter().map(|x| x.as_f64().expect("number")).collect()
+}
+
+/// Read a bag with `tests/peer/bag_read.py` (`reader`: "rosbags" or
+/// "mcap"); the whole decoded messages of the topics in `full`.
+pub fn read_bag(path: &Path, reader: &str, full: &[&str]) -> serde_json::Value {
+    let python = python();
+    let out = Command::new(&python)
+        .arg(repo().join("tests/peer/bag_read.py"))
+        .arg(path)
+        .args(["--reader", reader])
+        .arg("--full")
+        .args(full)
+        .stdin(Stdio::null())
+        .output()
+        .expect("cannot run tests/peer/bag_read.py");
+    assert!(
+        out.status.success(),
+        "bag_read.py --reader {reader} {} failed ({}):\n{}",
+        path.display(),
+        out.status,
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let text = String::from_utf8_lossy(&out.stdout);
+    serde_json::from_str(text.trim()).unwrap_or_else(|e| panic!("bag_read.py printed no JSON ({e}): {text:.2000}"))
+}
+
+/// A fresh (not yet existing) path under `target/bag-tests/`.
+pub fn fresh_dir(name: &str) -> PathBuf {
+    let base = repo().join("target/bag-tests");
+    std::fs::create_dir_all(&base).expect("create target/bag-tests");
+    let d = base.join(name);
+    let _ = std::fs::remove_dir_all(&d);
+    d
 }

@@ -4,8 +4,11 @@
 //! h·λ_max ≤ [`STEP_LIMIT`], λ_max bounding |ω_eff| + 2ζω + kΩ (per substep the
 //! fastest mode then loses ≤ 9e-7 of its energy and ≤ 3e-6 rad of phase).
 
-/// h·λ_max kept below this (2√2 ≈ 2.83 is the stability limit).
-pub const STEP_LIMIT: f64 = 0.2;
+/// h·λ_max kept below this by default (2√2 ≈ 2.83 is the stability limit);
+/// `simulation.rk4_step_limit` sets it per scene. RK4 damps an oscillation
+/// at ω by (hω)⁶/144 per step in amplitude: at 0.2 that is 4.4e-7, which
+/// matters only for weakly damped instabilities (the brake-squeal scene uses 0.1).
+pub const STEP_LIMIT: f64 = crate::config::DEFAULT_RK4_STEP_LIMIT;
 
 /// Beyond this many RK4 substeps per step the run is refused.
 pub const MAX_SUBSTEPS: usize = 100_000;

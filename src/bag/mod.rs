@@ -1,0 +1,21 @@
+//! Recording: rosbag2 directories (MCAP storage, `metadata.yaml` version 9,
+//! `ros2msg` schemas, CDR payloads) of the node's topics, readable by
+//! `ros2 bag info` / `ros2 bag play` and by any MCAP reader.
+//!
+//! - [`writer`]: the bag layout, independent of the node (any serde message
+//!   with a definition in [`schemas`]);
+//! - [`schemas`]: the message definitions with their dependencies appended;
+//! - [`recorder`]: the node's topics ([`recorder::NodeBag`]) and the writer
+//!   thread of `annular_plate run --record DIR` ([`recorder::Recorder`]);
+//! - [`offline`]: `annular_plate simulate --bag DIR`.
+//!
+//! The messages are built by the node's own code (`ros::outputs`,
+//! `ros::diagnostics`), so the module comes with the `ros` feature.
+
+pub mod offline;
+pub mod recorder;
+pub mod schemas;
+pub mod writer;
+
+pub use offline::OfflineRecorder;
+pub use writer::{BagError, BagSummary, BagWriter};

@@ -1,0 +1,111 @@
+//! `simulate FILE --duration S --bag DIR`: the node's topics, recorded from
+//! an offline run instead of the wire.
+//!
+//! The messages come from the node's own builders (`ros::outputs`,
+//! `ros::diagnostics`) on the node's default names (`/annular_plate`, no
+//! frame prefix, world frame `world`) in simulated time: the initial state
+//! and every step are stamped and logged at t = step × dt from 0, `/clock`
+//! carries the same time, `/tf_static` is one message at t = 0, and
+//! `/diagnostics` comes every `ros.diagnostics_period` (1 s) of simulated
+//! time starting at t = 0 — what `annular_plate run` with
+//! `ros.publish_clock: true` would publish for the same scene.
+
+use super::recorder::{NodeBag, NodeTopics, Sample};
+use super::writer::{BagError, BagSummary};
+use crate::dynamics::Simulation;
+use crate::ros::args::{NameResolver, RosArgs};
+use crate::ros::clock::StepClock;
+use crate::ros::diagnostics::{self, LoopReport, Timing};
+use crate::ros::inputs::InputStats;
+use crate::ros::outputs::{clock_message, static_transforms, FrameNames, OutputMessages};
+use crate::ros::settings::RosSettings;
+use crate::ros::DEFAULT_NODE_NAME;
+use std::path::Path;
+use std::time::Instant;
+
+/// Records an offline run; call [`OfflineRecorder::record`] after the
+/// initial state and after every step.
+pub struct OfflineRecorder {
+    bag: NodeBag,
+    outputs: OutputMessages,
+    clock: StepClock,
+    /// Steps between two /diagnostics messages.
+    diagnostics_every: u64,
+    node_name: String,
+    inputs: InputStats,
+    timing: Timing,
+    last: Option<Instant>,
+    recorded_states: u64,
+}
+
+impl OfflineRecorder {
+    /// Create the bag `dir` (it must not exist) for `sim`'s scene.
+    pub fn create(dir: &Path, sim: &Simulation) -> Result<OfflineRecorder, BagError> {
+        let settings = RosSettings::default();
+        let names = NameResolver::new(&RosArgs::default(), DEFAULT_NODE_NAME).expect("the default node name is valid");
+        let topics = NodeTopics::resolve(&names, true).expect("the default topic names are valid");
+        let mut bag = NodeBag::create(dir, &topics)?;
+        let frames =
+            FrameNames::new(&settings.frame_prefix, &settings.world_frame, sim.n_ale_nodes(), sim.n_lagrange_nodes());
+        let clock = StepClock::new(true, sim.dt());
+        bag.write(&Sample::TfStatic(static_transforms(&frames, sim.config().reference.tilt, clock.sim_time())), clock.sim_time())?;
+        Ok(OfflineRecorder {
+            bag,
+            outputs: OutputMessages::new(sim, &frames),
+            diagnostics_every: (settings.diagnostics_period / sim.dt()).round().max(1.0) as u64,
+            clock,
+            node_name: names.fully_qualified_node_name(),
+            inputs: InputStats::default(),
+            timing: Timing::new(Instant::now()),
+            last: None,
+            recorded_states: 0,
+        })
+    }
+
+    /// Record the current state: /clock, /joint_states, /tf, the modal
+    /// amplitudes and, when due, /diagnostics.
+    pub fn record(&mut self, sim: &Simulation) -> Result<(), BagError> {
+        let now = Instant::now();
+        if let Some(last) = self.last {
+            self.timing.record(last, None, None, now - last);
+        }
+        self.last = Some(now);
+        while self.clock.total_steps() < sim.step_count() {
+            self.clock.advance();
+        }
+        let stamp = self.clock.stamp();
+        self.bag.write(&Sample::Clock(clock_message(&self.clock)), stamp)?;
+        self.outputs.update(sim, stamp);
+        self.bag.write(&Sample::JointState(self.outputs.joint_state.handle()), stamp)?;
+        self.bag.write(&Sample::Tf(self.outputs.tf.handle()), stamp)?;
+        self.bag.write(&Sample::Modal(self.outputs.modal.handle()), stamp)?;
+        if self.recorded_states.is_multiple_of(self.diagnostics_every) {
+            let report = LoopReport {
+                diverged: None,
+                paused: false,
+                overruns: 0,
+                new_overruns: 0,
+                step: sim.step_count(),
+                sim_time: sim.time(),
+                ros_time: self.clock.sim_time(),
+                rate_hz: 1.0 / sim.dt(),
+                // Offline: as fast as possible.
+                realtime_factor: 0.0,
+                publish_failures: 0,
+                timing: self.timing.report(now),
+            };
+            let status = vec![
+                diagnostics::simulation_status(&self.node_name, &report),
+                diagnostics::inputs_status(&self.node_name, &self.inputs, 0),
+            ];
+            self.bag.write(&Sample::Diagnostics(diagnostics::diagnostics_message(stamp, status)), stamp)?;
+        }
+        self.recorded_states += 1;
+        Ok(())
+    }
+
+    /// Finish the MCAP file and write metadata.yaml.
+    pub fn finish(self) -> Result<BagSummary, BagError> {
+        self.bag.finish()
+    }
+}

@@ -1,0 +1,54 @@
+//! `simulate --bag DIR`: the CLI's end of `bag::offline` (which needs the
+//! node's message code, so the `ros` feature; without it `--bag` says so).
+
+use crate::dynamics::Simulation;
+use std::path::Path;
+
+/// A bag being recorded from an offline run.
+pub struct BagOutput {
+    #[cfg(feature = "ros")]
+    inner: crate::bag::OfflineRecorder,
+}
+
+#[cfg(feature = "ros")]
+impl BagOutput {
+    /// Create the rosbag2 directory `dir` (it must not exist).
+    pub fn create(dir: &Path, sim: &Simulation) -> anyhow::Result<BagOutput> {
+        let inner = crate::bag::OfflineRecorder::create(dir, sim).map_err(|e| anyhow::anyhow!("--bag: {e}"))?;
+        Ok(BagOutput { inner })
+    }
+
+    /// Record the current state (t = 0, then after every step).
+    pub fn record(&mut self, sim: &Simulation) -> anyhow::Result<()> {
+        self.inner.record(sim).map_err(|e| anyhow::anyhow!("--bag: {e}"))
+    }
+
+    /// Finish the bag; returns a one-line summary.
+    pub fn finish(self) -> anyhow::Result<String> {
+        let s = self.inner.finish().map_err(|e| anyhow::anyhow!("--bag: {e}"))?;
+        let topics: Vec<String> = s.topics.iter().map(|t| format!("{} {}", t.name, t.count)).collect();
+        Ok(format!(
+            "bag {}: {} messages ({}), {:.3} s, {} bytes",
+            s.dir.display(),
+            s.message_count,
+            topics.join(", "),
+            s.duration as f64 * 1e-9,
+            s.bytes
+        ))
+    }
+}
+
+#[cfg(not(feature = "ros"))]
+impl BagOutput {
+    pub fn create(_dir: &Path, _sim: &Simulation) -> anyhow::Result<BagOutput> {
+        anyhow::bail!(
+            "--bag needs the `ros` feature (the bag holds the node's messages); this build has none: build with the default features"
+        )
+    }
+    pub fn record(&mut self, _sim: &Simulation) -> anyhow::Result<()> {
+        Ok(())
+    }
+    pub fn finish(self) -> anyhow::Result<String> {
+        Ok(String::new())
+    }
+}

@@ -1,0 +1,279 @@
+//! `annular_plate study [FILE]`: accuracy against cost, measured (see `crate::study`).
+//!
+//! Prints a table (or `--json`), optionally draws the Pareto picture
+//! (`--plot OUT.png|OUT.svg`), shows a progress bar on a terminal.
+
+use crate::study::{self, Recommendation, StudyPlan, StudyReport};
+use anyhow::Context;
+use std::fmt::Write as _;
+use std::io::{IsTerminal, Write};
+use std::path::PathBuf;
+
+#[derive(clap::Args, Debug, Clone)]
+pub struct StudyArgs {
+    /// Params file (ROS 2 format); omitted: the built-in lathe disc of the paper's section 5.1.
+    pub file: Option<PathBuf>,
+    /// Machine-readable output (schema "annular_plate.study/1") instead of the table.
+    #[arg(long)]
+    pub json: bool,
+    /// A small grid (seconds instead of about a minute): for a first look and for tests.
+    #[arg(long)]
+    pub quick: bool,
+    /// Also draw the error-vs-cost (Pareto) picture to this file (.png or .svg).
+    #[arg(long, value_name = "OUT")]
+    pub plot: Option<PathBuf>,
+    /// Target relative errors for the recommendations, e.g. 1e-2,1e-3,1e-4.
+    #[arg(long, value_delimiter = ',', value_name = "LIST")]
+    pub targets: Option<Vec<f64>>,
+    /// Simulated time of the trajectory axis, s (default 0.05; --quick 0.02).
+    #[arg(long, value_name = "S")]
+    pub duration: Option<f64>,
+    /// No progress bar.
+    #[arg(long)]
+    pub quiet: bool,
+}
+
+/// The plan the arguments ask for.
+pub fn plan(args: &StudyArgs) -> anyhow::Result<StudyPlan> {
+    let mut plan = if args.quick { StudyPlan::quick() } else { StudyPlan::full() };
+    if let Some(t) = &args.targets {
+        anyhow::ensure!(!t.is_empty() && t.iter().all(|x| x.is_finite() && *x > 0.0 && *x < 1.0), "--targets must be numbers in (0, 1), got {t:?}");
+        plan.targets = t.clone();
+    }
+    if let Some(d) = args.duration {
+        anyhow::ensure!(
+            d.is_finite() && d * plan.sample_rate_hz >= 1.0 && d <= 10.0,
+            "--duration must be between {} s and 10 s, got {d}",
+            1.0 / plan.sample_rate_hz
+        );
+        plan.duration_s = d;
+    }
+    Ok(plan)
+}
+
+pub fn main(args: StudyArgs) -> anyhow::Result<()> {
+    let plan = plan(&args)?;
+    let (config, source) = match &args.file {
+        Some(f) => (super::load_config(f)?, f.display().to_string()),
+        None => (study::lathe_scene(), "built-in lathe disc".to_string()),
+    };
+    if let Some(p) = &args.plot {
+        super::plot::check_output_path(p)?;
+    }
+    let show = !args.quiet && std::io::stderr().is_terminal();
+    let bar = indicatif::ProgressBar::new(plan.units(&config) as u64);
+    if show {
+        bar.set_style(indicatif::ProgressStyle::with_template("{bar:30} {pos}/{len} {elapsed_precise} {msg}").expect("valid template"));
+    } else {
+        bar.set_draw_target(indicatif::ProgressDrawTarget::hidden());
+    }
+    let report = study::run(&config, &source, &plan, &mut |done, _total, what| {
+        bar.set_position(done as u64);
+        bar.set_message(what.to_string());
+    })
+    .with_context(|| format!("study of {source}"))?;
+    bar.finish_and_clear();
+    let stdout = std::io::stdout();
+    let mut out = stdout.lock();
+    if args.json {
+        serde_json::to_writer_pretty(&mut out, &report)?;
+        writeln!(out)?;
+    } else {
+        out.write_all(table(&report).as_bytes())?;
+    }
+    if let Some(p) = &args.plot {
+        super::plot::pareto(&report, p, super::plot::Size { width: 1500, height: 560 })?;
+        if !args.json {
+            writeln!(out, "\nPareto picture: {}", p.display())?;
+        }
+    }
+    Ok(())
+}
+
+/// A duration, s, in readable units.
+pub fn fmt_time(s: f64) -> String {
+    if !s.is_finite() {
+        return "—".into();
+    }
+    if s >= 1.0 {
+        format!("{s:.2} s")
+    } else if s >= 1e-3 {
+        format!("{:.3} ms", s * 1e3)
+    } else if s >= 1e-6 {
+        format!("{:.3} µs", s * 1e6)
+    } else {
+        format!("{:.1} ns", s * 1e9)
+    }
+}
+
+fn fmt_rate(hz: f64) -> String {
+    if hz >= 1e6 {
+        format!("{} MHz", hz / 1e6)
+    } else if hz >= 1e3 {
+        format!("{} kHz", hz / 1e3)
+    } else {
+        format!("{hz} Hz")
+    }
+}
+
+fn fmt_rec<S>(r: &Recommendation<S>, setting: impl Fn(&S) -> String, cost: impl Fn(f64) -> String) -> String {
+    match (&r.setting, r.claimed_error, r.cost) {
+        (Some(s), Some(e), Some(c)) => format!("{} (≤ {e:.1e}; {})", setting(s), cost(c)),
+        _ => "not reached in the grid".into(),
+    }
+}
+
+/// The human-readable report.
+pub fn table(r: &StudyReport) -> String {
+    let mut o = String::new();
+    let s = &r.scene;
+    let _ = writeln!(
+        o,
+        "Study of {}: r_i = {} m, r_a = {} m, h = {} m, {}–{}, {} modes (k ∈ {:?}, l ∈ {:?}), {} radial splines, Ω = {:.4} rad/s, {} at {}",
+        s.source,
+        s.inner_radius,
+        s.outer_radius,
+        s.thickness,
+        s.inner_boundary,
+        s.outer_boundary,
+        s.modes,
+        s.nodal_diameters,
+        s.nodal_circles,
+        s.radial_splines,
+        s.speed_rad_s,
+        s.integrator,
+        fmt_rate(s.rate_hz)
+    );
+    let _ = writeln!(o, "Errors are relative and reproducible to the last bit; times are the fastest of repeats on this machine and vary. * = on the error-vs-cost Pareto front.");
+
+    // Axis 1.
+    let a = &r.radial_splines;
+    let _ = writeln!(o, "\n1. Natural frequencies vs plate.radial_splines");
+    let _ = writeln!(
+        o,
+        "   error: {}\n   reference: {} splines; its difference from {} splines, {:.1e}, bounds its own error",
+        a.error_measure, a.reference.radial_splines, a.reference.check_radial_splines, a.reference.uncertainty
+    );
+    let _ = writeln!(o, "   {:>14} {:>14} {:>11} {:>14}", "radial_splines", "max rel error", "worst ⟨k,l⟩", "build time");
+    for row in &a.rows {
+        let _ = writeln!(
+            o,
+            "   {:>14} {:>14.3e} {:>11} {:>14} {}",
+            row.radial_splines,
+            row.max_relative_error,
+            format!("⟨{},{}⟩", row.worst_mode.k, row.worst_mode.l),
+            fmt_time(row.build_time_s),
+            if row.pareto { "*" } else { "" }
+        );
+    }
+
+    // Axis 2.
+    let b = &r.mode_count;
+    let lc = &b.load_case;
+    let _ = writeln!(o, "\n2. Steady deflection at the load point vs mode set k = 0..k_max, l = 0..l_max");
+    let _ = writeln!(
+        o,
+        "   load point: ALE node {} at ξ = ({}, {}), {} loaded node(s), Ω = {:.4} rad/s, ζ = {}",
+        lc.ale_node,
+        lc.point.radial,
+        lc.point.angular,
+        lc.loads.len(),
+        lc.speed_rad_s,
+        b.damping
+    );
+    let rf = &b.reference;
+    let _ = writeln!(
+        o,
+        "   reference: k ≤ {}, l ≤ {} ({} modes, {} radial splines): w = {:.9e} m; estimated own error {:.1e} ({})",
+        rf.k_max, rf.l_max, rf.modes, rf.radial_splines, rf.response_m, rf.uncertainty, rf.uncertainty_method
+    );
+    for n in &b.notes {
+        let _ = writeln!(o, "   note: {n}");
+    }
+    let mut ks: Vec<u32> = b.rows.iter().map(|x| x.k_max).collect();
+    ks.sort_unstable();
+    ks.dedup();
+    let mut ls: Vec<u32> = b.rows.iter().map(|x| x.l_max).collect();
+    ls.sort_unstable();
+    ls.dedup();
+    for (title, cell) in [
+        (
+            "relative error",
+            &(|x: &study::response::ResponseRow| format!("{:.2e}{}", x.relative_error, if x.pareto { "*" } else { " " }))
+                as &dyn Fn(&study::response::ResponseRow) -> String,
+        ),
+        ("wall time per step", &|x: &study::response::ResponseRow| fmt_time(x.step_time_s)),
+        ("modes", &|x: &study::response::ResponseRow| x.modes.to_string()),
+    ] {
+        let _ = writeln!(o, "   {title}:");
+        let mut line = format!("   {:>13}", "l_max \\ k_max");
+        for k in &ks {
+            let _ = write!(line, " {k:>10}");
+        }
+        let _ = writeln!(o, "{line}");
+        for l in &ls {
+            let mut line = format!("   {l:>13}");
+            for k in &ks {
+                let c = b.rows.iter().find(|x| x.k_max == *k && x.l_max == *l).map(cell).unwrap_or_default();
+                let _ = write!(line, " {c:>10}");
+            }
+            let _ = writeln!(o, "{line}");
+        }
+    }
+
+    // Axis 3.
+    let c = &r.integrator;
+    let _ = writeln!(
+        o,
+        "\n3. Trajectory vs integrator and output rate ({} s from rest, sampled at {}, {} modes)",
+        c.duration_s,
+        fmt_rate(c.sample_rate_hz),
+        c.modes
+    );
+    let checks: Vec<String> = c.reference.checks.iter().map(|k| format!("{} at {}: {:.1e}", k.integrator, fmt_rate(k.rate_hz), k.difference)).collect();
+    let _ = writeln!(
+        o,
+        "   error: {}\n   reference: {} at {}; checks {}; the larger difference bounds the reference's error; peak ‖q‖ = {:.3e} m",
+        c.error_measure,
+        c.reference.integrator,
+        fmt_rate(c.reference.rate_hz),
+        checks.join(", "),
+        c.reference.peak_amplitude_m
+    );
+    for n in &c.notes {
+        let _ = writeln!(o, "   note: {n}");
+    }
+    let _ = writeln!(o, "   {:>18} {:>9} {:>14} {:>16}", "integrator", "rate", "rel error", "wall / sim s");
+    for row in &c.rows {
+        match (row.relative_error, row.wall_s_per_simulated_s) {
+            (Some(e), Some(w)) => {
+                let _ = writeln!(
+                    o,
+                    "   {:>18} {:>9} {:>14.3e} {:>16} {}",
+                    row.integrator,
+                    fmt_rate(row.rate_hz),
+                    e,
+                    fmt_time(w),
+                    if row.pareto { "*" } else { "" }
+                );
+            }
+            _ => {
+                let _ = writeln!(o, "   {:>18} {:>9} {:>14?}: {}", row.integrator, fmt_rate(row.rate_hz), row.status, row.detail.as_deref().unwrap_or(""));
+            }
+        }
+    }
+
+    // Recommendations.
+    let _ =
+        writeln!(o, "\nRecommended: the cheapest measured setting whose error plus the reference's uncertainty is within the target (≤ claimed error; cost)");
+    let _ = writeln!(o, "   {:>7}  {:<34} {:<54} integrator and rate", "target", "plate.radial_splines", "mode set");
+    for i in 0..r.plan.targets.len() {
+        let a = fmt_rec(&r.radial_splines.recommendations[i], |s| s.radial_splines.to_string(), |c| format!("build {}", fmt_time(c)));
+        let b =
+            fmt_rec(&r.mode_count.recommendations[i], |s| format!("k ≤ {}, l ≤ {} ({} modes)", s.k_max, s.l_max, s.modes), |c| format!("{}/step", fmt_time(c)));
+        let c = fmt_rec(&r.integrator.recommendations[i], |s| format!("{} {}", s.integrator, fmt_rate(s.rate_hz)), |c| format!("{}/sim s", fmt_time(c)));
+        let _ = writeln!(o, "   {:>7.0e}  {:<34} {:<54} {}", r.plan.targets[i], a, b, c);
+    }
+    let _ = writeln!(o, "\n(study wall time {:.1} s)", r.wall_time_s);
+    o
+}

@@ -1,0 +1,298 @@
+//! Brake pads: the contact submodel of the paper's brake-squeal example
+//! (section 5.3, Fig. 18).
+//!
+//! At every contact point — an ALE node, so the pad stays put while the disc
+//! slides under it (paper 4.1) — a pad presses on each face of the disc through
+//! an axial spring k_c and damper c_c (the prismatic joint with its
+//! spring-damper of Fig. 18). With the transverse deflection w under the
+//! point and its rate ẇ = ∂w/∂t at the fixed θ (the rate at which the gap to
+//! a space-fixed pad closes; the material velocity ∂w/∂t + Ω ∂w/∂θ differs
+//! from it by the sliding along the deformed surface), the contact forces are
+//!
+//! - top face (+z, pushes −z):    N_t = u_t + k_c w + c_c ẇ
+//! - bottom face (−z, pushes +z): N_b = u_b − k_c w − c_c ẇ
+//!
+//! where u = k_c δ + c_c δ̇ comes from the position δ of the pad's backing
+//! plate (the caliper side of the springs). Two calipers (`pads.caliper`):
+//!
+//! - `fixed`: the caliper is held where the clamp force N₀ puts it on an
+//!   undeformed disc — with n contact points each spring is compressed by
+//!   δ₀ = N₀/(n k_c), u = N₀/n. The disc sees the pads as springs
+//!   2k_c and dampers 2c_c to ground.
+//! - `floating` (default): the clamp force is a force, as with a hydraulic
+//!   piston in a floating caliper: each face's pad is a rigid, massless
+//!   backing plate pressed with N₀, so u solves Σ_c N_c = N₀ per pad and face.
+//!   The pads then act on the deformation relative to the pad's mean,
+//!   N = N₀/n ± (k_c (w − w̄) + c_c (ẇ − ẇ̄)), and push the disc with no net
+//!   axial force.
+//!
+//! With `pads.lift_off` a contact that would pull is released (N = max(N, 0);
+//! for the floating caliper u is found for the contacts that stay closed):
+//! the "non-linear spring which takes the loss of contact into account" the
+//! paper suggests for a more advanced study.
+//!
+//! Friction: each face drags the disc with μN against its sliding direction,
+//! tangential (−sign Ω e_θ), so a contact gives F_θ = −μ (N_t + N_b) sign(Ω)
+//! (sign regularised as tanh(Ω r / 1 mm/s) so a disc braked to rest does not
+//! chatter). With `pads.follower_friction` (the default) the friction force
+//! lies in the deformed surface: the follower-force mechanism of the paper's
+//! section 5.3 adds the normal component (F_θ / r) ∂w/∂θ — the direction of
+//! the sliding velocity, whose normal part ∂w/∂t|θ is the gap closure, not
+//! sliding. Its torque about the axis, r F_θ, goes to the joint. Both faces act
+//! at the mid-plane node: a Kirchhoff plate has no through-thickness, and the
+//! paper connects its contact submodel to the mid-plane `nodes_ALE` frame.
+//!
+//! Why the floating caliper is the default: with a fixed caliper and
+//! lift-off, a face that lifts leaves the other one pressed harder —
+//! N_t + N_b = k_c (δ₀ + |w|) once |w| > δ₀ — so friction, and the energy the
+//! follower force feeds in, grow faster than the damping with amplitude and
+//! squeal diverges instead of settling into a limit cycle
+//! (docs/scenes.md). A force-controlled caliper keeps the total friction at
+//! 2μN₀ per pad; lift-off then shifts the load to the contacts at the
+//! extremes of the wave, where the surface slope and so the follower force
+//! vanish, and the growth saturates — the limit cycles of the paper's Fig. 17.
+
+use crate::config::Caliper;
+use crate::dynamics::wrench::Wrench;
+
+/// Sliding speed below which the friction direction is smoothed, m/s.
+pub const FRICTION_REGULARISATION_SPEED: f64 = 1.0e-3;
+
+/// One contact point: an ALE node and the pad it belongs to.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct PadContactPoint {
+    /// ALE node, 0-based.
+    pub node: usize,
+    /// Pad, 0-based.
+    pub pad: usize,
+    /// r of the node, m.
+    pub radius: f64,
+    /// θ of the node in the ALE frame, rad.
+    pub angle: f64,
+    /// (sin θ, cos θ).
+    pub sin_cos: (f64, f64),
+}
+
+/// The pads of a scene: immutable parameters (commands are in `Inputs`).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Pads {
+    pub contacts: Vec<PadContactPoint>,
+    /// Contact points per pad.
+    pub contacts_per_pad: Vec<usize>,
+    /// k_c per contact point and face, N/m.
+    pub stiffness: f64,
+    /// c_c per contact point and face, N·s/m.
+    pub damping: f64,
+    pub friction_coefficient: f64,
+    pub lift_off: bool,
+    pub follower_friction: bool,
+    pub caliper: Caliper,
+    /// Clamp force per pad the configuration starts with, N (the running
+    /// commands are in `Inputs`).
+    pub initial_clamp_force: Vec<f64>,
+}
+
+/// Surface kinematics under a contact point: deflection w (m) and its rate at
+/// the fixed point, ∂w/∂t|θ (m/s).
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct SurfaceKinematics {
+    pub w: f64,
+    pub w_dot: f64,
+}
+
+/// Forces at one contact point.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct ContactForces {
+    /// Normal force of the top (+z) pad, N (≥ 0 with lift-off).
+    pub top: f64,
+    /// Normal force of the bottom (−z) pad, N.
+    pub bottom: f64,
+    /// Net axial force on the disc, N_b − N_t, N.
+    pub axial: f64,
+    /// Friction along e_θ (negative for Ω > 0), N.
+    pub tangential: f64,
+}
+
+impl Pads {
+    pub fn pad_count(&self) -> usize {
+        self.contacts_per_pad.len()
+    }
+
+    /// sign(Ω), regularised: tanh(Ω r / v_reg).
+    pub fn sliding_sign(speed: f64, radius: f64) -> f64 {
+        (speed * radius / FRICTION_REGULARISATION_SPEED).tanh()
+    }
+
+    /// Forces at every contact point (`out[c]` for `self.contacts[c]`) for the
+    /// pads' clamp forces, the surface kinematics `kin[c]` under each contact
+    /// and the joint speed Ω. `closed` is scratch of the contacts' length.
+    pub fn forces(&self, clamp_force: &[f64], kin: &[SurfaceKinematics], speed: f64, out: &mut [ContactForces], closed: &mut [bool]) {
+        let (k, c) = (self.stiffness, self.damping);
+        match self.caliper {
+            Caliper::Fixed => {
+                for ((contact, s), f) in self.contacts.iter().zip(kin).zip(out.iter_mut()) {
+                    let u = clamp_force[contact.pad] / self.contacts_per_pad[contact.pad] as f64;
+                    f.top = u + k * s.w + c * s.w_dot;
+                    f.bottom = u - k * s.w - c * s.w_dot;
+                }
+            }
+            Caliper::Floating => {
+                for (pad, &clamp) in clamp_force.iter().enumerate().take(self.pad_count()) {
+                    for sign in [1.0, -1.0] {
+                        let u = self.backing_force(pad, clamp, sign, kin, closed);
+                        for ((contact, s), f) in self.contacts.iter().zip(kin).zip(out.iter_mut()) {
+                            if contact.pad == pad {
+                                let n = u + sign * (k * s.w + c * s.w_dot);
+                                if sign > 0.0 {
+                                    f.top = n;
+                                } else {
+                                    f.bottom = n;
+                                }
+                            }
+                        }
+                    }
+                }
+            }
+        }
+        for ((contact, f), _) in self.contacts.iter().zip(out.iter_mut()).zip(kin) {
+            if self.lift_off {
+                f.top = f.top.max(0.0);
+                f.bottom = f.bottom.max(0.0);
+            }
+            f.axial = f.bottom - f.top;
+            f.tangential = -self.friction_coefficient * (f.top + f.bottom) * Self::sliding_sign(speed, contact.radius);
+        }
+    }
+
+    /// u of a floating pad's face (`sign` +1 top, −1 bottom): Σ_c N_c = N₀
+    /// over the contacts that stay closed, N_c = u + sign (k_c w + c_c ẇ).
+    fn backing_force(&self, pad: usize, clamp: f64, sign: f64, kin: &[SurfaceKinematics], closed: &mut [bool]) -> f64 {
+        let e = |s: &SurfaceKinematics| sign * (self.stiffness * s.w + self.damping * s.w_dot);
+        for (flag, contact) in closed.iter_mut().zip(&self.contacts) {
+            *flag = contact.pad == pad;
+        }
+        loop {
+            let (mut sum, mut count) = (0.0, 0usize);
+            for ((s, &on), _) in kin.iter().zip(closed.iter()).zip(&self.contacts) {
+                if on {
+                    sum += e(s);
+                    count += 1;
+                }
+            }
+            if count == 0 {
+                return f64::NEG_INFINITY;
+            }
+            let u = (clamp - sum) / count as f64;
+            if !self.lift_off {
+                return u;
+            }
+            // Open the contacts that would pull; u only falls as they open, so
+            // the open ones stay open: at most n passes.
+            let mut opened = false;
+            for (s, on) in kin.iter().zip(closed.iter_mut()) {
+                if *on && u + e(s) < 0.0 {
+                    *on = false;
+                    opened = true;
+                }
+            }
+            if !opened {
+                return u;
+            }
+        }
+    }
+
+    /// The wrench of `f` on the disc in the ALE node frame (axes of frame A).
+    #[inline]
+    pub fn wrench(contact: &PadContactPoint, f: &ContactForces) -> Wrench {
+        let (s, c) = contact.sin_cos;
+        // e_θ = (−sin θ, cos θ, 0)
+        Wrench { force: [-s * f.tangential, c * f.tangential, f.axial], moment: [0.0; 3] }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn pads(caliper: Caliper, lift_off: bool) -> Pads {
+        Pads {
+            contacts: vec![
+                PadContactPoint { node: 0, pad: 0, radius: 0.12, angle: 0.3, sin_cos: 0.3f64.sin_cos() },
+                PadContactPoint { node: 1, pad: 0, radius: 0.12, angle: 0.5, sin_cos: 0.5f64.sin_cos() },
+            ],
+            contacts_per_pad: vec![2],
+            stiffness: 1.0e6,
+            damping: 50.0,
+            friction_coefficient: 0.5,
+            lift_off,
+            follower_friction: true,
+            caliper,
+            initial_clamp_force: vec![1000.0],
+        }
+    }
+
+    fn forces(p: &Pads, kin: [SurfaceKinematics; 2], speed: f64) -> [ContactForces; 2] {
+        let mut out = [ContactForces::default(); 2];
+        p.forces(&[1000.0], &kin, speed, &mut out, &mut [false; 2]);
+        out
+    }
+
+    const REST: SurfaceKinematics = SurfaceKinematics { w: 0.0, w_dot: 0.0 };
+
+    #[test]
+    fn undeformed_disc_feels_no_axial_force_and_the_clamp_force_in_friction() {
+        for caliper in [Caliper::Fixed, Caliper::Floating] {
+            let p = pads(caliper, false);
+            // Clamp force 1000 N over 2 points: 500 N per point and face.
+            let f = forces(&p, [REST; 2], 25.0);
+            assert!((f[0].top - 500.0).abs() < 1e-9 && (f[0].bottom - 500.0).abs() < 1e-9);
+            assert_eq!(f[0].axial, 0.0);
+            assert!((f[0].tangential + 0.5 * 1000.0).abs() < 1e-9, "{}", f[0].tangential);
+            // Friction opposes the sliding: e_θ at θ, and reverses with Ω.
+            let w = Pads::wrench(&p.contacts[0], &f[0]);
+            assert!((w.force[0] - 500.0 * 0.3f64.sin()).abs() < 1e-9 && (w.force[1] + 500.0 * 0.3f64.cos()).abs() < 1e-9);
+            let back = forces(&p, [REST; 2], -25.0);
+            assert!((back[0].tangential - 500.0).abs() < 1e-9);
+        }
+    }
+
+    #[test]
+    fn a_fixed_caliper_restores_with_twice_the_contact_stiffness_and_damping() {
+        let s = SurfaceKinematics { w: 1e-5, w_dot: 0.02 };
+        let f = forces(&pads(Caliper::Fixed, false), [s, REST], 25.0);
+        assert!((f[0].axial - (-2.0 * 1.0e6 * 1e-5 - 2.0 * 50.0 * 0.02)).abs() < 1e-9, "{}", f[0].axial);
+        // Linear springs: the sum of the normal forces, hence friction, does not change.
+        assert!((f[0].top + f[0].bottom - 1000.0).abs() < 1e-9);
+    }
+
+    #[test]
+    fn a_floating_caliper_acts_on_the_deformation_relative_to_the_pad_mean() {
+        let s = SurfaceKinematics { w: 1e-5, w_dot: 0.02 };
+        let f = forces(&pads(Caliper::Floating, false), [s, REST], 25.0);
+        // w − w̄ = ±0.5e-5, ẇ − ẇ̄ = ±0.01: F_z = −2 k (w − w̄) − 2 c (ẇ − ẇ̄).
+        let expected = -2.0 * 1.0e6 * 0.5e-5 - 2.0 * 50.0 * 0.01;
+        assert!((f[0].axial - expected).abs() < 1e-9 && (f[1].axial + expected).abs() < 1e-9, "{f:?}");
+        for face in [f[0].top + f[1].top, f[0].bottom + f[1].bottom] {
+            assert!((face - 1000.0).abs() < 1e-9, "each face carries the clamp force");
+        }
+    }
+
+    #[test]
+    fn lift_off_releases_the_contacts_that_would_pull() {
+        // Fixed: δ₀ = 500 N / 1e6 N/m = 0.5 mm; deflect by 0.8 mm: the bottom face lifts off.
+        let s = SurfaceKinematics { w: 8e-4, w_dot: 0.0 };
+        let f = forces(&pads(Caliper::Fixed, true), [s, REST], 25.0);
+        assert_eq!(f[0].bottom, 0.0);
+        assert!((f[0].top - 1.0e6 * 1.3e-3).abs() < 1e-9);
+        let linear = forces(&pads(Caliper::Fixed, false), [s, REST], 25.0);
+        assert!(linear[0].bottom < 0.0, "without lift-off the spring pulls");
+        // Floating: deflect one point by 1.5 mm (more than the 1 mm it takes
+        // with the other at rest): the bottom pad leaves the raised point and
+        // carries the clamp force on the other; the top pad only on the raised one.
+        let s = SurfaceKinematics { w: 1.5e-3, w_dot: 0.0 };
+        let f = forces(&pads(Caliper::Floating, true), [s, REST], 25.0);
+        assert_eq!(f[0].bottom, 0.0);
+        assert!((f[1].bottom - 1000.0).abs() < 1e-9, "{f:?}");
+        assert!((f[0].top - 1000.0).abs() < 1e-9 && f[1].top == 0.0, "{f:?}");
+    }
+}

@@ -1,0 +1,54 @@
+//! Pitch links of the swash plate (paper section 5.2, Figs. 11–15).
+//!
+//! The paper's helicopter model attaches two linkages to material points of
+//! the swash plate (Lagrangian nodes); they drive the blades' pitch joints,
+//! whose aerodynamic loads are "force-damper elements". Here the linkage
+//! loads are **prescribed forces**, not spring-dampers: each link pushes on
+//! its node axially with
+//!
+//!   F_z = F_mean + F_cyc cos(ψ − ψ₀),   ψ = φ + χ,
+//!
+//! a function of the node's azimuth ψ in the (tilted, non-rotating) reference
+//! frame. That is what a cyclically pitched blade transmits when its pitch
+//! joint is a spring-damper driven through a rigid link by the tilted plate:
+//! the spring part ∝ cos ψ and the damper part ∝ Ω sin ψ combine into one
+//! harmonic with amplitude F_cyc and phase ψ₀. Prescribed forces leave the
+//! plate's stiffness untouched, so the gravity value of the ⟨k = 0⟩ amplitude
+//! stays −C_t g_axial / K (the static check of the swash-plate scene). Two
+//! links half a turn apart with F_mean = 0 load only the odd-k modes, and
+//! the ⟨k = 1, l = 0⟩ pair — the softest of them — dominates (Fig. 15).
+
+/// Prescribed link forces at Lagrangian nodes.
+#[derive(Debug, Clone, PartialEq)]
+pub struct PitchLinks {
+    /// Lagrangian nodes, 0-based.
+    pub nodes: Vec<usize>,
+    /// φ of each node in the plate frame, rad.
+    pub angles: Vec<f64>,
+    pub mean_force: f64,
+    pub cyclic_force: f64,
+    pub cyclic_phase: f64,
+}
+
+impl PitchLinks {
+    /// Axial force of link `j` (N, +z) at joint angle χ.
+    #[inline]
+    pub fn force(&self, j: usize, chi: f64) -> f64 {
+        self.mean_force + self.cyclic_force * (self.angles[j] + chi - self.cyclic_phase).cos()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use std::f64::consts::PI;
+
+    #[test]
+    fn links_half_a_turn_apart_carry_opposite_cyclic_forces() {
+        let links = PitchLinks { nodes: vec![0, 1], angles: vec![0.0, PI], mean_force: 0.0, cyclic_force: 300.0, cyclic_phase: 0.4 };
+        for chi in [0.0, 0.7, 2.0, 5.5] {
+            assert!((links.force(0, chi) + links.force(1, chi)).abs() < 1e-9);
+        }
+        assert!((links.force(0, 0.4) - 300.0).abs() < 1e-12, "peak at ψ = ψ₀");
+    }
+}

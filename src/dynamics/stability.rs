@@ -1,0 +1,253 @@
+//! Linear stability of a spinning plate with brake pads: the flutter
+//! instability of the paper's brake-squeal model (section 5.3, Fig. 17).
+//!
+//! About the undeformed state at constant joint speed Ω, in ALE coordinates
+//! y = (q̄, q̄̇) (docs/dynamics.md), the equations are linear and
+//! time-invariant — space-fixed pads are constant in the ALE frame:
+//!
+//!   q̄̈ = M⁻¹(−K_pad + K_fric) q̄ − M⁻¹C_pad q̄̇
+//!        + per pair: 2kΩ J q̄̇ + 2ζωkΩ J q̄ + (k²Ω² − ω_eff²) q̄ − 2ζω q̄̇,
+//!
+//! with, summed over the contact points c (shape values w_i and surface tilt
+//! (θ_x, θ_y)_i of mode i at the node, friction force F = (F_x, F_y) at the
+//! preload: F_θ = −μ·2N₀/n · sign Ω along e_θ):
+//!
+//! - K_pad,im = 2 k_c w_i w_m, C_pad,im = 2 c_c w_i w_m (both faces) for a
+//!   fixed caliper; with a floating one the pads follow their mean, so
+//!   w − w̄ (w̄ the mean over the pad's contact points) replaces w;
+//! - K_fric,im = w_i (F_y θ_x,m − F_x θ_y,m): the follower friction's normal
+//!   component, (F_θ/r) ∂w/∂θ — not symmetric, hence flutter.
+//!
+//! The friction force's magnitude does not change to first order (the two
+//! faces' spring forces change by ∓k_c w). Lift-off is inactive about a
+//! preloaded state; the tool (a delay) and the held user wrenches are not
+//! part of the linearisation, nor is the joint speed (held constant).
+//! [`linear_system`] assembles the real 2n×2n matrix from the same node data
+//! the simulation uses; faer gives its eigenvalues.
+
+use super::integrators::equations::mode_constants;
+use super::load_models::Pads;
+use super::scene::Scene;
+use crate::config::Caliper;
+use faer::Mat;
+use nalgebra::Complex;
+
+/// The matrix A of ẏ = A y, y = (q̄, q̄̇), at speed Ω with friction
+/// coefficient μ and pad clamp forces `clamp_force` (one per pad).
+pub fn linear_system(scene: &Scene, speed: f64, friction_coefficient: f64, clamp_force: &[f64]) -> Mat<f64> {
+    let n = scene.n_modes();
+    let mut a = Mat::<f64>::zeros(2 * n, 2 * n);
+    for i in 0..n {
+        a[(i, n + i)] = 1.0;
+    }
+    let consts = mode_constants(scene);
+    for &i in &scene.layout.axisymmetric {
+        a[(n + i, i)] = -consts[i].omega_eff_sq;
+        a[(n + i, n + i)] = -consts[i].damping_rate;
+    }
+    for p in &scene.layout.pairs {
+        let c = consts[p.cos];
+        let (ic, is) = (n + p.cos, n + p.sin);
+        let kw = p.k as f64 * speed;
+        let stiff = kw * kw - c.omega_eff_sq;
+        let skew = c.damping_rate * kw;
+        a[(ic, p.cos)] = stiff;
+        a[(ic, p.sin)] = -skew;
+        a[(is, p.cos)] = skew;
+        a[(is, p.sin)] = stiff;
+        a[(ic, ic)] = -c.damping_rate;
+        a[(ic, is)] = -2.0 * kw;
+        a[(is, ic)] = 2.0 * kw;
+        a[(is, is)] = -c.damping_rate;
+    }
+    if let Some(pads) = &scene.load_models.pads {
+        let mass = &scene.model.body().modal_mass;
+        // Per pad the mean shape over its contacts: a floating caliper's pads
+        // follow it, so its springs see w − w̄ (docs/scenes.md).
+        let mut mean = vec![vec![0.0; n]; pads.pad_count()];
+        if pads.caliper == Caliper::Floating {
+            for c in &pads.contacts {
+                let share = 1.0 / pads.contacts_per_pad[c.pad] as f64;
+                for (m, s) in mean[c.pad].iter_mut().zip(&scene.ale_nodes[c.node].shapes) {
+                    *m += share * s.w;
+                }
+            }
+        }
+        for contact in &pads.contacts {
+            let clamp = clamp_force[contact.pad];
+            if pads.lift_off && clamp <= 0.0 {
+                continue; // touching without preload: not in contact to first order
+            }
+            let node = &scene.ale_nodes[contact.node];
+            let mean = &mean[contact.pad];
+            let preload = clamp / pads.contacts_per_pad[contact.pad] as f64;
+            let f_theta = -friction_coefficient * 2.0 * preload * Pads::sliding_sign(speed, contact.radius);
+            let (s, co) = contact.angle.sin_cos();
+            let (fx, fy) = (-s * f_theta, co * f_theta);
+            for i in 0..n {
+                let wi = node.shapes[i].w;
+                let di = wi - mean[i];
+                for m in 0..n {
+                    let sm = node.shapes[m];
+                    let dm = sm.w - mean[m];
+                    let mut k = -2.0 * pads.stiffness * di * dm;
+                    if pads.follower_friction {
+                        k += wi * (fy * sm.tilt[0] - fx * sm.tilt[1]);
+                    }
+                    a[(n + i, m)] += k / mass[i];
+                    a[(n + i, n + m)] -= 2.0 * pads.damping * di * dm / mass[i];
+                }
+            }
+        }
+    }
+    a
+}
+
+/// [`linear_system`] for the balanced state (s q̄, q̄̇), s ≈ the highest
+/// frequency: the same eigenvalues, but the blocks are of one magnitude
+/// (ω instead of ω² and 1), so the growth rates — some 1e-5 of ω near a
+/// threshold — keep their accuracy. Returns the matrix and s.
+fn balanced_system(scene: &Scene, speed: f64, friction_coefficient: f64, clamp_force: &[f64]) -> (Mat<f64>, f64) {
+    let mut a = linear_system(scene, speed, friction_coefficient, clamp_force);
+    let n = scene.n_modes();
+    let s = (0..n).map(|i| a[(n + i, i)].abs()).fold(1.0, f64::max).sqrt();
+    for r in 0..n {
+        for c in 0..n {
+            a[(r, n + c)] *= s;
+            a[(n + r, c)] /= s;
+        }
+    }
+    (a, s)
+}
+
+/// Eigenvalues of [`linear_system`], largest real part first.
+pub fn eigenvalues(scene: &Scene, speed: f64, friction_coefficient: f64, clamp_force: &[f64]) -> Vec<Complex<f64>> {
+    let (a, _) = balanced_system(scene, speed, friction_coefficient, clamp_force);
+    let mut ev: Vec<Complex<f64>> = a
+        .eigenvalues()
+        .expect("the eigenvalues of a finite real matrix")
+        .into_iter()
+        .map(|z| Complex::new(z.re, z.im))
+        .collect();
+    ev.sort_by(|x, y| y.re.total_cmp(&x.re));
+    ev
+}
+
+/// max Re λ, 1/s: positive means a growing vibration (flutter).
+pub fn growth_rate(scene: &Scene, speed: f64, friction_coefficient: f64, clamp_force: &[f64]) -> f64 {
+    eigenvalues(scene, speed, friction_coefficient, clamp_force)[0].re
+}
+
+/// max Re λ for the scene's own friction coefficient and initial clamp forces.
+pub fn max_growth_rate(scene: &Scene, speed: f64) -> f64 {
+    let (mu, clamp) = configured(scene);
+    growth_rate(scene, speed, mu, &clamp)
+}
+
+fn configured(scene: &Scene) -> (f64, Vec<f64>) {
+    scene.load_models.pads.as_ref().map_or((0.0, Vec::new()), |p| (p.friction_coefficient, p.initial_clamp_force.clone()))
+}
+
+/// The smallest friction coefficient in [0, mu_max] at which the linearised
+/// system becomes unstable (max Re λ crosses zero), for the scene's clamp
+/// forces at speed Ω: a scan in 200 steps, then bisection to 1e-9 relative.
+/// `None` if stable up to `mu_max`; `Some(0.0)` if unstable without friction.
+pub fn friction_threshold(scene: &Scene, speed: f64, mu_max: f64) -> Option<f64> {
+    let (_, clamp) = configured(scene);
+    let rate = |mu: f64| growth_rate(scene, speed, mu, &clamp);
+    if rate(0.0) > 0.0 {
+        return Some(0.0);
+    }
+    const SCAN: usize = 200;
+    let mut lo = 0.0;
+    for j in 1..=SCAN {
+        let mu = mu_max * j as f64 / SCAN as f64;
+        if rate(mu) > 0.0 {
+            let mut hi = mu;
+            while hi - lo > 1e-9 * hi {
+                let mid = 0.5 * (lo + hi);
+                if rate(mid) > 0.0 {
+                    hi = mid;
+                } else {
+                    lo = mid;
+                }
+            }
+            return Some(0.5 * (lo + hi));
+        }
+        lo = mu;
+    }
+    None
+}
+
+/// The least stable eigenvalue of [`linear_system`] and its eigenvector
+/// y = (q̄, q̄̇) (complex; a real motion is Re(v e^{λt})).
+#[derive(Debug, Clone, PartialEq)]
+pub struct CriticalMode {
+    pub eigenvalue: Complex<f64>,
+    pub vector: Vec<Complex<f64>>,
+}
+
+/// The eigenvalue with the largest real part (positive imaginary part among a
+/// conjugate pair) and its eigenvector.
+pub fn critical_mode(scene: &Scene, speed: f64, friction_coefficient: f64, clamp_force: &[f64]) -> CriticalMode {
+    let (a, scale) = balanced_system(scene, speed, friction_coefficient, clamp_force);
+    let eig = a.eigen().expect("the eigendecomposition of a finite real matrix");
+    let s = eig.S();
+    let u = eig.U();
+    let n = a.nrows();
+    let best = (0..n)
+        .max_by(|&i, &j| {
+            let (x, y) = (s[i], s[j]);
+            x.re.total_cmp(&y.re).then(x.im.total_cmp(&y.im))
+        })
+        .expect("a non-empty system");
+    CriticalMode {
+        eigenvalue: Complex::new(s[best].re, s[best].im),
+        vector: (0..n).map(|r| Complex::new(u[(r, best)].re, u[(r, best)].im) / if r < n / 2 { scale } else { 1.0 }).collect(),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::config::{Boundary, Config};
+    use crate::model::PlateModel;
+
+    fn disc(damping: f64) -> Scene {
+        let mut c = Config::default();
+        c.plate.inner_radius = 0.07;
+        c.plate.outer_radius = 0.153;
+        c.plate.thickness = 0.0181;
+        c.plate.inner_boundary = Boundary::Supported;
+        c.plate.nodal_diameters = vec![0, 1, 2];
+        c.plate.nodal_circles = vec![0];
+        c.plate.damping = vec![damping];
+        let model = PlateModel::new(&c.plate).unwrap();
+        Scene::new(&c, model)
+    }
+
+    #[test]
+    fn without_pads_the_eigenvalues_are_the_ale_frequencies_omega_plus_minus_k_omega() {
+        let (zeta, speed) = (0.01, 300.0);
+        let scene = disc(zeta);
+        let mut expected: Vec<Complex<f64>> = Vec::new();
+        for m in scene.model.modes() {
+            let (re, wd) = (-zeta * m.omega, m.omega * (1.0 - zeta * zeta).sqrt());
+            if m.k == 0 {
+                expected.extend([Complex::new(re, wd), Complex::new(re, -wd)]);
+            } else if m.shape == crate::model::AngularShape::Cos {
+                // ν = λ − ikΩ solves ν² + 2ζων + ω² = 0 (docs/dynamics.md); the conjugates too.
+                let kw = m.k as f64 * speed;
+                for im in [kw + wd, kw - wd] {
+                    expected.extend([Complex::new(re, im), Complex::new(re, -im)]);
+                }
+            }
+        }
+        let got = eigenvalues(&scene, speed, 0.0, &[]);
+        assert_eq!(got.len(), expected.len());
+        for e in &expected {
+            let nearest = got.iter().map(|g| (g - e).norm()).fold(f64::INFINITY, f64::min);
+            assert!(nearest < 1e-9 * e.norm(), "{e} not among {got:?}");
+        }
+    }
+}

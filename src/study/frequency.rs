@@ -1,0 +1,146 @@
+//! Axis 1: natural-frequency error against `plate.radial_splines`, with the
+//! model build time.
+//!
+//! For each spline count the plate's requested ⟨k, l⟩ are computed and compared
+//! with a reference model of the same plate at `spline_reference_factor` × the
+//! largest count studied. The reference's own error is bounded by its
+//! difference from a model at half its spline count: the Ritz frequencies
+//! converge from above at O(n⁻⁴), so that difference is ≈ 15× the reference's
+//! discretisation error — as long as round-off does not dominate, which it
+//! does beyond ~128 splines (docs/study.md), hence the full plan's factor 2.
+
+use super::timing::min_time;
+use super::{mark_pareto, recommend, Recommendation, StudyError, StudyPlan};
+use crate::config::PlateConfig;
+use crate::model::PlateModel;
+use serde::Serialize;
+use std::collections::BTreeMap;
+
+/// ⟨k, l⟩ of a mode.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+pub struct ModeId {
+    pub k: u32,
+    pub l: u32,
+}
+
+/// One spline count.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct FrequencyRow {
+    pub radial_splines: usize,
+    /// max over the requested ⟨k, l⟩ of |f − f_ref| / f_ref.
+    pub max_relative_error: f64,
+    /// Where that maximum occurs.
+    pub worst_mode: ModeId,
+    /// Model build time (`PlateModel::new`), s: the fastest of repeated builds.
+    pub build_time_s: f64,
+    /// On the error-vs-time Pareto front of this axis.
+    pub pareto: bool,
+}
+
+/// The reference model.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct FrequencyReference {
+    pub radial_splines: usize,
+    /// The half-resolution model used to bound the reference's own error.
+    pub check_radial_splines: usize,
+    /// max relative |f_ref − f_check| / f_ref: an upper bound of the reference's error.
+    pub uncertainty: f64,
+    /// The reference frequencies, Hz, per ⟨k, l⟩ (each pair listed once).
+    pub frequencies_hz: Vec<(ModeId, f64)>,
+}
+
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct FrequencySetting {
+    pub radial_splines: usize,
+}
+
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct FrequencyAxis {
+    pub what: &'static str,
+    pub error_measure: &'static str,
+    pub cost_measure: &'static str,
+    pub reference: FrequencyReference,
+    pub rows: Vec<FrequencyRow>,
+    pub recommendations: Vec<Recommendation<FrequencySetting>>,
+}
+
+/// Frequencies (rad/s) per ⟨k, l⟩ of a model.
+fn omegas(model: &PlateModel) -> BTreeMap<(u32, u32), f64> {
+    model.radial_shapes().iter().map(|s| ((s.k, s.l), s.omega)).collect()
+}
+
+fn with_splines(plate: &PlateConfig, n: usize) -> PlateConfig {
+    let mut p = plate.clone();
+    p.radial_splines = n;
+    p
+}
+
+fn max_error(got: &BTreeMap<(u32, u32), f64>, reference: &BTreeMap<(u32, u32), f64>) -> (f64, ModeId) {
+    let mut worst = (-1.0, ModeId { k: 0, l: 0 });
+    for (&(k, l), &w_ref) in reference {
+        let e = (got[&(k, l)] - w_ref).abs() / w_ref;
+        if e > worst.0 {
+            worst = (e, ModeId { k, l });
+        }
+    }
+    worst
+}
+
+/// The spline counts studied for this plate: the plan's, less those below
+/// the plate's minimum (highest requested nodal circle and edge conditions).
+pub fn spline_grid(plate: &PlateConfig, plan: &StudyPlan) -> Vec<usize> {
+    let min = plate.min_radial_splines();
+    let mut grid: Vec<usize> = plan.splines.iter().copied().filter(|&n| n >= min).collect();
+    if grid.is_empty() {
+        grid = vec![min, 2 * min, 4 * min];
+    }
+    grid.sort_unstable();
+    grid.dedup();
+    grid
+}
+
+pub fn run(plate: &PlateConfig, plan: &StudyPlan, tick: &mut dyn FnMut(&str)) -> Result<FrequencyAxis, StudyError> {
+    let grid = spline_grid(plate, plan);
+    let largest = *grid.last().ok_or(StudyError::EmptyGrid { axis: "radial_splines" })?;
+    let reference_splines = (plan.spline_reference_factor * largest).min(crate::study::MAX_RADIAL_SPLINES);
+    let check_splines = reference_splines / 2;
+    tick(&format!("reference model, {reference_splines} radial splines"));
+    let reference = PlateModel::new(&with_splines(plate, reference_splines))?;
+    let check = PlateModel::new(&with_splines(plate, check_splines))?;
+    let w_ref = omegas(&reference);
+    let (uncertainty, _) = max_error(&omegas(&check), &w_ref);
+
+    let mut rows = Vec::new();
+    for &n in &grid {
+        tick(&format!("{n} radial splines"));
+        let p = with_splines(plate, n);
+        let model = PlateModel::new(&p)?;
+        let (e, worst) = max_error(&omegas(&model), &w_ref);
+        let build_time_s = min_time(plan.timing_budget, 3, 10_000, || {
+            std::hint::black_box(PlateModel::new(std::hint::black_box(&p)).ok());
+        });
+        rows.push(FrequencyRow { radial_splines: n, max_relative_error: e, worst_mode: worst, build_time_s, pareto: false });
+    }
+    let points: Vec<(f64, f64)> = rows.iter().map(|r| (r.max_relative_error, r.build_time_s)).collect();
+    for (r, p) in rows.iter_mut().zip(mark_pareto(&points)) {
+        r.pareto = p;
+    }
+    let recommendations = recommend(
+        &plan.targets,
+        uncertainty,
+        rows.iter().map(|r| (r.max_relative_error, r.build_time_s, FrequencySetting { radial_splines: r.radial_splines })),
+    );
+    Ok(FrequencyAxis {
+        what: "natural-frequency error of the requested ⟨k, l⟩ against plate.radial_splines",
+        error_measure: "max over the requested ⟨k, l⟩ of |f − f_ref| / f_ref, f_ref from the reference model",
+        cost_measure: "model build time (PlateModel::new), s",
+        reference: FrequencyReference {
+            radial_splines: reference_splines,
+            check_radial_splines: check_splines,
+            uncertainty,
+            frequencies_hz: w_ref.iter().map(|(&(k, l), &w)| (ModeId { k, l }, w / std::f64::consts::TAU)).collect(),
+        },
+        rows,
+        recommendations,
+    })
+}

@@ -1,0 +1,264 @@
+//! Accuracy against cost, measured: `annular_plate study`.
+//!
+//! Three axes, each an error measured against an independent, finer reference
+//! and a cost measured on this machine:
+//!
+//! 1. [`frequency`]: natural-frequency error vs `plate.radial_splines`, cost =
+//!    model build time;
+//! 2. [`response`]: steady deflection at the load point vs the mode set
+//!    (k ≤ k_max, l ≤ l_max), cost = wall time per step;
+//! 3. [`trajectory`]: trajectory error vs integrator and output rate, cost =
+//!    wall time per simulated second.
+//!
+//! Every reference carries an uncertainty (its own estimated error), and a
+//! setting is recommended for a target error only if its measured error plus
+//! that uncertainty is within the target; among those the cheapest measured
+//! one wins. The errors are deterministic (bit-identical run to run); only the
+//! timings vary. Pure library code: no ROS, no output formatting.
+
+pub mod frequency;
+pub mod response;
+pub mod timing;
+pub mod trajectory;
+
+use crate::config::{Config, IntegratorKind, NodePosition, WrenchConfig};
+use crate::dynamics::SimulationError;
+use crate::model::ModelError;
+use serde::Serialize;
+use std::time::{Duration, Instant};
+use thiserror::Error;
+
+pub use frequency::FrequencyAxis;
+pub use response::ResponseAxis;
+pub use trajectory::TrajectoryAxis;
+
+/// Version of the JSON document (`study --json`); bumped on any incompatible change.
+pub const SCHEMA: &str = "annular_plate.study/1";
+
+/// Largest `plate.radial_splines` the configuration accepts.
+pub const MAX_RADIAL_SPLINES: usize = 400;
+
+#[derive(Debug, Error)]
+pub enum StudyError {
+    #[error(transparent)]
+    Model(#[from] ModelError),
+    #[error(transparent)]
+    Simulation(#[from] SimulationError),
+    #[error("the {axis} grid is empty")]
+    EmptyGrid { axis: &'static str },
+    #[error("bad study plan: {detail}")]
+    BadPlan { detail: String },
+    #[error("nothing to measure: {detail}")]
+    NoResponse { detail: String },
+}
+
+/// What the study measures: the grids, the references and the targets.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct StudyPlan {
+    /// Axis 1: radial spline counts (those below the plate's minimum are dropped).
+    pub splines: Vec<usize>,
+    /// The frequency reference uses this many times the largest count (capped at 400);
+    /// its error is bounded by its difference from half as many splines.
+    pub spline_reference_factor: usize,
+    /// Axis 2: k_max and l_max of the rectangular mode sets k = 0..k_max, l = 0..l_max.
+    pub k_max: Vec<u32>,
+    pub l_max: Vec<u32>,
+    /// Axis 2: the reference set (K, L).
+    pub response_reference: (u32, u32),
+    /// Axis 2: radial splines of every mode (enough for l ≤ L).
+    pub response_splines: usize,
+    /// Axis 3: integrators and output rates (whole multiples of `sample_rate_hz`).
+    pub integrators: Vec<IntegratorKind>,
+    pub rates_hz: Vec<f64>,
+    pub sample_rate_hz: f64,
+    pub trajectory_reference_rate_hz: f64,
+    /// Axis 3: simulated time, s.
+    pub duration_s: f64,
+    /// Target relative errors for the recommendations.
+    pub targets: Vec<f64>,
+    /// Time spent repeating each timing (the fastest repeat counts).
+    #[serde(serialize_with = "serialize_seconds")]
+    pub timing_budget: Duration,
+}
+
+fn serialize_seconds<S: serde::Serializer>(d: &Duration, s: S) -> Result<S::Ok, S::Error> {
+    s.serialize_f64(d.as_secs_f64())
+}
+
+impl StudyPlan {
+    /// The default study (about a minute in release on 2 shared vCPUs).
+    pub fn full() -> StudyPlan {
+        StudyPlan {
+            splines: vec![8, 12, 16, 24, 32, 48, 64],
+            // 128: beyond about that many splines the library's frequencies stop
+            // improving (round-off, measured against the exact solution in docs/study.md).
+            spline_reference_factor: 2,
+            k_max: vec![1, 2, 3, 5, 7, 10, 15, 20, 30, 40, 50, 60, 80, 100],
+            l_max: vec![0, 1, 2, 3, 4, 6, 8, 12, 16],
+            response_reference: (200, 48),
+            response_splines: 96,
+            integrators: vec![IntegratorKind::Exponential, IntegratorKind::ImplicitMidpoint, IntegratorKind::Rk4],
+            rates_hz: vec![1e3, 2e3, 5e3, 1e4, 2e4, 5e4, 1e5],
+            sample_rate_hz: 1e3,
+            trajectory_reference_rate_hz: 1e6,
+            duration_s: 0.05,
+            targets: vec![1e-2, 1e-3, 1e-4, 1e-6],
+            timing_budget: Duration::from_millis(40),
+        }
+    }
+
+    /// A small grid for tests and a first look (a few seconds).
+    pub fn quick() -> StudyPlan {
+        StudyPlan {
+            splines: vec![8, 12, 16, 24],
+            spline_reference_factor: 4,
+            k_max: vec![1, 3, 7, 15],
+            l_max: vec![0, 1, 2],
+            response_reference: (60, 8),
+            response_splines: 48,
+            integrators: vec![IntegratorKind::Exponential, IntegratorKind::ImplicitMidpoint, IntegratorKind::Rk4],
+            rates_hz: vec![1e3, 2e3, 5e3, 1e4, 2e4],
+            sample_rate_hz: 1e3,
+            trajectory_reference_rate_hz: 1e5,
+            duration_s: 0.02,
+            targets: vec![1e-1, 1e-2, 1e-3, 1e-4],
+            timing_budget: Duration::from_millis(3),
+        }
+    }
+
+    /// Work units [`run`] reports through its progress callback for `config`.
+    pub fn units(&self, config: &Config) -> usize {
+        let a = 1 + frequency::spline_grid(&config.plate, self).len();
+        let (k_ref, l_ref) = self.response_reference;
+        let b = 1 + self.k_max.iter().filter(|&&k| k <= k_ref).count() * self.l_max.iter().filter(|&&l| l <= l_ref).count();
+        let c = 3 + self.integrators.len() * self.rates_hz.len();
+        a + b + c
+    }
+}
+
+/// The cheapest measured setting for one target error (None: none in the grid reaches it).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Recommendation<S> {
+    pub target: f64,
+    pub setting: Option<S>,
+    /// Measured error against the reference.
+    pub error: Option<f64>,
+    /// error + the reference's uncertainty: what the recommendation claims (≤ target).
+    pub claimed_error: Option<f64>,
+    /// The setting's measured cost (the axis' cost measure).
+    pub cost: Option<f64>,
+}
+
+/// For each target the cheapest (error, cost, setting) with error + uncertainty ≤ target;
+/// ties in cost go to the smaller error.
+pub fn recommend<S: Clone>(targets: &[f64], uncertainty: f64, candidates: impl Iterator<Item = (f64, f64, S)>) -> Vec<Recommendation<S>> {
+    let candidates: Vec<(f64, f64, S)> = candidates.collect();
+    targets
+        .iter()
+        .map(|&target| {
+            let best = candidates
+                .iter()
+                .filter(|(e, c, _)| e.is_finite() && c.is_finite() && e + uncertainty <= target)
+                .min_by(|a, b| a.1.total_cmp(&b.1).then(a.0.total_cmp(&b.0)));
+            match best {
+                Some((e, c, s)) => Recommendation { target, setting: Some(s.clone()), error: Some(*e), claimed_error: Some(e + uncertainty), cost: Some(*c) },
+                None => Recommendation { target, setting: None, error: None, claimed_error: None, cost: None },
+            }
+        })
+        .collect()
+}
+
+/// Which (error, cost) points no other point beats in both.
+pub fn mark_pareto(points: &[(f64, f64)]) -> Vec<bool> {
+    points.iter().map(|&(e, c)| e.is_finite() && c.is_finite() && !points.iter().any(|&(e2, c2)| (e2 <= e && c2 < c) || (e2 < e && c2 <= c))).collect()
+}
+
+/// The scene a study runs on, in brief.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct SceneSummary {
+    /// The params file, or "built-in lathe disc".
+    pub source: String,
+    pub inner_radius: f64,
+    pub outer_radius: f64,
+    pub thickness: f64,
+    pub inner_boundary: &'static str,
+    pub outer_boundary: &'static str,
+    pub nodal_diameters: Vec<u32>,
+    pub nodal_circles: Vec<u32>,
+    pub radial_splines: usize,
+    pub modes: usize,
+    pub speed_rad_s: f64,
+    pub integrator: &'static str,
+    pub rate_hz: f64,
+}
+
+/// Everything `study` measured.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct StudyReport {
+    pub schema: &'static str,
+    pub scene: SceneSummary,
+    pub plan: StudyPlan,
+    pub radial_splines: FrequencyAxis,
+    pub mode_count: ResponseAxis,
+    pub integrator: TrajectoryAxis,
+    /// Wall time of the whole study, s.
+    pub wall_time_s: f64,
+}
+
+/// The default scene: the paper's lathe disc (section 5.1) — r_i = 0.075 m,
+/// r_a = 0.15 m, h = 0.01 m, steel, clamped inside, free outside, k = 0..7,
+/// l = 0..1, ζ = 0.02 — turning at the cutting speed 100 m/min at the rim
+/// (Ω = 100/60/0.15 = 11.1 rad/s) under a 100 N space-fixed feed force on the
+/// rim at θ = 0, at 1 kHz with the exponential integrator.
+pub fn lathe_scene() -> Config {
+    let mut c = Config::default();
+    c.plate.damping = vec![0.02];
+    c.nodes.ale = vec![NodePosition { radial: 1.0, angular: 0.0 }];
+    c.loads.ale = vec![WrenchConfig { force: [0.0, 0.0, -100.0], moment: [0.0; 3] }];
+    c.joint.speed = 100.0 / 60.0 / 0.15;
+    c.simulation.realtime_factor = 0.0;
+    c
+}
+
+/// Run the whole study. `progress(done, total, what)` is called before each unit of work.
+pub fn run(config: &Config, source: &str, plan: &StudyPlan, progress: &mut dyn FnMut(usize, usize, &str)) -> Result<StudyReport, StudyError> {
+    if plan.targets.iter().any(|t| !(t.is_finite() && *t > 0.0)) {
+        return Err(StudyError::BadPlan { detail: format!("targets must be positive, got {:?}", plan.targets) });
+    }
+    let started = Instant::now();
+    let total = plan.units(config);
+    let mut done = 0usize;
+    let mut tick = |what: &str| {
+        progress(done, total, what);
+        done += 1;
+    };
+    let model_modes = config.plate.mode_count();
+    let radial_splines = frequency::run(&config.plate, plan, &mut tick)?;
+    let mode_count = response::run(config, plan, &mut tick)?;
+    let integrator = trajectory::run(config, plan, &mut tick)?;
+    progress(total, total, "done");
+    let p = &config.plate;
+    Ok(StudyReport {
+        schema: SCHEMA,
+        scene: SceneSummary {
+            source: source.to_string(),
+            inner_radius: p.inner_radius,
+            outer_radius: p.outer_radius,
+            thickness: p.thickness,
+            inner_boundary: p.inner_boundary.name(),
+            outer_boundary: p.outer_boundary.name(),
+            nodal_diameters: p.nodal_diameters.clone(),
+            nodal_circles: p.nodal_circles.clone(),
+            radial_splines: p.radial_splines,
+            modes: model_modes,
+            speed_rad_s: config.joint.speed,
+            integrator: config.simulation.integrator.name(),
+            rate_hz: config.simulation.rate_hz,
+        },
+        plan: plan.clone(),
+        radial_splines,
+        mode_count,
+        integrator,
+        wall_time_s: started.elapsed().as_secs_f64(),
+    })
+}

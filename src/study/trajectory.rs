@@ -1,0 +1,256 @@
+//! Axis 3: trajectory error against integrator and step, with the wall time
+//! per simulated second.
+//!
+//! The scene runs from t = 0 for `duration` with each integrator at each
+//! output rate (one substep per step; `rk4` still sub-steps itself below its
+//! stability limit, as it always does). The modal amplitudes (ALE description)
+//! are sampled every 1/`sample_rate_hz` and compared with a reference run:
+//!
+//! error = max_t ‖q(t) − q_ref(t)‖₂ / max_t ‖q_ref(t)‖₂
+//!
+//! (the 2-norm is the same in the Lagrangian description: eq. (20) turns each
+//! pair by an orthogonal rotation). **Reference:** the `exponential` integrator
+//! at `reference_rate_hz`. **Checks:** `rk4` at the same rate (an explicit
+//! method sharing no integration code with it), and `exponential` at half the
+//! rate (a step error both methods share — a load model updated once per step —
+//! shows there: for a method of order p ≥ 1 the difference from the half rate
+//! is ≥ (2ᵖ − 1) × the reference's own error). The larger difference is the
+//! reference's uncertainty, added to every error before a setting is
+//! recommended.
+
+use super::timing::min_time;
+use super::{mark_pareto, recommend, Recommendation, StudyError, StudyPlan};
+use crate::config::{Config, IntegratorKind};
+use crate::dynamics::{Simulation, SimulationError};
+use serde::Serialize;
+
+/// Sampled ALE amplitudes: one vector per sample time (t = 0 included).
+pub type Samples = Vec<Vec<f64>>;
+
+/// Why a run gave no trajectory.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum RunStatus {
+    Ok,
+    /// `rk4` would need more substeps than it allows.
+    Refused,
+    /// The divergence guard stopped the run.
+    Diverged,
+}
+
+/// The scene with one integrator at one rate.
+pub fn scene_at(config: &Config, integrator: IntegratorKind, rate_hz: f64) -> Config {
+    let mut c = config.clone();
+    c.simulation.integrator = integrator;
+    c.simulation.rate_hz = rate_hz;
+    c.simulation.substeps = 1;
+    c
+}
+
+/// Steps per sample for `rate_hz`, which must be a whole multiple of the sample rate.
+fn steps_per_sample(rate_hz: f64, sample_rate_hz: f64) -> Result<u64, StudyError> {
+    let m = rate_hz / sample_rate_hz;
+    if m < 1.0 - 1e-9 || (m - m.round()).abs() > 1e-9 * m {
+        return Err(StudyError::BadPlan { detail: format!("rate {rate_hz} Hz is not a whole multiple of the sample rate {sample_rate_hz} Hz") });
+    }
+    Ok(m.round() as u64)
+}
+
+/// Run `config` for `samples` samples of `every` steps, recording the ALE amplitudes.
+pub fn record(config: &Config, every: u64, samples: usize) -> Result<(Samples, Simulation), (RunStatus, String)> {
+    let mut sim = match Simulation::new(config.clone()) {
+        Ok(s) => s,
+        Err(e @ SimulationError::ExplicitTooCostly { .. }) => return Err((RunStatus::Refused, e.to_string())),
+        Err(e) => return Err((RunStatus::Diverged, e.to_string())),
+    };
+    let mut out = Vec::with_capacity(samples + 1);
+    out.push(sim.q_ale().to_vec());
+    for _ in 0..samples {
+        for _ in 0..every {
+            sim.step().map_err(|e| (RunStatus::Diverged, e.to_string()))?;
+        }
+        out.push(sim.q_ale().to_vec());
+    }
+    Ok((out, sim))
+}
+
+/// max_t ‖a(t) − b(t)‖₂ / max_t ‖b(t)‖₂.
+pub fn relative_error(a: &Samples, b: &Samples) -> f64 {
+    let norm = |v: &[f64]| v.iter().map(|x| x * x).sum::<f64>().sqrt();
+    let scale = b.iter().map(|v| norm(v)).fold(0.0, f64::max);
+    let diff = a.iter().zip(b).map(|(x, y)| x.iter().zip(y).map(|(p, q)| (p - q) * (p - q)).sum::<f64>().sqrt()).fold(0.0, f64::max);
+    diff / scale
+}
+
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct TrajectoryRow {
+    pub integrator: &'static str,
+    pub rate_hz: f64,
+    pub status: RunStatus,
+    /// The refusal or divergence message.
+    pub detail: Option<String>,
+    pub relative_error: Option<f64>,
+    /// Wall time / simulated time (the fastest of repeated runs).
+    pub wall_s_per_simulated_s: Option<f64>,
+    pub pareto: bool,
+}
+
+/// A run compared with the reference.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Check {
+    pub integrator: &'static str,
+    pub rate_hz: f64,
+    /// Its relative difference from the reference (the errors' measure).
+    pub difference: f64,
+}
+
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct TrajectoryReference {
+    pub integrator: &'static str,
+    pub rate_hz: f64,
+    /// The reference run again with another method, and with the same method at twice the step.
+    pub checks: Vec<Check>,
+    /// The larger difference of the checks (same measure as the errors).
+    pub uncertainty: f64,
+    /// max_t ‖q_ref(t)‖₂, m.
+    pub peak_amplitude_m: f64,
+}
+
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct IntegratorSetting {
+    pub integrator: &'static str,
+    pub rate_hz: f64,
+}
+
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct TrajectoryAxis {
+    pub what: &'static str,
+    pub error_measure: &'static str,
+    pub cost_measure: &'static str,
+    pub duration_s: f64,
+    pub sample_rate_hz: f64,
+    pub modes: usize,
+    pub reference: TrajectoryReference,
+    pub rows: Vec<TrajectoryRow>,
+    pub recommendations: Vec<Recommendation<IntegratorSetting>>,
+    pub notes: Vec<String>,
+}
+
+pub fn run(config: &Config, plan: &StudyPlan, tick: &mut dyn FnMut(&str)) -> Result<TrajectoryAxis, StudyError> {
+    let samples = (plan.duration_s * plan.sample_rate_hz).round() as usize;
+    if samples == 0 {
+        return Err(StudyError::BadPlan { detail: format!("duration {} s is shorter than one sample ({} Hz)", plan.duration_s, plan.sample_rate_hz) });
+    }
+    let duration = samples as f64 / plan.sample_rate_hz;
+    let ref_rate = plan.trajectory_reference_rate_hz;
+    let mut notes = Vec::new();
+    let mut scene = config.clone();
+    tick(&format!("reference: exponential at {ref_rate} Hz"));
+    let reference_run = |scene: &Config| -> Result<Samples, StudyError> {
+        let every = steps_per_sample(ref_rate, plan.sample_rate_hz)?;
+        record(&scene_at(scene, IntegratorKind::Exponential, ref_rate), every, samples)
+            .map(|(s, _)| s)
+            .map_err(|(_, detail)| StudyError::NoResponse { detail: format!("the reference run failed: {detail}") })
+    };
+    let mut reference = reference_run(&scene)?;
+    let peak = |s: &Samples| s.iter().map(|v| v.iter().map(|x| x * x).sum::<f64>().sqrt()).fold(0.0, f64::max);
+    if peak(&reference) == 0.0 {
+        let (loaded, case) = super::response::load_case(&scene);
+        scene = loaded;
+        notes.push(format!("the scene stays at rest without a load; {}", case.note.unwrap_or_default()));
+        reference = reference_run(&scene)?;
+    }
+    // Two independent checks of the reference: another method at the same step
+    // (rk4 shares no integration code with it), and the same method at twice
+    // the step (catches step errors both methods share, e.g. a load model
+    // updated once per step). Their larger difference is the uncertainty.
+    let run_check = |integrator: IntegratorKind, rate: f64| -> Result<Result<Samples, String>, StudyError> {
+        Ok(record(&scene_at(&scene, integrator, rate), steps_per_sample(rate, plan.sample_rate_hz)?, samples).map(|(s, _)| s).map_err(|(_, d)| d))
+    };
+    let mut checks = Vec::new();
+    tick(&format!("check: rk4 at {ref_rate} Hz"));
+    match run_check(IntegratorKind::Rk4, ref_rate)? {
+        Ok(s) => checks.push(Check { integrator: IntegratorKind::Rk4.name(), rate_hz: ref_rate, difference: relative_error(&s, &reference) }),
+        Err(detail) => notes.push(format!("rk4 could not run as a check of the reference ({detail})")),
+    }
+    let half = ref_rate / 2.0;
+    tick(&format!("check: exponential at {half} Hz"));
+    match run_check(IntegratorKind::Exponential, half)? {
+        Ok(s) => checks.push(Check { integrator: IntegratorKind::Exponential.name(), rate_hz: half, difference: relative_error(&s, &reference) }),
+        Err(detail) => return Err(StudyError::NoResponse { detail: format!("the check run at {half} Hz failed: {detail}") }),
+    }
+    let uncertainty = checks.iter().map(|c| c.difference).fold(0.0, f64::max);
+    let modes = reference.first().map_or(0, |v| v.len());
+
+    let mut rows = Vec::new();
+    for &integrator in &plan.integrators {
+        for &rate in &plan.rates_hz {
+            tick(&format!("{} at {rate} Hz", integrator.name()));
+            let every = steps_per_sample(rate, plan.sample_rate_hz)?;
+            let cfg = scene_at(&scene, integrator, rate);
+            let row = match record(&cfg, every, samples) {
+                Ok((s, mut sim)) => {
+                    let steps = every * samples as u64;
+                    let wall = min_time(plan.timing_budget, 2, 1000, || {
+                        sim.reset();
+                        for _ in 0..steps {
+                            if sim.step().is_err() {
+                                break;
+                            }
+                        }
+                    });
+                    TrajectoryRow {
+                        integrator: integrator.name(),
+                        rate_hz: rate,
+                        status: RunStatus::Ok,
+                        detail: None,
+                        relative_error: Some(relative_error(&s, &reference)),
+                        wall_s_per_simulated_s: Some(wall / duration),
+                        pareto: false,
+                    }
+                }
+                Err((status, detail)) => TrajectoryRow {
+                    integrator: integrator.name(),
+                    rate_hz: rate,
+                    status,
+                    detail: Some(detail),
+                    relative_error: None,
+                    wall_s_per_simulated_s: None,
+                    pareto: false,
+                },
+            };
+            rows.push(row);
+        }
+    }
+    let ok: Vec<usize> = (0..rows.len()).filter(|&i| rows[i].status == RunStatus::Ok).collect();
+    let points: Vec<(f64, f64)> = ok.iter().map(|&i| (rows[i].relative_error.unwrap(), rows[i].wall_s_per_simulated_s.unwrap())).collect();
+    for (&i, p) in ok.iter().zip(mark_pareto(&points)) {
+        rows[i].pareto = p;
+    }
+    let recommendations = recommend(
+        &plan.targets,
+        uncertainty,
+        ok.iter().map(|&i| {
+            let r = &rows[i];
+            (r.relative_error.unwrap(), r.wall_s_per_simulated_s.unwrap(), IntegratorSetting { integrator: r.integrator, rate_hz: r.rate_hz })
+        }),
+    );
+    Ok(TrajectoryAxis {
+        what: "modal-amplitude trajectory from rest under the scene's loads, against integrator and output rate",
+        error_measure: "max over sample times of ‖q − q_ref‖₂ / max over sample times of ‖q_ref‖₂ (ALE amplitudes)",
+        cost_measure: "wall time per simulated second, s/s",
+        duration_s: duration,
+        sample_rate_hz: plan.sample_rate_hz,
+        modes,
+        reference: TrajectoryReference {
+            integrator: IntegratorKind::Exponential.name(),
+            rate_hz: ref_rate,
+            checks,
+            uncertainty,
+            peak_amplitude_m: peak(&reference),
+        },
+        rows,
+        recommendations,
+        notes,
+    })
+}
