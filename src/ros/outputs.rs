@@ -5,7 +5,10 @@
 //! overwritten in place each step: no allocation on our side of the per-step
 //! path. They are handed to the DDS writer as [`Shared`] (an `Arc` that the
 //! writer serializes synchronously and drops), so publishing does not clone
-//! the strings and vectors either.
+//! the strings and vectors either. With `run --record` the bag writer thread
+//! gets a handle too and drops it once written; should it still hold one
+//! at the next step, [`Shared::get_mut`] copies (the loop never waits).
+//! `simulate --bag` builds its messages with the same [`OutputMessages`].
 
 use super::clock::StepClock;
 use super::messages::{

@@ -5,7 +5,9 @@
 //! `recv_timeout`, so an input or a service call wakes it at once.
 //!
 //! Per step (nothing allocated on our side): drop stale wrenches, step,
-//! advance the clock, overwrite the preallocated messages, publish.
+//! advance the clock, overwrite the preallocated messages, publish — and,
+//! with `run --record`, hand the same message handles to the bag writer
+//! thread without waiting (`bag::recorder`).
 
 use super::clock::{Pacer, StepClock};
 use super::diagnostics::{self, LoopReport, Timing};
@@ -16,9 +18,9 @@ use super::messages::{
     TriggerResponse,
 };
 use super::outputs::{clock_message, OutputMessages, Shared};
-use crate::bag::recorder::{Recorder, Sample};
 use super::params_service::RuntimeChange;
 use super::services::Command;
+use crate::bag::recorder::{Recorder, Sample};
 use crate::dynamics::{InputError, NodeKind, Simulation, Wrench};
 use ros2_client::Publisher;
 use std::collections::VecDeque;
