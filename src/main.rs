@@ -59,7 +59,18 @@ enum Command {
     },
 }
 
-fn main() -> anyhow::Result<()> {
+/// Errors go to stderr as one readable message (with its causes), exit status 1.
+fn main() -> std::process::ExitCode {
+    match run() {
+        Ok(()) => std::process::ExitCode::SUCCESS,
+        Err(e) => {
+            eprintln!("error: {e:#}");
+            std::process::ExitCode::FAILURE
+        }
+    }
+}
+
+fn run() -> anyhow::Result<()> {
     // `ros2 run` and launch files append `--ros-args ...`: split it off before clap.
     let args: Vec<String> = std::env::args().collect();
     let split = args.iter().position(|a| a == "--ros-args").unwrap_or(args.len());

@@ -110,7 +110,8 @@ const SECTIONS: &[&[&str]] = &[
 
 /// Every accepted parameter name.
 pub(super) fn known_keys() -> Vec<&'static str> {
-    SECTIONS.iter().flat_map(|s| s.iter().copied()).collect()
+    // `ros.*`: accepted here, their values checked by the node (`ros::settings`).
+    SECTIONS.iter().flat_map(|s| s.iter().copied()).chain(super::ROS_KEYS.iter().map(|row| row.0)).collect()
 }
 
 const INTEGRATORS: &[&str] = &["exponential", "implicit_midpoint", "rk4"];

@@ -1,26 +1,17 @@
 //! The node's own parameters (`ros.*`, plus the standard `use_sim_time`),
 //! read and checked from the flat parameter set.
 //!
-//! Until the config validator knows the `ros.*` section, the node removes
-//! these keys before it hands the rest to [`crate::config::Config::from_params`]
-//! ([`split_ros_params`]) and validates them here. Every rule below is
-//! listed in docs/ros.md.
+//! The config layer knows the names of the `ros.*` keys ([`ROS_KEYS`], so
+//! `modes` and `simulate` accept a scene file that carries them and refuse
+//! typos); their values are the node's business and are checked here. The
+//! node hands the rest to [`crate::config::Config::from_params`]
+//! ([`split_ros_params`]). Every rule below is listed in docs/ros.md.
 
 use crate::config::{ParamValue, Params};
 use ros2_client::ServiceMapping;
 use std::fmt;
 
-/// Defaults and rules of the `ros.*` keys, one row each: (key, type, default, rule).
-pub const ROS_KEYS: &[(&str, &str, &str, &str)] = &[
-    ("ros.frame_prefix", "string", "\"\"", "prefix of every frame and joint name; letters, digits, `_`, `/`, `-`, `.`; not starting with `/`"),
-    ("ros.world_frame", "string", "\"world\"", "parent of plate_base in /tf_static (not prefixed); non-empty, same characters"),
-    ("ros.publish_clock", "bool", "false", "publish /clock and stamp outputs with simulated time (also when use_sim_time is true)"),
-    ("ros.wrench_timeout", "double", "0.0", "s of simulated time after which a wrench not renewed drops to zero; 0 = hold forever; finite, >= 0"),
-    ("ros.start_paused", "bool", "false", "start paused (resume with ~/set_paused, advance with ~/step)"),
-    ("ros.diagnostics_period", "double", "1.0", "s of wall time between /diagnostics messages; finite, > 0"),
-    ("ros.reject_log_period", "double", "1.0", "s of wall time between log lines about rejected inputs of one kind; finite, >= 0"),
-    ("ros.service_mapping", "string", "\"enhanced\"", "request/reply mapping of all services: enhanced (rmw_fastrtps, the Jazzy default), cyclone (rmw_cyclonedds_cpp) or basic"),
-];
+pub use crate::config::ROS_KEYS;
 
 /// Validated `ros.*` settings.
 #[derive(Debug, Clone, PartialEq)]
