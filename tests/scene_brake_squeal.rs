@@ -5,22 +5,20 @@
 //! eigenvalues and the simulation agree on the threshold and on the rates —
 //! and with lift-off the growth saturates in a limit cycle (Fig. 17).
 
+
+mod support;
+
 use annular_plate::config::{Caliper, Config, ConfigError};
 use annular_plate::dynamics::{stability, LoadCommandError, Simulation, StepError};
-use std::path::Path;
 
-const NODE: &str = "annular_plate";
-
-fn scene_path() -> std::path::PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("config/brake_squeal.yaml")
-}
+use support::scene_files::{self as scenes, NODE};
 
 fn scene() -> Config {
-    Config::from_params_file(&scene_path(), NODE).expect("config/brake_squeal.yaml is valid")
+    scenes::load("brake_squeal.yaml")
 }
 
 fn scene_text() -> String {
-    std::fs::read_to_string(scene_path()).unwrap()
+    scenes::text("brake_squeal.yaml")
 }
 
 /// The scene with friction coefficient μ, with or without lift-off.
@@ -231,14 +229,9 @@ fn clamp_force_commands_are_checked_and_applied() {
     assert_eq!(sim.pad_output(0).clamp_force, 30_000.0, "reset restores the file's clamp force");
 }
 
-/// The scene file with `from` replaced by `to`; must be rejected naming `key`.
 #[track_caller]
 fn rejected(from: &str, to: &str, key: &str) -> ConfigError {
-    let text = scene_text();
-    assert!(text.contains(from), "the scene file has no `{from}`");
-    let e = Config::from_yaml_str(&text.replacen(from, to, 1), NODE).expect_err("a bad scene file was accepted");
-    assert!(e.to_string().contains(key), "the message does not name {key}: {e}");
-    e
+    scenes::rejected("brake_squeal.yaml", from, to, key)
 }
 
 #[test]
@@ -267,12 +260,7 @@ fn bad_pad_data_are_refused_naming_the_key() {
 
 #[test]
 fn the_cli_simulates_the_scene_with_the_pad_columns_after_the_contract_ones() {
-    let out = std::process::Command::new(env!("CARGO_BIN_EXE_annular_plate"))
-        .args(["simulate", scene_path().to_str().unwrap(), "--duration", "0.02", "--csv", "-", "--quiet"])
-        .output()
-        .unwrap();
-    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
-    let text = String::from_utf8(out.stdout).unwrap();
+    let text = scenes::simulate_csv("brake_squeal.yaml", 0.02);
     let header: Vec<&str> = text.lines().next().unwrap().split(',').collect();
     let contract = 3 + 2 * 4 + 18;
     assert_eq!(&header[..3], ["time", "joint_position", "joint_velocity"]);
@@ -308,7 +296,7 @@ fn the_initial_deflection_is_given_in_lagrangian_amplitudes_in_either_coordinate
             assert!((got - want).abs() < 1e-15, "{coords:?}: {:?} vs {:?}", sim.q_dot_lagrange(), c.initial.q_dot);
         }
     }
-    let text = std::fs::read_to_string(scene_path()).unwrap();
+    let text = std::fs::read_to_string(scenes::path("brake_squeal.yaml")).unwrap();
     let e = Config::from_yaml_str(&text.replacen("q: [1.0e-4, 0.0, 1.0e-4, 0.0]", "q: [1.0e-4, 0.0]", 1), NODE).unwrap_err();
     assert!(e.to_string().contains("initial.q"), "{e}");
 }

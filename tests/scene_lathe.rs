@@ -5,31 +5,22 @@
 //! ⟨k = 1, l = 0⟩ pair are stationary, while the Lagrangian ones turn with the
 //! disc at the rotation frequency.
 
+
+mod support;
+
 use annular_plate::config::{Config, ConfigError};
 use annular_plate::dynamics::{LoadCommandError, Simulation};
 use std::f64::consts::TAU;
-use std::path::Path;
 
-const NODE: &str = "annular_plate";
-
-fn scene_path() -> std::path::PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("config/lathe.yaml")
-}
+use support::scene_files::{self as scenes, run_to};
 
 fn scene() -> Config {
-    Config::from_params_file(&scene_path(), NODE).expect("config/lathe.yaml is valid")
+    scenes::load("lathe.yaml")
 }
 
 /// Eq. (21) in the paper's units: b and h in mm, k_f1.1 = 351 N/mm², m_f = 0.7013.
 fn kienzle(b_mm: f64, h_mm: f64) -> f64 {
     b_mm * h_mm.powf(1.0 - 0.7013) * 351.0
-}
-
-/// Step until `t` (s).
-fn run_to(sim: &mut Simulation, t: f64) {
-    while sim.time() < t - 0.5 * sim.dt() {
-        sim.step().unwrap();
-    }
 }
 
 /// Index of the ⟨k = 1, l = 0⟩ cos mode and its sin partner.
@@ -178,14 +169,9 @@ fn feed_commands_change_the_chip_and_bad_ones_are_refused() {
     assert!((t.tip - 0.0055).abs() < 1e-12, "{t:?}");
 }
 
-/// The scene file with `from` replaced by `to`; must be rejected naming `key`.
 #[track_caller]
 fn rejected(from: &str, to: &str, key: &str) -> ConfigError {
-    let text = std::fs::read_to_string(scene_path()).unwrap();
-    assert!(text.contains(from), "the scene file has no `{from}`");
-    let e = Config::from_yaml_str(&text.replacen(from, to, 1), NODE).expect_err("a bad scene file was accepted");
-    assert!(e.to_string().contains(key), "the message does not name {key}: {e}");
-    e
+    scenes::rejected("lathe.yaml", from, to, key)
 }
 
 #[test]
@@ -215,12 +201,7 @@ fn bad_tool_data_are_refused_naming_the_key() {
 
 #[test]
 fn the_cli_simulates_the_scene_with_the_tool_columns_after_the_contract_ones() {
-    let out = std::process::Command::new(env!("CARGO_BIN_EXE_annular_plate"))
-        .args(["simulate", scene_path().to_str().unwrap(), "--duration", "0.3", "--csv", "-", "--quiet"])
-        .output()
-        .unwrap();
-    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
-    let text = String::from_utf8(out.stdout).unwrap();
+    let text = scenes::simulate_csv("lathe.yaml", 0.3);
     let header: Vec<&str> = text.lines().next().unwrap().split(',').collect();
     let contract = 3 + 2 * 30 + 2;
     assert_eq!(&header[contract - 2..contract], ["ale1_uz", "lagrange1_uz"]);

@@ -6,25 +6,17 @@
 //! at its gravity value, and the ⟨k = 1, l = 0⟩ pair dominates the deflection
 //! at the linkage points.
 
+
+mod support;
+
 use annular_plate::config::{Config, ConfigError};
 use annular_plate::dynamics::Simulation;
 use std::f64::consts::TAU;
-use std::path::Path;
 
-const NODE: &str = "annular_plate";
-
-fn scene_path() -> std::path::PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("config/swash_plate.yaml")
-}
+use support::scene_files::{self as scenes, run_to};
 
 fn scene() -> Config {
-    Config::from_params_file(&scene_path(), NODE).expect("config/swash_plate.yaml is valid")
-}
-
-fn run_to(sim: &mut Simulation, t: f64) {
-    while sim.time() < t - 0.5 * sim.dt() {
-        sim.step().unwrap();
-    }
+    scenes::load("swash_plate.yaml")
 }
 
 #[test]
@@ -125,14 +117,9 @@ fn link_forces_are_the_prescribed_cyclic_forces() {
     }
 }
 
-/// The scene file with `from` replaced by `to`; must be rejected naming `key`.
 #[track_caller]
 fn rejected(from: &str, to: &str, key: &str) -> ConfigError {
-    let text = std::fs::read_to_string(scene_path()).unwrap();
-    assert!(text.contains(from), "the scene file has no `{from}`");
-    let e = Config::from_yaml_str(&text.replacen(from, to, 1), NODE).expect_err("a bad scene file was accepted");
-    assert!(e.to_string().contains(key), "the message does not name {key}: {e}");
-    e
+    scenes::rejected("swash_plate.yaml", from, to, key)
 }
 
 #[test]
@@ -149,12 +136,7 @@ fn bad_link_data_are_refused_naming_the_key() {
 
 #[test]
 fn the_cli_simulates_the_scene_with_the_link_columns_after_the_contract_ones() {
-    let out = std::process::Command::new(env!("CARGO_BIN_EXE_annular_plate"))
-        .args(["simulate", scene_path().to_str().unwrap(), "--duration", "0.05", "--csv", "-", "--quiet"])
-        .output()
-        .unwrap();
-    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
-    let text = String::from_utf8(out.stdout).unwrap();
+    let text = scenes::simulate_csv("swash_plate.yaml", 0.05);
     let header: Vec<&str> = text.lines().next().unwrap().split(',').collect();
     let contract = 3 + 2 * 15 + 2;
     assert_eq!(&header[contract - 2..contract], ["lagrange1_uz", "lagrange2_uz"]);

@@ -3,3 +3,4 @@ pub mod bessel;
 pub mod exact_plate;
 pub mod scenes;
 pub mod static_plate;
+pub mod scene_files;
