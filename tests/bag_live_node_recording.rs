@@ -27,6 +27,8 @@ use std::sync::Mutex;
 use std::time::{Duration, Instant};
 
 const MODAL: &str = "/annular_plate/modal_amplitudes";
+/// The brake bench has a pad: its states are published (and recorded) with every state.
+const PADS: &str = "/annular_plate/pad_states";
 static ONE_AT_A_TIME: Mutex<()> = Mutex::new(());
 
 fn u64s(v: &Value) -> Vec<u64> {
@@ -85,6 +87,7 @@ fn the_peer_records_the_live_node_at_1khz_for_seconds_without_losing_a_message()
         ("/tf", "tf2_msgs/msg/TFMessage"),
         ("/tf_static", "tf2_msgs/msg/TFMessage"),
         (MODAL, "annular_plate/msg/ModalAmplitudes"),
+        (PADS, "annular_plate/msg/PadStates"),
         ("/diagnostics", "diagnostic_msgs/msg/DiagnosticArray"),
         ("/clock", "rosgraph_msgs/msg/Clock"),
     ] {
@@ -99,6 +102,9 @@ fn the_peer_records_the_live_node_at_1khz_for_seconds_without_losing_a_message()
     assert!(n >= min, "{n} steps recorded in {seconds} s at 1 kHz");
     let modal_stamps = u64s(&topics[MODAL]["stamps"]);
     assert_eq!(modal_stamps, steps.iter().map(|s| s * 1_000_000).collect::<Vec<_>>(), "modal stamps = step × 1 ms");
+    let pad_steps = u64s(&topics[PADS]["steps"]);
+    let (_, n_pads) = assert_consecutive(&pad_steps, 1, "pad states step");
+    assert!(n_pads >= min, "{n_pads} pad states recorded");
     for topic in ["/clock", "/joint_states", "/tf"] {
         let stamps = u64s(&topics[topic]["stamps"]);
         let (t0, count) = assert_consecutive(&stamps, 1_000_000, topic);
@@ -156,17 +162,18 @@ fn run_record_writes_the_stepped_states_equal_to_the_offline_simulation() {
     assert!(took < Duration::from_secs(1), "shutdown with the bag took {took:?}");
     assert!(node.stderr().contains("recorded "), "{}", node.stderr());
 
-    let d = read_bag(&dir, "rosbags", &[MODAL, "/joint_states", "/diagnostics", "/tf_static"]);
+    let d = read_bag(&dir, "rosbags", &[MODAL, PADS, "/joint_states", "/diagnostics", "/tf_static"]);
     assert_eq!(d["undecodable"], json!([]));
     let m = &d["metadata_yaml"]["rosbag2_bagfile_information"];
     assert_eq!(m["version"], 9);
     let topics = &d["topics"];
     let names: Vec<&str> = d["connections"].as_array().unwrap().iter().map(|c| c["topic"].as_str().unwrap()).collect();
-    assert_eq!(names, vec!["/tf_static", "/joint_states", "/tf", MODAL, "/diagnostics", "/clock"]);
+    assert_eq!(names, vec!["/tf_static", "/joint_states", "/tf", MODAL, PADS, "/diagnostics", "/clock"]);
     // The initial state (published at start, paused) and one per step.
     assert_eq!(u64s(&topics[MODAL]["steps"]), (0..=steps).collect::<Vec<_>>());
     let ms: Vec<u64> = (0..=steps).map(|k| k * 1_000_000).collect();
-    for topic in ["/clock", "/joint_states", "/tf", MODAL] {
+    assert_eq!(u64s(&topics[PADS]["steps"]), (0..=steps).collect::<Vec<_>>());
+    for topic in ["/clock", "/joint_states", "/tf", MODAL, PADS] {
         assert_eq!(u64s(&topics[topic]["stamps"]), ms, "{topic} stamps (simulated time)");
         assert_eq!(u64s(&topics[topic]["log_times"]), ms, "{topic} log times = stamps");
     }
@@ -180,6 +187,7 @@ fn run_record_writes_the_stepped_states_equal_to_the_offline_simulation() {
     sim.set_ale_wrench(1, Wrench { force: [w[0], w[1], w[2]], moment: [w[3], w[4], w[5]] }).unwrap();
     let modal = topics[MODAL]["messages"].as_array().unwrap();
     let joints = topics["/joint_states"]["messages"].as_array().unwrap();
+    let pads = topics[PADS]["messages"].as_array().unwrap();
     for k in 0..=steps as usize {
         if k > 0 {
             sim.step().unwrap();
@@ -192,6 +200,9 @@ fn run_record_writes_the_stepped_states_equal_to_the_offline_simulation() {
         close(&floats(&modal[k]["q_ale"]), sim.q_ale(), "q_ale");
         close(&floats(&modal[k]["q_dot_lagrange"]), sim.q_dot_lagrange(), "q_dot_lagrange");
         close(&floats(&joints[k]["position"]), &[sim.joint().position], "joint position");
+        close(&floats(&pads[k]["normal_force"]), &[sim.pad_output(0).normal_force], "pad normal force");
+        let top: Vec<f64> = sim.pad_contact_forces().iter().map(|c| c.top).collect();
+        close(&floats(&pads[k]["contact_normal_top"]), &top, "pad contact forces (top)");
         let input = f(&modal[k], "input_stamp.sec");
         assert_eq!(input, if k == 0 { 0.0 } else { 7.0 }, "input_stamp at step {k}");
     }
@@ -240,7 +251,7 @@ fn run_record_at_1khz_in_wall_time_drops_nothing_and_finishes_the_bag_on_sigterm
     let (first, n) = assert_consecutive(&steps, 1, "modal amplitudes step");
     assert_eq!(first, 0, "recorded from the initial state");
     assert!(n as f64 >= 0.85 * seconds * 1000.0, "{n} steps in {seconds} s");
-    for topic in ["/joint_states", "/tf", MODAL] {
+    for topic in ["/joint_states", "/tf", MODAL, PADS] {
         assert_eq!(topics[topic]["count"].as_u64(), Some(n as u64), "{topic}: one per step");
         let stamps = u64s(&topics[topic]["stamps"]);
         assert_eq!(stamps, u64s(&topics[topic]["log_times"]), "{topic}: log time = the wall-clock stamp");

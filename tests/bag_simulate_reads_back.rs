@@ -274,3 +274,57 @@ fn simulate_refuses_an_existing_bag_and_needs_an_output() {
     assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
     assert!(bag.join("metadata.yaml").is_file());
 }
+
+/// Scenes with load models: the pad states (brake bench, clamped) and the
+/// tool state (lathe) are in the bag, one per step like the other state
+/// topics, with the values of the CSV's scene columns of the same run.
+#[test]
+fn a_simulate_bag_of_a_scene_with_load_models_holds_their_states() {
+    let text = std::fs::read_to_string(repo().join("config/brake_bench.yaml")).unwrap();
+    assert!(text.contains("clamp_force: [0.0]"), "the bench starts unclamped");
+    let bench = repo().join("target/bag-tests/brake_bench_clamped.yaml");
+    std::fs::write(&bench, text.replace("clamp_force: [0.0]", "clamp_force: [5000.0]")).unwrap();
+    let lathe = repo().join("config/lathe.yaml");
+    for (scene, topic, ty, columns) in [
+        (
+            bench,
+            "/annular_plate/pad_states",
+            "annular_plate/msg/PadStates",
+            [("clamp_force", "pad1_clamp_force"), ("normal_force", "pad1_normal_force"), ("friction_torque", "pad1_friction_torque")],
+        ),
+        (
+            lathe,
+            "/annular_plate/tool_state",
+            "annular_plate/msg/ToolState",
+            [("tip_z", "tool_tip_z"), ("chip_thickness", "tool_chip_thickness"), ("feed_force", "tool_feed_force")],
+        ),
+    ] {
+        let name = scene.file_stem().unwrap().to_string_lossy().to_string();
+        let bag = fresh_dir(&format!("simulate_models_{name}"));
+        let csv = repo().join(format!("target/bag-tests/simulate_models_{name}.csv"));
+        let out = simulate(&scene, &["--csv".as_ref(), csv.as_os_str(), "--bag".as_ref(), bag.as_os_str()]);
+        assert!(out.status.success(), "{name}: {}", String::from_utf8_lossy(&out.stderr));
+        let d = read_bag(&bag, "rosbags", &[topic]);
+        assert_eq!(d["undecodable"], serde_json::json!([]), "{name}");
+        let conns = d["connections"].as_array().unwrap();
+        let c = conns.iter().find(|c| c["topic"] == topic).unwrap_or_else(|| panic!("{name}: no {topic} in {conns:?}"));
+        assert_eq!(c["msgtype"], ty);
+        assert_eq!((c["qos"][0]["reliability"].as_str(), c["qos"][0]["depth"].as_u64()), (Some("reliable"), Some(10)));
+        assert!(!conns.iter().any(|c| c["topic"].as_str().unwrap().ends_with(if ty.ends_with("PadStates") { "tool_state" } else { "pad_states" })));
+        let t = &d["topics"][topic];
+        assert_eq!(u64s(&t["steps"]), (0..=STEPS).collect::<Vec<_>>(), "{name}: one per step");
+        assert_eq!(u64s(&t["log_times"]), (0..=STEPS).map(|k| k * 1_000_000).collect::<Vec<_>>(), "{name}: log times");
+        let csv = Csv::read(&csv);
+        let msgs = t["messages"].as_array().unwrap();
+        assert_eq!(msgs.len(), csv.rows.len());
+        for (k, m) in msgs.iter().enumerate() {
+            for (field, col) in columns {
+                let v = if m[field].is_array() { floats(&m[field])[0] } else { f(m, field) };
+                same(v, csv.col(k, col), &format!("{name} step {k}: {field} vs the CSV's {col}"));
+            }
+        }
+        let last = msgs.last().unwrap();
+        let moving = if ty.ends_with("PadStates") { floats(&last["friction_torque"])[0].abs() } else { f(last, "feed_force") };
+        assert!(moving > 10.0, "{name}: the load model acts ({moving})");
+    }
+}

@@ -299,12 +299,21 @@ fn own_messages_match_msg_files() {
         check_msg::<m::ModalAmplitudes>(&defs),
         check_msg::<m::NodeWrench>(&defs),
         check_msg::<m::NodeWrenchArray>(&defs),
+        check_msg::<m::PadClampForces>(&defs),
+        check_msg::<m::PadStates>(&defs),
+        check_msg::<m::ToolState>(&defs),
     ];
     // Every .msg of the package has its Rust struct.
     let own: Vec<&String> = defs.by_name.keys().filter(|k| k.strip_prefix("annular_plate/").is_some_and(|t| !t.contains('_'))).collect();
     let mut checked_sorted: Vec<&String> = checked.iter().collect();
     checked_sorted.sort();
     assert_eq!(own, checked_sorted, "a msg/*.msg without a Rust struct (or the other way round)");
+    // ... and colcon generates every one of them for rclpy / rclcpp users.
+    let cmake = std::fs::read_to_string(repo().join("CMakeLists.txt")).expect("CMakeLists.txt");
+    for name in &own {
+        let file = format!("\"msg/{}.msg\"", name.trim_start_matches("annular_plate/"));
+        assert!(cmake.contains(&file), "CMakeLists.txt's rosidl_generate_interfaces does not list {file}");
+    }
 }
 
 #[test]
@@ -375,6 +384,8 @@ fn bag_schemas_describe_the_wire_structs() {
         ("sensor_msgs/JointState", trace::<m::JointState>()),
         ("tf2_msgs/TFMessage", trace::<m::TFMessage>()),
         ("annular_plate/ModalAmplitudes", trace::<m::ModalAmplitudes>()),
+        ("annular_plate/PadStates", trace::<m::PadStates>()),
+        ("annular_plate/ToolState", trace::<m::ToolState>()),
         ("rosgraph_msgs/Clock", trace::<m::Clock>()),
         ("diagnostic_msgs/DiagnosticArray", trace::<m::DiagnosticArray>()),
     ];

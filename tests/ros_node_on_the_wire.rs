@@ -15,7 +15,7 @@ mod harness;
 
 use annular_plate::dynamics::{Simulation, Wrench};
 use annular_plate::ros::NodeSetup;
-use harness::{f, floats, peer, scene, start_node, Netns};
+use harness::{f, floats, peer, repo, scene, start_node, start_node_on, Netns};
 use serde_json::{json, Value};
 use std::time::{Duration, Instant};
 
@@ -23,9 +23,45 @@ const DT: f64 = 1e-3;
 
 /// The configuration the node reads with these ROS arguments.
 fn offline(ros_args: &[&str]) -> Simulation {
+    offline_on(&scene(), ros_args)
+}
+
+/// The same for another scene file.
+fn offline_on(scene_file: &std::path::Path, ros_args: &[&str]) -> Simulation {
     let args: Vec<String> = std::iter::once("--ros-args").chain(ros_args.iter().copied()).map(String::from).collect();
-    let setup = NodeSetup::load(Some(&scene()), &args).expect("the scene loads in-process");
+    let setup = NodeSetup::load(Some(scene_file), &args).expect("the scene loads in-process");
     Simulation::new(setup.config).expect("the model builds")
+}
+
+/// The pad states message (JSON) against the in-process simulation's pads.
+fn pad_states_match(ps: &Value, sim: &Simulation, what: &str) {
+    let n = sim.pad_count();
+    assert_eq!(f(ps, "step") as u64, sim.step_count(), "{what}: step");
+    let per_pad = |key: &str, get: &dyn Fn(usize) -> f64| {
+        let got = floats(&ps[key]);
+        let want: Vec<f64> = (0..n).map(get).collect();
+        close_all(&got, &want, &format!("{what}: {key}"));
+    };
+    per_pad("clamp_force", &|p| sim.pad_output(p).clamp_force);
+    per_pad("normal_force", &|p| sim.pad_output(p).normal_force);
+    per_pad("friction_force", &|p| sim.pad_output(p).friction_force);
+    per_pad("friction_torque", &|p| sim.pad_output(p).friction_torque);
+    let contacts = sim.pad_contact_forces();
+    let pads = sim.scene().load_models.pads.as_ref().expect("the scene has pads");
+    let ints = |key: &str| -> Vec<u64> { ps[key].as_array().unwrap().iter().map(|x| x.as_u64().unwrap()).collect() };
+    assert_eq!(ints("contact_pad"), pads.contacts.iter().map(|c| c.pad as u64 + 1).collect::<Vec<_>>(), "{what}: contact_pad");
+    assert_eq!(ints("contact_ale_node"), pads.contacts.iter().map(|c| c.node as u64 + 1).collect::<Vec<_>>(), "{what}: contact_ale_node");
+    close_all(&floats(&ps["contact_normal_top"]), &contacts.iter().map(|c| c.top).collect::<Vec<_>>(), &format!("{what}: top"));
+    close_all(&floats(&ps["contact_normal_bottom"]), &contacts.iter().map(|c| c.bottom).collect::<Vec<_>>(), &format!("{what}: bottom"));
+    close_all(&floats(&ps["contact_friction"]), &contacts.iter().map(|c| c.tangential).collect::<Vec<_>>(), &format!("{what}: friction"));
+}
+
+/// μ, the friction radius and the drive's torque limit of the brake bench.
+fn brake_bench_data(sim: &Simulation) -> (f64, f64, f64) {
+    let pads = sim.scene().load_models.pads.as_ref().expect("the brake bench has pads");
+    let r = pads.contacts[0].radius;
+    assert!(pads.contacts.iter().all(|c| (c.radius - r).abs() < 1e-12), "one friction radius");
+    (pads.friction_coefficient, r, sim.config().joint.max_torque.expect("the bench's drive is torque limited"))
 }
 
 fn close(a: f64, b: f64, what: &str) {
@@ -296,6 +332,8 @@ fn bad_inputs_are_rejected_counted_and_the_node_keeps_publishing() {
     }
     close_all(&floats(&out["modal"]["q_ale"]), sim.q_ale(), "q_ale untouched by bad input");
     close(floats(&out["last_joint_state"]["velocity"])[0], 25.0, "speed untouched by bad input");
+    assert_eq!(floats(&out["pad_states"]["clamp_force"]), vec![0.0], "the pad's clamp force untouched by bad input");
+    assert_eq!(count("accepted_pad_clamp_force") + count("accepted_pad_clamp_forces"), 0);
     assert!(node.is_running(), "the node survives bad input");
 }
 
@@ -384,25 +422,157 @@ fn parameter_services_list_get_describe_and_refuse_to_set_with_a_reason() {
 #[test]
 fn the_brake_load_example_works_on_the_wire() {
     let ns = Netns::new();
-    let node = start_node(&ns, 21, &["-p", "ros.diagnostics_period:=0.05"]);
+    let args = ["-p", "ros.start_paused:=true", "-p", "ros.publish_clock:=true", "-p", "ros.diagnostics_period:=0.01"];
+    let node = start_node(&ns, 21, &args);
+    // The script's profile, shortened: above ~15.65 kN the brake torque 2 mu N r
+    // exceeds the drive's 1500 N m; 40 ms at 16 kN take ~11 rad/s off the bare disc.
+    let (peak, ramp, hold, release, after, rate) = (16000.0, 0.2, 0.04, 0.2, 0.1, 100.0);
     let out = peer(
         &ns,
         &node,
         "brake_example",
         "/annular_plate",
-        json!({"inboard": [1, 2, 3], "outboard": [4, 5, 6], "peak_force": 2000.0, "ramp_s": 0.5, "hold_s": 0.3, "release_s": 0.3, "mu": 0.4}),
+        json!({"pads": [1], "peak_force": peak, "ramp_s": ramp, "hold_s": hold, "release_s": release, "after_s": after,
+               "rate_hz": rate, "dt": DT}),
     );
-    let sent = out["sent"].as_u64().unwrap();
-    assert!(sent > 50, "sent {sent} batches");
-    let accepted: u64 = out["diag"]["accepted_wrench_array"].as_str().unwrap().parse().unwrap();
-    assert!(accepted >= sent, "accepted {accepted} of {sent}");
-    assert_eq!(out["diag"]["rejected_total"], "0");
     let log = out["log"].as_array().unwrap();
-    assert!(log.len() > 50, "modal amplitudes arrive while loading");
-    assert!(log.iter().any(|e| e["input_stamp"].as_i64().unwrap() > 0), "the state reports the applied command's stamp");
-    let during_hold = log.iter().filter(|e| e["force"].as_f64().unwrap() >= 2000.0).map(|e| e["max_abs_q_ale"].as_f64().unwrap());
-    assert!(during_hold.fold(0.0, f64::max) > 0.0, "the pads deflect the disc while they squeeze it");
-    close(floats(&out["last_joint_state"]["velocity"])[0], 25.0, "the drive holds the speed");
+    let per_tick = out["steps_per_tick"].as_u64().unwrap();
+    assert_eq!(per_tick, 10, "a 100 Hz script tick is 10 steps of 1 ms");
+    assert_eq!(log.len() as u64, out["sent"].as_u64().unwrap());
+    assert!(log.len() >= 50, "{} ticks", log.len());
+    assert_eq!(out["diag"]["rejected_total"], "0");
+    assert_eq!(out["diag"]["accepted_pad_clamp_forces"], out["sent"].to_string());
+
+    // The in-process simulation fed the same commands before the same steps.
+    let mut sim = offline(&args);
+    let (mu, r, max_torque) = brake_bench_data(&sim);
+    let threshold = max_torque / (2.0 * mu * r);
+    assert!(peak > threshold && threshold > 15_000.0, "threshold {threshold} N");
+    let (mut speeds, mut forces, mut efforts) = (vec![], vec![], vec![]);
+    for (i, e) in log.iter().enumerate() {
+        let force = f(e, "force");
+        sim.set_pad_clamp_force(0, force).unwrap();
+        for _ in 0..per_tick {
+            sim.step().unwrap();
+        }
+        let what = format!("tick {i} (N = {force} N)");
+        assert_eq!(f(e, "step") as u64, sim.step_count(), "{what}: step");
+        close(f(e, "speed"), sim.joint().velocity, &format!("{what}: speed"));
+        close(f(e, "effort"), sim.joint().effort, &format!("{what}: effort"));
+        close(f(e, "position"), sim.joint().position, &format!("{what}: position"));
+        close_all(&floats(&e["q_ale"]), sim.q_ale(), &format!("{what}: q_ale"));
+        close_all(&floats(&e["q_dot_ale"]), sim.q_dot_ale(), &format!("{what}: q_dot_ale"));
+        pad_states_match(&e["pad_states"], &sim, &what);
+        assert_eq!(e["input_stamp"], e["sent_stamp"], "{what}: input_stamp echoes the command's header stamp");
+        // Floating caliper: each face carries exactly the clamp force.
+        let ps = &e["pad_states"];
+        close(floats(&ps["normal_force"])[0], force, &format!("{what}: normal force = clamp force"));
+        // Friction 2 mu N against the rotation, at the friction radius.
+        let torque = floats(&ps["friction_torque"])[0];
+        assert!((torque + 2.0 * mu * force * r).abs() <= 1e-6 * (2.0 * mu * force * r) + 1e-9, "{what}: friction torque {torque}");
+        speeds.push(f(e, "speed"));
+        forces.push(force);
+        efforts.push(f(e, "effort"));
+    }
+
+    // The physics: below the threshold the drive holds 25 rad/s against the
+    // brake torque; above it the effort saturates and the disc slows down;
+    // released, the drive brings it back at its acceleration limit.
+    let first_above = forces.iter().position(|&n| n > threshold).expect("the profile exceeds the threshold");
+    for i in 0..first_above {
+        close(speeds[i], 25.0, &format!("tick {i}: the drive holds the speed below the threshold"));
+        let brake = 2.0 * mu * forces[i] * r;
+        assert!((efforts[i] - brake).abs() <= 1e-6 * brake + 1e-9, "tick {i}: effort {} = brake torque {brake}", efforts[i]);
+    }
+    let (i_min, v_min) = speeds.iter().copied().enumerate().fold((0, f64::MAX), |a, (i, v)| if v < a.1 { (i, v) } else { a });
+    assert!(v_min < 20.0 && v_min > 1.0, "the brake slows the disc (minimum {v_min} rad/s) without stopping it");
+    assert!(i_min >= first_above, "the speed drops only once the brake torque exceeds the drive's");
+    for i in first_above..log.len() {
+        if forces[i] > threshold * 1.001 {
+            close(efforts[i], max_torque, &format!("tick {i}: the drive is at its torque limit"));
+            assert!(speeds[i] < speeds[i - 1], "tick {i}: the speed drops while N > threshold");
+        }
+    }
+    let last = *speeds.last().unwrap();
+    assert!(last > v_min + 5.0, "released, the drive speeds the disc up again ({v_min} -> {last} rad/s)");
+    for w in speeds[i_min..].windows(2) {
+        assert!(w[1] - w[0] <= 50.0 * 0.01 + 1e-9, "at most joint.max_acceleration = 50 rad/s^2");
+    }
+    eprintln!(
+        "brake example: threshold {threshold:.0} N; speed 25 -> {v_min:.3} rad/s (tick {i_min}) -> {last:.3} rad/s; {} ticks",
+        log.len()
+    );
+}
+
+#[test]
+fn a_clamp_force_on_the_pad_topic_brakes_the_disc_as_the_offline_simulation_predicts() {
+    let ns = Netns::new();
+    let args = ["-p", "ros.start_paused:=true", "-p", "ros.publish_clock:=true", "-p", "ros.diagnostics_period:=0.02"];
+    let node = start_node(&ns, 25, &args);
+    let (force, steps) = (16000.0, 30);
+    let out = peer(&ns, &node, "pad_clamp_force", "/annular_plate", json!({"pad": 1, "force": force, "steps": steps, "dt": DT}));
+    assert_eq!(f(&out, "step.step") as u64, steps);
+    assert_eq!(out["diag"]["accepted_pad_clamp_force"], "1");
+    let mut sim = offline(&args);
+    sim.set_pad_clamp_force(0, force).unwrap();
+    for _ in 0..steps {
+        sim.step().unwrap();
+    }
+    pad_states_match(&out["pad_states"], &sim, "after the steps");
+    close(floats(&out["joint_state"]["velocity"])[0], sim.joint().velocity, "speed");
+    close(floats(&out["joint_state"]["effort"])[0], sim.joint().effort, "effort");
+    close_all(&floats(&out["modal"]["q_ale"]), sim.q_ale(), "q_ale");
+    // 16 kN: 2 mu N r = 1533 N m against the drive's 1500 N m, on the disc's polar inertia.
+    let (mu, r, max_torque) = brake_bench_data(&sim);
+    let decel = (2.0 * mu * force * r - max_torque) / sim.model().body().inertia[2][2];
+    let v = sim.joint().velocity;
+    let expected = 25.0 - decel * steps as f64 * DT;
+    assert!((v - expected).abs() < 0.02 * (25.0 - expected), "speed {v} vs {expected}: decelerated at {decel} rad/s^2");
+}
+
+#[test]
+fn the_tool_feed_topic_drives_the_lathe_tool_as_the_offline_simulation_predicts() {
+    let ns = Netns::new();
+    let lathe = repo().join("config/lathe.yaml");
+    let args = ["-p", "ros.start_paused:=true", "-p", "ros.publish_clock:=true", "-p", "ros.diagnostics_period:=0.02"];
+    let node = start_node_on(&ns, 26, &lathe, &[], &args);
+    // Ten times the file's feed: the tool reaches the disc after 25 ms and cuts.
+    let (feed, steps) = (0.02, 120);
+    let out = peer(
+        &ns,
+        &node,
+        "tool_feed",
+        "/annular_plate",
+        json!({"feed": feed, "steps": steps, "bad": ["nan", "inf", 2.0, -1.5]}),
+    );
+    let diag = &out["diag"];
+    assert_eq!(diag["rejected_non_finite"], "2");
+    assert_eq!(diag["rejected_absurd"], "2");
+    assert_eq!(diag["accepted_tool_feed"], "1");
+    let mut sim = offline_on(&lathe, &args);
+    sim.set_tool_feed(feed).unwrap();
+    for _ in 0..steps {
+        sim.step().unwrap();
+    }
+    let t = &out["tool_state"];
+    let o = sim.tool_output().unwrap();
+    assert_eq!(f(t, "step") as u64, steps);
+    close(f(t, "feed_rate"), o.feed_rate, "feed_rate");
+    close(f(t, "tip_z"), o.tip, "tip_z");
+    close(f(t, "chip_thickness"), o.chip, "chip_thickness");
+    close(f(t, "feed_force"), o.feed_force, "feed_force");
+    assert!(o.feed_force > 10.0, "the tool cuts (feed force {} N)", o.feed_force);
+    close_all(&floats(&out["modal"]["q_ale"]), sim.q_ale(), "q_ale");
+    // A scene with a tool and no pads: tool topics, no pad topics.
+    let eps: Vec<(String, String)> = out["endpoints"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|e| (e[0].as_str().unwrap().into(), e[1].as_str().unwrap().into()))
+        .collect();
+    assert!(eps.contains(&("sub".into(), "rt/annular_plate/tool_feed".into())), "{eps:?}");
+    assert!(eps.contains(&("pub".into(), "rt/annular_plate/tool_state".into())), "{eps:?}");
+    assert!(!eps.iter().any(|(_, t)| t.contains("pad")), "no pad topics without pads: {eps:?}");
 }
 
 #[test]
@@ -435,7 +605,10 @@ fn names_are_remapped_and_namespaced_as_ros_args_say() {
     has("pub", "rt/rosout", "rcl_interfaces::msg::dds_::Log_");
     has("sub", "rt/bench/disc/speed_command", "std_msgs::msg::dds_::Float64_");
     has("sub", "rt/bench/disc/ale_1/wrench", "geometry_msgs::msg::dds_::WrenchStamped_");
-    has("sub", "rt/bench/disc/ale_6/wrench", "geometry_msgs::msg::dds_::WrenchStamped_");
+    has("sub", "rt/bench/disc/ale_3/wrench", "geometry_msgs::msg::dds_::WrenchStamped_");
+    has("sub", "rt/bench/disc/pad_1/clamp_force", "std_msgs::msg::dds_::Float64_");
+    has("sub", "rt/bench/disc/pad_clamp_forces", "annular_plate::msg::dds_::PadClampForces_");
+    has("pub", "rt/bench/disc/pad_states", "annular_plate::msg::dds_::PadStates_");
     has("sub", "rt/bench/disc/lagrange_1/wrench", "geometry_msgs::msg::dds_::WrenchStamped_");
     has("sub", "rt/bench/disc/wrenches", "annular_plate::msg::dds_::NodeWrenchArray_");
     has("sub", "rq/bench/disc/resetRequest", "std_srvs::srv::dds_::Trigger_Request_");
@@ -446,4 +619,6 @@ fn names_are_remapped_and_namespaced_as_ros_args_say() {
     has("pub", "rr/bench/disc/list_parametersReply", "rcl_interfaces::srv::dds_::ListParameters_Response_");
     assert!(!eps.iter().any(|(k, t, _)| k == "pub" && t == "rt/joint_states"), "/joint_states was remapped");
     assert!(!eps.iter().any(|(_, t, _)| t == "rt/clock"), "no /clock without simulated time");
+    assert!(!eps.iter().any(|(_, t, _)| t.contains("ale_4") || t.contains("pad_2")), "only the scene's nodes and pads");
+    assert!(!eps.iter().any(|(_, t, _)| t.contains("tool")), "no tool topics without a tool");
 }

@@ -43,7 +43,8 @@ impl OfflineRecorder {
     pub fn create(dir: &Path, sim: &Simulation) -> Result<OfflineRecorder, BagError> {
         let settings = RosSettings::default();
         let names = NameResolver::new(&RosArgs::default(), DEFAULT_NODE_NAME).expect("the default node name is valid");
-        let topics = NodeTopics::resolve(&names, true).expect("the default topic names are valid");
+        let topics =
+            NodeTopics::resolve(&names, true, sim.pad_count() > 0, sim.has_tool()).expect("the default topic names are valid");
         let mut bag = NodeBag::create(dir, &topics)?;
         let frames =
             FrameNames::new(&settings.frame_prefix, &settings.world_frame, sim.n_ale_nodes(), sim.n_lagrange_nodes());
@@ -63,7 +64,8 @@ impl OfflineRecorder {
     }
 
     /// Record the current state: /clock, /joint_states, /tf, the modal
-    /// amplitudes and, when due, /diagnostics.
+    /// amplitudes, the pad / tool states (scenes with pads / a tool) and,
+    /// when due, /diagnostics.
     pub fn record(&mut self, sim: &Simulation) -> Result<(), BagError> {
         let now = Instant::now();
         if let Some(last) = self.last {
@@ -79,6 +81,12 @@ impl OfflineRecorder {
         self.bag.write(&Sample::JointState(self.outputs.joint_state.handle()), stamp)?;
         self.bag.write(&Sample::Tf(self.outputs.tf.handle()), stamp)?;
         self.bag.write(&Sample::Modal(self.outputs.modal.handle()), stamp)?;
+        if let Some(p) = &self.outputs.pad_states {
+            self.bag.write(&Sample::PadStates(p.handle()), stamp)?;
+        }
+        if let Some(t) = &self.outputs.tool_state {
+            self.bag.write(&Sample::ToolState(t.handle()), stamp)?;
+        }
         if self.recorded_states.is_multiple_of(self.diagnostics_every) {
             let report = LoopReport {
                 diverged: None,

@@ -14,7 +14,9 @@
 use super::writer::{BagError, BagSummary, BagWriter, TopicId};
 use crate::ros::args::NameResolver;
 use crate::ros::diagnostics::RecordReport;
-use crate::ros::messages::{Clock, DiagnosticArray, JointState, ModalAmplitudes, RosType, TFMessage, Time};
+use crate::ros::messages::{
+    Clock, DiagnosticArray, JointState, ModalAmplitudes, PadStates, RosType, TFMessage, Time, ToolState,
+};
 use crate::ros::outputs::Shared;
 use crate::ros::{qos, topics};
 use ros2_client::QosProfile;
@@ -31,6 +33,8 @@ pub enum Sample {
     Tf(Shared<TFMessage>),
     TfStatic(TFMessage),
     Modal(Shared<ModalAmplitudes>),
+    PadStates(Shared<PadStates>),
+    ToolState(Shared<ToolState>),
     Clock(Clock),
     Diagnostics(DiagnosticArray),
 }
@@ -45,11 +49,16 @@ pub struct NodeTopics {
     pub diagnostics: String,
     /// Only with simulated time.
     pub clock: Option<String>,
+    /// Only when the scene has pads.
+    pub pad_states: Option<String>,
+    /// Only when the scene has a tool.
+    pub tool_state: Option<String>,
 }
 
 impl NodeTopics {
-    /// The names the node publishes under, for `names` and the time mode.
-    pub fn resolve(names: &NameResolver, sim_time: bool) -> Result<NodeTopics, String> {
+    /// The names the node publishes under, for `names`, the time mode and
+    /// the scene's load models (pads, a tool).
+    pub fn resolve(names: &NameResolver, sim_time: bool, has_pads: bool, has_tool: bool) -> Result<NodeTopics, String> {
         let r = |t: &str| names.resolve(t).map_err(|e| e.to_string());
         Ok(NodeTopics {
             joint_states: r(topics::JOINT_STATES)?,
@@ -58,6 +67,8 @@ impl NodeTopics {
             modal_amplitudes: r(topics::MODAL_AMPLITUDES)?,
             diagnostics: r(topics::DIAGNOSTICS)?,
             clock: if sim_time { Some(r(topics::CLOCK)?) } else { None },
+            pad_states: if has_pads { Some(r(topics::PAD_STATES)?) } else { None },
+            tool_state: if has_tool { Some(r(topics::TOOL_STATE)?) } else { None },
         })
     }
 }
@@ -75,6 +86,8 @@ pub struct NodeBag {
     modal: TopicId,
     diagnostics: TopicId,
     clock: Option<TopicId>,
+    pad_states: Option<TopicId>,
+    tool_state: Option<TopicId>,
 }
 
 impl NodeBag {
@@ -86,20 +99,28 @@ impl NodeBag {
         let joint_states = add(&topics.joint_states, type_name::<JointState>(), &qos::STATE)?;
         let tf = add(&topics.tf, type_name::<TFMessage>(), &qos::TF)?;
         let modal = add(&topics.modal_amplitudes, type_name::<ModalAmplitudes>(), &qos::STATE)?;
+        let pad_states = match &topics.pad_states {
+            Some(t) => Some(add(t, type_name::<PadStates>(), &qos::STATE)?),
+            None => None,
+        };
+        let tool_state = match &topics.tool_state {
+            Some(t) => Some(add(t, type_name::<ToolState>(), &qos::STATE)?),
+            None => None,
+        };
         let diagnostics = add(&topics.diagnostics, type_name::<DiagnosticArray>(), &qos::DIAGNOSTICS)?;
         let clock = match &topics.clock {
             Some(c) => Some(add(c, type_name::<Clock>(), &qos::CLOCK)?),
             None => None,
         };
-        Ok(NodeBag { writer, joint_states, tf, tf_static, modal, diagnostics, clock })
+        Ok(NodeBag { writer, joint_states, tf, tf_static, modal, diagnostics, clock, pad_states, tool_state })
     }
 
     pub fn dir(&self) -> &Path {
         self.writer.dir()
     }
 
-    /// Write `sample` with log time `at`. A `/clock` sample in a bag without
-    /// `/clock` is ignored.
+    /// Write `sample` with log time `at`. A sample of a topic the bag does
+    /// not have (`/clock` in wall time, pad or tool states without them) is ignored.
     pub fn write(&mut self, sample: &Sample, at: Time) -> Result<(), BagError> {
         let t = at.to_nanos().max(0) as u64;
         let w = &mut self.writer;
@@ -110,6 +131,14 @@ impl NodeBag {
             Sample::Modal(m) => w.write(self.modal, t, m),
             Sample::Diagnostics(m) => w.write(self.diagnostics, t, m),
             Sample::Clock(m) => match self.clock {
+                Some(id) => w.write(id, t, m),
+                None => Ok(()),
+            },
+            Sample::PadStates(m) => match self.pad_states {
+                Some(id) => w.write(id, t, m),
+                None => Ok(()),
+            },
+            Sample::ToolState(m) => match self.tool_state {
                 Some(id) => w.write(id, t, m),
                 None => Ok(()),
             },
@@ -144,7 +173,7 @@ pub struct RecorderThread {
     counters: Arc<Counters>,
 }
 
-/// Default queue length: two seconds of a 1 kHz loop's four topics.
+/// Default queue length: two seconds of a 1 kHz loop's four topics (five with pad or tool states).
 pub const DEFAULT_QUEUE: usize = 8192;
 
 impl Recorder {

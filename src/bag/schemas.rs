@@ -45,6 +45,9 @@ const DEFINITIONS: &[(&str, &str)] = &[
     ("annular_plate/ModalAmplitudes", include_str!("../../msg/ModalAmplitudes.msg")),
     ("annular_plate/NodeWrench", include_str!("../../msg/NodeWrench.msg")),
     ("annular_plate/NodeWrenchArray", include_str!("../../msg/NodeWrenchArray.msg")),
+    ("annular_plate/PadClampForces", include_str!("../../msg/PadClampForces.msg")),
+    ("annular_plate/PadStates", include_str!("../../msg/PadStates.msg")),
+    ("annular_plate/ToolState", include_str!("../../msg/ToolState.msg")),
 ];
 
 const PRIMITIVES: &[&str] = &[

@@ -18,7 +18,7 @@ pub mod state;
 pub mod stepper;
 pub mod wrench;
 
-pub use load_models::{LoadCommandError, LoadCommands, LoadModelState, LoadModels, ModelWrenches};
+pub use load_models::{check_clamp_force, check_feed_rate, LoadCommandError, LoadCommands, LoadModelState, LoadModels, ModelWrenches};
 pub use loads::Inputs;
 pub use scene::Scene;
 pub use simulation::{JointOutput, NodeOutput, PadOutput, Pose, Simulation, SimulationError, StepError, ToolOutput};

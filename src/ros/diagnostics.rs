@@ -174,13 +174,10 @@ pub fn simulation_status(node_name: &str, r: &LoopReport) -> DiagnosticStatus {
 
 /// `<node>: inputs`; `new_rejected` = rejections since the last report.
 pub fn inputs_status(node_name: &str, s: &InputStats, new_rejected: u64) -> DiagnosticStatus {
-    let mut values = vec![
-        kv("accepted_speed_command", s.accepted(Source::SpeedCommand).to_string()),
-        kv("accepted_node_wrench", s.accepted(Source::NodeWrench).to_string()),
-        kv("accepted_wrench_array", s.accepted(Source::WrenchArray).to_string()),
-        kv("accepted_total", s.accepted_total().to_string()),
-        kv("rejected_total", s.rejected_total().to_string()),
-    ];
+    let mut values: Vec<KeyValue> =
+        Source::ALL.iter().map(|src| kv(&format!("accepted_{}", src.name()), s.accepted(*src).to_string())).collect();
+    values.push(kv("accepted_total", s.accepted_total().to_string()));
+    values.push(kv("rejected_total", s.rejected_total().to_string()));
     values.extend(RejectReason::ALL.iter().map(|r| kv(&format!("rejected_{}", r.name()), s.rejected(*r).to_string())));
     values.push(kv("expired_wrenches", s.expired().to_string()));
     DiagnosticStatus {

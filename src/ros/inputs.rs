@@ -10,12 +10,18 @@
 //! - a NodeWrenchArray is applied whole or not at all: an unknown kind, an
 //!   index of 0 or beyond the scene's nodes, the same node twice or any bad
 //!   wrench rejects the whole array;
+//! - a pad clamp force (N) and the tool feed rate (m/s) follow the load
+//!   models' own rules (`dynamics::check_clamp_force`, `check_feed_rate`: the
+//!   same functions `Simulation` applies): finite, a clamp force in
+//!   [0, `limits.max_force`], a feed of at most 1 m/s, an existing pad / tool;
+//!   a PadClampForces array is applied whole or not at all like a
+//!   NodeWrenchArray;
 //! - a sample that cannot be decoded is counted as undecodable.
 //!
 //! A rejected input changes nothing; it is counted (visible in
 //! /diagnostics) and logged at most once per `ros.reject_log_period` per kind.
 
-use crate::dynamics::{InputError, NodeKind, Wrench};
+use crate::dynamics::{check_clamp_force, check_feed_rate, InputError, LoadCommandError, NodeKind, Wrench};
 use std::sync::atomic::{AtomicU64, Ordering};
 use std::sync::Mutex;
 use std::time::{Duration, Instant};
@@ -29,9 +35,10 @@ pub enum RejectReason {
     Absurd,
     /// A WrenchStamped whose frame_id is not its node's frame.
     UnknownFrame,
-    /// A wrench for a node the scene does not have.
+    /// A wrench for a node, or a clamp force for a pad, the scene does not have.
     NoSuchNode,
-    /// A NodeWrenchArray with an unknown kind or a node named twice.
+    /// A NodeWrenchArray with an unknown kind or a node named twice; a
+    /// PadClampForces array with a pad named twice or arrays of different lengths.
     MalformedBatch,
     /// The sample could not be decoded (wrong type or truncated data).
     Undecodable,
@@ -65,6 +72,25 @@ impl RejectReason {
     fn index(self) -> usize {
         RejectReason::ALL.iter().position(|r| *r == self).unwrap_or(0)
     }
+
+    /// The kind of a wrench or speed refused by the dynamics' checks.
+    pub fn of_input_error(e: &InputError) -> Self {
+        match e {
+            InputError::NonFinite { .. } => RejectReason::NonFinite,
+            InputError::Absurd { .. } => RejectReason::Absurd,
+            InputError::NoSuchNode { .. } => RejectReason::NoSuchNode,
+        }
+    }
+
+    /// The kind of a load-model command refused by the dynamics' checks (a
+    /// negative clamp force is outside [0, `limits.max_force`]: absurd; a
+    /// missing pad or tool counts as a missing node).
+    pub fn of_load_error(e: &LoadCommandError) -> Self {
+        match e {
+            LoadCommandError::Input(i) => RejectReason::of_input_error(i),
+            LoadCommandError::NoSuchPad { .. } | LoadCommandError::NoTool => RejectReason::NoSuchNode,
+        }
+    }
 }
 
 /// An input refused, with a sentence for the log.
@@ -79,13 +105,12 @@ impl Rejection {
         Rejection { reason, detail: detail.into() }
     }
 
-    fn from_input_error(e: InputError) -> Self {
-        let reason = match e {
-            InputError::NonFinite { .. } => RejectReason::NonFinite,
-            InputError::Absurd { .. } => RejectReason::Absurd,
-            InputError::NoSuchNode { .. } => RejectReason::NoSuchNode,
-        };
-        Rejection::new(reason, e.to_string())
+    pub fn from_input_error(e: InputError) -> Self {
+        Rejection::new(RejectReason::of_input_error(&e), e.to_string())
+    }
+
+    pub fn from_load_error(e: LoadCommandError) -> Self {
+        Rejection::new(RejectReason::of_load_error(&e), e.to_string())
     }
 }
 
@@ -95,6 +120,12 @@ pub enum Input {
     Speed(f64),
     Wrench { kind: NodeKind, node: usize, wrench: Wrench },
     Batch(Vec<(NodeKind, usize, Wrench)>),
+    /// Clamp force of pad `pad` (0-based), N.
+    ClampForce { pad: usize, newtons: f64 },
+    /// Several pads' clamp forces at once (0-based pads), N.
+    ClampForces(Vec<(usize, f64)>),
+    /// Tool feed rate, m/s.
+    ToolFeed(f64),
 }
 
 /// Which topic an input came from (for counting).
@@ -103,6 +134,30 @@ pub enum Source {
     SpeedCommand,
     NodeWrench,
     WrenchArray,
+    PadClampForce,
+    PadClampForces,
+    ToolFeed,
+}
+
+impl Source {
+    pub const ALL: [Source; 6] =
+        [Source::SpeedCommand, Source::NodeWrench, Source::WrenchArray, Source::PadClampForce, Source::PadClampForces, Source::ToolFeed];
+
+    /// The counter's name in /diagnostics: `accepted_<name>`.
+    pub fn name(self) -> &'static str {
+        match self {
+            Source::SpeedCommand => "speed_command",
+            Source::NodeWrench => "node_wrench",
+            Source::WrenchArray => "wrench_array",
+            Source::PadClampForce => "pad_clamp_force",
+            Source::PadClampForces => "pad_clamp_forces",
+            Source::ToolFeed => "tool_feed",
+        }
+    }
+
+    fn index(self) -> usize {
+        Source::ALL.iter().position(|s| *s == self).unwrap_or(0)
+    }
 }
 
 /// `NodeWrench.kind` values of msg/NodeWrench.msg.
@@ -117,12 +172,23 @@ pub struct InputValidator {
     max_force: f64,
     max_moment: f64,
     max_speed: f64,
+    /// Pads of the scene (`Simulation::pad_count`).
+    pad_count: usize,
+    /// Whether the scene has a tool (`Simulation::has_tool`).
+    has_tool: bool,
 }
 
 impl InputValidator {
     /// `ale_frames[j]` / `lagrange_frames[j]`: the frame id of node j + 1.
     pub fn new(ale_frames: Vec<String>, lagrange_frames: Vec<String>, max_force: f64, max_moment: f64, max_speed: f64) -> Self {
-        InputValidator { ale_frames, lagrange_frames, max_force, max_moment, max_speed }
+        InputValidator { ale_frames, lagrange_frames, max_force, max_moment, max_speed, pad_count: 0, has_tool: false }
+    }
+
+    /// The scene's load models: `pad_count` pads, a tool or not.
+    pub fn with_load_models(mut self, pad_count: usize, has_tool: bool) -> Self {
+        self.pad_count = pad_count;
+        self.has_tool = has_tool;
+        self
     }
 
     fn frames(&self, kind: NodeKind) -> &[String] {
@@ -208,27 +274,63 @@ impl InputValidator {
         }
         Ok(Input::Batch(out))
     }
+
+    /// A clamp force on the topic of pad `pad` (0-based), N.
+    pub fn clamp_force(&self, pad: usize, newtons: f64) -> Result<Input, Rejection> {
+        check_clamp_force(pad, self.pad_count, newtons, self.max_force).map_err(Rejection::from_load_error)?;
+        Ok(Input::ClampForce { pad, newtons })
+    }
+
+    /// A PadClampForces message: pad numbers (from 1) and their clamp forces, N.
+    pub fn clamp_forces(&self, pads: &[u32], forces: &[f64]) -> Result<Input, Rejection> {
+        if pads.len() != forces.len() {
+            return Err(Rejection::new(
+                RejectReason::MalformedBatch,
+                format!("pad has {} entries but clamp_force {}; the array was not applied", pads.len(), forces.len()),
+            ));
+        }
+        let mut out: Vec<(usize, f64)> = Vec::with_capacity(pads.len());
+        for (position, (&number, &newtons)) in pads.iter().zip(forces).enumerate() {
+            if number == 0 {
+                return Err(Rejection::new(
+                    RejectReason::NoSuchNode,
+                    format!("pad[{position}] = 0, but pad numbers start at 1; the array was not applied"),
+                ));
+            }
+            let pad = number as usize - 1;
+            check_clamp_force(pad, self.pad_count, newtons, self.max_force).map_err(|e| {
+                let r = Rejection::from_load_error(e);
+                Rejection { detail: format!("entry {position}: {}; the array was not applied", r.detail), ..r }
+            })?;
+            if out.iter().any(|(p, _)| *p == pad) {
+                return Err(Rejection::new(
+                    RejectReason::MalformedBatch,
+                    format!("pad[{position}] names pad {number} a second time; the array was not applied"),
+                ));
+            }
+            out.push((pad, newtons));
+        }
+        Ok(Input::ClampForces(out))
+    }
+
+    /// A tool feed rate, m/s.
+    pub fn tool_feed(&self, rate: f64) -> Result<Input, Rejection> {
+        check_feed_rate(self.has_tool, rate).map_err(Rejection::from_load_error)?;
+        Ok(Input::ToolFeed(rate))
+    }
 }
 
 /// Counters shared by the subscriber tasks, the loop and /diagnostics.
 #[derive(Debug, Default)]
 pub struct InputStats {
-    accepted: [AtomicU64; 3],
+    accepted: [AtomicU64; Source::ALL.len()],
     rejected: [AtomicU64; RejectReason::ALL.len()],
     expired: AtomicU64,
 }
 
 impl InputStats {
-    fn source_index(s: Source) -> usize {
-        match s {
-            Source::SpeedCommand => 0,
-            Source::NodeWrench => 1,
-            Source::WrenchArray => 2,
-        }
-    }
-
     pub fn accept(&self, source: Source) {
-        self.accepted[Self::source_index(source)].fetch_add(1, Ordering::Relaxed);
+        self.accepted[source.index()].fetch_add(1, Ordering::Relaxed);
     }
 
     pub fn reject(&self, reason: RejectReason) {
@@ -241,7 +343,7 @@ impl InputStats {
     }
 
     pub fn accepted(&self, source: Source) -> u64 {
-        self.accepted[Self::source_index(source)].load(Ordering::Relaxed)
+        self.accepted[source.index()].load(Ordering::Relaxed)
     }
 
     pub fn accepted_total(&self) -> u64 {
@@ -412,16 +514,58 @@ mod tests {
     }
 
     #[test]
+    fn load_model_commands_follow_the_dynamics_rules() {
+        let v = validator().with_load_models(2, false);
+        assert_eq!(v.clamp_force(1, 5000.0), Ok(Input::ClampForce { pad: 1, newtons: 5000.0 }));
+        assert_eq!(v.clamp_force(0, 0.0), Ok(Input::ClampForce { pad: 0, newtons: 0.0 }));
+        assert_eq!(v.clamp_force(0, 1e4), Ok(Input::ClampForce { pad: 0, newtons: 1e4 }), "limits.max_force itself is allowed");
+        let reason = |r: Result<Input, Rejection>| r.unwrap_err().reason;
+        assert_eq!(reason(v.clamp_force(0, f64::NAN)), RejectReason::NonFinite);
+        assert_eq!(reason(v.clamp_force(0, f64::NEG_INFINITY)), RejectReason::NonFinite);
+        assert_eq!(reason(v.clamp_force(0, -1.0)), RejectReason::Absurd);
+        assert_eq!(reason(v.clamp_force(0, 1.5e4)), RejectReason::Absurd);
+        assert_eq!(reason(v.clamp_force(2, 1.0)), RejectReason::NoSuchNode);
+        let e = v.clamp_force(0, -1.0).unwrap_err();
+        assert!(e.detail.contains("pad_1 clamp force"), "{}", e.detail);
+        // The tool: none in this scene; with one, the feed rule.
+        assert_eq!(reason(v.tool_feed(1e-3)), RejectReason::NoSuchNode);
+        let t = validator().with_load_models(0, true);
+        assert_eq!(t.tool_feed(-2e-3), Ok(Input::ToolFeed(-2e-3)));
+        assert_eq!(reason(t.tool_feed(f64::NAN)), RejectReason::NonFinite);
+        assert_eq!(reason(t.tool_feed(1.5)), RejectReason::Absurd);
+        assert_eq!(reason(t.clamp_force(0, 1.0)), RejectReason::NoSuchNode);
+    }
+
+    #[test]
+    fn clamp_force_arrays_are_all_or_nothing() {
+        let v = validator().with_load_models(2, false);
+        assert_eq!(v.clamp_forces(&[2, 1], &[10.0, 20.0]), Ok(Input::ClampForces(vec![(1, 10.0), (0, 20.0)])));
+        assert_eq!(v.clamp_forces(&[], &[]), Ok(Input::ClampForces(vec![])));
+        let reason = |p: &[u32], f: &[f64]| v.clamp_forces(p, f).unwrap_err().reason;
+        assert_eq!(reason(&[1], &[1.0, 2.0]), RejectReason::MalformedBatch);
+        assert_eq!(reason(&[1, 1], &[1.0, 2.0]), RejectReason::MalformedBatch);
+        assert_eq!(reason(&[0], &[1.0]), RejectReason::NoSuchNode);
+        assert_eq!(reason(&[1, 3], &[1.0, 1.0]), RejectReason::NoSuchNode);
+        assert_eq!(reason(&[1, 2], &[1.0, f64::NAN]), RejectReason::NonFinite);
+        assert_eq!(reason(&[1, 2], &[1.0, -5.0]), RejectReason::Absurd);
+        let e = v.clamp_forces(&[1, 2], &[1.0, 2e4]).unwrap_err();
+        assert!(e.detail.contains("entry 1") && e.detail.contains("not applied"), "{}", e.detail);
+    }
+
+    #[test]
     fn stats_count() {
         let s = InputStats::default();
         s.accept(Source::NodeWrench);
         s.accept(Source::NodeWrench);
         s.accept(Source::SpeedCommand);
+        s.accept(Source::PadClampForce);
         s.reject(RejectReason::Absurd);
         s.reject(RejectReason::Undecodable);
         s.expire();
         assert_eq!(s.accepted(Source::NodeWrench), 2);
-        assert_eq!(s.accepted_total(), 3);
+        assert_eq!(s.accepted(Source::PadClampForce), 1);
+        assert_eq!(s.accepted(Source::ToolFeed), 0);
+        assert_eq!(s.accepted_total(), 4);
         assert_eq!(s.rejected(RejectReason::Absurd), 1);
         assert_eq!(s.rejected_total(), 2);
         assert_eq!(s.expired(), 1);

@@ -6,7 +6,8 @@ use super::args::{domain_id_from_env, NameResolver, RosArgs};
 use super::inputs::{Input, InputStats, InputValidator, RejectReason, Rejection, Source};
 use super::logging::{parse_level, Logger};
 use super::messages::{
-    Clock, DiagnosticArray, Float64, JointState, ModalAmplitudes, NodeWrenchArray, RosType, TFMessage, WrenchStamped,
+    Clock, DiagnosticArray, Float64, JointState, ModalAmplitudes, NodeWrenchArray, PadClampForces, PadStates, RosType,
+    TFMessage, ToolState, WrenchStamped,
 };
 use super::outputs::{static_transforms, FrameNames, OutputMessages, Shared};
 use super::params_service::{effective_parameters, ParamStore};
@@ -114,7 +115,8 @@ pub fn run_node(scene: Option<PathBuf>, ros_args: &[String], record: Option<Path
     // The bag first: a directory that exists is refused before any DDS traffic.
     let bag = match &record {
         Some(dir) => {
-            let topics = NodeTopics::resolve(&setup.names, setup.settings.sim_time).map_err(|e| anyhow!("{e}"))?;
+            let topics = NodeTopics::resolve(&setup.names, setup.settings.sim_time, sim.pad_count() > 0, sim.has_tool())
+                .map_err(|e| anyhow!("{e}"))?;
             Some(NodeBag::create(dir, &topics).map_err(|e| anyhow!("--record: {e}"))?)
         }
         None => None,
@@ -220,6 +222,16 @@ async fn serve(setup: NodeSetup, sim: Simulation, domain: u16, bag: Option<NodeB
         joint_states: publisher::<JointState, Shared<JointState>>(&mut node, names, topics::JOINT_STATES, &qos::STATE)?,
         tf: publisher::<TFMessage, Shared<TFMessage>>(&mut node, names, topics::TF, &qos::TF)?,
         modal: publisher::<ModalAmplitudes, Shared<ModalAmplitudes>>(&mut node, names, topics::MODAL_AMPLITUDES, &qos::STATE)?,
+        pad_states: if sim.pad_count() > 0 {
+            Some(publisher::<PadStates, Shared<PadStates>>(&mut node, names, topics::PAD_STATES, &qos::STATE)?)
+        } else {
+            None
+        },
+        tool_state: if sim.has_tool() {
+            Some(publisher::<ToolState, Shared<ToolState>>(&mut node, names, topics::TOOL_STATE, &qos::STATE)?)
+        } else {
+            None
+        },
         clock: if settings.sim_time {
             Some(publisher::<Clock, Clock>(&mut node, names, topics::CLOCK, &qos::CLOCK)?)
         } else {
@@ -257,7 +269,8 @@ async fn serve(setup: NodeSetup, sim: Simulation, domain: u16, bag: Option<NodeB
             limits.max_force,
             limits.max_moment,
             limits.max_speed,
-        )),
+        )
+        .with_load_models(sim.pad_count(), sim.has_tool())),
         stats: Arc::clone(&stats),
         logger: Arc::clone(&logger),
         tx: tx.clone(),
@@ -288,6 +301,27 @@ async fn serve(setup: NodeSetup, sim: Simulation, domain: u16, bag: Option<NodeB
         Ok((v.batch(m.wrenches.iter().map(|w| (w.kind, w.index, to_wrench(&w.wrench))))?, stamp))
     }));
 
+    // Load-model commands: only for the pads and the tool the scene has.
+    for pad in 0..sim.pad_count() {
+        let topic = resolve(&topics::pad_clamp_force(pad + 1))?;
+        let sub = subscription::<Float64>(&mut node, &topic, &qos::INPUT)?;
+        tasks.push(spawn_input(sub, topic, Source::PadClampForce, ctx.clone(), move |v, m: Float64| {
+            Ok((v.clamp_force(pad, m.data)?, 0))
+        }));
+    }
+    if sim.pad_count() > 0 {
+        let topic = resolve(topics::PAD_CLAMP_FORCES)?;
+        let sub = subscription::<PadClampForces>(&mut node, &topic, &qos::INPUT)?;
+        tasks.push(spawn_input(sub, topic, Source::PadClampForces, ctx.clone(), |v, m: PadClampForces| {
+            Ok((v.clamp_forces(&m.pad, &m.clamp_force)?, m.header.stamp.to_nanos()))
+        }));
+    }
+    if sim.has_tool() {
+        let topic = resolve(topics::TOOL_FEED)?;
+        let sub = subscription::<Float64>(&mut node, &topic, &qos::INPUT)?;
+        tasks.push(spawn_input(sub, topic, Source::ToolFeed, ctx.clone(), |v, m: Float64| Ok((v.tool_feed(m.data)?, 0))));
+    }
+
     // Services.
     let service_names = [resolve(services::RESET)?, resolve(services::SET_PAUSED)?, resolve(services::STEP)?];
     tasks.extend(services::spawn(
@@ -301,6 +335,7 @@ async fn serve(setup: NodeSetup, sim: Simulation, domain: u16, bag: Option<NodeB
 
     // The simulation thread.
     let n_modes = sim.model().n_modes();
+    let (n_pads, has_tool) = (sim.pad_count(), sim.has_tool());
     let outputs = OutputMessages::new(&sim, &frames);
     let loop_settings = LoopSettings {
         publish_divisor: setup.config.simulation.publish_divisor,
@@ -328,11 +363,14 @@ async fn serve(setup: NodeSetup, sim: Simulation, domain: u16, bag: Option<NodeB
         })
         .context("cannot start the simulation thread")?;
     logger.info(&format!(
-        "{fqn} up on ROS_DOMAIN_ID {domain}: scene {}, {} ALE and {} Lagrangian nodes, {} modes, {} time",
+        "{fqn} up on ROS_DOMAIN_ID {domain}: scene {}, {} ALE and {} Lagrangian nodes, {} modes, {} pad{}{}, {} time",
         setup.scene,
         frames.ale.len(),
         frames.lagrange.len(),
         n_modes,
+        n_pads,
+        if n_pads == 1 { "" } else { "s" },
+        if has_tool { ", a tool" } else { "" },
         if settings.sim_time { "simulated (/clock)" } else { "wall-clock" }
     ));
 

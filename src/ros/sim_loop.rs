@@ -11,11 +11,11 @@
 
 use super::clock::{Pacer, StepClock};
 use super::diagnostics::{self, LoopReport, Timing};
-use super::inputs::{Input, InputStats, RejectReason, Rejection, Source, StaleWrenches};
+use super::inputs::{Input, InputStats, Rejection, Source, StaleWrenches};
 use super::logging::Logger;
 use super::messages::{
-    Clock, DiagnosticArray, JointState, ModalAmplitudes, SetBoolResponse, StepResponse, TFMessage, Time,
-    TriggerResponse,
+    Clock, DiagnosticArray, JointState, ModalAmplitudes, PadStates, SetBoolResponse, StepResponse, TFMessage, Time,
+    ToolState, TriggerResponse,
 };
 use super::outputs::{clock_message, OutputMessages, Shared};
 use super::params_service::RuntimeChange;
@@ -34,6 +34,10 @@ pub struct Publishers {
     pub joint_states: Publisher<Shared<JointState>>,
     pub tf: Publisher<Shared<TFMessage>>,
     pub modal: Publisher<Shared<ModalAmplitudes>>,
+    /// Only when the scene has pads.
+    pub pad_states: Option<Publisher<Shared<PadStates>>>,
+    /// Only when the scene has a tool.
+    pub tool_state: Option<Publisher<Shared<ToolState>>>,
     /// Only with simulated time.
     pub clock: Option<Publisher<Clock>>,
     pub diagnostics: Publisher<DiagnosticArray>,
@@ -292,19 +296,34 @@ impl SimLoop {
     }
 
     fn apply(&mut self, input: Input, source: Source, stamp: i64) {
+        // The inputs were checked on arrival (`inputs::InputValidator`) with
+        // the rules the simulation applies again here; a refusal at this
+        // point is counted and logged the same way.
+        let wrench_err = Rejection::from_input_error;
+        let load_err = Rejection::from_load_error;
         let result = match input {
-            Input::Speed(omega) => self.sim.set_speed_command(omega),
-            Input::Wrench { kind, node, wrench } => self.set_wrench(kind, node, wrench),
+            Input::Speed(omega) => self.sim.set_speed_command(omega).map_err(wrench_err),
+            Input::Wrench { kind, node, wrench } => self.set_wrench(kind, node, wrench).map_err(wrench_err),
             Input::Batch(items) => {
-                // Checked as a whole before; the simulation's own checks are the same.
                 let mut r = Ok(());
                 for (kind, node, wrench) in items {
                     if let Err(e) = self.set_wrench(kind, node, wrench) {
-                        r = Err(e);
+                        r = Err(wrench_err(e));
                     }
                 }
                 r
             }
+            Input::ClampForce { pad, newtons } => self.sim.set_pad_clamp_force(pad, newtons).map_err(load_err),
+            Input::ClampForces(items) => {
+                let mut r = Ok(());
+                for (pad, newtons) in items {
+                    if let Err(e) = self.sim.set_pad_clamp_force(pad, newtons) {
+                        r = Err(load_err(e));
+                    }
+                }
+                r
+            }
+            Input::ToolFeed(rate) => self.sim.set_tool_feed(rate).map_err(load_err),
         };
         match result {
             Ok(()) => {
@@ -313,14 +332,9 @@ impl SimLoop {
                     self.input_stamp = stamp;
                 }
             }
-            Err(e) => {
-                let reason = match e {
-                    InputError::NonFinite { .. } => RejectReason::NonFinite,
-                    InputError::Absurd { .. } => RejectReason::Absurd,
-                    InputError::NoSuchNode { .. } => RejectReason::NoSuchNode,
-                };
-                self.stats.reject(reason);
-                self.logger.rejection("input", &Rejection { reason, detail: e.to_string() });
+            Err(rejection) => {
+                self.stats.reject(rejection.reason);
+                self.logger.rejection("input", &rejection);
             }
         }
     }
@@ -377,11 +391,23 @@ impl SimLoop {
             self.pubs.modal.publish(self.outputs.modal.handle()).is_err(),
         ];
         self.publish_failures += failures.iter().filter(|f| **f).count() as u64;
+        if let (Some(p), Some(m)) = (&self.pubs.pad_states, &self.outputs.pad_states) {
+            self.publish_failures += p.publish(m.handle()).is_err() as u64;
+        }
+        if let (Some(p), Some(m)) = (&self.pubs.tool_state, &self.outputs.tool_state) {
+            self.publish_failures += p.publish(m.handle()).is_err() as u64;
+        }
         if let Some(r) = &self.recorder {
             // Handles, not copies: the writer thread serializes them.
             r.record(Sample::JointState(self.outputs.joint_state.handle()), stamp);
             r.record(Sample::Tf(self.outputs.tf.handle()), stamp);
             r.record(Sample::Modal(self.outputs.modal.handle()), stamp);
+            if let Some(m) = &self.outputs.pad_states {
+                r.record(Sample::PadStates(m.handle()), stamp);
+            }
+            if let Some(m) = &self.outputs.tool_state {
+                r.record(Sample::ToolState(m.handle()), stamp);
+            }
         }
     }
 

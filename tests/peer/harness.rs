@@ -160,10 +160,15 @@ pub fn start_node(ns: &Netns, domain: u16, ros_args: &[&str]) -> NodeProcess {
 
 /// Start `annular_plate run <scene> <run_args> --ros-args <ros_args>` (e.g. `--record DIR`).
 pub fn start_node_with(ns: &Netns, domain: u16, run_args: &[&OsStr], ros_args: &[&str]) -> NodeProcess {
+    start_node_on(ns, domain, &scene(), run_args, ros_args)
+}
+
+/// Start `annular_plate run <scene_file> <run_args> --ros-args <ros_args>` (another scene than the default).
+pub fn start_node_on(ns: &Netns, domain: u16, scene_file: &Path, run_args: &[&OsStr], ros_args: &[&str]) -> NodeProcess {
     let stderr_path = temp_dir().join(format!("node-domain{domain}.stderr"));
     let stderr = std::fs::File::create(&stderr_path).expect("create the node's stderr file");
     let mut cmd = ns.command(node_binary());
-    cmd.arg("run").arg(scene()).args(run_args).arg("--ros-args").args(ros_args);
+    cmd.arg("run").arg(scene_file).args(run_args).arg("--ros-args").args(ros_args);
     let child = cmd
         .env("ROS_DOMAIN_ID", domain.to_string())
         .stdin(Stdio::null())

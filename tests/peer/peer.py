@@ -305,7 +305,10 @@ def scenario_bad_inputs(p, a):
     bad_type = p.writer(p.private("ale_2/wrench"), T.TruncatedWrenchStamped)
     batch = p.writer(p.private("wrenches"), T.NodeWrenchArray)
     speed = p.writer(p.private("speed_command"), T.Float64)
-    for w in (w1, bad_type, batch, speed):
+    clamp = p.writer(p.private("pad_1/clamp_force"), T.Float64)
+    clamps = p.writer(p.private("pad_clamp_forces"), T.PadClampForces)
+    states = p.reader(p.private("pad_states"), T.PadStates, depth=10)
+    for w in (w1, bad_type, batch, speed, clamp, clamps, states):
         p.wait_matched(w)
     sent = {}
 
@@ -328,6 +331,17 @@ def scenario_bad_inputs(p, a):
     speed.write(T.Float64(data=nan)); sent["non_finite"] += 1
     speed.write(T.Float64(data=1e9)); sent["absurd"] += 1
     bad_type.write(T.TruncatedWrenchStamped(header=T.Header(frame_id="plate_ale_2"))); sent["undecodable"] = 1
+    # The pad's clamp force (the brake bench has one pad): per-pad topic and array.
+    clamp.write(T.Float64(data=nan)); sent["non_finite"] += 1
+    clamp.write(T.Float64(data=-inf)); sent["non_finite"] += 1
+    clamp.write(T.Float64(data=-5.0)); sent["absurd"] += 1
+    clamp.write(T.Float64(data=1e12)); sent["absurd"] += 1
+    clamps.write(T.PadClampForces(pad=[1, 2], clamp_force=[100.0, 100.0])); sent["no_such_node"] += 1
+    clamps.write(T.PadClampForces(pad=[0], clamp_force=[100.0])); sent["no_such_node"] += 1
+    clamps.write(T.PadClampForces(pad=[1, 1], clamp_force=[100.0, 200.0])); sent["malformed_batch"] += 1
+    clamps.write(T.PadClampForces(pad=[1], clamp_force=[100.0, 200.0])); sent["malformed_batch"] += 1
+    clamps.write(T.PadClampForces(pad=[1], clamp_force=[nan])); sent["non_finite"] += 1
+    clamps.write(T.PadClampForces(pad=[1], clamp_force=[-1.0])); sent["absurd"] += 1
     total = sum(sent.values())
     values, diag = p.wait_diag(lambda v: int(v.get("rejected_total", 0)) >= total, timeout=20.0)
     inputs_status = [s for s in diag.status if s.name.endswith("inputs")][0]
@@ -337,12 +351,14 @@ def scenario_bad_inputs(p, a):
     seen = []
     p.wait_for(js, lambda s: len(seen) >= 10, keep=seen)
     p.take(modal)
-    p.step(1)
+    p.take(states)
+    last = p.step(1)
     m = p.wait_for(modal)
+    ps = p.wait_for(states, lambda s: s.step == last.step)
     logs = [l.msg for l in p.take(rosout) if "rejected" in l.msg]
     return {"sent": sent, "diag": values, "inputs_level": inputs_status.level, "inputs_message": inputs_status.message,
             "step": todict(resp), "joint_states_after": len(seen), "last_joint_state": todict(seen[-1]),
-            "modal": todict(m), "rosout_rejections": logs}
+            "modal": todict(m), "pad_states": todict(ps), "rosout_rejections": logs}
 
 
 def scenario_wrench_timeout(p, a):
@@ -414,60 +430,105 @@ def scenario_names(p, a):
     return {"endpoints": p.endpoints(1.5), "joint_state": todict(msg)}
 
 
+def brake_force(t, peak, ramp, hold, release):
+    """The clamp force of launch-scripts/brake_load_example.py at time t (its `force`)."""
+    if t < ramp:
+        return peak * t / ramp
+    if t < ramp + hold:
+        return peak
+    if t < ramp + hold + release:
+        return peak * (1.0 - (t - ramp - hold) / release)
+    return 0.0
+
+
 def scenario_brake_example(p, a):
-    """The part of launch-scripts/brake_load_example.py, on the wire: ramp the
-    pad normal forces on ALE nodes through ~/wrenches, hold, release, and read
-    the response (same topics, types and QoS as the rclpy script)."""
-    pads_in, pads_out = a["inboard"], a["outboard"]
-    peak, ramp, hold, release = a["peak_force"], a["ramp_s"], a["hold_s"], a["release_s"]
-    mu = a["mu"]
-    pub = p.writer(p.private("wrenches"), T.NodeWrenchArray)          # rclpy: create_publisher(NodeWrenchArray, '~/wrenches', 10)
-    modal = p.reader(p.private("modal_amplitudes"), T.ModalAmplitudes, depth=10)  # rclpy default: reliable, depth 10
+    """The part of launch-scripts/brake_load_example.py, on the wire: the same
+    topics, types and QoS as the rclpy script (a PadClampForces on
+    ~/pad_clamp_forces per tick; reading ~/pad_states, ~/modal_amplitudes and
+    /joint_states), with the script's force profile. Deterministic: the node
+    is paused (ros.start_paused) in simulated time, and each tick is the
+    script's tick period of simulated time — the command, its acceptance
+    (/diagnostics), then ~/step for the tick's steps — so the Rust side can
+    replay the same commands at the same steps in-process."""
+    pads = a["pads"]
+    peak, ramp, hold, release, after = a["peak_force"], a["ramp_s"], a["hold_s"], a["release_s"], a["after_s"]
+    rate, dt = a["rate_hz"], a["dt"]
+    steps_per_tick = round(1.0 / (rate * dt))
+    pub = p.writer(p.private("pad_clamp_forces"), T.PadClampForces)     # rclpy: create_publisher(PadClampForces, '~/pad_clamp_forces', 10)
+    states = p.reader(p.private("pad_states"), T.PadStates, depth=10)    # rclpy default: reliable, volatile, depth 10
+    modal = p.reader(p.private("modal_amplitudes"), T.ModalAmplitudes, depth=10)
     js = p.reader("/joint_states", T.JointState, depth=10)
-    p.wait_matched(pub)
-    p.wait_matched(modal)
-    per_node = 1.0 / max(len(pads_in), 1)
-
-    def batch(force, stamp_ns):
-        ws = []
-        for j in pads_in:   # inboard pad pushes along -z, friction drags along -x (against the rotation)
-            ws.append(T.NodeWrench(kind=T.NODE_WRENCH_ALE, index=j, wrench=wrench(fx=-mu * force * per_node, fz=-force * per_node)))
-        for j in pads_out:  # outboard pad pushes along +z
-            ws.append(T.NodeWrench(kind=T.NODE_WRENCH_ALE, index=j, wrench=wrench(fx=-mu * force * per_node, fz=force * per_node)))
-        return T.NodeWrenchArray(header=T.Header(stamp=T.Time.from_nanos(stamp_ns)), wrenches=ws)
-
+    for e in (pub, states, modal, js):
+        p.wait_matched(e)
+    p.set_paused(True)  # already paused: a no-op that makes sure the services are up
     log = []
-    last_modal = None
-    t0 = time.time()
-    total = ramp + hold + release
-    sent = 0
-    while True:
-        t = time.time() - t0
-        if t > total + 0.2:
-            break
-        if t < ramp:
-            f = peak * t / ramp
-        elif t < ramp + hold:
-            f = peak
-        elif t < total:
-            f = peak * max(0.0, 1.0 - (t - ramp - hold) / release)
-        else:
-            f = 0.0
-        stamp = time.time_ns()
-        pub.write(batch(f, stamp)); sent += 1
-        for m in modal.take(100):
-            last_modal = m
-            log.append({"t": t, "force": f, "step": m.step, "input_stamp": m.input_stamp.to_nanos(),
-                        "max_abs_q_ale": max((abs(x) for x in m.q_ale), default=0.0)})
-        time.sleep(0.01)
-    pub.write(batch(0.0, time.time_ns()))
-    time.sleep(0.3)
-    for m in modal.take(100):
-        last_modal = m
-    last_js = p.wait_for(js)
-    values, _ = p.wait_diag(lambda v: int(v.get("accepted_wrench_array", 0)) >= sent)
-    return {"sent": sent, "log": log, "last_modal": todict(last_modal) if last_modal else None,
-            "last_joint_state": todict(last_js), "diag": values}
+    accepted = 0
+    ticks = int(round((ramp + hold + release + after) * rate))
+    for tick in range(ticks + 1):
+        t = tick / rate
+        f = brake_force(t, peak, ramp, hold, release)
+        stamp = T.Time(sec=1000 + tick, nanosec=tick)  # distinct per tick: echoed as input_stamp
+        pub.write(T.PadClampForces(header=T.Header(stamp=stamp), pad=list(pads), clamp_force=[f] * len(pads)))
+        accepted += 1
+        p.wait_diag(lambda v: int(v.get("accepted_pad_clamp_forces", 0)) >= accepted)
+        resp = p.step(steps_per_tick)
+        st = p.wait_for(states, lambda s: s.step == resp.step)
+        m = p.wait_for(modal, lambda s: s.step == resp.step)
+        stamp_ns = round(resp.step * dt * 1e9)
+        j = p.wait_for(js, lambda s: s.header.stamp.to_nanos() == stamp_ns)
+        log.append({"t": t, "force": f, "step": resp.step, "input_stamp": m.input_stamp.to_nanos(), "sent_stamp": stamp.to_nanos(),
+                    "speed": j.velocity[0], "effort": j.effort[0], "position": j.position[0],
+                    "pad_states": todict(st), "q_ale": list(m.q_ale), "q_dot_ale": list(m.q_dot_ale),
+                    "max_abs_q_ale": max((abs(x) for x in m.q_ale), default=0.0)})
+    values, _ = p.wait_diag(lambda v: int(v.get("accepted_pad_clamp_forces", 0)) >= accepted)
+    return {"sent": accepted, "steps_per_tick": steps_per_tick, "log": log, "diag": values}
+
+
+def scenario_pad_clamp_force(p, a):
+    """Paused, simulated time: one std_msgs/Float64 on ~/pad_<j>/clamp_force,
+    N steps; the pad states, joint state and modal amplitudes at step N."""
+    states = p.reader(p.private("pad_states"), T.PadStates, depth=10000)
+    modal = p.reader(p.private("modal_amplitudes"), T.ModalAmplitudes, depth=10000)
+    js = p.reader("/joint_states", T.JointState, depth=10000)
+    for r in (states, modal, js):
+        p.wait_matched(r)
+    p.set_paused(True)
+    w = p.writer(p.private(f"pad_{a['pad']}/clamp_force"), T.Float64)
+    p.wait_matched(w)
+    w.write(T.Float64(data=a["force"]))
+    p.wait_diag(lambda v: int(v.get("accepted_pad_clamp_force", 0)) >= 1)
+    resp = p.step(a["steps"])
+    st = p.wait_for(states, lambda s: s.step == resp.step)
+    m = p.wait_for(modal, lambda s: s.step == resp.step)
+    j = p.wait_for(js, lambda s: s.header.stamp.to_nanos() == round(resp.step * a["dt"] * 1e9))
+    values, _ = p.wait_diag(lambda v: True)
+    return {"step": todict(resp), "pad_states": todict(st), "modal": todict(m),
+            "joint_state": todict(j), "diag": values}
+
+
+def scenario_tool_feed(p, a):
+    """Paused, simulated time, a scene with a tool: bad feeds (rejected,
+    counted), then one good feed on ~/tool_feed and N steps; the tool state
+    and modal amplitudes at step N; the endpoints."""
+    tool = p.reader(p.private("tool_state"), T.ToolState, depth=10000)
+    modal = p.reader(p.private("modal_amplitudes"), T.ModalAmplitudes, depth=10000)
+    for r in (tool, modal):
+        p.wait_matched(r)
+    p.set_paused(True)
+    w = p.writer(p.private("tool_feed"), T.Float64)
+    p.wait_matched(w)
+    bad = a["bad"]
+    for x in bad:
+        w.write(T.Float64(data=float(x)))
+    p.wait_diag(lambda v: int(v.get("rejected_total", 0)) >= len(bad))
+    w.write(T.Float64(data=a["feed"]))
+    p.wait_diag(lambda v: int(v.get("accepted_tool_feed", 0)) >= 1)
+    resp = p.step(a["steps"])
+    t = p.wait_for(tool, lambda s: s.step == resp.step)
+    m = p.wait_for(modal, lambda s: s.step == resp.step)
+    values, _ = p.wait_diag(lambda v: True)
+    return {"step": todict(resp), "tool_state": todict(t), "modal": todict(m), "diag": values,
+            "endpoints": p.endpoints(1.0)}
 
 
 def scenario_record_bag(p, a):
@@ -482,7 +543,7 @@ def scenario_record_bag(p, a):
 
     store = get_typestore(Stores.ROS2_JAZZY)
     msg_dir = a["msg_dir"]
-    for name in ("ModalAmplitudes",):
+    for name in ("ModalAmplitudes", "PadStates"):
         with open(os.path.join(msg_dir, name + ".msg")) as f:
             store.register(get_types_from_msg(f.read(), f"annular_plate/msg/{name}"))
     topics = [
@@ -490,6 +551,7 @@ def scenario_record_bag(p, a):
         ("/tf", T.TFMessage, "tf2_msgs/msg/TFMessage", {}),
         ("/tf_static", T.TFMessage, "tf2_msgs/msg/TFMessage", {"transient_local": True}),
         (p.private("modal_amplitudes"), T.ModalAmplitudes, "annular_plate/msg/ModalAmplitudes", {}),
+        (p.private("pad_states"), T.PadStates, "annular_plate/msg/PadStates", {}),
         ("/diagnostics", T.DiagnosticArray, "diagnostic_msgs/msg/DiagnosticArray", {}),
         ("/clock", T.Clock, "rosgraph_msgs/msg/Clock", {}),
     ]

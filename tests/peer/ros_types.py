@@ -179,6 +179,40 @@ class NodeWrenchArray(IdlStruct, typename="annular_plate::msg::dds_::NodeWrenchA
     wrenches: sequence[NodeWrench] = field(default_factory=list)
 
 
+@dataclass
+class PadClampForces(IdlStruct, typename="annular_plate::msg::dds_::PadClampForces_"):
+    header: Header = field(default_factory=Header)
+    pad: sequence[uint32] = field(default_factory=list)
+    clamp_force: sequence[float64] = field(default_factory=list)
+
+
+@dataclass
+class PadStates(IdlStruct, typename="annular_plate::msg::dds_::PadStates_"):
+    header: Header = field(default_factory=Header)
+    step: uint64 = 0
+    sim_time: float64 = 0.0
+    clamp_force: sequence[float64] = field(default_factory=list)
+    normal_force: sequence[float64] = field(default_factory=list)
+    friction_force: sequence[float64] = field(default_factory=list)
+    friction_torque: sequence[float64] = field(default_factory=list)
+    contact_pad: sequence[uint32] = field(default_factory=list)
+    contact_ale_node: sequence[uint32] = field(default_factory=list)
+    contact_normal_top: sequence[float64] = field(default_factory=list)
+    contact_normal_bottom: sequence[float64] = field(default_factory=list)
+    contact_friction: sequence[float64] = field(default_factory=list)
+
+
+@dataclass
+class ToolState(IdlStruct, typename="annular_plate::msg::dds_::ToolState_"):
+    header: Header = field(default_factory=Header)
+    step: uint64 = 0
+    sim_time: float64 = 0.0
+    feed_rate: float64 = 0.0
+    tip_z: float64 = 0.0
+    chip_thickness: float64 = 0.0
+    feed_force: float64 = 0.0
+
+
 # ---- services -------------------------------------------------------------------
 # With the default "enhanced" service mapping (rmw_fastrtps) the request is
 # the bare request struct; the reply correlates through an inline QoS the

@@ -277,34 +277,51 @@ impl LoadModels {
     /// Check and apply a pad clamp force (`pad` 0-based).
     pub fn set_clamp_force(&self, commands: &mut LoadCommands, pad: usize, newtons: f64, limits: &LimitsConfig) -> Result<(), LoadCommandError> {
         let count = self.pads.as_ref().map_or(0, |p| p.pad_count());
-        if pad >= count {
-            return Err(LoadCommandError::NoSuchPad { index: pad + 1, count });
-        }
-        let what = || format!("pad_{} clamp force", pad + 1);
-        if !newtons.is_finite() {
-            return Err(InputError::NonFinite { what: what(), value: newtons }.into());
-        }
-        if newtons < 0.0 || newtons > limits.max_force {
-            return Err(InputError::Absurd { what: format!("{} (must lie in [0, limits.max_force])", what()), value: newtons, limit: limits.max_force }.into());
-        }
+        check_clamp_force(pad, count, newtons, limits.max_force)?;
         commands.clamp_force[pad] = newtons;
         Ok(())
     }
 
     /// Check and apply the tool feed rate (m/s, towards −z; negative retracts).
     pub fn set_feed_rate(&self, commands: &mut LoadCommands, rate: f64) -> Result<(), LoadCommandError> {
-        if self.tool.is_none() {
-            return Err(LoadCommandError::NoTool);
-        }
-        if !rate.is_finite() {
-            return Err(InputError::NonFinite { what: "tool feed rate".into(), value: rate }.into());
-        }
-        if rate.abs() > crate::config::MAX_TOOL_FEED_RATE {
-            return Err(InputError::Absurd { what: "tool feed rate".into(), value: rate, limit: crate::config::MAX_TOOL_FEED_RATE }.into());
-        }
+        check_feed_rate(self.tool.is_some(), rate)?;
         commands.feed_rate = rate;
         Ok(())
     }
+}
+
+/// The rule for a clamp force command on pad `pad` (0-based) of a scene with
+/// `count` pads: the pad exists, the force is finite and in [0, `max_force`].
+/// Shared by [`LoadModels::set_clamp_force`] and the ROS node's input checks,
+/// so both refuse the same commands for the same reason.
+pub fn check_clamp_force(pad: usize, count: usize, newtons: f64, max_force: f64) -> Result<(), LoadCommandError> {
+    if pad >= count {
+        return Err(LoadCommandError::NoSuchPad { index: pad + 1, count });
+    }
+    let what = || format!("pad_{} clamp force", pad + 1);
+    if !newtons.is_finite() {
+        return Err(InputError::NonFinite { what: what(), value: newtons }.into());
+    }
+    if !(0.0..=max_force).contains(&newtons) {
+        return Err(InputError::Absurd { what: format!("{} (must lie in [0, limits.max_force])", what()), value: newtons, limit: max_force }.into());
+    }
+    Ok(())
+}
+
+/// The rule for a tool feed rate command (m/s): the scene has a tool, the
+/// rate is finite and at most [`MAX_TOOL_FEED_RATE`](crate::config::MAX_TOOL_FEED_RATE)
+/// in magnitude. Shared like [`check_clamp_force`].
+pub fn check_feed_rate(has_tool: bool, rate: f64) -> Result<(), LoadCommandError> {
+    if !has_tool {
+        return Err(LoadCommandError::NoTool);
+    }
+    if !rate.is_finite() {
+        return Err(InputError::NonFinite { what: "tool feed rate".into(), value: rate }.into());
+    }
+    if rate.abs() > crate::config::MAX_TOOL_FEED_RATE {
+        return Err(InputError::Absurd { what: "tool feed rate".into(), value: rate, limit: crate::config::MAX_TOOL_FEED_RATE }.into());
+    }
+    Ok(())
 }
 
 #[cfg(test)]
