@@ -202,13 +202,16 @@ fn pad_friction_brakes_the_joint_with_two_mu_n_r() {
     sim.step().unwrap();
     // The stiff drive holds the speed with the friction torque.
     assert!((sim.joint().effort - 2.0 * mu * clamp * r).abs() < 1e-3 * 2.0 * mu * clamp * r, "{:?}", sim.joint());
-    // A torque-limited drive is slowed: J Ω̇ = τ_max − 2μNr.
+    // A torque-limited drive is slowed while sliding: J Ω̇ = τ_max − 2μNr (4 kN·m
+    // against 4.3 kN·m: 2.7 rad/s less per ms, the disc keeps sliding; a limit
+    // that let it stop within the step ends the step at rest instead —
+    // tests/scene_brake_bench.rs).
     let mut limited = c;
-    limited.joint.max_torque = Some(1000.0);
+    limited.joint.max_torque = Some(4000.0);
     let mut sim = Simulation::new(limited).unwrap();
     let j = sim.scene().polar_inertia;
     sim.step().unwrap();
-    let expected = (1000.0 - 2.0 * mu * clamp * r) / j;
+    let expected = (4000.0 - 2.0 * mu * clamp * r) / j;
     assert!((sim.state().acceleration - expected).abs() < 1e-6 * expected.abs(), "{} vs {expected}", sim.state().acceleration);
 }
 

@@ -8,8 +8,31 @@
 //! braking torques above the limit really slow the plate:
 //! J_zz dΩ/dt = τ_drive + τ_loads. (The elastic coordinates do not enter the
 //! axial equation at first order: C_r and J₁ have no z–z part.)
+//!
+//! Pad friction τ_f(Ω) = −Σ C tanh(Ω s), regularised over a band of a few
+//! mrad/s around standstill, would make this explicit update jump across the
+//! band and chatter through zero. When a step starts in or would cross that
+//! band, the drive solves J_zz (Ω₁ − Ω₀)/h = τ_drive + τ_other + τ_f(Ω₁) instead
+//! (backward Euler in the friction; monotone, so bisection): the plate comes
+//! to rest. Elsewhere the update is the explicit one, unchanged.
 
 use crate::config::JointConfig;
+
+/// One friction contribution to the axial torque: τ(Ω) = −capacity · tanh(Ω · slope).
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct FrictionTorque {
+    /// N·m.
+    pub capacity: f64,
+    /// s/rad: the inverse width of the regularisation band.
+    pub slope: f64,
+}
+
+fn friction_torque(friction: &[FrictionTorque], speed: f64) -> f64 {
+    friction.iter().map(|f| -f.capacity * (speed * f.slope).tanh()).sum()
+}
+
+/// Beyond |Ω · slope| of this the friction is fully developed (tanh = 1 − 1e-17).
+const BAND: f64 = 20.0;
 
 /// Joint acceleration and drive torque held over one (sub)step.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -19,7 +42,8 @@ pub struct DriveStep {
 }
 
 /// The drive law for a step of length h from speed Ω towards the command.
-pub fn drive(joint: &JointConfig, polar_inertia: f64, speed: f64, command: f64, load_torque: f64, h: f64) -> DriveStep {
+/// `load_torque` includes the friction `friction` at Ω.
+pub fn drive(joint: &JointConfig, polar_inertia: f64, speed: f64, command: f64, load_torque: f64, friction: &[FrictionTorque], h: f64) -> DriveStep {
     let a_max = joint.max_acceleration;
     let wanted = ((command - speed) / h).clamp(-a_max, a_max);
     let needed = polar_inertia * wanted - load_torque;
@@ -27,7 +51,30 @@ pub fn drive(joint: &JointConfig, polar_inertia: f64, speed: f64, command: f64, 
         None => DriveStep { acceleration: wanted, effort: needed },
         Some(limit) => {
             let effort = needed.clamp(-limit, limit);
-            DriveStep { acceleration: (effort + load_torque) / polar_inertia, effort }
+            let explicit = (effort + load_torque) / polar_inertia;
+            let end = speed + h * explicit;
+            let in_band = |w: f64| friction.iter().any(|f| (w * f.slope).abs() < BAND);
+            if friction.is_empty() || !(in_band(speed) || in_band(end) || end * speed < 0.0) {
+                return DriveStep { acceleration: explicit, effort };
+            }
+            // g(w) = J (w − Ω)/h − effort − τ_other − τ_f(w) rises strictly in w;
+            // τ_f ∈ [−C, C] brackets the root.
+            let other = load_torque - friction_torque(friction, speed);
+            let capacity: f64 = friction.iter().map(|f| f.capacity).sum();
+            let g = |w: f64| polar_inertia * (w - speed) / h - effort - other - friction_torque(friction, w);
+            let (mut lo, mut hi) = (speed + h * (effort + other - capacity) / polar_inertia, speed + h * (effort + other + capacity) / polar_inertia);
+            for _ in 0..100 {
+                let mid = 0.5 * (lo + hi);
+                if mid == lo || mid == hi {
+                    break;
+                }
+                if g(mid) > 0.0 {
+                    hi = mid;
+                } else {
+                    lo = mid;
+                }
+            }
+            DriveStep { acceleration: (0.5 * (lo + hi) - speed) / h, effort }
         }
     }
 }
@@ -42,10 +89,10 @@ mod tests {
 
     #[test]
     fn stiff_drive_reaches_command_within_acceleration_limit() {
-        let d = drive(&joint(None), 2.0, 0.0, 1.0, 0.0, 1e-3);
+        let d = drive(&joint(None), 2.0, 0.0, 1.0, 0.0, &[], 1e-3);
         assert_eq!(d.acceleration, 10.0);
         assert_eq!(d.effort, 20.0);
-        let d = drive(&joint(None), 2.0, 0.999_995, 1.0, -3.0, 1e-3);
+        let d = drive(&joint(None), 2.0, 0.999_995, 1.0, -3.0, &[], 1e-3);
         assert!((d.acceleration - 0.005).abs() < 1e-9);
         assert!((d.effort - (2.0 * 0.005 + 3.0)).abs() < 1e-9);
     }
@@ -53,8 +100,29 @@ mod tests {
     #[test]
     fn torque_limited_drive_is_slowed_by_a_braking_torque() {
         // Holding speed against −50 N·m needs 50 N·m; the drive has 20.
-        let d = drive(&joint(Some(20.0)), 2.0, 5.0, 5.0, -50.0, 1e-3);
+        let d = drive(&joint(Some(20.0)), 2.0, 5.0, 5.0, -50.0, &[], 1e-3);
         assert_eq!(d.effort, 20.0);
         assert!((d.acceleration - (-30.0 / 2.0)).abs() < 1e-12);
+    }
+
+    #[test]
+    fn friction_above_the_torque_limit_brings_the_plate_to_rest_without_reversing_it() {
+        // 2 kN·m of friction (band 1e-2 rad/s) against a 1.5 kN·m drive: explicit
+        // Euler jumps between ±3 rad/s; solved at the step's end the plate stops.
+        let (j, h) = (0.117, 1e-3);
+        let friction = [FrictionTorque { capacity: 2000.0, slope: 100.0 }];
+        let mut speed: f64 = 25.0;
+        let mut history = vec![];
+        for _ in 0..200 {
+            let load = friction_torque(&friction, speed);
+            let d = drive(&joint(Some(1500.0)), j, speed, 25.0, load, &friction, h);
+            speed += d.acceleration * h;
+            history.push(speed);
+        }
+        assert!(history.windows(2).all(|w| w[1] <= w[0] + 1e-12), "not monotone");
+        let last = *history.last().unwrap();
+        // At rest the drive's 1.5 kN·m is held by static-like friction: tanh(Ω s) = 0.75.
+        let expected = (1500.0f64 / 2000.0).atanh() / 100.0;
+        assert!((last - expected).abs() < 1e-9, "{last} vs {expected}");
     }
 }

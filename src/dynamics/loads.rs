@@ -38,6 +38,7 @@ pub struct StepLoads {
     pub plate_frame: Vec<f64>,
     /// Torque of all node wrenches about the axis, N·m.
     pub axial_torque: f64,
+
 }
 
 impl StepLoads {

@@ -178,7 +178,7 @@ impl Stepper {
             models.evaluate(&scene.ale_nodes, &v.q_ale, &v.q_dot_ale, chi_mid, state.speed, &inputs.commands, tool_force, &mut self.model_wrenches);
         }
         node_loads(scene, inputs, &self.model_wrenches, &self.views.q_ale, &self.views.q_lagrange, &mut self.loads);
-        let d = drive(&scene.joint, scene.polar_inertia, state.speed, inputs.speed_command, self.loads.axial_torque, h);
+        let d = drive(&scene.joint, scene.polar_inertia, state.speed, inputs.speed_command, self.loads.axial_torque, &self.model_wrenches.friction, h);
         let (speed0, alpha) = (state.speed, d.acceleration);
         let speed_mean = speed0 + 0.5 * alpha * h;
         let chi0 = state.chi;

@@ -28,6 +28,7 @@ pub use pad::{ContactForces, PadContactPoint, Pads, SurfaceKinematics};
 pub use pitch_link::PitchLinks;
 pub use tool::{Tool, ToolState, ToolStep};
 
+use crate::dynamics::joint::FrictionTorque;
 use super::scene::NodeFrame;
 use super::wrench::{InputError, Wrench};
 use crate::config::{Config, LimitsConfig};
@@ -86,6 +87,10 @@ pub struct ModelWrenches {
     /// Per pad contact point (order of `Pads::contacts`): surface kinematics and forces.
     pub kinematics: Vec<SurfaceKinematics>,
     pub contact_forces: Vec<ContactForces>,
+    /// The pads' friction torque as a function of Ω, per contact point:
+    /// τ_f(Ω) = −Σ capacity · tanh(Ω · slope) (see [`Pads::friction_torque_terms`]),
+    /// so the joint can solve its step with the friction at the step's end.
+    pub friction: Vec<FrictionTorque>,
     closed: Vec<bool>,
 }
 
@@ -101,6 +106,7 @@ impl ModelWrenches {
             lagrange_follower: vec![false; n_lagrange],
             kinematics: vec![SurfaceKinematics::default(); contacts],
             contact_forces: vec![ContactForces::default(); contacts],
+            friction: vec![FrictionTorque::default(); contacts],
             closed: vec![false; contacts],
         }
     }
@@ -108,6 +114,7 @@ impl ModelWrenches {
     fn clear(&mut self) {
         self.ale.iter_mut().for_each(|w| *w = Wrench::default());
         self.lagrange.iter_mut().for_each(|w| *w = Wrench::default());
+        self.friction.iter_mut().for_each(|f| *f = FrictionTorque::default());
     }
 }
 
@@ -255,6 +262,7 @@ impl LoadModels {
                 *k = surface_kinematics(&ale_nodes[c.node], q_ale, q_dot_ale);
             }
             p.forces(&commands.clamp_force, kinematics, speed, contact_forces, closed);
+            p.friction_torque_terms(contact_forces, &mut out.friction);
             for (c, f) in p.contacts.iter().zip(contact_forces.iter()) {
                 let w = Pads::wrench(c, f);
                 let slot = &mut ale[c.node];

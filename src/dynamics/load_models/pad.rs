@@ -123,6 +123,17 @@ impl Pads {
         (speed * radius / FRICTION_REGULARISATION_SPEED).tanh()
     }
 
+    /// The friction torque as a function of Ω at the contact forces `forces`:
+    /// per contact τ = −μ (N_top + N_bottom) r · tanh(Ω r / v_reg).
+    pub fn friction_torque_terms(&self, forces: &[ContactForces], out: &mut [crate::dynamics::joint::FrictionTorque]) {
+        for ((c, f), t) in self.contacts.iter().zip(forces).zip(out.iter_mut()) {
+            *t = crate::dynamics::joint::FrictionTorque {
+                capacity: self.friction_coefficient * (f.top + f.bottom) * c.radius,
+                slope: c.radius / FRICTION_REGULARISATION_SPEED,
+            };
+        }
+    }
+
     /// Forces at every contact point (`out[c]` for `self.contacts[c]`) for the
     /// pads' clamp forces, the surface kinematics `kin[c]` under each contact
     /// and the joint speed Ω. `closed` is scratch of the contacts' length.
