@@ -296,9 +296,14 @@ def scenario_bad_inputs(p, a):
     js = p.reader("/joint_states", T.JointState, depth=10000)
     rosout = p.reader("/rosout", T.Log, depth=1000, transient_local=True)
     modal = p.reader(p.private("modal_amplitudes"), T.ModalAmplitudes, depth=10)
+    # Subscribe to /diagnostics before sending anything: with a 50 ms period the
+    # one message that reports the new rejections (level WARN) must not pass
+    # before this reader is matched.
+    diag_reader = p.diagnostics_reader()
     p.wait_for(js)
     p.wait_matched(modal)
     p.wait_matched(rosout)
+    p.wait_for(diag_reader)
     p.set_paused(True)
     nan, inf = float("nan"), float("inf")
     w1 = p.writer(p.private("ale_1/wrench"), T.WrenchStamped)
