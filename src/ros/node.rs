@@ -12,7 +12,7 @@ use super::messages::{
 use super::outputs::{static_transforms, FrameNames, OutputMessages, Shared};
 use super::params_service::{effective_parameters, ParamStore};
 use super::services::{self, Command};
-use super::settings::{split_ros_params, RosSettings};
+use super::settings::RosSettings;
 use super::sim_loop::{LoopSettings, Publishers, SimLoop};
 use super::{qos, topics};
 use crate::bag::recorder::{NodeBag, NodeTopics, Recorder, Sample};
@@ -90,13 +90,10 @@ impl NodeSetup {
         for p in args.params_for(names.node_name(), DEFAULT_NODE_NAME) {
             params.set_override(&p.name, &p.value).map_err(|e| config_error("-p", e))?;
         }
-        let (rest, ros) = split_ros_params(&params);
-        let mut ros_and_time = ros.clone();
-        if let Some(v) = params.get("use_sim_time") {
-            ros_and_time.set("use_sim_time", v.clone()).map_err(|e| config_error("use_sim_time", e))?;
-        }
-        let settings = RosSettings::from_params(&ros_and_time).map_err(|e| anyhow!("{scene_name}: {e}"))?;
-        let config = Config::from_params(&rest).map_err(|e| config_error(&scene_name, e))?;
+        // One parameter set for both: the config accepts the `ros.*` names, the
+        // node's settings read only theirs (and `use_sim_time`).
+        let settings = RosSettings::from_params(&params).map_err(|e| anyhow!("{scene_name}: {e}"))?;
+        let config = Config::from_params(&params).map_err(|e| config_error(&scene_name, e))?;
         Ok(NodeSetup { args, names, params, config, settings, scene: scene_name })
     }
 

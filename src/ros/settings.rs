@@ -3,9 +3,9 @@
 //!
 //! The config layer knows the names of the `ros.*` keys ([`ROS_KEYS`], so
 //! `modes` and `simulate` accept a scene file that carries them and refuse
-//! typos); their values are the node's business and are checked here. The
-//! node hands the rest to [`crate::config::Config::from_params`]
-//! ([`split_ros_params`]). Every rule below is listed in docs/ros.md.
+//! typos); their values are the node's business and are checked here, from
+//! the same parameter set the config reads. Every rule below is listed in
+//! docs/ros.md.
 
 use crate::config::{ParamValue, Params};
 use ros2_client::ServiceMapping;
@@ -60,18 +60,6 @@ impl std::error::Error for SettingsError {}
 
 fn err(key: &str, message: impl Into<String>) -> SettingsError {
     SettingsError { key: key.to_string(), message: message.into() }
-}
-
-/// Split a parameter set into (everything else, the `ros.*` keys).
-pub fn split_ros_params(params: &Params) -> (Params, Params) {
-    let mut rest = Params::new();
-    let mut ros = Params::new();
-    for (name, value) in params.iter() {
-        let target = if name.starts_with("ros.") { &mut ros } else { &mut rest };
-        // Names come from a valid parameter set, so `set` cannot refuse them.
-        let _ = target.set(name, value.clone());
-    }
-    (rest, ros)
 }
 
 fn frame_chars_ok(s: &str) -> bool {
@@ -235,10 +223,11 @@ mod tests {
     }
 
     #[test]
-    fn split_keeps_everything() {
+    fn reads_its_keys_from_the_whole_parameter_set() {
         let p = params(&[("ros.frame_prefix", "a"), ("plate.thickness", "0.01"), ("use_sim_time", "true")]);
-        let (rest, ros) = split_ros_params(&p);
-        assert_eq!(ros.len(), 1);
-        assert_eq!(rest.len(), 2);
+        let s = RosSettings::from_params(&p).unwrap();
+        assert_eq!(s.frame_prefix, "a");
+        assert!(s.sim_time);
+        assert!(crate::config::Config::from_params(&p).is_ok(), "the config accepts the ros.* names too");
     }
 }
