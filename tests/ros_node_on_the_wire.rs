@@ -47,7 +47,7 @@ fn pad_states_match(ps: &Value, sim: &Simulation, what: &str) {
     per_pad("friction_force", &|p| sim.pad_output(p).friction_force);
     per_pad("friction_torque", &|p| sim.pad_output(p).friction_torque);
     let contacts = sim.pad_contact_forces();
-    let pads = sim.scene().load_models.pads.as_ref().expect("the scene has pads");
+    let pads = sim.scene().load_models.find::<annular_plate::dynamics::load_models::Pads>().map(|(_, p)| p).expect("the scene has pads");
     let ints = |key: &str| -> Vec<u64> { ps[key].as_array().unwrap().iter().map(|x| x.as_u64().unwrap()).collect() };
     assert_eq!(ints("contact_pad"), pads.contacts.iter().map(|c| c.pad as u64 + 1).collect::<Vec<_>>(), "{what}: contact_pad");
     assert_eq!(ints("contact_ale_node"), pads.contacts.iter().map(|c| c.node as u64 + 1).collect::<Vec<_>>(), "{what}: contact_ale_node");
@@ -58,7 +58,7 @@ fn pad_states_match(ps: &Value, sim: &Simulation, what: &str) {
 
 /// μ, the friction radius and the drive's torque limit of the brake bench.
 fn brake_bench_data(sim: &Simulation) -> (f64, f64, f64) {
-    let pads = sim.scene().load_models.pads.as_ref().expect("the brake bench has pads");
+    let pads = sim.scene().load_models.find::<annular_plate::dynamics::load_models::Pads>().map(|(_, p)| p).expect("the brake bench has pads");
     let r = pads.contacts[0].radius;
     assert!(pads.contacts.iter().all(|c| (c.radius - r).abs() < 1e-12), "one friction radius");
     (pads.friction_coefficient, r, sim.config().joint.max_torque.expect("the bench's drive is torque limited"))

@@ -111,7 +111,8 @@ fn simulation_decays_below_and_grows_above_the_threshold_at_the_eigenvalue_rate(
             state.q[i] = 1e-5 * mode.vector[i].re / peak;
             state.q_dot[i] = 1e-5 * mode.vector[n + i].re / peak;
         }
-        sim.restore(state, 0);
+        state.rederive(sim.scene());
+        sim.restore(state);
         let pair = sim.scene().layout.pairs.iter().copied().max_by(|a, b| mode.vector[a.cos].norm().total_cmp(&mode.vector[b.cos].norm())).unwrap();
         let (mut ts, mut logs) = (Vec::new(), Vec::new());
         for _ in 0..3000 {

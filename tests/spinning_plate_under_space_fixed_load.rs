@@ -67,7 +67,8 @@ fn ale_frequencies_split_into_omega_plus_and_minus_k_omega() {
         // Free vibration from a Lagrangian displacement of the cos mode.
         let mut state = sim.state().clone();
         state.q[0] = 1e-5;
-        sim.restore(state, 0);
+        state.rederive(sim.scene());
+        sim.restore(state);
         let dt = sim.dt();
         let mut z = vec![];
         for _ in 0..8000 {

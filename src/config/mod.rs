@@ -439,6 +439,18 @@ pub struct LinksConfig {
     pub cyclic_phase: f64,
 }
 
+/// Space-fixed point springs (`springs.*`): a spring-damper between the
+/// ground and the plate under each listed ALE node, F_z = −k_s w − c_s ẇ.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct SpringsConfig {
+    /// ALE nodes, 0-based (`springs.ale_nodes` counts from 1).
+    pub nodes: Vec<usize>,
+    /// k_s, N/m.
+    pub stiffness: f64,
+    /// c_s, N·s/m.
+    pub damping: f64,
+}
+
 /// Initial elastic state (`initial.*`): Lagrangian amplitudes and rates at t = 0
 /// in `modes` order; empty: at rest.
 #[derive(Debug, Clone, PartialEq, Default, Serialize)]
@@ -465,6 +477,8 @@ pub struct Config {
     pub tool: Option<ToolConfig>,
     /// Swash-plate pitch links (`links.*`); `None`: no links.
     pub links: Option<LinksConfig>,
+    /// Space-fixed point springs (`springs.*`); `None`: no springs.
+    pub springs: Option<SpringsConfig>,
     /// Initial elastic state (`initial.*`).
     pub initial: InitialConfig,
 }
@@ -510,6 +524,7 @@ impl Default for Config {
             pads: None,
             tool: None,
             links: None,
+            springs: None,
             initial: InitialConfig::default(),
         }
     }

@@ -15,7 +15,7 @@ use super::raw::{positive, Reader};
 use super::{
     Boundary, Caliper, Config, ConfigError, Coordinates, InitialConfig, IntegratorKind, JointConfig, LimitsConfig, LinksConfig,
     LoadsConfig, NodePosition, NodesConfig, PadContact, PadsConfig, Params, PlateConfig, ReferenceConfig,
-    SimulationConfig, ToolConfig, WrenchConfig, MAX_TOOL_FEED_RATE,
+    SimulationConfig, SpringsConfig, ToolConfig, WrenchConfig, MAX_TOOL_FEED_RATE,
 };
 use super::error::Degeneracy;
 
@@ -89,6 +89,9 @@ const TOOL_KEYS: &[&str] = &[
 /// Swash-plate pitch links (paper 5.2).
 const LINKS_KEYS: &[&str] = &["links.lagrange_nodes", "links.mean_force", "links.cyclic_force", "links.cyclic_phase"];
 
+/// Space-fixed point springs (the load-model example of docs/architecture.md).
+const SPRINGS_KEYS: &[&str] = &["springs.ale_nodes", "springs.stiffness", "springs.damping"];
+
 /// Initial elastic state.
 const INITIAL_KEYS: &[&str] = &["initial.q", "initial.q_dot"];
 
@@ -105,6 +108,7 @@ const SECTIONS: &[&[&str]] = &[
     PADS_KEYS,
     TOOL_KEYS,
     LINKS_KEYS,
+    SPRINGS_KEYS,
     INITIAL_KEYS,
 ];
 
@@ -146,9 +150,10 @@ pub(super) fn config_from_params(params: &Params) -> Result<Config, ConfigError>
     let pads = read_pads(&r, &nodes, &limits)?;
     let tool = read_tool(&r, &plate, &nodes)?;
     let links = read_links(&r, &nodes, &limits)?;
+    let springs = read_springs(&r, &nodes)?;
     let initial = read_initial(&r, &plate, &limits)?;
 
-    Ok(Config { plate, nodes, loads, joint, reference, gravity, simulation, limits, pads, tool, links, initial })
+    Ok(Config { plate, nodes, loads, joint, reference, gravity, simulation, limits, pads, tool, links, springs, initial })
 }
 
 // ---- unknown keys ------------------------------------------------------------
@@ -663,6 +668,18 @@ fn read_links(r: &Reader, nodes: &NodesConfig, limits: &LimitsConfig) -> Result<
     let cyclic_force = at_most("links.cyclic_force", r.f64("links.cyclic_force", 0.0)?, limits.max_force)?;
     let cyclic_phase = r.f64("links.cyclic_phase", 0.0)?;
     Ok(Some(LinksConfig { nodes, mean_force, cyclic_force, cyclic_phase }))
+}
+
+fn read_springs(r: &Reader, nodes: &NodesConfig) -> Result<Option<SpringsConfig>, ConfigError> {
+    let numbers = r.i64_array("springs.ale_nodes", &[])?;
+    if numbers.is_empty() {
+        no_other_keys(r, SPRINGS_KEYS, "springs.ale_nodes")?;
+        return Ok(None);
+    }
+    let nodes = node_refs("springs.ale_nodes", &numbers, "ale", nodes.ale.len())?;
+    let stiffness = non_negative("springs.stiffness", r.f64("springs.stiffness", 0.0)?)?;
+    let damping = non_negative("springs.damping", r.f64("springs.damping", 0.0)?)?;
+    Ok(Some(SpringsConfig { nodes, stiffness, damping }))
 }
 
 fn read_initial(r: &Reader, plate: &PlateConfig, limits: &LimitsConfig) -> Result<InitialConfig, ConfigError> {

@@ -9,8 +9,8 @@
 //! q̄̇ = R q̇ + kΩ J q̄. k = 0 modes are invariant. Generalized forces
 //! transform like amplitudes (f̄ = R f), by virtual work.
 
-use super::scene::ModeLayout;
-use super::state::JointAngle;
+use super::angle::JointAngle;
+use super::layout::ModeLayout;
 
 /// (cos kχ, sin kχ) for k = 0..=k_max from the wrapped angle (Chebyshev recurrence
 /// re-anchored every 16 steps to keep round-off at the 1e-15 level).

@@ -13,20 +13,10 @@
 //! eq. (18), constant in frame A; Lagrangian ones act on the modes of (13).
 //! About the axis every wrench gives τ_z = x F_y − y F_x + M_z.
 
-use super::load_models::{LoadCommands, ModelWrenches};
+pub use super::commands::Inputs;
+use super::load_models::ModelWrenches;
 use super::scene::{NodeFrame, Scene};
 use super::wrench::Wrench;
-
-/// Inputs held over a step.
-#[derive(Debug, Clone, PartialEq, Default)]
-pub struct Inputs {
-    pub speed_command: f64,
-    /// The user's held wrenches (the load models' wrenches come on top).
-    pub ale: Vec<Wrench>,
-    pub lagrange: Vec<Wrench>,
-    /// Commands of the load models (pad clamp forces, tool feed).
-    pub commands: LoadCommands,
-}
 
 /// Generalized forces for one step, split by the frame they are constant in.
 #[derive(Debug, Clone, PartialEq, Default)]

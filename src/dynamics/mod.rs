@@ -4,13 +4,20 @@
 //! Model, state and stepper are kept apart: [`Scene`] (the plate model plus
 //! nodes, joint and effects) is immutable, [`State`] is plain data, and the
 //! [`Stepper`] borrows both and owns only scratch space allocated once.
-//! [`Simulation`] bundles them with the held inputs for the CLI and the node.
+//! [`Simulation`] bundles them with the settings and the held inputs for the
+//! CLI and the node. Inputs pass one contract ([`commands`]); load models
+//! plug in through the [`LoadModel`] trait ([`load_models`]).
 
 pub mod ale;
+pub mod angle;
+pub mod commands;
+pub mod error;
 pub mod integrators;
 pub mod joint;
+pub mod layout;
 pub mod load_models;
 pub mod loads;
+pub mod node_frame;
 pub mod scene;
 pub mod simulation;
 pub mod stability;
@@ -18,10 +25,12 @@ pub mod state;
 pub mod stepper;
 pub mod wrench;
 
-pub use load_models::{check_clamp_force, check_feed_rate, LoadCommandError, LoadCommands, LoadModelState, LoadModels, ModelWrenches};
+pub use commands::{check, check_batch, Checked, CheckedBatch, Command, InputRules};
+pub use error::{BatchError, Divergence, InputError, LoadCommandError, SimulationError, StepError};
+pub use load_models::{CommandRule, CommandSpec, LoadCommands, LoadModel, LoadModelState, LoadModels, ModelWrenches};
 pub use loads::Inputs;
 pub use scene::Scene;
-pub use simulation::{JointOutput, NodeOutput, PadOutput, Pose, Simulation, SimulationError, StepError, ToolOutput};
+pub use simulation::{JointOutput, NodeOutput, PadOutput, Pose, Simulation, ToolOutput};
 pub use state::{JointAngle, State};
-pub use stepper::{Stepper, StepperSettings, Views};
-pub use wrench::{InputError, NodeKind, Wrench};
+pub use stepper::{Stepper, StepperSettings};
+pub use wrench::{NodeKind, Wrench};

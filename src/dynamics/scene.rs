@@ -2,96 +2,13 @@
 //! node frames (with their mode shapes evaluated once), the joint drive, the
 //! reference-frame motion and the set of effects that motion needs.
 
-use crate::config::{Config, JointConfig, LimitsConfig, NodePosition};
-use crate::model::{PlateModel, ShapeValue};
-use std::f64::consts::TAU;
+use crate::config::{Config, JointConfig, LimitsConfig};
+use crate::model::PlateModel;
 
-use super::load_models::LoadModels;
-use super::wrench::NodeKind;
-
-/// A cos/sin mode pair with the same ⟨k, l⟩.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct ModePair {
-    pub k: u32,
-    pub cos: usize,
-    pub sin: usize,
-}
-
-/// Which modes are axisymmetric and which form pairs (indices into the mode table).
-#[derive(Debug, Clone, PartialEq, Default)]
-pub struct ModeLayout {
-    pub axisymmetric: Vec<usize>,
-    pub pairs: Vec<ModePair>,
-    pub k_max: u32,
-}
-
-impl ModeLayout {
-    pub fn new(model: &PlateModel) -> ModeLayout {
-        let mut layout = ModeLayout::default();
-        for (i, m) in model.modes().iter().enumerate() {
-            layout.k_max = layout.k_max.max(m.k);
-            match (m.k, m.partner) {
-                (0, _) => layout.axisymmetric.push(i),
-                (_, Some(j)) if m.shape == crate::model::AngularShape::Cos => layout.pairs.push(ModePair { k: m.k, cos: i, sin: j }),
-                _ => {}
-            }
-        }
-        layout
-    }
-}
-
-/// A node frame with the mode shapes evaluated at its point.
-#[derive(Debug, Clone, PartialEq)]
-pub struct NodeFrame {
-    pub kind: NodeKind,
-    pub radius: f64,
-    /// φ for Lagrangian nodes (plate frame), θ for ALE nodes (ALE frame), rad.
-    pub angle: f64,
-    /// Per mode: w_i, and the surface tilt (θ_x, θ_y) = (∂w_i/∂y, −∂w_i/∂x).
-    pub shapes: Vec<NodeShape>,
-    /// Per mode ∂w_i/∂φ (for the material velocity under an ALE point).
-    pub w_phi: Vec<f64>,
-    /// Undeformed position (r cos, r sin) in the parent frame, m.
-    xy: [f64; 2],
-}
-
-#[derive(Debug, Clone, Copy, PartialEq, Default)]
-pub struct NodeShape {
-    pub w: f64,
-    pub tilt: [f64; 2],
-}
-
-impl NodeFrame {
-    fn new(model: &PlateModel, kind: NodeKind, p: NodePosition) -> NodeFrame {
-        let radius = model.radius_at(p.radial);
-        let angle = p.angular * TAU;
-        let values: Vec<ShapeValue> = (0..model.n_modes()).map(|i| model.mode_shape(i, radius, angle)).collect();
-        NodeFrame {
-            kind,
-            radius,
-            angle,
-            shapes: values.iter().map(|s| NodeShape { w: s.w, tilt: s.tilt(radius, angle) }).collect(),
-            w_phi: values.iter().map(|s| s.w_phi).collect(),
-            xy: [radius * angle.cos(), radius * angle.sin()],
-        }
-    }
-
-    /// Position in the node's parent frame (undeformed).
-    pub fn position(&self) -> [f64; 3] {
-        [self.xy[0], self.xy[1], 0.0]
-    }
-
-    /// Deflection w and tilt at the node for amplitudes `q` in the node's own description.
-    pub fn deflection(&self, q: &[f64]) -> NodeShape {
-        let mut out = NodeShape::default();
-        for (s, &qi) in self.shapes.iter().zip(q) {
-            out.w += s.w * qi;
-            out.tilt[0] += s.tilt[0] * qi;
-            out.tilt[1] += s.tilt[1] * qi;
-        }
-        out
-    }
-}
+pub use super::layout::{ModeLayout, ModePair};
+use super::commands::InputRules;
+use super::load_models::{LoadModels, SceneNodes};
+pub use super::node_frame::{NodeFrame, NodeKind, NodeShape};
 
 /// The effects the reference motion switches on (DESIGN: only what a scene needs).
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
@@ -115,7 +32,7 @@ pub struct ReferenceMotion {
 }
 
 /// Everything the stepper needs besides the state and inputs.
-#[derive(Debug, Clone)]
+#[derive(Debug)]
 pub struct Scene {
     pub model: PlateModel,
     pub layout: ModeLayout,
@@ -129,6 +46,8 @@ pub struct Scene {
     pub polar_inertia: f64,
     /// Pads, tool, pitch links (paper section 5): only those the configuration gives.
     pub load_models: LoadModels,
+    /// The rules every input passes ([`commands`](super::commands)).
+    pub rules: InputRules,
 }
 
 impl Scene {
@@ -150,7 +69,8 @@ impl Scene {
             follower_loads: config.loads.follower,
         };
         let polar_inertia = model.body().inertia[2][2];
-        let load_models = LoadModels::new(config, &ale_nodes, &lagrange_nodes, &model.body().modal_mass);
+        let load_models = LoadModels::new(config, &SceneNodes { ale: &ale_nodes, lagrange: &lagrange_nodes, modal_mass: &model.body().modal_mass });
+        let rules = InputRules::new(&config.limits, ale_nodes.len(), lagrange_nodes.len(), &load_models);
         Scene {
             model,
             layout,
@@ -161,6 +81,7 @@ impl Scene {
             reference: ReferenceMotion { angular_velocity: w, specific_force },
             effects,
             polar_inertia,
+            rules,
             load_models,
         }
     }

@@ -1,29 +1,18 @@
-//! The facade the CLI and the ROS node drive: scene + state + stepper + held inputs.
+//! The facade the CLI and the ROS node drive: scene + state + stepper +
+//! settings + held inputs, with the outputs derived from the state.
 
-use crate::config::{Config, IntegratorKind};
-use crate::model::{ModelError, PlateModel};
-use thiserror::Error;
+use crate::config::{Config, Coordinates, IntegratorKind};
+use crate::model::PlateModel;
 
 use super::ale::{harmonics, lagrange_to_ale};
-use super::load_models::{LoadCommandError, LoadModels, ModelWrenches, Pads, Tool};
+use super::commands::{check, check_batch, Checked, CheckedBatch, Command};
+use super::error::{BatchError, InputError, LoadCommandError, SimulationError, StepError};
+use super::load_models::{ContactForces, LoadContext, ModelWrenches, PadScratch, Pads, PitchLinks, Tool};
 use super::loads::Inputs;
 use super::scene::{NodeFrame, Scene};
 use super::state::State;
 use super::stepper::{Stepper, StepperSettings};
-use super::wrench::{InputError, NodeKind, Wrench};
-
-#[derive(Debug, Error)]
-pub enum SimulationError {
-    #[error(transparent)]
-    Model(#[from] ModelError),
-    #[error("simulation.integrator = rk4 would need {needed} substeps per step of {step:e} s for the highest mode ({frequency_hz:.0} Hz) at {speed} rad/s (limit {limit}): use exponential or implicit_midpoint, or raise simulation.rate_hz / simulation.substeps")]
-    ExplicitTooCostly { needed: usize, limit: usize, step: f64, frequency_hz: f64, speed: f64 },
-    #[error("the pads (pads.contact_stiffness, pads.contact_damping) couple the modes at rates up to {rate:.0} 1/s, but simulation.integrator = {integrator} holds their forces over a substep of {step:e} s (h × rate = {:.2} > {limit}): use simulation.integrator: rk4, which evaluates the pads at every stage, or raise simulation.rate_hz / simulation.substeps", step * rate)]
-    PadsTooStiffForIntegrator { integrator: &'static str, rate: f64, step: f64, limit: f64 },
-}
-
-/// Largest h × (pad coupling rate) the integrators that hold the pad forces over a substep accept.
-pub const HELD_PAD_COUPLING_LIMIT: f64 = 0.5;
+use super::wrench::{NodeKind, Wrench};
 
 /// Forces of one pad at the current state (both faces, all its contact points).
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
@@ -50,15 +39,6 @@ pub struct ToolOutput {
     pub feed_force: f64,
     /// Commanded feed rate, m/s.
     pub feed_rate: f64,
-}
-
-/// A step that could not be taken; the state is left as it was before the step.
-#[derive(Debug, Clone, PartialEq, Error)]
-pub enum StepError {
-    #[error("the simulation diverged at t = {time} s: {detail}")]
-    Diverged { time: f64, detail: String },
-    #[error("rk4 would need {needed} substeps of a {step:e} s step (limit {limit}) at the current speed: use exponential or implicit_midpoint")]
-    ExplicitTooCostly { needed: usize, limit: usize, step: f64 },
 }
 
 /// The rotational joint at the axis: angle χ (unwrapped), speed Ω, drive torque.
@@ -104,12 +84,12 @@ pub struct NodeOutput {
 pub struct Simulation {
     config: Config,
     scene: Scene,
+    settings: StepperSettings,
     state: State,
     initial: State,
     stepper: Stepper,
     inputs: Inputs,
-    steps: u64,
-    /// The load models' wrenches at the current state (for the outputs).
+    /// The load models' wrenches at the current state (derived, for the outputs).
     model_outputs: ModelWrenches,
 }
 
@@ -117,63 +97,28 @@ impl Simulation {
     pub fn new(config: Config) -> Result<Simulation, SimulationError> {
         let model = PlateModel::new(&config.plate)?;
         let scene = Scene::new(&config, model);
-        let settings = StepperSettings {
-            integrator: config.simulation.integrator,
-            dt: 1.0 / config.simulation.rate_hz,
-            substeps: config.simulation.substeps,
-            rk4_step_limit: config.simulation.rk4_step_limit,
-        };
-        let stepper = Stepper::new(&scene, settings);
+        let settings = StepperSettings::from_config(&config);
+        let stepper = Stepper::new(&scene);
         if settings.integrator == IntegratorKind::Rk4 {
             let speed = config.joint.speed.abs();
-            let needed = stepper.rk4_substeps(&scene, stepper.h(), speed);
+            let needed = stepper.rk4_substeps(&scene, &settings, settings.h(), speed);
             if needed > super::integrators::rk4::MAX_SUBSTEPS {
                 let f_max = scene.model.modes().iter().map(|m| m.frequency_hz).fold(0.0, f64::max);
                 return Err(SimulationError::ExplicitTooCostly {
                     needed,
                     limit: super::integrators::rk4::MAX_SUBSTEPS,
-                    step: stepper.h(),
+                    step: settings.h(),
                     frequency_hz: f_max,
                     speed,
                 });
             }
         }
-        if scene.load_models.pads.is_some() && settings.integrator != IntegratorKind::Rk4 {
-            let lm = &scene.load_models;
-            let rate = lm.pad_stiffness_rate_sq.sqrt() + lm.pad_damping_rate;
-            let h = stepper.h();
-            if h * rate > HELD_PAD_COUPLING_LIMIT {
-                return Err(SimulationError::PadsTooStiffForIntegrator { integrator: settings.integrator.name(), rate, step: h, limit: HELD_PAD_COUPLING_LIMIT });
-            }
-        }
-        let n = scene.n_modes();
-        let mut initial = State::new(n, config.simulation.coordinates, config.joint.initial_position, config.joint.speed);
-        initial.load_models = scene.load_models.initial_state();
-        if !config.initial.q.is_empty() || !config.initial.q_dot.is_empty() {
-            // initial.* are Lagrangian; the state may be kept in ALE coordinates.
-            let mut q = config.initial.q.clone();
-            let mut q_dot = config.initial.q_dot.clone();
-            q.resize(n, 0.0);
-            q_dot.resize(n, 0.0);
-            if initial.coordinates == crate::config::Coordinates::Ale {
-                let mut harm = Vec::new();
-                harmonics(&initial.chi, scene.layout.k_max, &mut harm);
-                lagrange_to_ale(&scene.layout, &harm, initial.speed, &mut q, &mut q_dot);
-            }
-            initial.q = q;
-            initial.q_dot = q_dot;
-        }
-        let mut sim = Simulation {
-            state: initial.clone(),
-            initial,
-            stepper,
-            inputs: Inputs::default(),
-            steps: 0,
-            model_outputs: ModelWrenches::new(&scene),
-            scene,
-            config,
-        };
-        sim.reset();
+        scene.load_models.check_integrator(settings.integrator, settings.h())?;
+        let initial = initial_state(&config, &scene);
+        let mut inputs = Inputs::default();
+        reset_inputs(&config, &scene, &mut inputs);
+        let mut sim = Simulation { state: initial.clone(), initial, stepper, inputs, model_outputs: ModelWrenches::new(&scene), scene, settings, config };
+        sim.refresh_model_outputs();
         Ok(sim)
     }
 
@@ -185,6 +130,9 @@ impl Simulation {
     }
     pub fn scene(&self) -> &Scene {
         &self.scene
+    }
+    pub fn settings(&self) -> &StepperSettings {
+        &self.settings
     }
     pub fn state(&self) -> &State {
         &self.state
@@ -201,11 +149,11 @@ impl Simulation {
         self.state.time
     }
     pub fn step_count(&self) -> u64 {
-        self.steps
+        self.state.steps
     }
     /// The output step 1/rate_hz, s.
     pub fn dt(&self) -> f64 {
-        1.0 / self.config.simulation.rate_hz
+        self.settings.dt
     }
     pub fn n_ale_nodes(&self) -> usize {
         self.scene.ale_nodes.len()
@@ -217,96 +165,107 @@ impl Simulation {
     /// Back to t = 0 with the parameter file's speed and loads.
     pub fn reset(&mut self) {
         self.state.copy_from(&self.initial);
-        self.steps = 0;
-        self.inputs.speed_command = self.config.joint.speed;
-        let to_wrench = |w: &crate::config::WrenchConfig| Wrench { force: w.force, moment: w.moment };
-        self.inputs.ale = (0..self.n_ale_nodes()).map(|j| self.config.loads.ale.get(j).map(to_wrench).unwrap_or_default()).collect();
-        self.inputs.lagrange = (0..self.n_lagrange_nodes()).map(|j| self.config.loads.lagrange.get(j).map(to_wrench).unwrap_or_default()).collect();
-        LoadModels::reset_commands(&self.config, &mut self.inputs.commands);
-        self.stepper.sync_views(&self.scene, &self.state);
+        reset_inputs(&self.config, &self.scene, &mut self.inputs);
         self.refresh_model_outputs();
     }
 
-    /// Evaluate the load models at the current state for the outputs (the
-    /// tool's force is the one held over the last substep).
+    /// Evaluate the load models at the current state for the outputs (a
+    /// model with memory reports the force it held over the last substep).
     fn refresh_model_outputs(&mut self) {
         let lm = &self.scene.load_models;
         if lm.is_empty() {
             return;
         }
-        let views = self.stepper.views();
-        let tool_force = self.state.load_models.tool.as_ref().map_or(0.0, |t| t.force);
-        lm.evaluate(&self.scene.ale_nodes, &views.q_ale, &views.q_dot_ale, self.state.chi.angle, self.state.speed, &self.inputs.commands, tool_force, &mut self.model_outputs);
+        let (q_ale, q_dot_ale) = self.state.ale();
+        let ctx = LoadContext { ale_nodes: &self.scene.ale_nodes, lagrange_nodes: &self.scene.lagrange_nodes, q_ale, q_dot_ale, chi: self.state.chi.angle, speed: self.state.speed };
+        lm.evaluate(&ctx, &self.state.load_models, &self.inputs.commands, &mut self.model_outputs);
     }
 
-    /// Replace the state (e.g. a checkpoint taken with `state().clone()`).
-    pub fn restore(&mut self, state: State, steps: u64) {
+    /// Replace the state (a checkpoint taken with `state().clone()`, stepped
+    /// on from exactly where it was). After editing its amplitudes by hand,
+    /// call [`State::rederive`] first.
+    pub fn restore(&mut self, state: State) {
         assert_eq!(state.q.len(), self.scene.n_modes());
         self.state = state;
-        self.steps = steps;
-        self.stepper.sync_views(&self.scene, &self.state);
         self.refresh_model_outputs();
     }
 
     /// Advance one output step (1/rate_hz). On error the state is unchanged.
     pub fn step(&mut self) -> Result<(), StepError> {
-        self.stepper.step(&self.scene, &mut self.state, &self.inputs)?;
-        self.steps += 1;
-        // Time as a count of steps: no drift from repeated addition.
-        self.state.time = self.steps as f64 * self.dt();
+        self.stepper.step(&self.scene, &self.settings, &mut self.state, &self.inputs)?;
         self.refresh_model_outputs();
         Ok(())
     }
 
-    pub fn set_speed_command(&mut self, omega: f64) -> Result<(), InputError> {
-        if !omega.is_finite() {
-            return Err(InputError::NonFinite { what: "speed command".into(), value: omega });
+    // ---- inputs: one contract (dynamics::commands) ---------------------------
+
+    /// Check a command against the scene's rules (nothing is held yet).
+    pub fn check(&self, command: Command) -> Result<Checked, InputError> {
+        check(&self.scene.rules, command)
+    }
+
+    /// Check a batch whole (nothing is held yet).
+    pub fn check_batch(&self, commands: impl IntoIterator<Item = Command>) -> Result<CheckedBatch, BatchError> {
+        check_batch(&self.scene.rules, commands)
+    }
+
+    /// Hold a checked command until replaced.
+    pub fn apply(&mut self, checked: Checked) {
+        let load = matches!(checked.command(), Command::Load { .. });
+        self.inputs.apply(checked);
+        if load {
+            self.refresh_model_outputs();
         }
-        if omega.abs() > self.config.limits.max_speed {
-            return Err(InputError::Absurd { what: "speed command".into(), value: omega, limit: self.config.limits.max_speed });
+    }
+
+    /// Hold every command of a checked batch.
+    pub fn apply_batch(&mut self, batch: &CheckedBatch) {
+        self.inputs.apply_batch(batch);
+        if batch.iter().any(|c| matches!(c.command(), Command::Load { .. })) {
+            self.refresh_model_outputs();
         }
-        self.inputs.speed_command = omega;
+    }
+
+    /// Check and hold one command.
+    pub fn command(&mut self, command: Command) -> Result<(), InputError> {
+        let checked = self.check(command)?;
+        self.apply(checked);
         Ok(())
+    }
+
+    pub fn set_speed_command(&mut self, omega: f64) -> Result<(), InputError> {
+        self.command(Command::Speed(omega))
     }
 
     /// Hold a wrench on ALE node `node` (0-based) until replaced.
     pub fn set_ale_wrench(&mut self, node: usize, wrench: Wrench) -> Result<(), InputError> {
-        self.set_wrench(NodeKind::Ale, node, wrench)
+        self.command(Command::Wrench { kind: NodeKind::Ale, node, wrench })
     }
 
     /// Hold a wrench on Lagrangian node `node` (0-based) until replaced.
     pub fn set_lagrange_wrench(&mut self, node: usize, wrench: Wrench) -> Result<(), InputError> {
-        self.set_wrench(NodeKind::Lagrange, node, wrench)
-    }
-
-    fn set_wrench(&mut self, kind: NodeKind, node: usize, wrench: Wrench) -> Result<(), InputError> {
-        let limits = &self.config.limits;
-        let list = match kind {
-            NodeKind::Ale => &mut self.inputs.ale,
-            NodeKind::Lagrange => &mut self.inputs.lagrange,
-        };
-        let count = list.len();
-        let slot = list.get_mut(node).ok_or(InputError::NoSuchNode { kind, index: node + 1, count })?;
-        wrench.validate(|| format!("{}_{} wrench", kind.name(), node + 1), limits.max_force, limits.max_moment)?;
-        *slot = wrench;
-        Ok(())
+        self.command(Command::Wrench { kind: NodeKind::Lagrange, node, wrench })
     }
 
     // ---- load models (paper section 5; docs/scenes.md) ----------------------
 
+    fn pads(&self) -> Option<(usize, &Pads)> {
+        self.scene.load_models.find::<Pads>()
+    }
+
     /// Number of brake pads (`pads.*`; 0 without pads).
     pub fn pad_count(&self) -> usize {
-        self.scene.load_models.pads.as_ref().map_or(0, Pads::pad_count)
+        self.pads().map_or(0, |(_, p)| p.pad_count())
     }
 
     /// Whether the scene has a lathe tool (`tool.*`).
     pub fn has_tool(&self) -> bool {
-        self.scene.load_models.tool.is_some()
+        self.scene.load_models.find::<Tool>().is_some()
     }
 
     /// Number of pitch links (`links.*`; 0 without links).
     pub fn link_count(&self) -> usize {
-        self.scene.load_models.links.as_ref().map_or(0, |l| l.nodes.len())
+        self.scene.load_models.find::<PitchLinks>().map_or(0, |(_, l)| l.nodes.len())
     }
 
     /// Hold the clamp force of pad `pad` (0-based), N: the force each disc face
@@ -314,22 +273,22 @@ impl Simulation {
     /// held commands unchanged) if the pad does not exist or the force is not
     /// finite, negative or above `limits.max_force`.
     pub fn set_pad_clamp_force(&mut self, pad: usize, newtons: f64) -> Result<(), LoadCommandError> {
-        self.scene.load_models.set_clamp_force(&mut self.inputs.commands, pad, newtons, &self.config.limits)?;
-        self.refresh_model_outputs();
-        Ok(())
+        let Some((model, _)) = self.pads() else { return Err(LoadCommandError::NoSuchPad { index: pad + 1, count: 0 }) };
+        self.command(Command::Load { model, command: 0, instance: pad, value: newtons }).map_err(LoadCommandError::from_input)
     }
 
     /// Hold the tool feed rate, m/s (towards −z; negative retracts). Refused if
     /// the scene has no tool or the rate is not finite or beyond 1 m/s.
     pub fn set_tool_feed(&mut self, rate: f64) -> Result<(), LoadCommandError> {
-        self.scene.load_models.set_feed_rate(&mut self.inputs.commands, rate)
+        let Some((model, _)) = self.scene.load_models.find::<Tool>() else { return Err(LoadCommandError::NoTool) };
+        self.command(Command::Load { model, command: 0, instance: 0, value: rate }).map_err(LoadCommandError::from_input)
     }
 
     /// Forces of pad `pad` (0-based) at the current state.
     pub fn pad_output(&self, pad: usize) -> PadOutput {
-        let Some(p) = &self.scene.load_models.pads else { return PadOutput::default() };
-        let mut out = PadOutput { clamp_force: self.inputs.commands.clamp_force[pad], ..PadOutput::default() };
-        for (c, f) in p.contacts.iter().zip(&self.model_outputs.contact_forces).filter(|(c, _)| c.pad == pad) {
+        let Some((model, p)) = self.pads() else { return PadOutput::default() };
+        let mut out = PadOutput { clamp_force: self.inputs.commands.values[model][pad], ..PadOutput::default() };
+        for (c, f) in p.contacts.iter().zip(self.pad_contact_forces()).filter(|(c, _)| c.pad == pad) {
             out.normal_force += 0.5 * (f.top + f.bottom);
             out.friction_force += f.tangential;
             out.friction_torque += c.radius * f.tangential;
@@ -338,19 +297,25 @@ impl Simulation {
     }
 
     /// Forces at every pad contact point (order of `pads.ale_nodes`) at the current state.
-    pub fn pad_contact_forces(&self) -> &[super::load_models::ContactForces] {
-        &self.model_outputs.contact_forces
+    pub fn pad_contact_forces(&self) -> &[ContactForces] {
+        self.pads().and_then(|(i, _)| self.model_outputs.scratch::<PadScratch>(i)).map_or(&[], |s| &s.forces)
     }
 
     /// The lathe tool at the current state (`None` without a tool).
     pub fn tool_output(&self) -> Option<ToolOutput> {
-        let t = self.state.load_models.tool.as_ref()?;
-        Some(ToolOutput { tip: Tool::tip(t), chip: t.chip, feed_force: t.force, feed_rate: self.inputs.commands.feed_rate })
+        let (model, _) = self.scene.load_models.find::<Tool>()?;
+        let slot = &self.state.load_models.slots[model];
+        Some(ToolOutput {
+            tip: Tool::tip(slot),
+            chip: slot[super::load_models::tool::CHIP],
+            feed_force: slot[super::load_models::tool::FORCE],
+            feed_rate: self.inputs.commands.values[model][0],
+        })
     }
 
     /// Axial force of pitch link `j` (0-based) at the current joint angle, N.
     pub fn link_force(&self, j: usize) -> f64 {
-        self.scene.load_models.links.as_ref().map_or(0.0, |l| l.force(j, self.state.chi.angle))
+        self.scene.load_models.find::<PitchLinks>().map_or(0.0, |(_, l)| l.force(j, self.state.chi.angle))
     }
 
     /// The wrench the load models apply at ALE node `j` (0-based) at the current
@@ -364,6 +329,8 @@ impl Simulation {
         self.model_outputs.lagrange.get(j).copied().unwrap_or_default()
     }
 
+    // ---- outputs ------------------------------------------------------------
+
     pub fn joint(&self) -> JointOutput {
         JointOutput { position: self.state.chi.radians(), velocity: self.state.speed, effort: self.state.effort }
     }
@@ -373,31 +340,16 @@ impl Simulation {
         self.state.chi.wrapped()
     }
 
-    fn node_output(node: &NodeFrame, q: &[f64], q_dot: &[f64], speed: f64) -> NodeOutput {
-        let d = node.deflection(q);
-        let uz_dot: f64 = node.shapes.iter().zip(q_dot).map(|(s, v)| s.w * v).sum();
-        let material_uz_dot = match node.kind {
-            NodeKind::Lagrange => uz_dot,
-            NodeKind::Ale => uz_dot + speed * node.w_phi.iter().zip(q).map(|(w, qi)| w * qi).sum::<f64>(),
-        };
-        let p = node.position();
-        NodeOutput {
-            pose: Pose { translation: [p[0], p[1], d.w], rotation: tilt_quaternion(d.tilt) },
-            uz: d.w,
-            uz_dot,
-            tilt: d.tilt,
-            material_uz_dot,
-        }
-    }
-
     /// ALE node `j` (0-based), in plate_base.
     pub fn ale_node(&self, j: usize) -> NodeOutput {
-        Self::node_output(&self.scene.ale_nodes[j], &self.stepper.views().q_ale, &self.stepper.views().q_dot_ale, self.state.speed)
+        let (q, q_dot) = self.state.ale();
+        NodeOutput::of(&self.scene.ale_nodes[j], q, q_dot, self.state.speed)
     }
 
     /// Lagrangian node `j` (0-based), in plate_rotor.
     pub fn lagrange_node(&self, j: usize) -> NodeOutput {
-        Self::node_output(&self.scene.lagrange_nodes[j], &self.stepper.views().q_lagrange, &self.stepper.views().q_dot_lagrange, self.state.speed)
+        let (q, q_dot) = self.state.lagrange();
+        NodeOutput::of(&self.scene.lagrange_nodes[j], q, q_dot, self.state.speed)
     }
 
     /// Pose of ALE node `j` (0-based) in the reference frame (plate_base).
@@ -412,24 +364,76 @@ impl Simulation {
 
     /// Modal amplitudes (m) in `model().modes()` order, Lagrangian description.
     pub fn q_lagrange(&self) -> &[f64] {
-        &self.stepper.views().q_lagrange
+        self.state.lagrange().0
     }
     pub fn q_dot_lagrange(&self) -> &[f64] {
-        &self.stepper.views().q_dot_lagrange
+        self.state.lagrange().1
     }
     /// Modal amplitudes (m) in the ALE description (eq. 20).
     pub fn q_ale(&self) -> &[f64] {
-        &self.stepper.views().q_ale
+        self.state.ale().0
     }
     pub fn q_dot_ale(&self) -> &[f64] {
-        &self.stepper.views().q_dot_ale
+        self.state.ale().1
     }
     /// Elastic energy ½ Σ m_i (q̇_i² + ω_i² q_i²) (Lagrangian description), J.
     pub fn modal_energy(&self) -> f64 {
         let b = self.scene.model.body();
-        (0..self.scene.n_modes())
-            .map(|i| 0.5 * (b.modal_mass[i] * self.stepper.views().q_dot_lagrange[i].powi(2) + b.modal_stiffness[i] * self.stepper.views().q_lagrange[i].powi(2)))
-            .sum()
+        let (q, q_dot) = self.state.lagrange();
+        (0..self.scene.n_modes()).map(|i| 0.5 * (b.modal_mass[i] * q_dot[i].powi(2) + b.modal_stiffness[i] * q[i].powi(2))).sum()
+    }
+}
+
+/// The state a configuration starts from: at rest elastically (or at
+/// `initial.*`, given Lagrangian), both descriptions consistent.
+fn initial_state(config: &Config, scene: &Scene) -> State {
+    let n = scene.n_modes();
+    let mut initial = State::new(n, config.simulation.coordinates, config.joint.initial_position, config.joint.speed);
+    initial.load_models = scene.load_models.initial_state();
+    if !config.initial.q.is_empty() || !config.initial.q_dot.is_empty() {
+        // initial.* are Lagrangian; the state may be kept in ALE coordinates.
+        let mut q = config.initial.q.clone();
+        let mut q_dot = config.initial.q_dot.clone();
+        q.resize(n, 0.0);
+        q_dot.resize(n, 0.0);
+        if initial.coordinates == Coordinates::Ale {
+            let mut harm = Vec::new();
+            harmonics(&initial.chi, scene.layout.k_max, &mut harm);
+            lagrange_to_ale(&scene.layout, &harm, initial.speed, &mut q, &mut q_dot);
+        }
+        initial.q = q;
+        initial.q_dot = q_dot;
+    }
+    initial.rederive(scene);
+    initial
+}
+
+/// The inputs a configuration starts with: its speed, held loads and the load models' commands.
+fn reset_inputs(config: &Config, scene: &Scene, inputs: &mut Inputs) {
+    inputs.speed_command = config.joint.speed;
+    let to_wrench = |w: &crate::config::WrenchConfig| Wrench { force: w.force, moment: w.moment };
+    inputs.ale = (0..scene.ale_nodes.len()).map(|j| config.loads.ale.get(j).map(to_wrench).unwrap_or_default()).collect();
+    inputs.lagrange = (0..scene.lagrange_nodes.len()).map(|j| config.loads.lagrange.get(j).map(to_wrench).unwrap_or_default()).collect();
+    scene.load_models.reset_commands(&mut inputs.commands);
+}
+
+impl NodeOutput {
+    /// The kinematics of `node` for amplitudes in its own description.
+    fn of(node: &NodeFrame, q: &[f64], q_dot: &[f64], speed: f64) -> NodeOutput {
+        let d = node.deflection(q);
+        let uz_dot: f64 = node.shapes.iter().zip(q_dot).map(|(s, v)| s.w * v).sum();
+        let material_uz_dot = match node.kind {
+            NodeKind::Lagrange => uz_dot,
+            NodeKind::Ale => uz_dot + speed * node.w_phi.iter().zip(q).map(|(w, qi)| w * qi).sum::<f64>(),
+        };
+        let p = node.position();
+        NodeOutput {
+            pose: Pose { translation: [p[0], p[1], d.w], rotation: tilt_quaternion(d.tilt) },
+            uz: d.w,
+            uz_dot,
+            tilt: d.tilt,
+            material_uz_dot,
+        }
     }
 }
 

@@ -60,7 +60,7 @@ pub fn linear_system(scene: &Scene, speed: f64, friction_coefficient: f64, clamp
         a[(is, ic)] = 2.0 * kw;
         a[(is, is)] = -c.damping_rate;
     }
-    if let Some(pads) = &scene.load_models.pads {
+    if let Some((_, pads)) = scene.load_models.find::<Pads>() {
         let mass = &scene.model.body().modal_mass;
         // Per pad the mean shape over its contacts: a floating caliper's pads
         // follow it, so its springs see w − w̄ (docs/scenes.md).
@@ -145,7 +145,7 @@ pub fn max_growth_rate(scene: &Scene, speed: f64) -> f64 {
 }
 
 fn configured(scene: &Scene) -> (f64, Vec<f64>) {
-    scene.load_models.pads.as_ref().map_or((0.0, Vec::new()), |p| (p.friction_coefficient, p.initial_clamp_force.clone()))
+    scene.load_models.find::<Pads>().map(|(_, p)| p).map_or((0.0, Vec::new()), |p| (p.friction_coefficient, p.initial_clamp_force.clone()))
 }
 
 /// The smallest friction coefficient in [0, mu_max] at which the linearised

@@ -1,69 +1,24 @@
-//! The plain state: joint angle and speed, modal amplitudes and rates.
-//! The stepper never owns it, so reset, checkpoint and replay are clones.
+//! The plain state: time, joint angle and speed, modal amplitudes and rates
+//! in both descriptions, the load models' states. The stepper never owns it,
+//! so reset, checkpoint and replay are clones.
 
+use super::ale::{ale_to_lagrange, harmonics, lagrange_to_ale};
 use super::load_models::LoadModelState;
+use super::scene::{ModeLayout, Scene};
 use crate::config::Coordinates;
-use std::f64::consts::TAU;
 
-/// The joint angle χ kept as whole turns plus an angle in [0, 2π), so that
-/// kχ for the ALE transform (eq. 20) keeps full precision however far the
-/// plate has turned (χ beyond 1e9 rad included).
-#[derive(Debug, Clone, Copy, PartialEq, Default)]
-pub struct JointAngle {
-    pub turns: i64,
-    /// In [0, 2π).
-    pub angle: f64,
-}
+pub use super::angle::JointAngle;
 
-impl JointAngle {
-    pub fn from_radians(chi: f64) -> JointAngle {
-        let turns = (chi / TAU).floor();
-        let mut a = JointAngle { turns: turns as i64, angle: chi - turns * TAU };
-        a.normalize();
-        a
-    }
-
-    /// χ as one number (loses precision beyond ~1e9 rad, as any f64 does).
-    pub fn radians(&self) -> f64 {
-        self.turns as f64 * TAU + self.angle
-    }
-
-    /// Advance by δ (rad).
-    pub fn advance(&mut self, delta: f64) {
-        self.angle += delta;
-        self.normalize();
-    }
-
-    fn normalize(&mut self) {
-        if !(0.0..TAU).contains(&self.angle) {
-            let t = (self.angle / TAU).floor();
-            self.turns += t as i64;
-            self.angle -= t * TAU;
-            if self.angle >= TAU {
-                self.angle -= TAU;
-                self.turns += 1;
-            }
-            if self.angle < 0.0 {
-                self.angle += TAU;
-                self.turns -= 1;
-            }
-        }
-    }
-
-    /// χ wrapped to (−π, π].
-    pub fn wrapped(&self) -> f64 {
-        if self.angle > std::f64::consts::PI {
-            self.angle - TAU
-        } else {
-            self.angle
-        }
-    }
-}
-
-/// State of the joint and the elastic coordinates.
+/// Everything that evolves: time and step count, the joint, the elastic
+/// coordinates in both descriptions, the load models' states. The stepper
+/// never owns it, so reset, checkpoint and replay are copies: any saved
+/// `State` can be stepped again with the same result, bit for bit.
 #[derive(Debug, Clone, PartialEq)]
 pub struct State {
-    /// Simulated time, s.
+    /// Output steps since the start (or the last reset).
+    pub steps: u64,
+    /// Simulated time, s: `steps` × dt at the end of a step (no drift from
+    /// repeated addition), intermediate within a step's substeps.
     pub time: f64,
     /// χ.
     pub chi: JointAngle,
@@ -73,12 +28,17 @@ pub struct State {
     pub acceleration: f64,
     /// Drive torque over the last step, N·m.
     pub effort: f64,
-    /// The description `q` and `q_dot` are resolved in.
+    /// The description `q` and `q_dot` are resolved in: the one integrated.
     pub coordinates: Coordinates,
-    /// Modal amplitudes, m (mode order of the model).
+    /// Modal amplitudes, m (mode order of the model), in `coordinates`.
     pub q: Vec<f64>,
     pub q_dot: Vec<f64>,
-    /// State of the load models (the tool's machined surface).
+    /// The same elastic state in the other description (eq. 20), kept
+    /// consistent by the stepper; after editing `q` or `q_dot` by hand call
+    /// [`State::rederive`].
+    pub q_other: Vec<f64>,
+    pub q_dot_other: Vec<f64>,
+    /// State of the load models (one slot each; the tool's machined surface).
     pub load_models: LoadModelState,
 }
 
@@ -86,6 +46,7 @@ impl State {
     /// At rest elastically, turning at `speed` from angle `chi`.
     pub fn new(n_modes: usize, coordinates: Coordinates, chi: f64, speed: f64) -> State {
         State {
+            steps: 0,
             time: 0.0,
             chi: JointAngle::from_radians(chi),
             speed,
@@ -94,23 +55,59 @@ impl State {
             coordinates,
             q: vec![0.0; n_modes],
             q_dot: vec![0.0; n_modes],
+            q_other: vec![0.0; n_modes],
+            q_dot_other: vec![0.0; n_modes],
             load_models: LoadModelState::default(),
+        }
+    }
+
+    /// Derive the other description from `q`, `q_dot`, χ and Ω (eq. 20);
+    /// `harm` is scratch.
+    pub fn rederive_with(&mut self, layout: &ModeLayout, harm: &mut Vec<(f64, f64)>) {
+        harmonics(&self.chi, layout.k_max, harm);
+        self.q_other.copy_from_slice(&self.q);
+        self.q_dot_other.copy_from_slice(&self.q_dot);
+        match self.coordinates {
+            Coordinates::Lagrangian => lagrange_to_ale(layout, harm, self.speed, &mut self.q_other, &mut self.q_dot_other),
+            Coordinates::Ale => ale_to_lagrange(layout, harm, self.speed, &mut self.q_other, &mut self.q_dot_other),
+        }
+    }
+
+    /// [`State::rederive_with`] with its own scratch (allocates).
+    pub fn rederive(&mut self, scene: &Scene) {
+        self.rederive_with(&scene.layout, &mut Vec::new());
+    }
+
+    /// Amplitudes and rates in the Lagrangian description (eq. 13).
+    pub fn lagrange(&self) -> (&[f64], &[f64]) {
+        match self.coordinates {
+            Coordinates::Lagrangian => (&self.q, &self.q_dot),
+            Coordinates::Ale => (&self.q_other, &self.q_dot_other),
+        }
+    }
+
+    /// Amplitudes and rates in the ALE description (eq. 20).
+    pub fn ale(&self) -> (&[f64], &[f64]) {
+        match self.coordinates {
+            Coordinates::Ale => (&self.q, &self.q_dot),
+            Coordinates::Lagrangian => (&self.q_other, &self.q_dot_other),
         }
     }
 
     /// Copy `other` into `self`, reusing the amplitude buffers (the derived
     /// `clone_from` would allocate).
     pub fn copy_from(&mut self, other: &State) {
+        self.steps = other.steps;
         self.time = other.time;
         self.chi = other.chi;
         self.speed = other.speed;
         self.acceleration = other.acceleration;
         self.effort = other.effort;
         self.coordinates = other.coordinates;
-        self.q.clear();
-        self.q.extend_from_slice(&other.q);
-        self.q_dot.clear();
-        self.q_dot.extend_from_slice(&other.q_dot);
+        for (a, b) in [(&mut self.q, &other.q), (&mut self.q_dot, &other.q_dot), (&mut self.q_other, &other.q_other), (&mut self.q_dot_other, &other.q_dot_other)] {
+            a.clear();
+            a.extend_from_slice(b);
+        }
         self.load_models.copy_from(&other.load_models);
     }
 
@@ -119,31 +116,7 @@ impl State {
             && self.chi.angle.is_finite()
             && self.speed.is_finite()
             && self.effort.is_finite()
-            && self.q.iter().chain(&self.q_dot).all(|v| v.is_finite())
-            && self.load_models.tool.as_ref().is_none_or(|t| t.holder.is_finite() && t.deflection.is_finite() && t.force.is_finite())
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn joint_angle_keeps_sub_microradian_precision_beyond_1e9_rad() {
-        let mut a = JointAngle::from_radians(0.25);
-        a.turns += 200_000_000; // ≈ 1.26e9 rad
-        for _ in 0..1000 {
-            a.advance(1e-3);
-        }
-        assert!((a.angle - 1.25).abs() < 1e-12, "{}", a.angle);
-        assert_eq!(a.turns, 200_000_000);
-    }
-
-    #[test]
-    fn negative_angles_wrap_into_range() {
-        let a = JointAngle::from_radians(-0.5);
-        assert_eq!(a.turns, -1);
-        assert!((a.angle - (TAU - 0.5)).abs() < 1e-15);
-        assert!((a.wrapped() + 0.5).abs() < 1e-15);
+            && self.q.iter().chain(&self.q_dot).chain(&self.q_other).chain(&self.q_dot_other).all(|v| v.is_finite())
+            && self.load_models.is_finite()
     }
 }

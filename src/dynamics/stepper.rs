@@ -9,66 +9,79 @@
 //! re-evaluates the memoryless load models (pads, links) at every stage. A
 //! step that produces a non-finite or implausible state is undone and reported.
 
-use super::ale::{ale_to_lagrange, harmonics, lagrange_to_ale};
+use super::ale::{harmonics, lagrange_to_ale};
+use super::error::{Divergence, StepError};
 use super::integrators::equations::{accelerations, mode_constants, ModeConstants};
 use super::integrators::exponential::ModePropagator;
 use super::integrators::{implicit_midpoint, rk4};
 use super::joint::drive;
-use super::load_models::{surface_kinematics, ModelWrenches};
+use super::load_models::{LoadContext, ModelWrenches};
 use super::loads::{add_reference_motion, compute as node_loads, Inputs, StepLoads};
 use super::scene::Scene;
-use super::simulation::StepError;
 use super::state::{JointAngle, State};
-use crate::config::{Coordinates, IntegratorKind};
+use crate::config::{Config, Coordinates, IntegratorKind};
 use nalgebra::Complex;
 
-/// Both descriptions of the elastic state at one instant.
+/// Both descriptions of the elastic state mid-step (RK4 stages): scratch.
 #[derive(Debug, Clone, PartialEq, Default)]
-pub struct Views {
-    pub q_lagrange: Vec<f64>,
-    pub q_dot_lagrange: Vec<f64>,
-    pub q_ale: Vec<f64>,
-    pub q_dot_ale: Vec<f64>,
+struct Views {
+    q_lagrange: Vec<f64>,
+    q_dot_lagrange: Vec<f64>,
+    q_ale: Vec<f64>,
+    q_dot_ale: Vec<f64>,
 }
 
 impl Views {
-    pub fn new(n: usize) -> Views {
+    fn new(n: usize) -> Views {
         Views { q_lagrange: vec![0.0; n], q_dot_lagrange: vec![0.0; n], q_ale: vec![0.0; n], q_dot_ale: vec![0.0; n] }
-    }
-
-    /// Fill both descriptions from the state (`harm` is scratch).
-    pub fn update(&mut self, scene: &Scene, state: &State, harm: &mut Vec<(f64, f64)>) {
-        harmonics(&state.chi, scene.layout.k_max, harm);
-        self.q_lagrange.copy_from_slice(&state.q);
-        self.q_dot_lagrange.copy_from_slice(&state.q_dot);
-        self.q_ale.copy_from_slice(&state.q);
-        self.q_dot_ale.copy_from_slice(&state.q_dot);
-        match state.coordinates {
-            Coordinates::Lagrangian => lagrange_to_ale(&scene.layout, harm, state.speed, &mut self.q_ale, &mut self.q_dot_ale),
-            Coordinates::Ale => ale_to_lagrange(&scene.layout, harm, state.speed, &mut self.q_lagrange, &mut self.q_dot_lagrange),
-        }
     }
 }
 
-/// Integrator settings (one documented plain struct, like rapier's IntegrationParameters).
+/// How the stepper integrates (one documented plain struct, like rapier's
+/// `IntegrationParameters`): what `simulation.*` sets.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct StepperSettings {
+    /// `simulation.integrator`: exponential (exact per mode for held loads),
+    /// implicit_midpoint or rk4 (docs/dynamics.md).
     pub integrator: IntegratorKind,
-    /// Output step, s.
+    /// Output step 1 / `simulation.rate_hz`, s.
     pub dt: f64,
+    /// `simulation.substeps`: substeps of dt / substeps per output step.
     pub substeps: u32,
-    /// RK4: h·λ_max per inner step (`simulation.rk4_step_limit`).
+    /// RK4: largest h·λ_max per inner step (`simulation.rk4_step_limit`).
     pub rk4_step_limit: f64,
 }
 
+impl Default for StepperSettings {
+    /// The defaults of `simulation.*`: exponential at 1 kHz, one substep.
+    fn default() -> Self {
+        StepperSettings::from_config(&Config::default())
+    }
+}
+
+impl StepperSettings {
+    /// The settings a configuration asks for.
+    pub fn from_config(config: &Config) -> StepperSettings {
+        let s = &config.simulation;
+        StepperSettings { integrator: s.integrator, dt: 1.0 / s.rate_hz, substeps: s.substeps, rk4_step_limit: s.rk4_step_limit }
+    }
+
+    /// Substep length h = dt / substeps.
+    pub fn h(&self) -> f64 {
+        self.dt / self.substeps as f64
+    }
+}
+
+/// Scratch space for stepping a scene, allocated once: no state, no settings.
 pub struct Stepper {
-    settings: StepperSettings,
     consts: Vec<ModeConstants>,
     loads: StepLoads,
     base_ale_frame: Vec<f64>,
     harm: Vec<(f64, f64)>,
     harm_end: Vec<(f64, f64)>,
+    /// Both descriptions at an RK4 stage.
     views: Views,
+    /// Per-mode exact propagators, keyed by (h, kΩ): recomputed when either changes.
     propagators: Vec<ModePropagator>,
     y: Vec<f64>,
     rk: [Vec<f64>; 5],
@@ -80,11 +93,10 @@ pub struct Stepper {
 }
 
 impl Stepper {
-    pub fn new(scene: &Scene, settings: StepperSettings) -> Stepper {
+    pub fn new(scene: &Scene) -> Stepper {
         let n = scene.n_modes();
         let k = scene.layout.k_max as usize + 1;
         Stepper {
-            settings,
             consts: mode_constants(scene),
             loads: StepLoads::new(n),
             base_ale_frame: vec![0.0; n],
@@ -100,84 +112,67 @@ impl Stepper {
         }
     }
 
-    /// Both descriptions of the state after the last step (or [`Stepper::sync_views`]).
-    pub fn views(&self) -> &Views {
-        &self.views
-    }
-
-    /// Refill both descriptions from `state` (after a reset or restore).
-    pub fn sync_views(&mut self, scene: &Scene, state: &State) {
-        self.views.update(scene, state, &mut self.harm);
-    }
-
     pub fn last_inner_substeps(&self) -> usize {
         self.last_inner_substeps
     }
 
-    pub fn settings(&self) -> StepperSettings {
-        self.settings
-    }
-
-    /// Substep length h = dt / substeps.
-    pub fn h(&self) -> f64 {
-        self.settings.dt / self.settings.substeps as f64
-    }
-
-    /// RK4 substeps a step of h needs at speeds up to |Ω| (the pads' stiffness
-    /// and damping included, as bounded in [`LoadModels`](super::LoadModels)).
-    pub fn rk4_substeps(&self, scene: &Scene, h: f64, speed: f64) -> usize {
-        let lm = &scene.load_models;
+    /// RK4 substeps a step of h needs at speeds up to |Ω| (the load models'
+    /// coupling included, as bounded in [`LoadModels`](super::load_models::LoadModels)).
+    pub fn rk4_substeps(&self, scene: &Scene, settings: &StepperSettings, h: f64, speed: f64) -> usize {
+        let c = scene.load_models.coupling();
         let lam = scene
             .model
             .modes()
             .iter()
             .zip(&self.consts)
-            .map(|(m, c)| (c.omega_eff_sq.abs() + lm.pad_stiffness_rate_sq).sqrt() + c.damping_rate + lm.pad_damping_rate + m.k as f64 * speed.abs())
+            .map(|(m, mc)| (mc.omega_eff_sq.abs() + c.stiffness_rate_sq).sqrt() + mc.damping_rate + c.damping_rate + m.k as f64 * speed.abs())
             .fold(0.0, f64::max);
-        ((h * lam / self.settings.rk4_step_limit).ceil() as usize).max(1)
+        ((h * lam / settings.rk4_step_limit).ceil() as usize).max(1)
     }
 
-    /// Advance one output step. On error the state is as before the call.
-    pub fn step(&mut self, scene: &Scene, state: &mut State, inputs: &Inputs) -> Result<(), StepError> {
+    /// Advance `state` by one output step (dt) under `inputs`. On error the
+    /// state is as before the call.
+    pub fn step(&mut self, scene: &Scene, settings: &StepperSettings, state: &mut State, inputs: &Inputs) -> Result<(), StepError> {
         self.backup.copy_from(state);
-        let h = self.h();
-        let t0 = state.time;
+        let h = settings.h();
         self.last_inner_substeps = 1;
-        for _ in 0..self.settings.substeps {
-            if let Err(e) = self.substep(scene, state, inputs, h) {
-                state.copy_from(&self.backup);
-                self.sync_views(scene, state);
-                return Err(e);
+        let mut result = Ok(());
+        for _ in 0..settings.substeps {
+            result = self.substep(scene, settings, state, inputs, h);
+            if result.is_err() {
+                break;
             }
         }
-        state.time = t0 + self.settings.dt;
-        if let Err(e) = check(scene, state) {
-            state.copy_from(&self.backup);
-            self.sync_views(scene, state);
-            return Err(e);
+        if result.is_ok() {
+            state.steps += 1;
+            // Time as a count of steps: no drift from repeated addition.
+            state.time = state.steps as f64 * settings.dt;
+            result = check(scene, state);
         }
-        Ok(())
+        if result.is_err() {
+            state.copy_from(&self.backup);
+        }
+        result
     }
 
-    /// One substep. On entry `self.views` and `self.harm` describe `state`
-    /// (kept so by every step and by [`Stepper::sync_views`]); on exit too.
-    fn substep(&mut self, scene: &Scene, state: &mut State, inputs: &Inputs, h: f64) -> Result<(), StepError> {
+    /// One substep: load models and node loads at its start, the joint, the
+    /// elastic coordinates, the models' memory. On exit both descriptions in
+    /// `state` describe its end.
+    fn substep(&mut self, scene: &Scene, settings: &StepperSettings, state: &mut State, inputs: &Inputs, h: f64) -> Result<(), StepError> {
         let models = &scene.load_models;
-        let tool_step = match (&models.tool, &state.load_models.tool) {
-            (Some(tool), Some(ts)) => {
-                let w = surface_kinematics(&scene.ale_nodes[tool.node], &self.views.q_ale, &self.views.q_dot_ale).w;
-                Some(tool.begin(ts, w, state.chi.angle, state.speed, h))
-            }
-            _ => None,
-        };
-        let tool_force = tool_step.map_or(0.0, |s| s.force);
         if !models.is_empty() {
-            // Prescribed link forces at the substep's mid-angle (held by the non-RK4 integrators).
-            let chi_mid = state.chi.angle + 0.5 * state.speed * h;
-            let v = &self.views;
-            models.evaluate(&scene.ale_nodes, &v.q_ale, &v.q_dot_ale, chi_mid, state.speed, &inputs.commands, tool_force, &mut self.model_wrenches);
+            let mut slots = std::mem::take(&mut state.load_models);
+            let (q_ale, q_dot_ale) = state.ale();
+            let mut ctx = LoadContext { ale_nodes: &scene.ale_nodes, lagrange_nodes: &scene.lagrange_nodes, q_ale, q_dot_ale, chi: state.chi.angle, speed: state.speed };
+            models.begin_substep(&ctx, &mut slots, h);
+            // Prescribed forces at the substep's mid-angle (held by the non-RK4 integrators).
+            ctx.chi = state.chi.angle + 0.5 * state.speed * h;
+            models.evaluate(&ctx, &slots, &inputs.commands, &mut self.model_wrenches);
+            state.load_models = slots;
         }
-        node_loads(scene, inputs, &self.model_wrenches, &self.views.q_ale, &self.views.q_lagrange, &mut self.loads);
+        let (q_ale, _) = state.ale();
+        let (q_lagrange, _) = state.lagrange();
+        node_loads(scene, inputs, &self.model_wrenches, q_ale, q_lagrange, &mut self.loads);
         let d = drive(&scene.joint, scene.polar_inertia, state.speed, inputs.speed_command, self.loads.axial_torque, &self.model_wrenches.friction, h);
         let (speed0, alpha) = (state.speed, d.acceleration);
         let speed_mean = speed0 + 0.5 * alpha * h;
@@ -186,22 +181,10 @@ impl Stepper {
         chi1.advance(speed_mean * h);
         let speed1 = speed0 + alpha * h;
 
-        match self.settings.integrator {
+        match settings.integrator {
             IntegratorKind::Exponential => {
                 add_reference_motion(scene, speed_mean, &mut self.loads.ale_frame);
-                self.exponential(scene, h, speed_mean);
-                // The result is the Lagrangian view at χ1: derive the ALE one.
-                let v = &mut self.views;
-                v.q_ale.copy_from_slice(&v.q_lagrange);
-                v.q_dot_ale.copy_from_slice(&v.q_dot_lagrange);
-                harmonics(&chi1, scene.layout.k_max, &mut self.harm);
-                lagrange_to_ale(&scene.layout, &self.harm, speed1, &mut v.q_ale, &mut v.q_dot_ale);
-                let (q, q_dot) = match state.coordinates {
-                    Coordinates::Lagrangian => (&v.q_lagrange, &v.q_dot_lagrange),
-                    Coordinates::Ale => (&v.q_ale, &v.q_dot_ale),
-                };
-                state.q.copy_from_slice(q);
-                state.q_dot.copy_from_slice(q_dot);
+                self.exponential(scene, state, h, speed_mean, chi0, chi1, speed1);
             }
             IntegratorKind::ImplicitMidpoint => {
                 add_reference_motion(scene, speed_mean, &mut self.loads.ale_frame);
@@ -222,27 +205,25 @@ impl Stepper {
                     &mut state.q_dot,
                 );
             }
-            IntegratorKind::Rk4 => self.rk4(scene, state, inputs, h, chi0, speed0, alpha, tool_force)?,
+            IntegratorKind::Rk4 => self.rk4(scene, settings, state, inputs, h, chi0, speed0, alpha)?,
         }
-        if let (Some(step), Some(tool), Some(ts)) = (tool_step, &models.tool, &mut state.load_models.tool) {
-            tool.commit(ts, &step, inputs.commands.feed_rate, h);
-        }
+        models.commit_substep(&mut state.load_models, &inputs.commands, h);
         state.chi = chi1;
         state.speed = speed1;
         state.acceleration = alpha;
         state.effort = d.effort;
         state.time += h;
-        if self.settings.integrator != IntegratorKind::Exponential {
-            self.views.update(scene, state, &mut self.harm);
+        if settings.integrator != IntegratorKind::Exponential {
+            state.rederive_with(&scene.layout, &mut self.harm);
         }
         Ok(())
     }
 
-    /// Exact step of the Lagrangian view (in `self.views`) over h.
-    fn exponential(&mut self, scene: &Scene, h: f64, speed_mean: f64) {
+    /// Exact step of the Lagrangian description over h (the loads held), then
+    /// the ALE one derived at χ1: both written into `state`.
+    #[allow(clippy::too_many_arguments)]
+    fn exponential(&mut self, scene: &Scene, state: &mut State, h: f64, speed_mean: f64, chi0: JointAngle, chi1: JointAngle, speed1: f64) {
         let soft = scene.off_axis_rate_squared();
-        let v = &mut self.views;
-        let f = &self.loads;
         for (i, m) in scene.model.modes().iter().enumerate() {
             let nu = m.k as f64 * speed_mean;
             let p = &mut self.propagators[i];
@@ -250,10 +231,16 @@ impl Stepper {
                 *p = ModePropagator::new(m.modal_mass, m.damping, m.omega, soft, h, nu);
             }
         }
+        harmonics(&chi0, scene.layout.k_max, &mut self.harm);
+        let (lagrange_q, lagrange_v, ale_q, ale_v) = match state.coordinates {
+            Coordinates::Lagrangian => (&mut state.q, &mut state.q_dot, &mut state.q_other, &mut state.q_dot_other),
+            Coordinates::Ale => (&mut state.q_other, &mut state.q_dot_other, &mut state.q, &mut state.q_dot),
+        };
+        let f = &self.loads;
         for &i in &scene.layout.axisymmetric {
-            let (q, qd) = self.propagators[i].advance(v.q_lagrange[i], v.q_dot_lagrange[i], f.ale_frame[i], Complex::new(0.0, 0.0));
-            v.q_lagrange[i] = q;
-            v.q_dot_lagrange[i] = qd;
+            let (q, qd) = self.propagators[i].advance(lagrange_q[i], lagrange_v[i], f.ale_frame[i], Complex::new(0.0, 0.0));
+            lagrange_q[i] = q;
+            lagrange_v[i] = qd;
         }
         for p in &scene.layout.pairs {
             let (co, si) = self.harm[p.k as usize];
@@ -262,17 +249,22 @@ impl Stepper {
             let gc = Complex::new(fc, -fs) * e0;
             let gs = Complex::new(fs, fc) * e0;
             for (idx, g) in [(p.cos, gc), (p.sin, gs)] {
-                let (q, qd) = self.propagators[idx].advance(v.q_lagrange[idx], v.q_dot_lagrange[idx], f.plate_frame[idx], g);
-                v.q_lagrange[idx] = q;
-                v.q_dot_lagrange[idx] = qd;
+                let (q, qd) = self.propagators[idx].advance(lagrange_q[idx], lagrange_v[idx], f.plate_frame[idx], g);
+                lagrange_q[idx] = q;
+                lagrange_v[idx] = qd;
             }
         }
+        // The result is the Lagrangian description at χ1: derive the ALE one.
+        ale_q.copy_from_slice(lagrange_q);
+        ale_v.copy_from_slice(lagrange_v);
+        harmonics(&chi1, scene.layout.k_max, &mut self.harm);
+        lagrange_to_ale(&scene.layout, &self.harm, speed1, ale_q, ale_v);
     }
 
     #[allow(clippy::too_many_arguments)]
-    fn rk4(&mut self, scene: &Scene, state: &mut State, inputs: &Inputs, h: f64, chi0: JointAngle, speed0: f64, alpha: f64, tool_force: f64) -> Result<(), StepError> {
+    fn rk4(&mut self, scene: &Scene, settings: &StepperSettings, state: &mut State, inputs: &Inputs, h: f64, chi0: JointAngle, speed0: f64, alpha: f64) -> Result<(), StepError> {
         let speed_max = speed0.abs().max((speed0 + alpha * h).abs());
-        let inner = self.rk4_substeps(scene, h, speed_max);
+        let inner = self.rk4_substeps(scene, settings, h, speed_max);
         if inner > rk4::MAX_SUBSTEPS {
             return Err(StepError::ExplicitTooCostly { needed: inner, limit: rk4::MAX_SUBSTEPS, step: h });
         }
@@ -285,6 +277,7 @@ impl Stepper {
         let Stepper { consts, loads, base_ale_frame, harm, views, y, rk, model_wrenches, .. } = self;
         let follower = scene.effects.follower_loads;
         let stage_models = scene.load_models.stage_dependent();
+        let slots = &state.load_models;
         let dt = h / inner as f64;
         let mut rhs = |t: f64, yy: &[f64], dy: &mut [f64]| {
             let mut chi = chi0;
@@ -296,8 +289,15 @@ impl Stepper {
                 let st = StateView { q, v, coords, speed };
                 st.fill(scene, harm, views);
                 if stage_models {
-                    let models = &scene.load_models;
-                    models.evaluate(&scene.ale_nodes, &views.q_ale, &views.q_dot_ale, chi.angle, speed, &inputs.commands, tool_force, model_wrenches);
+                    let ctx = LoadContext {
+                        ale_nodes: &scene.ale_nodes,
+                        lagrange_nodes: &scene.lagrange_nodes,
+                        q_ale: &views.q_ale,
+                        q_dot_ale: &views.q_dot_ale,
+                        chi: chi.angle,
+                        speed,
+                    };
+                    scene.load_models.evaluate(&ctx, slots, &inputs.commands, model_wrenches);
                 }
                 node_loads(scene, inputs, model_wrenches, &views.q_ale, &views.q_lagrange, loads);
             } else {
@@ -335,32 +335,24 @@ impl StateView<'_> {
         }
         match self.coords {
             Coordinates::Lagrangian => lagrange_to_ale(&scene.layout, harm, self.speed, &mut views.q_ale, &mut views.q_dot_ale),
-            Coordinates::Ale => ale_to_lagrange(&scene.layout, harm, self.speed, &mut views.q_lagrange, &mut views.q_dot_lagrange),
+            Coordinates::Ale => super::ale::ale_to_lagrange(&scene.layout, harm, self.speed, &mut views.q_lagrange, &mut views.q_dot_lagrange),
         }
     }
 }
 
 /// Divergence guard: everything finite, amplitudes within the plausibility limit.
 fn check(scene: &Scene, state: &State) -> Result<(), StepError> {
+    let diverged = |cause| Err(StepError::Diverged { time: state.time, cause });
     if !state.is_finite() {
-        return Err(StepError::Diverged { time: state.time, detail: "a state variable became NaN or infinite".into() });
+        return diverged(Divergence::NonFinite);
     }
     let limit = scene.limits.max_deflection_thicknesses * scene.model.plate().thickness;
-    if let Some((i, q)) = state.q.iter().enumerate().find(|(_, q)| q.abs() > limit) {
+    if let Some((i, &q)) = state.q.iter().enumerate().find(|(_, q)| q.abs() > limit) {
         let m = &scene.model.modes()[i];
-        return Err(StepError::Diverged {
-            time: state.time,
-            detail: format!(
-                "mode {} ⟨k = {}, l = {}, {}⟩ reached {q:e} m, beyond limits.max_deflection_thicknesses × thickness = {limit:e} m",
-                i + 1,
-                m.k,
-                m.l,
-                m.shape.name()
-            ),
-        });
+        return diverged(Divergence::ModeBeyondLimit { mode: i, k: m.k, l: m.l, shape: m.shape, value: q, limit });
     }
     if state.speed.abs() > scene.limits.max_speed * 1.5 {
-        return Err(StepError::Diverged { time: state.time, detail: format!("joint speed {} rad/s beyond limits.max_speed", state.speed) });
+        return diverged(Divergence::SpeedBeyondLimit { speed: state.speed, limit: scene.limits.max_speed });
     }
     Ok(())
 }

@@ -1,43 +1,14 @@
 //! Wrenches on node frames and the checks every input passes before it may
 //! reach the state.
 
-use thiserror::Error;
-
-/// Kind of node frame (paper section 4.1).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
-pub enum NodeKind {
-    /// Material point turning with the plate (`nodes_Lagrange`).
-    Lagrange,
-    /// Space-fixed point the plate slides under (`nodes_ALE`).
-    Ale,
-}
-
-impl NodeKind {
-    pub fn name(self) -> &'static str {
-        match self {
-            NodeKind::Lagrange => "lagrange",
-            NodeKind::Ale => "ale",
-        }
-    }
-}
+use super::error::InputError;
+pub use super::node_frame::NodeKind;
 
 /// Force (N) and moment (N·m) acting at a node frame, in that frame's axes.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct Wrench {
     pub force: [f64; 3],
     pub moment: [f64; 3],
-}
-
-/// An input refused before it reached the state. The state and every other
-/// held input are unchanged.
-#[derive(Debug, Clone, PartialEq, Error)]
-pub enum InputError {
-    #[error("{what} is not finite ({value})")]
-    NonFinite { what: String, value: f64 },
-    #[error("{what} = {value:e} exceeds the plausibility limit {limit:e} (limits.*)")]
-    Absurd { what: String, value: f64, limit: f64 },
-    #[error("there is no {} node {index} (1-based; this scene has {count})", kind.name())]
-    NoSuchNode { kind: NodeKind, index: usize, count: usize },
 }
 
 impl Wrench {

@@ -2,26 +2,20 @@
 //! may reach the simulation. No ROS types: the subscriber tasks hand over
 //! plain values, so all of this is unit-tested without DDS.
 //!
-//! Rules (docs/ros.md, "Bad input"):
-//! - a speed command must be finite and |Ω| ≤ `limits.max_speed`;
-//! - a wrench must be finite with |F| ≤ `limits.max_force`, |M| ≤ `limits.max_moment`;
+//! The rules themselves are the dynamics' (`dynamics::commands`, docs/ros.md
+//! "Bad input"): each message is converted once to `Command`s and checked
+//! there; this file adds only what is ROS's own:
 //! - a WrenchStamped's `header.frame_id` is empty or the frame of the
 //!   topic's node (`<prefix>plate_ale_<j>`); anything else is an unknown frame;
-//! - a NodeWrenchArray is applied whole or not at all: an unknown kind, an
-//!   index of 0 or beyond the scene's nodes, the same node twice or any bad
-//!   wrench rejects the whole array;
-//! - a pad clamp force (N) and the tool feed rate (m/s) follow the load
-//!   models' own rules (`dynamics::check_clamp_force`, `check_feed_rate`: the
-//!   same functions `Simulation` applies): finite, a clamp force in
-//!   [0, `limits.max_force`], a feed of at most 1 m/s, an existing pad / tool;
-//!   a PadClampForces array is applied whole or not at all like a
-//!   NodeWrenchArray;
+//! - array messages number nodes and pads from 1 and name a node kind by a
+//!   byte (NodeWrench.ALE / LAGRANGE); a NodeWrenchArray or PadClampForces is
+//!   checked whole and applied whole or not at all (`check_batch`);
 //! - a sample that cannot be decoded is counted as undecodable.
 //!
 //! A rejected input changes nothing; it is counted (visible in
 //! /diagnostics) and logged at most once per `ros.reject_log_period` per kind.
 
-use crate::dynamics::{check_clamp_force, check_feed_rate, InputError, LoadCommandError, NodeKind, Wrench};
+use crate::dynamics::{check, check_batch, BatchError, Checked, CheckedBatch, Command, InputError, InputRules, NodeKind, Wrench};
 use std::sync::atomic::{AtomicU64, Ordering};
 use std::sync::Mutex;
 use std::time::{Duration, Instant};
@@ -73,22 +67,13 @@ impl RejectReason {
         RejectReason::ALL.iter().position(|r| *r == self).unwrap_or(0)
     }
 
-    /// The kind of a wrench or speed refused by the dynamics' checks.
+    /// The kind of an input refused by the dynamics' rules (a missing pad or
+    /// tool counts as a missing node).
     pub fn of_input_error(e: &InputError) -> Self {
         match e {
-            InputError::NonFinite { .. } => RejectReason::NonFinite,
-            InputError::Absurd { .. } => RejectReason::Absurd,
-            InputError::NoSuchNode { .. } => RejectReason::NoSuchNode,
-        }
-    }
-
-    /// The kind of a load-model command refused by the dynamics' checks (a
-    /// negative clamp force is outside [0, `limits.max_force`]: absurd; a
-    /// missing pad or tool counts as a missing node).
-    pub fn of_load_error(e: &LoadCommandError) -> Self {
-        match e {
-            LoadCommandError::Input(i) => RejectReason::of_input_error(i),
-            LoadCommandError::NoSuchPad { .. } | LoadCommandError::NoTool => RejectReason::NoSuchNode,
+            InputError::NonFinite { .. } | InputError::SpeedNotFinite { .. } => RejectReason::NonFinite,
+            InputError::Absurd { .. } | InputError::SpeedBeyondLimit { .. } => RejectReason::Absurd,
+            InputError::NoSuchNode { .. } | InputError::NoSuchInstance { .. } | InputError::NoSuchModel { .. } => RejectReason::NoSuchNode,
         }
     }
 }
@@ -108,24 +93,24 @@ impl Rejection {
     pub fn from_input_error(e: InputError) -> Self {
         Rejection::new(RejectReason::of_input_error(&e), e.to_string())
     }
-
-    pub fn from_load_error(e: LoadCommandError) -> Self {
-        Rejection::new(RejectReason::of_load_error(&e), e.to_string())
-    }
 }
 
-/// A checked input, ready for the simulation (0-based node indices).
+/// A checked input, ready for the simulation: it is applied without another check.
 #[derive(Debug, Clone, PartialEq)]
 pub enum Input {
-    Speed(f64),
-    Wrench { kind: NodeKind, node: usize, wrench: Wrench },
-    Batch(Vec<(NodeKind, usize, Wrench)>),
-    /// Clamp force of pad `pad` (0-based), N.
-    ClampForce { pad: usize, newtons: f64 },
-    /// Several pads' clamp forces at once (0-based pads), N.
-    ClampForces(Vec<(usize, f64)>),
-    /// Tool feed rate, m/s.
-    ToolFeed(f64),
+    One(Checked),
+    /// Applied whole.
+    Batch(CheckedBatch),
+}
+
+impl Input {
+    /// The commands it holds (0-based indices).
+    pub fn commands(&self) -> Vec<Command> {
+        match self {
+            Input::One(c) => vec![c.command()],
+            Input::Batch(b) => b.iter().map(|c| c.command()).collect(),
+        }
+    }
 }
 
 /// Which topic an input came from (for counting).
@@ -164,31 +149,19 @@ impl Source {
 pub const KIND_ALE: u8 = 0;
 pub const KIND_LAGRANGE: u8 = 1;
 
-/// The checks, with the scene's node frames and limits.
+/// Converts input messages to checked commands: the scene's rules plus the
+/// node frames' names.
 #[derive(Debug, Clone)]
 pub struct InputValidator {
     ale_frames: Vec<String>,
     lagrange_frames: Vec<String>,
-    max_force: f64,
-    max_moment: f64,
-    max_speed: f64,
-    /// Pads of the scene (`Simulation::pad_count`).
-    pad_count: usize,
-    /// Whether the scene has a tool (`Simulation::has_tool`).
-    has_tool: bool,
+    rules: InputRules,
 }
 
 impl InputValidator {
     /// `ale_frames[j]` / `lagrange_frames[j]`: the frame id of node j + 1.
-    pub fn new(ale_frames: Vec<String>, lagrange_frames: Vec<String>, max_force: f64, max_moment: f64, max_speed: f64) -> Self {
-        InputValidator { ale_frames, lagrange_frames, max_force, max_moment, max_speed, pad_count: 0, has_tool: false }
-    }
-
-    /// The scene's load models: `pad_count` pads, a tool or not.
-    pub fn with_load_models(mut self, pad_count: usize, has_tool: bool) -> Self {
-        self.pad_count = pad_count;
-        self.has_tool = has_tool;
-        self
+    pub fn new(ale_frames: Vec<String>, lagrange_frames: Vec<String>, rules: InputRules) -> Self {
+        InputValidator { ale_frames, lagrange_frames, rules }
     }
 
     fn frames(&self, kind: NodeKind) -> &[String] {
@@ -198,27 +171,12 @@ impl InputValidator {
         }
     }
 
-    pub fn speed(&self, omega: f64) -> Result<Input, Rejection> {
-        if !omega.is_finite() {
-            return Err(Rejection::new(RejectReason::NonFinite, format!("speed command {omega} is not finite")));
-        }
-        if omega.abs() > self.max_speed {
-            return Err(Rejection::new(
-                RejectReason::Absurd,
-                format!("speed command {omega:e} rad/s exceeds limits.max_speed = {:e}", self.max_speed),
-            ));
-        }
-        Ok(Input::Speed(omega))
+    fn one(&self, command: Command) -> Result<Input, Rejection> {
+        check(&self.rules, command).map(Input::One).map_err(Rejection::from_input_error)
     }
 
-    fn check_wrench(&self, kind: NodeKind, node: usize, wrench: &Wrench) -> Result<(), Rejection> {
-        let count = self.frames(kind).len();
-        if node >= count {
-            return Err(Rejection::from_input_error(InputError::NoSuchNode { kind, index: node + 1, count }));
-        }
-        wrench
-            .validate(|| format!("{}_{} wrench", kind.name(), node + 1), self.max_force, self.max_moment)
-            .map_err(Rejection::from_input_error)
+    pub fn speed(&self, omega: f64) -> Result<Input, Rejection> {
+        self.one(Command::Speed(omega))
     }
 
     /// A WrenchStamped on the topic of node `node` (0-based).
@@ -235,13 +193,12 @@ impl InputValidator {
                 ));
             }
         }
-        self.check_wrench(kind, node, &wrench)?;
-        Ok(Input::Wrench { kind, node, wrench })
+        self.one(Command::Wrench { kind, node, wrench })
     }
 
     /// A NodeWrenchArray: (kind, 1-based index, wrench) per element.
     pub fn batch(&self, entries: impl IntoIterator<Item = (u8, u32, Wrench)>) -> Result<Input, Rejection> {
-        let mut out: Vec<(NodeKind, usize, Wrench)> = Vec::new();
+        let mut commands = Vec::new();
         for (position, (kind, index, wrench)) in entries.into_iter().enumerate() {
             let kind = match kind {
                 KIND_ALE => NodeKind::Ale,
@@ -259,26 +216,27 @@ impl InputValidator {
                     format!("wrenches[{position}].index = 0, but node numbers start at 1; the array was not applied"),
                 ));
             }
-            let node = index as usize - 1;
-            self.check_wrench(kind, node, &wrench).map_err(|r| Rejection {
-                detail: format!("wrenches[{position}]: {}; the array was not applied", r.detail),
-                ..r
-            })?;
-            if out.iter().any(|(k, n, _)| *k == kind && *n == node) {
-                return Err(Rejection::new(
-                    RejectReason::MalformedBatch,
-                    format!("wrenches[{position}] names {}_{index} a second time; the array was not applied", kind.name()),
-                ));
-            }
-            out.push((kind, node, wrench));
+            commands.push(Command::Wrench { kind, node: index as usize - 1, wrench });
         }
-        Ok(Input::Batch(out))
+        check_batch(&self.rules, commands.iter().copied()).map(Input::Batch).map_err(|e| {
+            batch_rejection(e, "wrenches", |position| match commands[position] {
+                Command::Wrench { kind, node, .. } => format!("wrenches[{position}] names {}_{} a second time", kind.name(), node + 1),
+                _ => unreachable!("a wrench array holds wrenches"),
+            })
+        })
+    }
+
+    /// The load-model command `token` (`clamp_force`, `feed`) of model `model`: (model, command).
+    fn load_command(&self, model: &str) -> Option<usize> {
+        self.rules.model(model).map(|(i, _)| i)
     }
 
     /// A clamp force on the topic of pad `pad` (0-based), N.
     pub fn clamp_force(&self, pad: usize, newtons: f64) -> Result<Input, Rejection> {
-        check_clamp_force(pad, self.pad_count, newtons, self.max_force).map_err(Rejection::from_load_error)?;
-        Ok(Input::ClampForce { pad, newtons })
+        let Some(model) = self.load_command("pads") else {
+            return Err(Rejection::from_input_error(InputError::NoSuchInstance { instance: "pad", index: pad + 1, count: 0 }));
+        };
+        self.one(Command::Load { model, command: 0, instance: pad, value: newtons })
     }
 
     /// A PadClampForces message: pad numbers (from 1) and their clamp forces, N.
@@ -289,34 +247,50 @@ impl InputValidator {
                 format!("pad has {} entries but clamp_force {}; the array was not applied", pads.len(), forces.len()),
             ));
         }
-        let mut out: Vec<(usize, f64)> = Vec::with_capacity(pads.len());
-        for (position, (&number, &newtons)) in pads.iter().zip(forces).enumerate() {
-            if number == 0 {
-                return Err(Rejection::new(
-                    RejectReason::NoSuchNode,
-                    format!("pad[{position}] = 0, but pad numbers start at 1; the array was not applied"),
-                ));
-            }
-            let pad = number as usize - 1;
-            check_clamp_force(pad, self.pad_count, newtons, self.max_force).map_err(|e| {
-                let r = Rejection::from_load_error(e);
-                Rejection { detail: format!("entry {position}: {}; the array was not applied", r.detail), ..r }
-            })?;
-            if out.iter().any(|(p, _)| *p == pad) {
-                return Err(Rejection::new(
-                    RejectReason::MalformedBatch,
-                    format!("pad[{position}] names pad {number} a second time; the array was not applied"),
-                ));
-            }
-            out.push((pad, newtons));
+        if let Some(position) = pads.iter().position(|&p| p == 0) {
+            return Err(Rejection::new(
+                RejectReason::NoSuchNode,
+                format!("pad[{position}] = 0, but pad numbers start at 1; the array was not applied"),
+            ));
         }
-        Ok(Input::ClampForces(out))
+        let model = self.load_command("pads");
+        let commands: Vec<Command> = pads
+            .iter()
+            .zip(forces)
+            .map(|(&number, &value)| Command::Load { model: model.unwrap_or(usize::MAX), command: 0, instance: number as usize - 1, value })
+            .collect();
+        if model.is_none() {
+            if let Some(&first) = pads.first() {
+                let e = InputError::NoSuchInstance { instance: "pad", index: first as usize, count: 0 };
+                return Err(batch_rejection(BatchError::Invalid { position: 0, error: e }, "entry", |_| String::new()));
+            }
+        }
+        check_batch(&self.rules, commands.iter().copied())
+            .map(Input::Batch)
+            .map_err(|e| batch_rejection(e, "entry", |position| format!("pad[{position}] names pad {} a second time", pads[position])))
     }
 
     /// A tool feed rate, m/s.
     pub fn tool_feed(&self, rate: f64) -> Result<Input, Rejection> {
-        check_feed_rate(self.has_tool, rate).map_err(Rejection::from_load_error)?;
-        Ok(Input::ToolFeed(rate))
+        let Some(model) = self.load_command("tool") else {
+            return Err(Rejection::from_input_error(InputError::NoSuchModel { model: "tool", key: "tool.ale_node" }));
+        };
+        self.one(Command::Load { model, command: 0, instance: 0, value: rate })
+    }
+}
+
+/// The rejection of a refused batch: `what[position]: why` (or `entry position: why`),
+/// or the duplicate's own sentence; "the array was not applied".
+fn batch_rejection(e: BatchError, what: &str, duplicate: impl Fn(usize) -> String) -> Rejection {
+    match e {
+        BatchError::Invalid { position, error } => {
+            let place = if what == "entry" { format!("entry {position}") } else { format!("{what}[{position}]") };
+            let r = Rejection::from_input_error(error);
+            Rejection { detail: format!("{place}: {}; the array was not applied", r.detail), ..r }
+        }
+        BatchError::Duplicate { position, .. } => {
+            Rejection::new(RejectReason::MalformedBatch, format!("{}; the array was not applied", duplicate(position)))
+        }
     }
 }
 
@@ -456,14 +430,33 @@ impl StaleWrenches {
 mod tests {
     use super::*;
 
+    use crate::config::LimitsConfig;
+    use crate::dynamics::load_models::{pad::CLAMP_FORCE, tool::FEED_RATE};
+
+    fn rules(pads: usize, tool: bool) -> InputRules {
+        let limits = LimitsConfig { max_force: 1e4, max_moment: 1e3, max_speed: 500.0, ..LimitsConfig::default() };
+        let pad_commands = [(CLAMP_FORCE, pads)];
+        let tool_commands = [(FEED_RATE, 1)];
+        let mut models: Vec<(&'static str, &[_])> = Vec::new();
+        if pads > 0 {
+            models.push(("pads", &pad_commands));
+        }
+        if tool {
+            models.push(("tool", &tool_commands));
+        }
+        InputRules::from_parts(&limits, 2, 1, &models)
+    }
+
+    fn validator_with(pads: usize, tool: bool) -> InputValidator {
+        InputValidator::new(vec!["plate_ale_1".into(), "plate_ale_2".into()], vec!["plate_lagrange_1".into()], rules(pads, tool))
+    }
+
     fn validator() -> InputValidator {
-        InputValidator::new(
-            vec!["plate_ale_1".into(), "plate_ale_2".into()],
-            vec!["plate_lagrange_1".into()],
-            1e4,
-            1e3,
-            500.0,
-        )
+        validator_with(0, false)
+    }
+
+    fn cmds(r: Result<Input, Rejection>) -> Result<Vec<Command>, Rejection> {
+        r.map(|i| i.commands())
     }
 
     fn w(fz: f64) -> Wrench {
@@ -473,8 +466,8 @@ mod tests {
     #[test]
     fn speed_rules() {
         let v = validator();
-        assert_eq!(v.speed(25.0), Ok(Input::Speed(25.0)));
-        assert_eq!(v.speed(-500.0), Ok(Input::Speed(-500.0)));
+        assert_eq!(cmds(v.speed(25.0)), Ok(vec![Command::Speed(25.0)]));
+        assert_eq!(cmds(v.speed(-500.0)), Ok(vec![Command::Speed(-500.0)]));
         assert_eq!(v.speed(f64::NAN).unwrap_err().reason, RejectReason::NonFinite);
         assert_eq!(v.speed(f64::INFINITY).unwrap_err().reason, RejectReason::NonFinite);
         assert_eq!(v.speed(501.0).unwrap_err().reason, RejectReason::Absurd);
@@ -497,12 +490,10 @@ mod tests {
     #[test]
     fn batch_is_all_or_nothing() {
         let v = validator();
-        let ok = v.batch([(KIND_ALE, 1, w(-10.0)), (KIND_ALE, 2, w(-20.0)), (KIND_LAGRANGE, 1, w(5.0))]).unwrap();
-        assert_eq!(
-            ok,
-            Input::Batch(vec![(NodeKind::Ale, 0, w(-10.0)), (NodeKind::Ale, 1, w(-20.0)), (NodeKind::Lagrange, 0, w(5.0))])
-        );
-        assert_eq!(v.batch([]), Ok(Input::Batch(vec![])));
+        let ok = cmds(v.batch([(KIND_ALE, 1, w(-10.0)), (KIND_ALE, 2, w(-20.0)), (KIND_LAGRANGE, 1, w(5.0))])).unwrap();
+        let wrench = |kind, node, wrench| Command::Wrench { kind, node, wrench };
+        assert_eq!(ok, vec![wrench(NodeKind::Ale, 0, w(-10.0)), wrench(NodeKind::Ale, 1, w(-20.0)), wrench(NodeKind::Lagrange, 0, w(5.0))]);
+        assert_eq!(cmds(v.batch([])), Ok(vec![]));
         let reason = |entries: Vec<(u8, u32, Wrench)>| v.batch(entries).unwrap_err().reason;
         assert_eq!(reason(vec![(KIND_ALE, 1, w(1.0)), (7, 1, w(1.0))]), RejectReason::MalformedBatch);
         assert_eq!(reason(vec![(KIND_ALE, 1, w(1.0)), (KIND_ALE, 1, w(2.0))]), RejectReason::MalformedBatch);
@@ -515,10 +506,11 @@ mod tests {
 
     #[test]
     fn load_model_commands_follow_the_dynamics_rules() {
-        let v = validator().with_load_models(2, false);
-        assert_eq!(v.clamp_force(1, 5000.0), Ok(Input::ClampForce { pad: 1, newtons: 5000.0 }));
-        assert_eq!(v.clamp_force(0, 0.0), Ok(Input::ClampForce { pad: 0, newtons: 0.0 }));
-        assert_eq!(v.clamp_force(0, 1e4), Ok(Input::ClampForce { pad: 0, newtons: 1e4 }), "limits.max_force itself is allowed");
+        let v = validator_with(2, false);
+        let clamp = |instance, value| Ok(vec![Command::Load { model: 0, command: 0, instance, value }]);
+        assert_eq!(cmds(v.clamp_force(1, 5000.0)), clamp(1, 5000.0));
+        assert_eq!(cmds(v.clamp_force(0, 0.0)), clamp(0, 0.0));
+        assert_eq!(cmds(v.clamp_force(0, 1e4)), clamp(0, 1e4), "limits.max_force itself is allowed");
         let reason = |r: Result<Input, Rejection>| r.unwrap_err().reason;
         assert_eq!(reason(v.clamp_force(0, f64::NAN)), RejectReason::NonFinite);
         assert_eq!(reason(v.clamp_force(0, f64::NEG_INFINITY)), RejectReason::NonFinite);
@@ -529,8 +521,8 @@ mod tests {
         assert!(e.detail.contains("pad_1 clamp force"), "{}", e.detail);
         // The tool: none in this scene; with one, the feed rule.
         assert_eq!(reason(v.tool_feed(1e-3)), RejectReason::NoSuchNode);
-        let t = validator().with_load_models(0, true);
-        assert_eq!(t.tool_feed(-2e-3), Ok(Input::ToolFeed(-2e-3)));
+        let t = validator_with(0, true);
+        assert_eq!(cmds(t.tool_feed(-2e-3)), Ok(vec![Command::Load { model: 0, command: 0, instance: 0, value: -2e-3 }]));
         assert_eq!(reason(t.tool_feed(f64::NAN)), RejectReason::NonFinite);
         assert_eq!(reason(t.tool_feed(1.5)), RejectReason::Absurd);
         assert_eq!(reason(t.clamp_force(0, 1.0)), RejectReason::NoSuchNode);
@@ -538,9 +530,10 @@ mod tests {
 
     #[test]
     fn clamp_force_arrays_are_all_or_nothing() {
-        let v = validator().with_load_models(2, false);
-        assert_eq!(v.clamp_forces(&[2, 1], &[10.0, 20.0]), Ok(Input::ClampForces(vec![(1, 10.0), (0, 20.0)])));
-        assert_eq!(v.clamp_forces(&[], &[]), Ok(Input::ClampForces(vec![])));
+        let v = validator_with(2, false);
+        let clamp = |instance, value| Command::Load { model: 0, command: 0, instance, value };
+        assert_eq!(cmds(v.clamp_forces(&[2, 1], &[10.0, 20.0])), Ok(vec![clamp(1, 10.0), clamp(0, 20.0)]));
+        assert_eq!(cmds(v.clamp_forces(&[], &[])), Ok(vec![]));
         let reason = |p: &[u32], f: &[f64]| v.clamp_forces(p, f).unwrap_err().reason;
         assert_eq!(reason(&[1], &[1.0, 2.0]), RejectReason::MalformedBatch);
         assert_eq!(reason(&[1, 1], &[1.0, 2.0]), RejectReason::MalformedBatch);

@@ -258,16 +258,8 @@ async fn serve(setup: NodeSetup, sim: Simulation, domain: u16, bag: Option<NodeB
     // The loop's queue, shared by inputs and services.
     let (tx, rx) = sync_channel::<Command>(COMMAND_QUEUE);
     let stats = Arc::new(InputStats::default());
-    let limits = &setup.config.limits;
     let ctx = InputContext {
-        validator: Arc::new(InputValidator::new(
-            frames.ale.clone(),
-            frames.lagrange.clone(),
-            limits.max_force,
-            limits.max_moment,
-            limits.max_speed,
-        )
-        .with_load_models(sim.pad_count(), sim.has_tool())),
+        validator: Arc::new(InputValidator::new(frames.ale.clone(), frames.lagrange.clone(), sim.scene().rules.clone())),
         stats: Arc::clone(&stats),
         logger: Arc::clone(&logger),
         tx: tx.clone(),

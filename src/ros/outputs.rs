@@ -16,6 +16,7 @@ use super::messages::{
     Clock, Header, JointState, ModalAmplitudes, PadStates, Quaternion, TFMessage, Time, ToolState, Transform,
     TransformStamped, Vector3,
 };
+use crate::dynamics::load_models::Pads;
 use crate::dynamics::{Pose, Simulation};
 use crate::model::AngularShape;
 use serde::{Deserialize, Deserializer, Serialize, Serializer};
@@ -158,7 +159,7 @@ impl OutputMessages {
             q_ale: vec![0.0; n],
             q_dot_ale: vec![0.0; n],
         };
-        let pad_states = sim.scene().load_models.pads.as_ref().map(|pads| {
+        let pad_states = sim.scene().load_models.find::<Pads>().map(|(_, pads)| {
             let n_pads = pads.pad_count();
             let n_contacts = pads.contacts.len();
             Shared::new(PadStates {

@@ -11,7 +11,7 @@
 
 use super::clock::{Pacer, StepClock};
 use super::diagnostics::{self, LoopReport, Timing};
-use super::inputs::{Input, InputStats, Rejection, Source, StaleWrenches};
+use super::inputs::{Input, InputStats, Source, StaleWrenches};
 use super::logging::Logger;
 use super::messages::{
     Clock, DiagnosticArray, JointState, ModalAmplitudes, PadStates, SetBoolResponse, StepResponse, TFMessage, Time,
@@ -21,7 +21,7 @@ use super::outputs::{clock_message, OutputMessages, Shared};
 use super::params_service::RuntimeChange;
 use super::services::Command;
 use crate::bag::recorder::{Recorder, Sample};
-use crate::dynamics::{InputError, NodeKind, Simulation, Wrench};
+use crate::dynamics::{Checked, Command as SimCommand, NodeKind, Simulation, Wrench};
 use ros2_client::Publisher;
 use std::collections::VecDeque;
 use std::sync::mpsc::{Receiver, RecvTimeoutError};
@@ -286,56 +286,28 @@ impl SimLoop {
         }
     }
 
-    fn set_wrench(&mut self, kind: NodeKind, node: usize, w: Wrench) -> Result<(), InputError> {
-        match kind {
-            NodeKind::Ale => self.sim.set_ale_wrench(node, w),
-            NodeKind::Lagrange => self.sim.set_lagrange_wrench(node, w),
-        }?;
-        self.stale.touched(kind, node, self.sim.time());
-        Ok(())
-    }
-
+    /// Hold an input checked on arrival (`inputs::InputValidator`, the
+    /// dynamics' rules): applied as it is, a batch whole.
     fn apply(&mut self, input: Input, source: Source, stamp: i64) {
-        // The inputs were checked on arrival (`inputs::InputValidator`) with
-        // the rules the simulation applies again here; a refusal at this
-        // point is counted and logged the same way.
-        let wrench_err = Rejection::from_input_error;
-        let load_err = Rejection::from_load_error;
-        let result = match input {
-            Input::Speed(omega) => self.sim.set_speed_command(omega).map_err(wrench_err),
-            Input::Wrench { kind, node, wrench } => self.set_wrench(kind, node, wrench).map_err(wrench_err),
-            Input::Batch(items) => {
-                let mut r = Ok(());
-                for (kind, node, wrench) in items {
-                    if let Err(e) = self.set_wrench(kind, node, wrench) {
-                        r = Err(wrench_err(e));
-                    }
-                }
-                r
+        let t = self.sim.time();
+        let mut touch = |c: &Checked| {
+            if let SimCommand::Wrench { kind, node, .. } = c.command() {
+                self.stale.touched(kind, node, t);
             }
-            Input::ClampForce { pad, newtons } => self.sim.set_pad_clamp_force(pad, newtons).map_err(load_err),
-            Input::ClampForces(items) => {
-                let mut r = Ok(());
-                for (pad, newtons) in items {
-                    if let Err(e) = self.sim.set_pad_clamp_force(pad, newtons) {
-                        r = Err(load_err(e));
-                    }
-                }
-                r
-            }
-            Input::ToolFeed(rate) => self.sim.set_tool_feed(rate).map_err(load_err),
         };
-        match result {
-            Ok(()) => {
-                self.stats.accept(source);
-                if stamp != 0 {
-                    self.input_stamp = stamp;
-                }
+        match &input {
+            Input::One(c) => {
+                touch(c);
+                self.sim.apply(*c);
             }
-            Err(rejection) => {
-                self.stats.reject(rejection.reason);
-                self.logger.rejection("input", &rejection);
+            Input::Batch(batch) => {
+                batch.iter().for_each(&mut touch);
+                self.sim.apply_batch(batch);
             }
+        }
+        self.stats.accept(source);
+        if stamp != 0 {
+            self.input_stamp = stamp;
         }
     }
 

@@ -52,8 +52,11 @@
 //! extremes of the wave, where the surface slope and so the follower force
 //! vanish, and the growth saturates — the limit cycles of the paper's Fig. 17.
 
-use crate::config::Caliper;
+use super::{contact_rate, surface_kinematics, CommandRule, CommandSpec, Coupling, LoadContext, LoadModel, ModelOut, SceneNodes};
+use crate::config::{Caliper, Config};
+use crate::dynamics::joint::FrictionTorque;
 use crate::dynamics::wrench::Wrench;
+use std::any::Any;
 
 /// Sliding speed below which the friction direction is smoothed, m/s.
 pub const FRICTION_REGULARISATION_SPEED: f64 = 1.0e-3;
@@ -90,6 +93,8 @@ pub struct Pads {
     /// Clamp force per pad the configuration starts with, N (the running
     /// commands are in `Inputs`).
     pub initial_clamp_force: Vec<f64>,
+    /// The coupling bound of the contact springs and dampers ([`LoadModel::coupling`]).
+    pub coupling: Coupling,
 }
 
 /// Surface kinematics under a contact point: deflection w (m) and its rate at
@@ -125,9 +130,9 @@ impl Pads {
 
     /// The friction torque as a function of Ω at the contact forces `forces`:
     /// per contact τ = −μ (N_top + N_bottom) r · tanh(Ω r / v_reg).
-    pub fn friction_torque_terms(&self, forces: &[ContactForces], out: &mut [crate::dynamics::joint::FrictionTorque]) {
+    pub fn friction_torque_terms(&self, forces: &[ContactForces], out: &mut [FrictionTorque]) {
         for ((c, f), t) in self.contacts.iter().zip(forces).zip(out.iter_mut()) {
-            *t = crate::dynamics::joint::FrictionTorque {
+            *t = FrictionTorque {
                 capacity: self.friction_coefficient * (f.top + f.bottom) * c.radius,
                 slope: c.radius / FRICTION_REGULARISATION_SPEED,
             };
@@ -221,6 +226,111 @@ impl Pads {
     }
 }
 
+/// The pads' scratch: per contact point its surface kinematics and forces at
+/// the last evaluation (what ~/pad_states reports).
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct PadScratch {
+    pub kinematics: Vec<SurfaceKinematics>,
+    pub forces: Vec<ContactForces>,
+    closed: Vec<bool>,
+}
+
+/// The pads' one command: a clamp force per pad.
+pub const CLAMP_FORCE: CommandSpec =
+    CommandSpec { instance: "pad", name: "clamp force", token: "clamp_force", unit: "N", indexed: true, rule: CommandRule::NonNegativeForce };
+
+/// The registered builder: pads where `pads.*` gives contact points.
+pub fn build(config: &Config, nodes: &SceneNodes) -> Option<Box<dyn LoadModel>> {
+    let p = config.pads.as_ref()?;
+    let mut contacts_per_pad = vec![0; p.pad_count()];
+    let contacts = p
+        .contacts
+        .iter()
+        .map(|c| {
+            contacts_per_pad[c.pad] += 1;
+            let node = &nodes.ale[c.node];
+            PadContactPoint { node: c.node, pad: c.pad, radius: node.radius, angle: node.angle, sin_cos: node.angle.sin_cos() }
+        })
+        .collect();
+    Some(Box::new(Pads {
+        contacts,
+        contacts_per_pad,
+        stiffness: p.contact_stiffness,
+        damping: p.contact_damping,
+        friction_coefficient: p.friction_coefficient,
+        lift_off: p.lift_off,
+        follower_friction: p.follower_friction,
+        caliper: p.caliper,
+        initial_clamp_force: p.clamp_force.clone(),
+        coupling: Coupling::default(),
+    }
+    .with_coupling(nodes)))
+}
+
+impl Pads {
+    /// The coupling bound with every contact closed and a fixed caliper
+    /// (opening contacts or letting the pads float only removes stiffness).
+    fn with_coupling(mut self, nodes: &SceneNodes) -> Pads {
+        let shapes: Vec<&[crate::dynamics::scene::NodeShape]> = self.contacts.iter().map(|c| nodes.ale[c.node].shapes.as_slice()).collect();
+        let lam = contact_rate(&shapes, nodes.modal_mass);
+        self.coupling = Coupling { stiffness_rate_sq: 2.0 * self.stiffness * lam, damping_rate: 2.0 * self.damping * lam };
+        self
+    }
+}
+
+impl LoadModel for Pads {
+    fn name(&self) -> &'static str {
+        "pads"
+    }
+    fn as_any(&self) -> &dyn Any {
+        self
+    }
+    fn commands(&self) -> &[CommandSpec] {
+        std::slice::from_ref(&CLAMP_FORCE)
+    }
+    fn instances(&self, _command: usize) -> usize {
+        self.pad_count()
+    }
+    fn initial_commands(&self) -> Vec<f64> {
+        self.initial_clamp_force.clone()
+    }
+    fn new_scratch(&self) -> Box<dyn Any + Send + Sync> {
+        let n = self.contacts.len();
+        Box::new(PadScratch { kinematics: vec![SurfaceKinematics::default(); n], forces: vec![ContactForces::default(); n], closed: vec![false; n] })
+    }
+    fn friction_terms(&self) -> usize {
+        self.contacts.len()
+    }
+    fn stage_dependent(&self) -> bool {
+        true
+    }
+    fn coupling(&self) -> Coupling {
+        self.coupling
+    }
+    fn coupling_keys(&self) -> &'static str {
+        "pads.contact_stiffness, pads.contact_damping"
+    }
+
+    /// Contact forces from the deflection and its rate under each contact
+    /// point (ALE amplitudes), their friction, and the wrenches at the nodes.
+    fn evaluate(&self, ctx: &LoadContext, _slot: &[f64], clamp_force: &[f64], out: ModelOut) {
+        let s = out.scratch.downcast_mut::<PadScratch>().expect("the pads' scratch");
+        for (k, c) in s.kinematics.iter_mut().zip(&self.contacts) {
+            *k = surface_kinematics(&ctx.ale_nodes[c.node], ctx.q_ale, ctx.q_dot_ale);
+        }
+        self.forces(clamp_force, &s.kinematics, ctx.speed, &mut s.forces, &mut s.closed);
+        self.friction_torque_terms(&s.forces, out.friction);
+        for (c, f) in self.contacts.iter().zip(&s.forces) {
+            let w = Pads::wrench(c, f);
+            let slot = &mut out.ale[c.node];
+            for a in 0..3 {
+                slot.force[a] += w.force[a];
+            }
+            out.ale_follower[c.node] = self.follower_friction;
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -239,6 +349,7 @@ mod tests {
             follower_friction: true,
             caliper,
             initial_clamp_force: vec![1000.0],
+            coupling: Coupling::default(),
         }
     }
 

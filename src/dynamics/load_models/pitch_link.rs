@@ -19,6 +19,10 @@
 //! the ⟨k = 1, l = 0⟩ pair — the softest of them — dominates (Fig. 15).
 
 /// Prescribed link forces at Lagrangian nodes.
+use super::{LoadContext, LoadModel, ModelOut, SceneNodes};
+use crate::config::Config;
+use std::any::Any;
+
 #[derive(Debug, Clone, PartialEq)]
 pub struct PitchLinks {
     /// Lagrangian nodes, 0-based.
@@ -35,6 +39,36 @@ impl PitchLinks {
     #[inline]
     pub fn force(&self, j: usize, chi: f64) -> f64 {
         self.mean_force + self.cyclic_force * (self.angles[j] + chi - self.cyclic_phase).cos()
+    }
+}
+
+/// The registered builder: links where `links.*` gives their nodes.
+pub fn build(config: &Config, nodes: &SceneNodes) -> Option<Box<dyn LoadModel>> {
+    let l = config.links.as_ref()?;
+    Some(Box::new(PitchLinks {
+        nodes: l.nodes.clone(),
+        angles: l.nodes.iter().map(|&j| nodes.lagrange[j].angle).collect(),
+        mean_force: l.mean_force,
+        cyclic_force: l.cyclic_force,
+        cyclic_phase: l.cyclic_phase,
+    }))
+}
+
+impl LoadModel for PitchLinks {
+    fn name(&self) -> &'static str {
+        "links"
+    }
+    fn as_any(&self) -> &dyn Any {
+        self
+    }
+    /// Prescribed by χ alone; RK4 re-evaluates them at every stage's angle.
+    fn stage_dependent(&self) -> bool {
+        true
+    }
+    fn evaluate(&self, ctx: &LoadContext, _slot: &[f64], _commands: &[f64], out: ModelOut) {
+        for (j, &node) in self.nodes.iter().enumerate() {
+            out.lagrange[node].force[2] += self.force(j, ctx.chi);
+        }
     }
 }
 

@@ -27,6 +27,10 @@
 //! tip back by e, c_t ė + k_t e = f_f (exact over a substep for the held
 //! force), z_tip = z_holder + e. The plate gets −f_f along z at the node.
 
+use super::{surface_kinematics, CommandRule, CommandSpec, LoadContext, LoadModel, ModelOut, SceneNodes};
+use crate::config::Config;
+use std::any::Any;
+
 /// Bins of the machined-shoulder height S(φ) over one revolution.
 pub const SURFACE_BINS: usize = 4096;
 
@@ -54,22 +58,25 @@ pub struct Tool {
     pub thickness: f64,
     /// z of the tool tip at t = 0 (the +z face is at h/2), m.
     pub start_height: f64,
+    /// Feed rate the configuration starts with, m/s (the running command is in `Inputs`).
+    pub initial_feed_rate: f64,
 }
 
-/// Tool state (mutable; in the `State`, so reset and replay are clones).
-#[derive(Debug, Clone, PartialEq)]
-pub struct ToolState {
-    /// z of the holder's (undeflected) tip position, m.
-    pub holder: f64,
-    /// Tip deflection e (pushed back, +z), m.
-    pub deflection: f64,
-    /// Shoulder height S per material-angle bin, m.
-    pub surface: Vec<f64>,
-    /// Chip thickness of the last substep, m.
-    pub chip: f64,
-    /// Feed force of the last substep, N.
-    pub force: f64,
-}
+/// The tool's slot in the [`State`](crate::dynamics::State) (so reset and
+/// replay are copies): the holder, the tip deflection, the last substep's
+/// chip and force, the cut held over the current substep, and the shoulder
+/// height S per material-angle bin from index [`SURFACE`] on.
+pub const HOLDER: usize = 0;
+/// Tip deflection e (pushed back, +z), m.
+pub const DEFLECTION: usize = 1;
+/// Chip thickness of the last substep, m.
+pub const CHIP: usize = 2;
+/// Feed force of the last substep, N.
+pub const FORCE: usize = 3;
+/// The [`ToolStep`] held over the current substep (force, chip, level, first bin, bins, direction).
+const HELD: usize = 4;
+/// Shoulder height S of bin b at `SURFACE + b`, m.
+pub const SURFACE: usize = 10;
 
 /// What one substep cuts, computed at its start.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -86,23 +93,83 @@ pub struct ToolStep {
     pub downwards: bool,
 }
 
-impl ToolState {
-    /// Copy `other` into `self` reusing the surface buffer.
-    pub fn copy_from(&mut self, other: &ToolState) {
-        self.holder = other.holder;
-        self.deflection = other.deflection;
-        self.surface.clear();
-        self.surface.extend_from_slice(&other.surface);
-        self.chip = other.chip;
-        self.force = other.force;
+impl ToolStep {
+    fn store(&self, slot: &mut [f64]) {
+        let held = [self.force, self.chip, self.level, self.first_bin as f64, self.bins as f64, if self.downwards { 1.0 } else { 0.0 }];
+        slot[HELD..HELD + 6].copy_from_slice(&held);
+    }
+
+    fn load(slot: &[f64]) -> ToolStep {
+        let h = &slot[HELD..HELD + 6];
+        ToolStep { force: h[0], chip: h[1], level: h[2], first_bin: h[3] as i64, bins: h[4] as i64, downwards: h[5] != 0.0 }
+    }
+}
+
+/// The tool's one command: the feed rate.
+pub const FEED_RATE: CommandSpec = CommandSpec {
+    instance: "tool",
+    name: "feed rate",
+    token: "feed",
+    unit: "m/s",
+    indexed: false,
+    rule: CommandRule::MagnitudeAtMost(crate::config::MAX_TOOL_FEED_RATE),
+};
+
+/// The registered builder: a tool where `tool.*` gives its node.
+pub fn build(config: &Config, nodes: &SceneNodes) -> Option<Box<dyn LoadModel>> {
+    let t = config.tool.as_ref()?;
+    Some(Box::new(Tool {
+        node: t.node,
+        angle: nodes.ale[t.node].angle,
+        depth_of_cut: t.depth_of_cut,
+        stiffness: t.stiffness,
+        damping: t.damping,
+        specific_force: t.specific_force,
+        force_exponent: t.force_exponent,
+        thickness: config.plate.thickness,
+        start_height: 0.5 * config.plate.thickness + t.start_clearance,
+        initial_feed_rate: t.feed_rate,
+    }))
+}
+
+impl LoadModel for Tool {
+    fn name(&self) -> &'static str {
+        "tool"
+    }
+    fn as_any(&self) -> &dyn Any {
+        self
+    }
+    fn commands(&self) -> &[CommandSpec] {
+        std::slice::from_ref(&FEED_RATE)
+    }
+    fn initial_commands(&self) -> Vec<f64> {
+        vec![self.initial_feed_rate]
+    }
+    fn initial_state(&self) -> Vec<f64> {
+        let mut slot = vec![0.0; SURFACE + SURFACE_BINS];
+        slot[HOLDER] = self.start_height;
+        slot[SURFACE..].fill(0.5 * self.thickness);
+        slot
+    }
+
+    /// The cut of the substep, from the deflection under the tool at its start.
+    fn begin_substep(&self, ctx: &LoadContext, slot: &mut [f64], h: f64) {
+        let w = surface_kinematics(&ctx.ale_nodes[self.node], ctx.q_ale, ctx.q_dot_ale).w;
+        self.begin(slot, w, ctx.chi, ctx.speed, h).store(slot);
+    }
+
+    /// The held feed force, along −z at the tool's node.
+    fn evaluate(&self, _ctx: &LoadContext, slot: &[f64], _commands: &[f64], out: ModelOut) {
+        out.ale[self.node].force[2] -= ToolStep::load(slot).force;
+    }
+
+    fn commit_substep(&self, slot: &mut [f64], commands: &[f64], h: f64) {
+        let step = ToolStep::load(slot);
+        self.commit(slot, &step, commands[0], h);
     }
 }
 
 impl Tool {
-    pub fn initial_state(&self) -> ToolState {
-        ToolState { holder: self.start_height, deflection: 0.0, surface: vec![0.5 * self.thickness; SURFACE_BINS], chip: 0.0, force: 0.0 }
-    }
-
     /// Eq. (21): feed force for chip thickness h (m).
     pub fn feed_force(&self, chip: f64) -> f64 {
         if chip <= 0.0 {
@@ -112,13 +179,13 @@ impl Tool {
     }
 
     /// z of the tool tip, m.
-    pub fn tip(state: &ToolState) -> f64 {
-        state.holder + state.deflection
+    pub fn tip(slot: &[f64]) -> f64 {
+        slot[HOLDER] + slot[DEFLECTION]
     }
 
     /// The cut of a substep of length h starting at joint angle χ (wrapped, rad)
     /// and speed Ω, with deflection w under the tool.
-    pub fn begin(&self, state: &ToolState, w: f64, chi: f64, speed: f64, h: f64) -> ToolStep {
+    pub fn begin(&self, slot: &[f64], w: f64, chi: f64, speed: f64, h: f64) -> ToolStep {
         let n = SURFACE_BINS as i64;
         let width = std::f64::consts::TAU / SURFACE_BINS as f64;
         let phi0 = (self.angle - chi).rem_euclid(std::f64::consts::TAU);
@@ -133,34 +200,34 @@ impl Tool {
             let hi = ((phi0 - sweep) / width - 0.5).ceil() as i64 - 1;
             (lo, (hi - lo + 1).min(n), false)
         };
-        let level = (Self::tip(state) - w).max(-0.5 * self.thickness);
+        let level = (Self::tip(slot) - w).max(-0.5 * self.thickness);
         // No centre passed (a step shorter than a bin): read the bin ahead.
         let read = bins.max(1);
         let mut chip = 0.0;
         for j in 0..read {
             let b = if downwards { first_bin - j } else { first_bin + j }.rem_euclid(n) as usize;
-            chip += (state.surface[b] - level).max(0.0);
+            chip += (slot[SURFACE + b] - level).max(0.0);
         }
         chip /= read as f64;
         ToolStep { force: self.feed_force(chip), chip, level, first_bin, bins: bins.max(0), downwards }
     }
 
     /// Cut the swept bins, move the holder by −v_f h and relax the tip under the held force.
-    pub fn commit(&self, state: &mut ToolState, step: &ToolStep, feed_rate: f64, h: f64) {
+    pub fn commit(&self, slot: &mut [f64], step: &ToolStep, feed_rate: f64, h: f64) {
         let n = SURFACE_BINS as i64;
         for j in 0..step.bins {
             let b = if step.downwards { step.first_bin - j } else { step.first_bin + j }.rem_euclid(n) as usize;
-            state.surface[b] = state.surface[b].min(step.level);
+            slot[SURFACE + b] = slot[SURFACE + b].min(step.level);
         }
         let e_static = step.force / self.stiffness;
-        state.deflection = if self.damping > 0.0 {
-            e_static + (state.deflection - e_static) * (-self.stiffness / self.damping * h).exp()
+        slot[DEFLECTION] = if self.damping > 0.0 {
+            e_static + (slot[DEFLECTION] - e_static) * (-self.stiffness / self.damping * h).exp()
         } else {
             e_static
         };
-        state.holder -= feed_rate * h;
-        state.chip = step.chip;
-        state.force = step.force;
+        slot[HOLDER] -= feed_rate * h;
+        slot[CHIP] = step.chip;
+        slot[FORCE] = step.force;
     }
 }
 
@@ -180,6 +247,7 @@ mod tests {
             force_exponent: 0.7013,
             thickness: 0.01,
             start_height: 0.005,
+            initial_feed_rate: 0.0,
         }
     }
 
@@ -199,11 +267,12 @@ mod tests {
         for h in [1e-3, 3.7e-4, 1e-5] {
             let t = tool();
             let mut s = t.initial_state();
+            let s = s.as_mut_slice();
             let mut chi: f64 = 0.0;
             let steps = (3.0 * TAU / speed / h) as usize;
             for _ in 0..steps {
-                let step = t.begin(&s, 0.0, chi.rem_euclid(TAU), speed, h);
-                t.commit(&mut s, &step, feed, h);
+                let step = t.begin(s, 0.0, chi.rem_euclid(TAU), speed, h);
+                t.commit(s, &step, feed, h);
                 chi += speed * h;
             }
             let expected = TAU * feed / speed;
@@ -211,7 +280,7 @@ mod tests {
             // a bin is T ± h; with substeps shorter than a bin, a bin is read
             // up to one bin width ahead of its cut.
             let tolerance = (h * speed / TAU).max(1.0 / SURFACE_BINS as f64) + 1e-9;
-            assert!((s.chip - expected).abs() <= tolerance * expected, "h = {h}: chip {} vs {expected}", s.chip);
+            assert!((s[CHIP] - expected).abs() <= tolerance * expected, "h = {h}: chip {} vs {expected}", s[CHIP]);
         }
     }
 }

@@ -1,0 +1,64 @@
+//! Space-fixed point springs: a linear spring k_s and damper c_s between the
+//! ground and the plate's mid-plane under ALE nodes (`springs.*`) — a support
+//! roller, a displacement sensor's probe, a test rig's stop.
+//!
+//! At a space-fixed point the plate slides under, the spring acts on the
+//! deflection w and its rate ẇ there (ALE amplitudes, eq. 20):
+//! F_z = −k_s w − c_s ẇ, a transverse force at the node; nothing in-plane.
+//! It is memoryless and depends on the elastic state, so RK4 re-evaluates it
+//! at every stage, and it bounds its coupling rate for the integrators'
+//! step checks like the pad contacts do.
+//!
+//! This file is the worked example of docs/architecture.md ("adding a load
+//! model"): the model, its builder and one line in `REGISTRY`.
+
+use super::{contact_rate, surface_kinematics, Coupling, LoadContext, LoadModel, ModelOut, SceneNodes};
+use crate::config::Config;
+use std::any::Any;
+
+/// Springs under ALE nodes (immutable; in the `Scene`).
+#[derive(Debug, Clone, PartialEq)]
+pub struct PointSprings {
+    /// ALE nodes, 0-based.
+    pub nodes: Vec<usize>,
+    /// k_s, N/m.
+    pub stiffness: f64,
+    /// c_s, N·s/m.
+    pub damping: f64,
+    coupling: Coupling,
+}
+
+/// The registered builder: springs where `springs.ale_nodes` names nodes.
+pub fn build(config: &Config, nodes: &SceneNodes) -> Option<Box<dyn LoadModel>> {
+    let s = config.springs.as_ref()?;
+    let shapes: Vec<&[crate::dynamics::scene::NodeShape]> = s.nodes.iter().map(|&j| nodes.ale[j].shapes.as_slice()).collect();
+    let lam = contact_rate(&shapes, nodes.modal_mass);
+    let coupling = Coupling { stiffness_rate_sq: s.stiffness * lam, damping_rate: s.damping * lam };
+    Some(Box::new(PointSprings { nodes: s.nodes.clone(), stiffness: s.stiffness, damping: s.damping, coupling }))
+}
+
+impl LoadModel for PointSprings {
+    fn name(&self) -> &'static str {
+        "springs"
+    }
+    fn as_any(&self) -> &dyn Any {
+        self
+    }
+    fn stage_dependent(&self) -> bool {
+        true
+    }
+    fn coupling(&self) -> Coupling {
+        self.coupling
+    }
+    fn coupling_keys(&self) -> &'static str {
+        "springs.stiffness, springs.damping"
+    }
+
+    /// F_z = −k_s w − c_s ẇ at each node.
+    fn evaluate(&self, ctx: &LoadContext, _slot: &[f64], _commands: &[f64], out: ModelOut) {
+        for &j in &self.nodes {
+            let s = surface_kinematics(&ctx.ale_nodes[j], ctx.q_ale, ctx.q_dot_ale);
+            out.ale[j].force[2] -= self.stiffness * s.w + self.damping * s.w_dot;
+        }
+    }
+}

@@ -1,0 +1,78 @@
+//! Node frames (paper section 4.1): material points turning with the plate
+//! (Lagrangian) and space-fixed points the plate slides under (ALE), with the
+//! mode shapes evaluated once at their points.
+
+use crate::config::NodePosition;
+use crate::model::{PlateModel, ShapeValue};
+use std::f64::consts::TAU;
+
+/// Kind of node frame (paper section 4.1).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum NodeKind {
+    /// Material point turning with the plate (`nodes_Lagrange`).
+    Lagrange,
+    /// Space-fixed point the plate slides under (`nodes_ALE`).
+    Ale,
+}
+
+impl NodeKind {
+    pub fn name(self) -> &'static str {
+        match self {
+            NodeKind::Lagrange => "lagrange",
+            NodeKind::Ale => "ale",
+        }
+    }
+}
+
+/// A node frame with the mode shapes evaluated at its point.
+#[derive(Debug, Clone, PartialEq)]
+pub struct NodeFrame {
+    pub kind: NodeKind,
+    pub radius: f64,
+    /// φ for Lagrangian nodes (plate frame), θ for ALE nodes (ALE frame), rad.
+    pub angle: f64,
+    /// Per mode: w_i, and the surface tilt (θ_x, θ_y) = (∂w_i/∂y, −∂w_i/∂x).
+    pub shapes: Vec<NodeShape>,
+    /// Per mode ∂w_i/∂φ (for the material velocity under an ALE point).
+    pub w_phi: Vec<f64>,
+    /// Undeformed position (r cos, r sin) in the parent frame, m.
+    xy: [f64; 2],
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct NodeShape {
+    pub w: f64,
+    pub tilt: [f64; 2],
+}
+
+impl NodeFrame {
+    pub(super) fn new(model: &PlateModel, kind: NodeKind, p: NodePosition) -> NodeFrame {
+        let radius = model.radius_at(p.radial);
+        let angle = p.angular * TAU;
+        let values: Vec<ShapeValue> = (0..model.n_modes()).map(|i| model.mode_shape(i, radius, angle)).collect();
+        NodeFrame {
+            kind,
+            radius,
+            angle,
+            shapes: values.iter().map(|s| NodeShape { w: s.w, tilt: s.tilt(radius, angle) }).collect(),
+            w_phi: values.iter().map(|s| s.w_phi).collect(),
+            xy: [radius * angle.cos(), radius * angle.sin()],
+        }
+    }
+
+    /// Position in the node's parent frame (undeformed).
+    pub fn position(&self) -> [f64; 3] {
+        [self.xy[0], self.xy[1], 0.0]
+    }
+
+    /// Deflection w and tilt at the node for amplitudes `q` in the node's own description.
+    pub fn deflection(&self, q: &[f64]) -> NodeShape {
+        let mut out = NodeShape::default();
+        for (s, &qi) in self.shapes.iter().zip(q) {
+            out.w += s.w * qi;
+            out.tilt[0] += s.tilt[0] * qi;
+            out.tilt[1] += s.tilt[1] * qi;
+        }
+        out
+    }
+}
