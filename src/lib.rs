@@ -10,6 +10,8 @@ pub mod dynamics;
 pub mod model;
 pub mod study;
 #[cfg(feature = "ros")]
+pub mod messages;
+#[cfg(feature = "ros")]
 pub mod ros;
 #[cfg(feature = "ros")]
 pub mod bag;

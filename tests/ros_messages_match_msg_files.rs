@@ -9,7 +9,7 @@
 
 #![cfg(feature = "ros")]
 
-use annular_plate::ros::messages as m;
+use annular_plate::messages::types as m;
 use annular_plate::ros::RosType;
 use serde::de::{self, DeserializeOwned, DeserializeSeed, SeqAccess, Visitor};
 use std::collections::BTreeMap;

@@ -13,13 +13,13 @@
 use super::recorder::{NodeBag, NodeTopics, Sample};
 use super::writer::{BagError, BagSummary};
 use crate::dynamics::Simulation;
-use crate::ros::args::{NameResolver, RosArgs};
-use crate::ros::clock::StepClock;
-use crate::ros::diagnostics::{self, LoopReport, Timing};
-use crate::ros::inputs::InputStats;
-use crate::ros::outputs::{clock_message, static_transforms, FrameNames, OutputMessages};
-use crate::ros::settings::RosSettings;
-use crate::ros::DEFAULT_NODE_NAME;
+use crate::messages::names::{NameResolver, RosArgs};
+use crate::messages::clock::StepClock;
+use crate::messages::diagnostics::{self, LoopReport, Timing};
+use crate::messages::input_stats::InputStats;
+use crate::messages::outputs::{clock_message, static_transforms, FrameNames, OutputMessages};
+use crate::messages::settings::RosSettings;
+use crate::messages::DEFAULT_NODE_NAME;
 use std::path::Path;
 use std::time::Instant;
 

@@ -12,13 +12,13 @@
 //! writes metadata.yaml.
 
 use super::writer::{BagError, BagSummary, BagWriter, TopicId};
-use crate::ros::args::NameResolver;
-use crate::ros::diagnostics::RecordReport;
-use crate::ros::messages::{
+use crate::messages::names::NameResolver;
+use crate::messages::diagnostics::RecordReport;
+use crate::messages::types::{
     Clock, DiagnosticArray, JointState, ModalAmplitudes, PadStates, RosType, TFMessage, Time, ToolState,
 };
-use crate::ros::outputs::Shared;
-use crate::ros::{qos, topics};
+use crate::messages::outputs::Shared;
+use crate::messages::{qos, topics};
 use ros2_client::QosProfile;
 use std::path::Path;
 use std::sync::atomic::{AtomicU64, Ordering};

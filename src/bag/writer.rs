@@ -369,8 +369,8 @@ struct Metadata {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::ros::messages::{Clock, Time};
-    use crate::ros::qos;
+    use crate::messages::types::{Clock, Time};
+    use crate::messages::qos;
 
     fn temp(name: &str) -> PathBuf {
         let d = std::env::temp_dir().join(format!("annular_plate-bag-{}-{name}", std::process::id()));

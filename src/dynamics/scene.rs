@@ -7,7 +7,7 @@ use crate::model::PlateModel;
 
 pub use super::layout::{ModeLayout, ModePair};
 use super::commands::InputRules;
-use super::load_models::{LoadModels, SceneNodes};
+use super::load_models::{LoadModels, ModelWrenches, SceneNodes};
 pub use super::node_frame::{NodeFrame, NodeKind, NodeShape};
 
 /// The effects the reference motion switches on (DESIGN: only what a scene needs).
@@ -84,6 +84,11 @@ impl Scene {
             rules,
             load_models,
         }
+    }
+
+    /// Scratch for the load models' wrenches at this scene's node frames.
+    pub fn model_wrenches(&self) -> ModelWrenches {
+        ModelWrenches::new(self.ale_nodes.len(), self.lagrange_nodes.len(), &self.load_models)
     }
 
     pub fn n_modes(&self) -> usize {

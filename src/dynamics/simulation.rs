@@ -117,7 +117,7 @@ impl Simulation {
         let initial = initial_state(&config, &scene);
         let mut inputs = Inputs::default();
         reset_inputs(&config, &scene, &mut inputs);
-        let mut sim = Simulation { state: initial.clone(), initial, stepper, inputs, model_outputs: ModelWrenches::new(&scene), scene, settings, config };
+        let mut sim = Simulation { state: initial.clone(), initial, stepper, inputs, model_outputs: scene.model_wrenches(), scene, settings, config };
         sim.refresh_model_outputs();
         Ok(sim)
     }

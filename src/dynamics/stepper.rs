@@ -108,7 +108,7 @@ impl Stepper {
             rk: std::array::from_fn(|_| vec![0.0; 2 * n]),
             backup: State::new(n, Coordinates::Ale, 0.0, 0.0),
             last_inner_substeps: 1,
-            model_wrenches: ModelWrenches::new(scene),
+            model_wrenches: scene.model_wrenches(),
         }
     }
 

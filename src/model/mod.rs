@@ -8,6 +8,7 @@
 //! eq. (11) ([`body`]). Immutable once built; no ROS, no time stepping.
 
 pub mod body;
+mod build;
 pub mod bspline;
 pub mod eigen;
 mod error;
@@ -42,7 +43,7 @@ pub struct PlateModel {
 impl PlateModel {
     /// Build the model for a validated plate configuration.
     pub fn new(plate: &PlateConfig) -> Result<PlateModel, ModelError> {
-        modes::build(plate)
+        build::build(plate)
     }
 
     pub fn plate(&self) -> &PlateConfig {

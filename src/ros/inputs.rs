@@ -15,68 +15,10 @@
 //! A rejected input changes nothing; it is counted (visible in
 //! /diagnostics) and logged at most once per `ros.reject_log_period` per kind.
 
+pub use crate::messages::input_stats::{InputStats, RejectReason, Source};
 use crate::dynamics::{check, check_batch, BatchError, Checked, CheckedBatch, Command, InputError, InputRules, NodeKind, Wrench};
-use std::sync::atomic::{AtomicU64, Ordering};
 use std::sync::Mutex;
 use std::time::{Duration, Instant};
-
-/// Why an input was refused.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
-pub enum RejectReason {
-    /// NaN or ±Inf somewhere.
-    NonFinite,
-    /// Beyond the `limits.*` plausibility limits.
-    Absurd,
-    /// A WrenchStamped whose frame_id is not its node's frame.
-    UnknownFrame,
-    /// A wrench for a node, or a clamp force for a pad, the scene does not have.
-    NoSuchNode,
-    /// A NodeWrenchArray with an unknown kind or a node named twice; a
-    /// PadClampForces array with a pad named twice or arrays of different lengths.
-    MalformedBatch,
-    /// The sample could not be decoded (wrong type or truncated data).
-    Undecodable,
-    /// The simulation's input queue was full (inputs faster than it steps).
-    QueueFull,
-}
-
-impl RejectReason {
-    pub const ALL: [RejectReason; 7] = [
-        RejectReason::NonFinite,
-        RejectReason::Absurd,
-        RejectReason::UnknownFrame,
-        RejectReason::NoSuchNode,
-        RejectReason::MalformedBatch,
-        RejectReason::Undecodable,
-        RejectReason::QueueFull,
-    ];
-
-    pub fn name(self) -> &'static str {
-        match self {
-            RejectReason::NonFinite => "non_finite",
-            RejectReason::Absurd => "absurd",
-            RejectReason::UnknownFrame => "unknown_frame",
-            RejectReason::NoSuchNode => "no_such_node",
-            RejectReason::MalformedBatch => "malformed_batch",
-            RejectReason::Undecodable => "undecodable",
-            RejectReason::QueueFull => "queue_full",
-        }
-    }
-
-    fn index(self) -> usize {
-        RejectReason::ALL.iter().position(|r| *r == self).unwrap_or(0)
-    }
-
-    /// The kind of an input refused by the dynamics' rules (a missing pad or
-    /// tool counts as a missing node).
-    pub fn of_input_error(e: &InputError) -> Self {
-        match e {
-            InputError::NonFinite { .. } | InputError::SpeedNotFinite { .. } => RejectReason::NonFinite,
-            InputError::Absurd { .. } | InputError::SpeedBeyondLimit { .. } => RejectReason::Absurd,
-            InputError::NoSuchNode { .. } | InputError::NoSuchInstance { .. } | InputError::NoSuchModel { .. } => RejectReason::NoSuchNode,
-        }
-    }
-}
 
 /// An input refused, with a sentence for the log.
 #[derive(Debug, Clone, PartialEq)]
@@ -110,38 +52,6 @@ impl Input {
             Input::One(c) => vec![c.command()],
             Input::Batch(b) => b.iter().map(|c| c.command()).collect(),
         }
-    }
-}
-
-/// Which topic an input came from (for counting).
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Source {
-    SpeedCommand,
-    NodeWrench,
-    WrenchArray,
-    PadClampForce,
-    PadClampForces,
-    ToolFeed,
-}
-
-impl Source {
-    pub const ALL: [Source; 6] =
-        [Source::SpeedCommand, Source::NodeWrench, Source::WrenchArray, Source::PadClampForce, Source::PadClampForces, Source::ToolFeed];
-
-    /// The counter's name in /diagnostics: `accepted_<name>`.
-    pub fn name(self) -> &'static str {
-        match self {
-            Source::SpeedCommand => "speed_command",
-            Source::NodeWrench => "node_wrench",
-            Source::WrenchArray => "wrench_array",
-            Source::PadClampForce => "pad_clamp_force",
-            Source::PadClampForces => "pad_clamp_forces",
-            Source::ToolFeed => "tool_feed",
-        }
-    }
-
-    fn index(self) -> usize {
-        Source::ALL.iter().position(|s| *s == self).unwrap_or(0)
     }
 }
 
@@ -291,49 +201,6 @@ fn batch_rejection(e: BatchError, what: &str, duplicate: impl Fn(usize) -> Strin
         BatchError::Duplicate { position, .. } => {
             Rejection::new(RejectReason::MalformedBatch, format!("{}; the array was not applied", duplicate(position)))
         }
-    }
-}
-
-/// Counters shared by the subscriber tasks, the loop and /diagnostics.
-#[derive(Debug, Default)]
-pub struct InputStats {
-    accepted: [AtomicU64; Source::ALL.len()],
-    rejected: [AtomicU64; RejectReason::ALL.len()],
-    expired: AtomicU64,
-}
-
-impl InputStats {
-    pub fn accept(&self, source: Source) {
-        self.accepted[source.index()].fetch_add(1, Ordering::Relaxed);
-    }
-
-    pub fn reject(&self, reason: RejectReason) {
-        self.rejected[reason.index()].fetch_add(1, Ordering::Relaxed);
-    }
-
-    /// A held wrench dropped to zero by `ros.wrench_timeout`.
-    pub fn expire(&self) {
-        self.expired.fetch_add(1, Ordering::Relaxed);
-    }
-
-    pub fn accepted(&self, source: Source) -> u64 {
-        self.accepted[source.index()].load(Ordering::Relaxed)
-    }
-
-    pub fn accepted_total(&self) -> u64 {
-        self.accepted.iter().map(|a| a.load(Ordering::Relaxed)).sum()
-    }
-
-    pub fn rejected(&self, reason: RejectReason) -> u64 {
-        self.rejected[reason.index()].load(Ordering::Relaxed)
-    }
-
-    pub fn rejected_total(&self) -> u64 {
-        self.rejected.iter().map(|a| a.load(Ordering::Relaxed)).sum()
-    }
-
-    pub fn expired(&self) -> u64 {
-        self.expired.load(Ordering::Relaxed)
     }
 }
 
@@ -543,25 +410,6 @@ mod tests {
         assert_eq!(reason(&[1, 2], &[1.0, -5.0]), RejectReason::Absurd);
         let e = v.clamp_forces(&[1, 2], &[1.0, 2e4]).unwrap_err();
         assert!(e.detail.contains("entry 1") && e.detail.contains("not applied"), "{}", e.detail);
-    }
-
-    #[test]
-    fn stats_count() {
-        let s = InputStats::default();
-        s.accept(Source::NodeWrench);
-        s.accept(Source::NodeWrench);
-        s.accept(Source::SpeedCommand);
-        s.accept(Source::PadClampForce);
-        s.reject(RejectReason::Absurd);
-        s.reject(RejectReason::Undecodable);
-        s.expire();
-        assert_eq!(s.accepted(Source::NodeWrench), 2);
-        assert_eq!(s.accepted(Source::PadClampForce), 1);
-        assert_eq!(s.accepted(Source::ToolFeed), 0);
-        assert_eq!(s.accepted_total(), 4);
-        assert_eq!(s.rejected(RejectReason::Absurd), 1);
-        assert_eq!(s.rejected_total(), 2);
-        assert_eq!(s.expired(), 1);
     }
 
     #[test]

@@ -21,20 +21,12 @@
 //!
 //! The physics (`model`, `dynamics`) never imports anything from here.
 
-pub mod args;
-pub mod clock;
-pub mod diagnostics;
 pub mod inputs;
 pub mod logging;
-pub mod messages;
 pub mod node;
-pub mod outputs;
 pub mod params_service;
-pub mod qos;
 pub mod services;
-pub mod settings;
 pub mod sim_loop;
-pub mod topics;
 
-pub use messages::RosType;
+pub use crate::messages::RosType;
 pub use node::{run_node, NodeSetup, DEFAULT_NODE_NAME, DEFAULT_SCENE};

@@ -2,19 +2,19 @@
 //! entities, spawns the input and service tasks and the simulation thread,
 //! and shuts everything down in order on SIGINT or SIGTERM.
 
-use super::args::{domain_id_from_env, NameResolver, RosArgs};
+use crate::messages::names::{domain_id_from_env, NameResolver, RosArgs};
 use super::inputs::{Input, InputStats, InputValidator, RejectReason, Rejection, Source};
 use super::logging::{parse_level, Logger};
-use super::messages::{
+use crate::messages::types::{
     Clock, DiagnosticArray, Float64, JointState, ModalAmplitudes, NodeWrenchArray, PadClampForces, PadStates, RosType,
     TFMessage, ToolState, WrenchStamped,
 };
-use super::outputs::{static_transforms, FrameNames, OutputMessages, Shared};
+use crate::messages::outputs::{static_transforms, FrameNames, OutputMessages, Shared};
 use super::params_service::{effective_parameters, ParamStore};
 use super::services::{self, Command};
-use super::settings::RosSettings;
+use crate::messages::settings::RosSettings;
 use super::sim_loop::{LoopSettings, Publishers, SimLoop};
-use super::{qos, topics};
+use crate::messages::{qos, topics};
 use crate::bag::recorder::{NodeBag, NodeTopics, Recorder, Sample};
 use crate::config::{Config, ConfigError, Params};
 use crate::dynamics::{NodeKind, Simulation, Wrench};
@@ -30,7 +30,7 @@ use std::time::Duration;
 use tokio::task::JoinHandle;
 
 /// The node's name unless remapped with `-r __node:=NAME`.
-pub const DEFAULT_NODE_NAME: &str = "annular_plate";
+pub use crate::messages::DEFAULT_NODE_NAME;
 
 /// The built-in default scene (a brake test bench), used when no file is given.
 pub const DEFAULT_SCENE: &str = include_str!("../../config/brake_bench.yaml");
@@ -188,7 +188,7 @@ where
     })
 }
 
-fn to_wrench(w: &super::messages::Wrench) -> Wrench {
+fn to_wrench(w: &crate::messages::types::Wrench) -> Wrench {
     Wrench { force: w.force.to_array(), moment: w.torque.to_array() }
 }
 
@@ -237,7 +237,7 @@ async fn serve(setup: NodeSetup, sim: Simulation, domain: u16, bag: Option<NodeB
         diagnostics: publisher::<DiagnosticArray, DiagnosticArray>(&mut node, names, topics::DIAGNOSTICS, &qos::DIAGNOSTICS)?,
     };
     let tf_static = publisher::<TFMessage, TFMessage>(&mut node, names, topics::TF_STATIC, &qos::TF_STATIC)?;
-    let static_stamp = if settings.sim_time { super::messages::Time::default() } else { super::messages::Time::wall_now() };
+    let static_stamp = if settings.sim_time { crate::messages::types::Time::default() } else { crate::messages::types::Time::wall_now() };
     let static_msg = static_transforms(&frames, setup.config.reference.tilt, static_stamp);
 
     // Recording (`run --record`): a writer thread fed by the loop.

@@ -13,7 +13,7 @@
 //! ([`RUNTIME_KEYS`]); setting any other is refused with a reason that says
 //! how to change it (restart with `-p name:=value`).
 
-use super::settings::{RosSettings, ROS_KEYS};
+use crate::messages::settings::{RosSettings, ROS_KEYS};
 use crate::config::{Config, ParamValue, Params};
 use ros2_client::parameters::raw;
 use ros2_client::rcl_interfaces::{ListParametersResult, SetParametersAtomicallyResponse};
@@ -26,12 +26,7 @@ pub const RUNTIME_KEYS: &[(&str, &str)] = &[
     ("ros.wrench_timeout", "finite and >= 0 s (0 = hold wrenches until replaced)"),
 ];
 
-/// A change accepted at run time, for the simulation loop.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub enum RuntimeChange {
-    RealtimeFactor(f64),
-    WrenchTimeout(f64),
-}
+pub use super::services::RuntimeChange;
 
 pub fn to_ros_value(v: &ParamValue) -> RosValue {
     match v.clone() {

@@ -12,14 +12,20 @@
 //! response always describes the state after the request.
 
 use super::inputs::{Input, Source};
-use super::messages::{SetBoolRequest, SetBoolResponse, StepRequest, StepResponse, TriggerRequest, TriggerResponse};
-use super::params_service::RuntimeChange;
-use super::qos;
+use crate::messages::types::{SetBoolRequest, SetBoolResponse, StepRequest, StepResponse, TriggerRequest, TriggerResponse};
+use crate::messages::qos;
 use ros2_client::{Message, Name, Node, Server, ServiceMapping, ServiceTypeName};
 use std::future::Future;
 use std::sync::mpsc::{SyncSender, TrySendError};
 use tokio::sync::oneshot;
 use tokio::task::JoinHandle;
+
+/// A change accepted at run time, for the simulation loop.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum RuntimeChange {
+    RealtimeFactor(f64),
+    WrenchTimeout(f64),
+}
 
 /// Everything the simulation loop is told, in arrival order.
 #[derive(Debug)]

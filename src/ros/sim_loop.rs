@@ -9,15 +9,15 @@
 //! with `run --record`, hand the same message handles to the bag writer
 //! thread without waiting (`bag::recorder`).
 
-use super::clock::{Pacer, StepClock};
-use super::diagnostics::{self, LoopReport, Timing};
+use crate::messages::clock::{Pacer, StepClock};
+use crate::messages::diagnostics::{self, LoopReport, Timing};
 use super::inputs::{Input, InputStats, Source, StaleWrenches};
 use super::logging::Logger;
-use super::messages::{
+use crate::messages::types::{
     Clock, DiagnosticArray, JointState, ModalAmplitudes, PadStates, SetBoolResponse, StepResponse, TFMessage, Time,
     ToolState, TriggerResponse,
 };
-use super::outputs::{clock_message, OutputMessages, Shared};
+use crate::messages::outputs::{clock_message, OutputMessages, Shared};
 use super::params_service::RuntimeChange;
 use super::services::Command;
 use crate::bag::recorder::{Recorder, Sample};

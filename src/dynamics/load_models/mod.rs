@@ -21,190 +21,28 @@
 //! re-evaluated by RK4 at every stage, by the other integrators at the substep
 //! start. After the substep, [`LoadModel::commit_substep`] advances the state.
 
+pub mod model;
 pub mod pad;
 pub mod pitch_link;
 pub mod point_spring;
 pub mod tool;
 
-pub use pad::{ContactForces, PadContactPoint, PadScratch, Pads, SurfaceKinematics};
+pub use model::{contact_rate, surface_kinematics, Builder, SurfaceKinematics, CommandRule, CommandSpec, Coupling, LoadContext, LoadModel, ModelOut, SceneNodes};
+
+pub use pad::{ContactForces, PadContactPoint, PadScratch, Pads};
 pub use pitch_link::PitchLinks;
 pub use point_spring::PointSprings;
 pub use tool::{Tool, ToolStep};
 
-use super::error::{InputError, SimulationError};
-use super::joint::FrictionTorque;
-use super::scene::NodeFrame;
-use super::wrench::Wrench;
-use crate::config::{Config, IntegratorKind, LimitsConfig};
+use crate::config::{Config, IntegratorKind};
+use crate::dynamics::error::SimulationError;
+use crate::dynamics::joint::FrictionTorque;
+use crate::dynamics::wrench::Wrench;
 use std::any::Any;
-use std::fmt::Debug;
 use std::ops::Range;
-
-/// Builds a load model from a configuration, `None` when the scene does not use it.
-pub type Builder = fn(&Config, &SceneNodes) -> Option<Box<dyn LoadModel>>;
 
 /// Every load model, once, in evaluation order. A new model: its file and one line here.
 pub const REGISTRY: &[Builder] = &[pad::build, tool::build, pitch_link::build, point_spring::build];
-
-/// What a model's builder sees of the scene: the node frames and modal masses.
-pub struct SceneNodes<'a> {
-    pub ale: &'a [NodeFrame],
-    pub lagrange: &'a [NodeFrame],
-    pub modal_mass: &'a [f64],
-}
-
-/// The kinematics a model is evaluated at (substep start or an RK4 stage).
-#[derive(Clone, Copy)]
-pub struct LoadContext<'a> {
-    pub ale_nodes: &'a [NodeFrame],
-    pub lagrange_nodes: &'a [NodeFrame],
-    /// Amplitudes and rates in the ALE description (eq. 20).
-    pub q_ale: &'a [f64],
-    pub q_dot_ale: &'a [f64],
-    /// Joint angle χ (wrapped to [0, 2π), rad) and speed Ω (rad/s).
-    pub chi: f64,
-    pub speed: f64,
-}
-
-/// The rule a command value must meet.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub enum CommandRule {
-    /// Finite, in [0, `limits.max_force`] (a clamp force).
-    NonNegativeForce,
-    /// Finite, |v| ≤ the limit.
-    MagnitudeAtMost(f64),
-}
-
-/// One command of a load model, as the node and recorder discover it.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct CommandSpec {
-    /// What one instance is called (`pad`, `tool`).
-    pub instance: &'static str,
-    /// The command in words (`clamp force`, `feed rate`).
-    pub name: &'static str,
-    /// The name token of its topic (`clamp_force`: `~/pad_<j>/clamp_force`; `feed`: `~/tool_feed`).
-    pub token: &'static str,
-    pub unit: &'static str,
-    /// Instances are numbered (`pad_1`, `pad_2`, …) rather than one.
-    pub indexed: bool,
-    pub rule: CommandRule,
-}
-
-impl CommandSpec {
-    /// The command of instance `instance` (0-based) in words: `pad_2 clamp force`, `tool feed rate`.
-    pub fn what(&self, instance: usize) -> String {
-        if self.indexed {
-            format!("{}_{} {}", self.instance, instance + 1, self.name)
-        } else {
-            format!("{} {}", self.instance, self.name)
-        }
-    }
-
-    /// Check `value` for instance `instance` (0-based) against the rule.
-    pub fn check(&self, instance: usize, value: f64, limits: &LimitsConfig) -> Result<(), InputError> {
-        if !value.is_finite() {
-            return Err(InputError::NonFinite { what: self.what(instance), value });
-        }
-        match self.rule {
-            CommandRule::NonNegativeForce if !(0.0..=limits.max_force).contains(&value) => Err(InputError::Absurd {
-                what: format!("{} (must lie in [0, limits.max_force])", self.what(instance)),
-                value,
-                limit: limits.max_force,
-            }),
-            CommandRule::MagnitudeAtMost(limit) if value.abs() > limit => {
-                Err(InputError::Absurd { what: self.what(instance), value, limit })
-            }
-            _ => Ok(()),
-        }
-    }
-}
-
-/// How strongly a memoryless model couples the modes, for the integrators'
-/// step checks: the largest eigenvalues of M^(−½) K M^(−½) (1/s²) and
-/// M^(−½) C M^(−½) (1/s) with every contact closed.
-#[derive(Debug, Clone, Copy, PartialEq, Default)]
-pub struct Coupling {
-    pub stiffness_rate_sq: f64,
-    pub damping_rate: f64,
-}
-
-/// Where a model writes its forces at one instant.
-pub struct ModelOut<'a> {
-    /// Wrenches per node frame, in the node frame's axes (summed over the models).
-    pub ale: &'a mut [Wrench],
-    pub lagrange: &'a mut [Wrench],
-    /// Whether the node's model wrench follows the deformed surface.
-    pub ale_follower: &'a mut [bool],
-    pub lagrange_follower: &'a mut [bool],
-    /// This model's friction terms of the joint torque ([`LoadModel::friction_terms`] of them).
-    pub friction: &'a mut [FrictionTorque],
-    /// This model's scratch ([`LoadModel::new_scratch`]).
-    pub scratch: &'a mut dyn Any,
-}
-
-/// A load model (see the module docs). Only [`LoadModel::name`],
-/// [`LoadModel::evaluate`] and [`LoadModel::as_any`] are required.
-pub trait LoadModel: Debug + Send + Sync {
-    /// The configuration section (`pads`, `tool`, `links`, `springs`).
-    fn name(&self) -> &'static str;
-
-    /// For downcasting to the concrete model (the outputs of pads and tool).
-    fn as_any(&self) -> &dyn Any;
-
-    /// Its commands (held in [`LoadCommands`], one value per instance and command).
-    fn commands(&self) -> &[CommandSpec] {
-        &[]
-    }
-
-    /// Instances of command `command` (pads: one clamp force per pad).
-    fn instances(&self, _command: usize) -> usize {
-        1
-    }
-
-    /// Initial values of its commands, in [`LoadModel::commands`] order × instances.
-    fn initial_commands(&self) -> Vec<f64> {
-        Vec::new()
-    }
-
-    /// Its slot in the [`State`](super::State) at t = 0.
-    fn initial_state(&self) -> Vec<f64> {
-        Vec::new()
-    }
-
-    /// Scratch for [`LoadModel::evaluate`], allocated once.
-    fn new_scratch(&self) -> Box<dyn Any + Send + Sync> {
-        Box::new(())
-    }
-
-    /// Friction terms it adds to the joint torque (solved at the step's end near standstill).
-    fn friction_terms(&self) -> usize {
-        0
-    }
-
-    /// Memoryless and dependent on the elastic state: RK4 re-evaluates it at every stage.
-    fn stage_dependent(&self) -> bool {
-        false
-    }
-
-    /// Its coupling rates (stiff contacts); zero for prescribed forces.
-    fn coupling(&self) -> Coupling {
-        Coupling::default()
-    }
-
-    /// Names of the parameters that set [`LoadModel::coupling`], for error messages.
-    fn coupling_keys(&self) -> &'static str {
-        ""
-    }
-
-    /// Before the substep of length `h` (models with memory hold a force over it).
-    fn begin_substep(&self, _ctx: &LoadContext, _slot: &mut [f64], _h: f64) {}
-
-    /// Its wrenches at one instant, added into `out`.
-    fn evaluate(&self, ctx: &LoadContext, slot: &[f64], commands: &[f64], out: ModelOut);
-
-    /// After the substep of length `h`: advance its state.
-    fn commit_substep(&self, _slot: &mut [f64], _commands: &[f64], _h: f64) {}
-}
 
 /// The scene's load models (immutable) with the layout of their commands.
 #[derive(Debug, Default)]
@@ -262,10 +100,8 @@ pub struct ModelWrenches {
 }
 
 impl ModelWrenches {
-    /// Scratch for the nodes of `scene` and its models.
-    pub fn new(scene: &super::Scene) -> ModelWrenches {
-        let (n_ale, n_lagrange) = (scene.ale_nodes.len(), scene.lagrange_nodes.len());
-        let lm = &scene.load_models;
+    /// Scratch for `n_ale` and `n_lagrange` node frames and the models `lm`.
+    pub fn new(n_ale: usize, n_lagrange: usize, lm: &LoadModels) -> ModelWrenches {
         ModelWrenches {
             ale: vec![Wrench::default(); n_ale],
             lagrange: vec![Wrench::default(); n_lagrange],
@@ -286,31 +122,6 @@ impl ModelWrenches {
         self.lagrange.iter_mut().for_each(|w| *w = Wrench::default());
         self.friction.iter_mut().for_each(|f| *f = FrictionTorque::default());
     }
-}
-
-/// Deflection and its rate at a fixed point for amplitudes in the node's own description.
-#[inline]
-pub fn surface_kinematics(node: &NodeFrame, q: &[f64], q_dot: &[f64]) -> SurfaceKinematics {
-    let mut s = SurfaceKinematics::default();
-    for ((shape, &qi), &vi) in node.shapes.iter().zip(q).zip(q_dot) {
-        s.w += shape.w * qi;
-        s.w_dot += shape.w * vi;
-    }
-    s
-}
-
-/// Largest eigenvalue of M^(−½) (Σ_c w_c w_cᵀ) M^(−½), w_c the mode shapes at contact c.
-pub fn contact_rate(shapes: &[&[super::scene::NodeShape]], modal_mass: &[f64]) -> f64 {
-    let n = modal_mass.len();
-    let mut a = faer::Mat::<f64>::zeros(n, n);
-    for s in shapes {
-        for i in 0..n {
-            for m in 0..n {
-                a[(i, m)] += s[i].w * s[m].w / (modal_mass[i] * modal_mass[m]).sqrt();
-            }
-        }
-    }
-    a.self_adjoint_eigenvalues(faer::Side::Lower).ok().and_then(|ev| ev.last().copied()).unwrap_or(0.0).max(0.0)
 }
 
 /// Largest h × (coupling rate) the integrators that hold a model's forces over a substep accept.
@@ -462,7 +273,8 @@ impl LoadModels {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::dynamics::scene::NodeShape;
+    use crate::config::LimitsConfig;
+    use crate::dynamics::node_frame::NodeShape;
 
     #[test]
     fn command_rules_name_the_instance_and_keep_the_limits() {

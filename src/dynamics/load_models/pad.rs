@@ -52,7 +52,7 @@
 //! extremes of the wave, where the surface slope and so the follower force
 //! vanish, and the growth saturates — the limit cycles of the paper's Fig. 17.
 
-use super::{contact_rate, surface_kinematics, CommandRule, CommandSpec, Coupling, LoadContext, LoadModel, ModelOut, SceneNodes};
+use super::model::{contact_rate, surface_kinematics, SurfaceKinematics, CommandRule, CommandSpec, Coupling, LoadContext, LoadModel, ModelOut, SceneNodes};
 use crate::config::{Caliper, Config};
 use crate::dynamics::joint::FrictionTorque;
 use crate::dynamics::wrench::Wrench;
@@ -95,14 +95,6 @@ pub struct Pads {
     pub initial_clamp_force: Vec<f64>,
     /// The coupling bound of the contact springs and dampers ([`LoadModel::coupling`]).
     pub coupling: Coupling,
-}
-
-/// Surface kinematics under a contact point: deflection w (m) and its rate at
-/// the fixed point, ∂w/∂t|θ (m/s).
-#[derive(Debug, Clone, Copy, PartialEq, Default)]
-pub struct SurfaceKinematics {
-    pub w: f64,
-    pub w_dot: f64,
 }
 
 /// Forces at one contact point.
@@ -271,7 +263,7 @@ impl Pads {
     /// The coupling bound with every contact closed and a fixed caliper
     /// (opening contacts or letting the pads float only removes stiffness).
     fn with_coupling(mut self, nodes: &SceneNodes) -> Pads {
-        let shapes: Vec<&[crate::dynamics::scene::NodeShape]> = self.contacts.iter().map(|c| nodes.ale[c.node].shapes.as_slice()).collect();
+        let shapes: Vec<&[crate::dynamics::node_frame::NodeShape]> = self.contacts.iter().map(|c| nodes.ale[c.node].shapes.as_slice()).collect();
         let lam = contact_rate(&shapes, nodes.modal_mass);
         self.coupling = Coupling { stiffness_rate_sq: 2.0 * self.stiffness * lam, damping_rate: 2.0 * self.damping * lam };
         self

@@ -19,7 +19,7 @@
 //! the ⟨k = 1, l = 0⟩ pair — the softest of them — dominates (Fig. 15).
 
 /// Prescribed link forces at Lagrangian nodes.
-use super::{LoadContext, LoadModel, ModelOut, SceneNodes};
+use super::model::{LoadContext, LoadModel, ModelOut, SceneNodes};
 use crate::config::Config;
 use std::any::Any;
 

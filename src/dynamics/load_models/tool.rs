@@ -27,7 +27,7 @@
 //! tip back by e, c_t ė + k_t e = f_f (exact over a substep for the held
 //! force), z_tip = z_holder + e. The plate gets −f_f along z at the node.
 
-use super::{surface_kinematics, CommandRule, CommandSpec, LoadContext, LoadModel, ModelOut, SceneNodes};
+use super::model::{surface_kinematics, CommandRule, CommandSpec, LoadContext, LoadModel, ModelOut, SceneNodes};
 use crate::config::Config;
 use std::any::Any;
 

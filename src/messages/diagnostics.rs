@@ -5,8 +5,8 @@
 //! Statuses (docs/ros.md, "Diagnostics"): `<node>: simulation`,
 //! `<node>: inputs`, and `<node>: recording` while a bag is recorded.
 
-use super::inputs::{InputStats, RejectReason, Source};
-use super::messages::{DiagnosticArray, DiagnosticStatus, Header, KeyValue, Time};
+use super::input_stats::{InputStats, RejectReason, Source};
+use super::types::{DiagnosticArray, DiagnosticStatus, Header, KeyValue, Time};
 use std::time::{Duration, Instant};
 
 /// Step timing statistics between two diagnostics messages.

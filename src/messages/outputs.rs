@@ -12,7 +12,7 @@
 //! `simulate --bag` builds its messages with the same [`OutputMessages`].
 
 use super::clock::StepClock;
-use super::messages::{
+use super::types::{
     Clock, Header, JointState, ModalAmplitudes, PadStates, Quaternion, TFMessage, Time, ToolState, Transform,
     TransformStamped, Vector3,
 };

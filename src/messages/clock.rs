@@ -19,7 +19,7 @@
 //! so `/clock` only ever carries `rosgraph_msgs::msg::dds_::Clock_`. The
 //! wire test `clock_has_one_type_and_monotonic_stamps` checks exactly that.
 
-use super::messages::Time;
+use super::types::Time;
 use std::time::{Duration, Instant};
 
 /// Stamps for the outputs: simulated (from the total step count) or wall.

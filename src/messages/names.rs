@@ -20,6 +20,9 @@
 //! Pure functions only: no ROS types, no I/O; unit-tested below.
 
 use std::fmt;
+
+/// The node's name when none is given (`-r __node:=…`), and the entry the CLI reads from a params file.
+pub const DEFAULT_NODE_NAME: &str = "annular_plate";
 use std::path::PathBuf;
 
 /// A remapping rule `[node:]from:=to` for topic and service names.
