@@ -4,6 +4,7 @@
 //!
 //! Layers, data flowing one way: [`config`] → [`model`] → [`dynamics`] → `ros` / `cli`.
 
+#[cfg(feature = "cli")]
 pub mod cli;
 pub mod config;
 pub mod dynamics;

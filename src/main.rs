@@ -128,7 +128,7 @@ fn run() -> anyhow::Result<()> {
 
 #[cfg(feature = "ros")]
 fn run_node(file: Option<PathBuf>, ros_args: &[String], record: Option<PathBuf>) -> anyhow::Result<()> {
-    annular_plate::ros::run_node(file, ros_args, record)
+    Ok(annular_plate::ros::run_node(file, ros_args, record)?)
 }
 
 #[cfg(not(feature = "ros"))]

@@ -7,12 +7,11 @@
 //! the key (`plate.inner_radius`) and the rule.
 
 mod error;
-mod node_keys;
 mod params_file;
 mod raw;
+pub mod table;
 mod validate;
 
-pub use node_keys::ROS_KEYS;
 pub use error::{ConfigError, Degeneracy};
 pub use params_file::{ParamValue, Params};
 

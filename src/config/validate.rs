@@ -1,13 +1,13 @@
 //! From a flat [`Params`] set to the validated [`Config`].
 //!
-//! Every key this crate accepts is listed once in the tables below, section
-//! by section; any other key is rejected (with the nearest known key as a
-//! suggestion). Each section has a `read_<section>` function that reads its
-//! keys with their defaults and checks their rules.
+//! Every key this crate accepts is declared once in [`super::table`]; any
+//! other key is rejected (with the nearest known key as a suggestion). Each
+//! section has a `read_<section>` function that reads its keys and checks the
+//! rules the table states.
 //!
-//! Adding a section (for example `ros.*`): write its key table, add it to
-//! [`SECTIONS`], write `read_<section>` and call it in [`config_from_params`]
-//! (plus the field in [`Config`] and a row per key in `docs/parameters.md`).
+//! Adding a section: declare its keys in the table, write `read_<section>`
+//! and call it in [`config_from_params`] (plus the field in [`Config`]);
+//! docs/parameters.md is generated from the table.
 
 use std::f64::consts::FRAC_PI_2;
 
@@ -19,103 +19,9 @@ use super::{
 };
 use super::error::Degeneracy;
 
-const PLATE_KEYS: &[&str] = &[
-    "plate.inner_radius",
-    "plate.outer_radius",
-    "plate.thickness",
-    "plate.density",
-    "plate.youngs_modulus",
-    "plate.shear_modulus",
-    "plate.poisson_ratio",
-    "plate.inner_boundary",
-    "plate.outer_boundary",
-    "plate.nodal_diameters",
-    "plate.nodal_circles",
-    "plate.damping",
-    "plate.radial_splines",
-];
-
-const NODES_KEYS: &[&str] = &["nodes.lagrange_radial", "nodes.lagrange_angular", "nodes.ale_radial", "nodes.ale_angular"];
-
-const LOADS_KEYS: &[&str] = &["loads.ale_wrench", "loads.lagrange_wrench", "loads.follower"];
-
-const JOINT_KEYS: &[&str] = &["joint.speed", "joint.max_acceleration", "joint.max_torque", "joint.initial_position"];
-
-const REFERENCE_KEYS: &[&str] = &["reference.tilt", "reference.angular_velocity", "reference.acceleration"];
-
-const SIMULATION_KEYS: &[&str] = &[
-    "simulation.rate_hz",
-    "simulation.substeps",
-    "simulation.integrator",
-    "simulation.coordinates",
-    "simulation.realtime_factor",
-    "simulation.publish_divisor",
-    "simulation.rk4_step_limit",
-];
-
-const LIMITS_KEYS: &[&str] =
-    &["limits.max_force", "limits.max_moment", "limits.max_speed", "limits.max_deflection_thicknesses"];
-
-/// Top-level keys. `use_sim_time` is the parameter every ROS 2 node has
-/// (launch files often set it for all nodes under `/**`): it is accepted and
-/// type-checked here, and read by the node itself.
-const TOP_LEVEL_KEYS: &[&str] = &["gravity", "use_sim_time"];
-
-/// Load models of the paper's section 5 (docs/scenes.md): brake pads.
-const PADS_KEYS: &[&str] = &[
-    "pads.ale_nodes",
-    "pads.contact_pad",
-    "pads.clamp_force",
-    "pads.contact_stiffness",
-    "pads.contact_damping",
-    "pads.friction_coefficient",
-    "pads.lift_off",
-    "pads.follower_friction",
-    "pads.caliper",
-];
-
-/// The lathe tool (paper 5.1).
-const TOOL_KEYS: &[&str] = &[
-    "tool.ale_node",
-    "tool.depth_of_cut",
-    "tool.feed_rate",
-    "tool.start_clearance",
-    "tool.stiffness",
-    "tool.damping",
-    "tool.specific_force",
-    "tool.force_exponent",
-];
-
-/// Swash-plate pitch links (paper 5.2).
-const LINKS_KEYS: &[&str] = &["links.lagrange_nodes", "links.mean_force", "links.cyclic_force", "links.cyclic_phase"];
-
-/// Space-fixed point springs (the load-model example of docs/architecture.md).
-const SPRINGS_KEYS: &[&str] = &["springs.ale_nodes", "springs.stiffness", "springs.damping"];
-
-/// Initial elastic state.
-const INITIAL_KEYS: &[&str] = &["initial.q", "initial.q_dot"];
-
-/// All key tables. Add a new section's table here.
-const SECTIONS: &[&[&str]] = &[
-    PLATE_KEYS,
-    NODES_KEYS,
-    LOADS_KEYS,
-    JOINT_KEYS,
-    REFERENCE_KEYS,
-    SIMULATION_KEYS,
-    LIMITS_KEYS,
-    TOP_LEVEL_KEYS,
-    PADS_KEYS,
-    TOOL_KEYS,
-    LINKS_KEYS,
-    SPRINGS_KEYS,
-    INITIAL_KEYS,
-];
-
-/// Every accepted parameter name.
+/// Every accepted parameter name: the declared table ([`super::table`]).
 pub(super) fn known_keys() -> Vec<&'static str> {
-    // `ros.*`: accepted here, their values checked by the node (`ros::settings`).
-    SECTIONS.iter().flat_map(|s| s.iter().copied()).chain(super::ROS_KEYS.iter().map(|row| row.0)).collect()
+    super::table::params().map(|p| p.key).collect()
 }
 
 const INTEGRATORS: &[&str] = &["exponential", "implicit_midpoint", "rk4"];
@@ -524,7 +430,7 @@ pub const DEFAULT_TOOL_SPECIFIC_FORCE: f64 = 351.0e6;
 pub const DEFAULT_TOOL_FORCE_EXPONENT: f64 = 0.7013;
 
 /// A load model whose enabling key is empty must not be given other keys.
-fn no_other_keys(r: &Reader, table: &[&'static str], enabling_key: &'static str) -> Result<(), ConfigError> {
+fn no_other_keys(r: &Reader, table: &[&str], enabling_key: &'static str) -> Result<(), ConfigError> {
     match table.iter().find(|k| **k != enabling_key && r.has(k)) {
         Some(key) => Err(ConfigError::KeyWithoutSection { key: key.to_string(), enabling_key }),
         None => Ok(()),
@@ -568,7 +474,7 @@ fn at_most(key: &str, x: f64, max: f64) -> Result<f64, ConfigError> {
 fn read_pads(r: &Reader, nodes: &NodesConfig, limits: &LimitsConfig) -> Result<Option<PadsConfig>, ConfigError> {
     let numbers = r.i64_array("pads.ale_nodes", &[])?;
     if numbers.is_empty() {
-        no_other_keys(r, PADS_KEYS, "pads.ale_nodes")?;
+        no_other_keys(r, &super::table::keys("pads"), "pads.ale_nodes")?;
         return Ok(None);
     }
     let node_index = node_refs("pads.ale_nodes", &numbers, "ale", nodes.ale.len())?;
@@ -627,7 +533,7 @@ fn read_pads(r: &Reader, nodes: &NodesConfig, limits: &LimitsConfig) -> Result<O
 fn read_tool(r: &Reader, plate: &PlateConfig, nodes: &NodesConfig) -> Result<Option<ToolConfig>, ConfigError> {
     let number = r.i64("tool.ale_node", 0)?;
     if number == 0 {
-        no_other_keys(r, TOOL_KEYS, "tool.ale_node")?;
+        no_other_keys(r, &super::table::keys("tool"), "tool.ale_node")?;
         return Ok(None);
     }
     let node = node_refs("tool.ale_node", &[number], "ale", nodes.ale.len())
@@ -660,7 +566,7 @@ fn read_tool(r: &Reader, plate: &PlateConfig, nodes: &NodesConfig) -> Result<Opt
 fn read_links(r: &Reader, nodes: &NodesConfig, limits: &LimitsConfig) -> Result<Option<LinksConfig>, ConfigError> {
     let numbers = r.i64_array("links.lagrange_nodes", &[])?;
     if numbers.is_empty() {
-        no_other_keys(r, LINKS_KEYS, "links.lagrange_nodes")?;
+        no_other_keys(r, &super::table::keys("links"), "links.lagrange_nodes")?;
         return Ok(None);
     }
     let nodes = node_refs("links.lagrange_nodes", &numbers, "lagrange", nodes.lagrange.len())?;
@@ -673,7 +579,7 @@ fn read_links(r: &Reader, nodes: &NodesConfig, limits: &LimitsConfig) -> Result<
 fn read_springs(r: &Reader, nodes: &NodesConfig) -> Result<Option<SpringsConfig>, ConfigError> {
     let numbers = r.i64_array("springs.ale_nodes", &[])?;
     if numbers.is_empty() {
-        no_other_keys(r, SPRINGS_KEYS, "springs.ale_nodes")?;
+        no_other_keys(r, &super::table::keys("springs"), "springs.ale_nodes")?;
         return Ok(None);
     }
     let nodes = node_refs("springs.ale_nodes", &numbers, "ale", nodes.ale.len())?;

@@ -1,7 +1,7 @@
 //! The node's own parameters (`ros.*`, plus the standard `use_sim_time`),
 //! read and checked from the flat parameter set.
 //!
-//! The config layer knows the names of the `ros.*` keys ([`ROS_KEYS`], so
+//! The config layer declares the `ros.*` keys (`config::table`, so
 //! `modes` and `simulate` accept a scene file that carries them and refuse
 //! typos); their values are the node's business and are checked here, from
 //! the same parameter set the config reads. Every rule below is listed in
@@ -11,7 +11,7 @@ use crate::config::{ParamValue, Params};
 use ros2_client::ServiceMapping;
 use std::fmt;
 
-pub use crate::config::ROS_KEYS;
+use crate::config::table;
 
 /// Validated `ros.*` settings.
 #[derive(Debug, Clone, PartialEq)]
@@ -72,8 +72,8 @@ impl RosSettings {
     pub fn from_params(params: &Params) -> Result<RosSettings, SettingsError> {
         let mut s = RosSettings::default();
         for (name, _) in params.iter() {
-            if name.starts_with("ros.") && !ROS_KEYS.iter().any(|(k, ..)| *k == name) {
-                let known: Vec<&str> = ROS_KEYS.iter().map(|(k, ..)| *k).collect();
+            if name.starts_with("ros.") && table::find(name).is_none() {
+                let known = table::keys("ros");
                 return Err(err(name, format!("unknown parameter (the ros.* keys are {})", known.join(", "))));
             }
         }

@@ -21,6 +21,7 @@
 //!
 //! The physics (`model`, `dynamics`) never imports anything from here.
 
+pub mod error;
 pub mod inputs;
 pub mod logging;
 pub mod node;
@@ -29,4 +30,5 @@ pub mod services;
 pub mod sim_loop;
 
 pub use crate::messages::RosType;
+pub use error::NodeError;
 pub use node::{run_node, NodeSetup, DEFAULT_NODE_NAME, DEFAULT_SCENE};

@@ -18,7 +18,7 @@ use crate::messages::{qos, topics};
 use crate::bag::recorder::{NodeBag, NodeTopics, Recorder, Sample};
 use crate::config::{Config, ConfigError, Params};
 use crate::dynamics::{NodeKind, Simulation, Wrench};
-use anyhow::{anyhow, Context as _};
+use super::error::NodeError;
 use futures::StreamExt;
 use ros2_client::{Context, ContextOptions, MessageTypeName, Name, Node, NodeName, NodeOptions, Publisher, QosProfile, Subscription};
 use serde::de::DeserializeOwned;
@@ -55,15 +55,15 @@ pub struct NodeSetup {
     pub scene: String,
 }
 
-fn config_error(source: &str, e: ConfigError) -> anyhow::Error {
-    anyhow!("{source}: {e}")
+fn config_error(source: &str, e: ConfigError) -> NodeError {
+    NodeError::Config { source_name: source.to_string(), error: e }
 }
 
 impl NodeSetup {
     /// Read the scene (`None`: the built-in brake bench) and the ROS arguments.
-    pub fn load(scene: Option<&Path>, ros_args: &[String]) -> anyhow::Result<NodeSetup> {
-        let args = RosArgs::parse(ros_args).map_err(|e| anyhow!("{e}"))?;
-        let names = NameResolver::new(&args, DEFAULT_NODE_NAME).map_err(|e| anyhow!("{e}"))?;
+    pub fn load(scene: Option<&Path>, ros_args: &[String]) -> Result<NodeSetup, NodeError> {
+        let args = RosArgs::parse(ros_args)?;
+        let names = NameResolver::new(&args, DEFAULT_NODE_NAME)?;
         let fqn = names.fully_qualified_node_name();
         let (mut params, scene_name) = match scene {
             Some(path) => (
@@ -92,7 +92,7 @@ impl NodeSetup {
         }
         // One parameter set for both: the config accepts the `ros.*` names, the
         // node's settings read only theirs (and `use_sim_time`).
-        let settings = RosSettings::from_params(&params).map_err(|e| anyhow!("{scene_name}: {e}"))?;
+        let settings = RosSettings::from_params(&params).map_err(|error| NodeError::Settings { scene: scene_name.clone(), error })?;
         let config = Config::from_params(&params).map_err(|e| config_error(&scene_name, e))?;
         Ok(NodeSetup { args, names, params, config, settings, scene: scene_name })
     }
@@ -105,16 +105,15 @@ impl NodeSetup {
 /// Run the node until SIGINT or SIGTERM (see the module documentation of
 /// `ros`); with `record`, also write its topics into that new rosbag2
 /// directory (`run --record DIR`).
-pub fn run_node(scene: Option<PathBuf>, ros_args: &[String], record: Option<PathBuf>) -> anyhow::Result<()> {
+pub fn run_node(scene: Option<PathBuf>, ros_args: &[String], record: Option<PathBuf>) -> Result<(), NodeError> {
     let setup = NodeSetup::load(scene.as_deref(), ros_args)?;
-    let domain = domain_id_from_env(std::env::var("ROS_DOMAIN_ID").ok().as_deref()).map_err(|e| anyhow!("{e}"))?;
-    let sim = Simulation::new(setup.config.clone()).map_err(|e| anyhow!("{}: {e}", setup.scene))?;
+    let domain = domain_id_from_env(std::env::var("ROS_DOMAIN_ID").ok().as_deref())?;
+    let sim = Simulation::new(setup.config.clone()).map_err(|error| NodeError::Simulation { scene: setup.scene.clone(), error })?;
     // The bag first: a directory that exists is refused before any DDS traffic.
     let bag = match &record {
         Some(dir) => {
-            let topics = NodeTopics::resolve(&setup.names, setup.settings.sim_time, sim.pad_count() > 0, sim.has_tool())
-                .map_err(|e| anyhow!("{e}"))?;
-            Some(NodeBag::create(dir, &topics).map_err(|e| anyhow!("--record: {e}"))?)
+            let topics = NodeTopics::resolve(&setup.names, setup.settings.sim_time, sim.pad_count() > 0, sim.has_tool()).map_err(NodeError::Record)?;
+            Some(NodeBag::create(dir, &topics)?)
         }
         None => None,
     };
@@ -123,25 +122,25 @@ pub fn run_node(scene: Option<PathBuf>, ros_args: &[String], record: Option<Path
         .thread_name("annular_plate-io")
         .enable_all()
         .build()
-        .context("cannot start the tokio runtime")?;
+        .map_err(|error| NodeError::System { what: "cannot start the tokio runtime", error })?;
     rt.block_on(serve(setup, sim, domain, bag))
 }
 
-fn publisher<T: RosType, P: Serialize>(node: &mut Node, names: &NameResolver, topic: &str, qos: &QosProfile) -> anyhow::Result<Publisher<P>> {
-    let resolved = names.resolve(topic).map_err(|e| anyhow!("{e}"))?;
-    let name = Name::parse(&resolved).map_err(|e| anyhow!("topic {resolved}: {e}"))?;
+fn publisher<T: RosType, P: Serialize>(node: &mut Node, names: &NameResolver, topic: &str, qos: &QosProfile) -> Result<Publisher<P>, NodeError> {
+    let resolved = names.resolve(topic)?;
+    let name = Name::parse(&resolved).map_err(|e| NodeError::dds(format!("topic {resolved}"), e))?;
     let t = node
         .create_topic(&name, MessageTypeName::new(T::PACKAGE, T::NAME), qos)
-        .map_err(|e| anyhow!("cannot create the topic {resolved}: {e:?}"))?;
-    node.create_publisher::<P>(&t, Some(qos.clone())).map_err(|e| anyhow!("cannot publish {resolved}: {e:?}"))
+        .map_err(|e| NodeError::dds(format!("cannot create the topic {resolved}"), e))?;
+    node.create_publisher::<P>(&t, Some(qos.clone())).map_err(|e| NodeError::dds(format!("cannot publish {resolved}"), e))
 }
 
-fn subscription<T: RosType + 'static>(node: &mut Node, resolved: &str, qos: &QosProfile) -> anyhow::Result<Subscription<T>> {
-    let name = Name::parse(resolved).map_err(|e| anyhow!("topic {resolved}: {e}"))?;
+fn subscription<T: RosType + 'static>(node: &mut Node, resolved: &str, qos: &QosProfile) -> Result<Subscription<T>, NodeError> {
+    let name = Name::parse(resolved).map_err(|e| NodeError::dds(format!("topic {resolved}"), e))?;
     let t = node
         .create_topic(&name, MessageTypeName::new(T::PACKAGE, T::NAME), qos)
-        .map_err(|e| anyhow!("cannot create the topic {resolved}: {e:?}"))?;
-    node.create_subscription::<T>(&t, Some(qos.clone())).map_err(|e| anyhow!("cannot subscribe {resolved}: {e:?}"))
+        .map_err(|e| NodeError::dds(format!("cannot create the topic {resolved}"), e))?;
+    node.create_subscription::<T>(&t, Some(qos.clone())).map_err(|e| NodeError::dds(format!("cannot subscribe {resolved}"), e))
 }
 
 /// What every input task shares.
@@ -192,18 +191,18 @@ fn to_wrench(w: &crate::messages::types::Wrench) -> Wrench {
     Wrench { force: w.force.to_array(), moment: w.torque.to_array() }
 }
 
-async fn serve(setup: NodeSetup, sim: Simulation, domain: u16, bag: Option<NodeBag>) -> anyhow::Result<()> {
+async fn serve(setup: NodeSetup, sim: Simulation, domain: u16, bag: Option<NodeBag>) -> Result<(), NodeError> {
     let names = &setup.names;
     let settings = &setup.settings;
     let context = Context::with_options(ContextOptions::new().domain_id(domain))
-        .map_err(|e| anyhow!("cannot join DDS domain {domain}: {e:?}"))?;
+        .map_err(|e| NodeError::dds(format!("cannot join DDS domain {domain}"), e))?;
     let mut node = context
         .new_node(
-            NodeName::new(names.namespace(), names.node_name()).map_err(|e| anyhow!("node name: {e}"))?,
+            NodeName::new(names.namespace(), names.node_name()).map_err(|e| NodeError::dds("node name", e))?,
             // No Spinner and no built-in parameter services: see clock.rs.
             NodeOptions::new().enable_rosout(setup.args.rosout_logs).start_parameter_services(false),
         )
-        .map_err(|e| anyhow!("cannot create the node: {e}"))?;
+        .map_err(|e| NodeError::dds("cannot create the node", e))?;
     let fqn = names.fully_qualified_node_name();
     let logger = Arc::new(Logger::new(
         setup.args.rosout_logs.then(|| node.logging_handle()),
@@ -244,7 +243,7 @@ async fn serve(setup: NodeSetup, sim: Simulation, domain: u16, bag: Option<NodeB
     let recording = match bag {
         Some(bag) => {
             let dir = bag.dir().display().to_string();
-            let (recorder, thread) = Recorder::start(bag, RECORD_QUEUE).context("cannot start the bag writer thread")?;
+            let (recorder, thread) = Recorder::start(bag, RECORD_QUEUE).map_err(|error| NodeError::System { what: "cannot start the bag writer thread", error })?;
             recorder.record(Sample::TfStatic(static_msg.clone()), static_stamp);
             logger.info(&format!("recording the node's topics to {dir}"));
             Some((recorder, thread))
@@ -266,7 +265,7 @@ async fn serve(setup: NodeSetup, sim: Simulation, domain: u16, bag: Option<NodeB
     };
 
     let mut tasks: Vec<JoinHandle<()>> = Vec::new();
-    let resolve = |t: &str| names.resolve(t).map_err(|e| anyhow!("{e}"));
+    let resolve = |t: &str| names.resolve(t).map_err(NodeError::from);
 
     let topic = resolve(topics::SPEED_COMMAND)?;
     let sub = subscription::<Float64>(&mut node, &topic, &qos::INPUT)?;
@@ -319,7 +318,7 @@ async fn serve(setup: NodeSetup, sim: Simulation, domain: u16, bag: Option<NodeB
         [&service_names[0], &service_names[1], &service_names[2]],
         tx.clone(),
     )?);
-    let store = Arc::new(Mutex::new(ParamStore::new(effective_parameters(&setup.params, &setup.config, settings))));
+    let store = Arc::new(Mutex::new(ParamStore::new(effective_parameters(&setup.params, settings))));
     tasks.extend(super::params_service::spawn(&mut node, settings.service_mapping, &fqn, store, tx.clone())?);
 
     // The simulation thread.
@@ -350,7 +349,7 @@ async fn serve(setup: NodeSetup, sim: Simulation, domain: u16, bag: Option<NodeB
             sim_loop.run();
             let _ = done_tx.send(());
         })
-        .context("cannot start the simulation thread")?;
+        .map_err(|error| NodeError::System { what: "cannot start the simulation thread", error })?;
     logger.info(&format!(
         "{fqn} up on ROS_DOMAIN_ID {domain}: scene {}, {} ALE and {} Lagrangian nodes, {} modes, {} pad{}{}, {} time",
         setup.scene,
@@ -365,8 +364,8 @@ async fn serve(setup: NodeSetup, sim: Simulation, domain: u16, bag: Option<NodeB
 
     // Wait for a signal (or the loop's end).
     use tokio::signal::unix::{signal, SignalKind};
-    let mut sigint = signal(SignalKind::interrupt()).context("cannot handle SIGINT")?;
-    let mut sigterm = signal(SignalKind::terminate()).context("cannot handle SIGTERM")?;
+    let mut sigint = signal(SignalKind::interrupt()).map_err(|error| NodeError::System { what: "cannot handle SIGINT", error })?;
+    let mut sigterm = signal(SignalKind::terminate()).map_err(|error| NodeError::System { what: "cannot handle SIGTERM", error })?;
     let why = tokio::select! {
         _ = sigint.recv() => "SIGINT",
         _ = sigterm.recv() => "SIGTERM",
@@ -425,11 +424,11 @@ async fn serve(setup: NodeSetup, sim: Simulation, domain: u16, bag: Option<NodeB
     }
     let result = if !matches!(joined, Ok(Ok(()))) {
         logger.error("the simulation thread ended abnormally");
-        Err(anyhow!("the simulation thread ended abnormally"))
+        Err(NodeError::SimulationThread)
     } else if let Some(e) = record_failed {
-        Err(anyhow!("--record: {e}"))
+        Err(NodeError::Record(e))
     } else if !why.starts_with("SIG") {
-        Err(anyhow!("{why}"))
+        Err(NodeError::Stopped(why.to_string()))
     } else {
         Ok(())
     };

@@ -13,8 +13,8 @@
 //! ([`RUNTIME_KEYS`]); setting any other is refused with a reason that says
 //! how to change it (restart with `-p name:=value`).
 
-use crate::messages::settings::{RosSettings, ROS_KEYS};
-use crate::config::{Config, ParamValue, Params};
+use crate::config::{table, ParamValue, Params};
+use crate::messages::settings::RosSettings;
 use ros2_client::parameters::raw;
 use ros2_client::rcl_interfaces::{ListParametersResult, SetParametersAtomicallyResponse};
 use ros2_client::ParameterValue as RosValue;
@@ -68,53 +68,18 @@ fn type_code(v: &ParamValue) -> u8 {
     }
 }
 
-fn json_to_param(v: &serde_json::Value) -> Option<ParamValue> {
-    use serde_json::Value as J;
-    match v {
-        J::Bool(b) => Some(ParamValue::Bool(*b)),
-        J::Number(n) if n.is_f64() => n.as_f64().map(ParamValue::Double),
-        J::Number(n) => n.as_i64().map(ParamValue::Integer),
-        J::String(s) => Some(ParamValue::String(s.clone())),
-        J::Array(items) if !items.is_empty() => {
-            if items.iter().all(|i| i.as_bool().is_some()) {
-                Some(ParamValue::BoolArray(items.iter().filter_map(J::as_bool).collect()))
-            } else if items.iter().all(|i| i.is_i64() || i.is_u64()) {
-                Some(ParamValue::IntegerArray(items.iter().filter_map(J::as_i64).collect()))
-            } else if items.iter().all(J::is_number) {
-                Some(ParamValue::DoubleArray(items.iter().filter_map(J::as_f64).collect()))
-            } else if items.iter().all(J::is_string) {
-                Some(ParamValue::StringArray(items.iter().filter_map(|i| i.as_str().map(str::to_string)).collect()))
-            } else {
-                None
-            }
-        }
-        _ => None,
-    }
-}
-
-/// The effective parameters: given values win; known configuration keys
-/// that map one-to-one onto a field of the validated [`Config`] show its
-/// (default) value; `use_sim_time` and every `ros.*` key are always present.
-pub fn effective_parameters(given: &Params, config: &Config, settings: &RosSettings) -> BTreeMap<String, ParamValue> {
+/// The effective parameters: the given values, and every declared key's
+/// default (`config::table`; a load model's keys only when its section is
+/// on); `use_sim_time` and every `ros.*` key are always present.
+pub fn effective_parameters(given: &Params, settings: &RosSettings) -> BTreeMap<String, ParamValue> {
     let mut out: BTreeMap<String, ParamValue> = given.iter().map(|(k, v)| (k.to_string(), v.clone())).collect();
-    if let Ok(json) = serde_json::to_value(config) {
-        for key in Config::known_keys() {
-            if out.contains_key(key) {
-                continue;
-            }
-            let mut node = &json;
-            let mut found = true;
-            for part in key.split('.') {
-                match node.get(part) {
-                    Some(n) => node = n,
-                    None => {
-                        found = false;
-                        break;
-                    }
-                }
-            }
-            if let Some(v) = found.then(|| json_to_param(node)).flatten() {
-                out.insert(key.to_string(), v);
+    for section in table::SECTIONS {
+        if table::enabled_by(section.name).is_some_and(|key| given.get(key).is_none()) {
+            continue;
+        }
+        for p in section.params {
+            if let Some(v) = p.default.to_param() {
+                out.entry(p.key.to_string()).or_insert(v);
             }
         }
     }
@@ -124,6 +89,13 @@ pub fn effective_parameters(given: &Params, config: &Config, settings: &RosSetti
         out.insert(k.to_string(), v);
     }
     out
+}
+
+/// A declared parameter in one line: meaning, unit, rule (docs/parameters.md).
+fn describe(p: &table::Param) -> String {
+    let unit = if p.unit.is_empty() || p.unit == "—" { String::new() } else { format!(" [{}]", p.unit) };
+    let meaning = if p.meaning.is_empty() { p.rule } else { p.meaning };
+    format!("{meaning}{unit}; rule: {}; default: {} (docs/parameters.md)", p.rule, p.default_text)
 }
 
 /// Parameter values and descriptions behind the six services.
@@ -182,11 +154,9 @@ impl ParamStore {
             .iter()
             .map(|n| {
                 let runtime = RUNTIME_KEYS.iter().find(|(k, _)| k == n);
-                let ros = ROS_KEYS.iter().find(|(k, ..)| k == n);
-                let description = match (ros, n.as_str()) {
-                    (Some((_, _, _, rule)), _) => rule.to_string(),
-                    (None, "use_sim_time") => "stamp outputs with simulated time and publish /clock (same as ros.publish_clock)".to_string(),
-                    _ if self.values.contains_key(n) => format!("scene parameter {n} (docs/parameters.md)"),
+                let description = match (table::find(n), n.as_str()) {
+                    (_, "use_sim_time") => "stamp outputs with simulated time and publish /clock (same as ros.publish_clock)".to_string(),
+                    (Some(p), _) => describe(p),
                     _ => String::new(),
                 };
                 raw::ParameterDescriptor {
@@ -281,7 +251,7 @@ pub fn spawn(
     fqn: &str,
     store: std::sync::Arc<std::sync::Mutex<ParamStore>>,
     tx: std::sync::mpsc::SyncSender<super::services::Command>,
-) -> anyhow::Result<Vec<tokio::task::JoinHandle<()>>> {
+) -> Result<Vec<tokio::task::JoinHandle<()>>, super::error::NodeError> {
     use super::services::{create_server, spawn_server, Command};
     use ros2_client::rcl_interfaces::*;
     fn lock(s: &std::sync::Mutex<ParamStore>) -> std::sync::MutexGuard<'_, ParamStore> {
@@ -420,8 +390,8 @@ mod tests {
     fn effective_parameters_fill_defaults() {
         let mut given = Params::new();
         given.set_override("joint.speed", "3.0").unwrap();
-        let cfg = Config::default();
-        let eff = effective_parameters(&given, &cfg, &RosSettings::default());
+        let cfg = crate::config::Config::default();
+        let eff = effective_parameters(&given, &RosSettings::default());
         assert_eq!(eff.get("joint.speed"), Some(&ParamValue::Double(3.0)));
         assert_eq!(eff.get("simulation.rate_hz"), Some(&ParamValue::Double(cfg.simulation.rate_hz)));
         assert_eq!(eff.get("use_sim_time"), Some(&ParamValue::Bool(false)));

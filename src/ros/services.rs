@@ -75,14 +75,14 @@ pub fn create_server<Req, Resp>(
     resolved_name: &str,
     package: &str,
     type_name: &str,
-) -> anyhow::Result<Server<Req, Resp>>
+) -> Result<Server<Req, Resp>, super::error::NodeError>
 where
     Req: Message + Clone + 'static,
     Resp: Message + 'static,
 {
-    let name = Name::parse(resolved_name).map_err(|e| anyhow::anyhow!("service name {resolved_name}: {e}"))?;
+    let name = Name::parse(resolved_name).map_err(|e| super::error::NodeError::dds(format!("service name {resolved_name}"), e))?;
     node.create_server::<Req, Resp>(mapping, &name, &ServiceTypeName::new(package, type_name), qos::SERVICE, qos::SERVICE)
-        .map_err(|e| anyhow::anyhow!("cannot create the service {resolved_name}: {e:?}"))
+        .map_err(|e| super::error::NodeError::dds(format!("cannot create the service {resolved_name}"), e))
 }
 
 fn busy<T>(e: TrySendError<T>) -> String {
@@ -98,7 +98,7 @@ pub fn spawn(
     mapping: ServiceMapping,
     names: [&str; 3],
     tx: SyncSender<Command>,
-) -> anyhow::Result<Vec<JoinHandle<()>>> {
+) -> Result<Vec<JoinHandle<()>>, super::error::NodeError> {
     let reset = create_server::<TriggerRequest, TriggerResponse>(node, mapping, names[0], "std_srvs", "Trigger")?;
     let paused = create_server::<SetBoolRequest, SetBoolResponse>(node, mapping, names[1], "std_srvs", "SetBool")?;
     let step = create_server::<StepRequest, StepResponse>(node, mapping, names[2], "annular_plate", "Step")?;

@@ -1,0 +1,363 @@
+//! Every parameter, declared once: name, ROS type, unit, default, rule and
+//! meaning, section by section. The known keys and their types, the
+//! effective-parameter dump of the node's parameter service, its
+//! descriptions and the reference in docs/parameters.md (and the key index in
+//! the README) come from this table; `validate` implements each section's
+//! rules as the `rule` text states them, and the tests check that the
+//! declared defaults are what an empty parameter file yields.
+
+use super::ParamValue;
+
+/// The ROS 2 parameter type of a key.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Ty {
+    Bool,
+    Integer,
+    Double,
+    String,
+    IntegerArray,
+    DoubleArray,
+}
+
+/// A declared default value (`None`: the key has no value unless given).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Value {
+    None,
+    Bool(bool),
+    Integer(i64),
+    Double(f64),
+    Str(&'static str),
+    Integers(&'static [i64]),
+    Doubles(&'static [f64]),
+}
+
+impl Value {
+    /// As a parameter value (`None` has none).
+    pub fn to_param(self) -> Option<ParamValue> {
+        Some(match self {
+            Value::None => return None,
+            Value::Bool(b) => ParamValue::Bool(b),
+            Value::Integer(i) => ParamValue::Integer(i),
+            Value::Double(x) => ParamValue::Double(x),
+            Value::Str(s) => ParamValue::String(s.to_string()),
+            Value::Integers(a) => ParamValue::IntegerArray(a.to_vec()),
+            Value::Doubles(a) => ParamValue::DoubleArray(a.to_vec()),
+        })
+    }
+}
+
+/// One parameter.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Param {
+    pub key: &'static str,
+    pub ty: Ty,
+    /// The type as the reference shows it (`double array (3)`).
+    pub type_text: &'static str,
+    pub unit: &'static str,
+    pub default: Value,
+    /// The default as the reference shows it (`0.3 (when neither is given)`).
+    pub default_text: &'static str,
+    pub rule: &'static str,
+    pub meaning: &'static str,
+}
+
+/// One section of keys (`plate.*`; `""`: the top-level keys).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Section {
+    pub name: &'static str,
+    pub title: &'static str,
+    /// Text before and after the section's table in the reference.
+    pub before: &'static str,
+    pub after: &'static str,
+    pub params: &'static [Param],
+}
+
+/// A table row: key, type, type as shown, unit, default, default as shown, rule, meaning.
+#[allow(clippy::too_many_arguments)]
+const fn p(
+    key: &'static str,
+    ty: Ty,
+    type_text: &'static str,
+    unit: &'static str,
+    default: Value,
+    default_text: &'static str,
+    rule: &'static str,
+    meaning: &'static str,
+) -> Param {
+    Param { key, ty, type_text, unit, default, default_text, rule, meaning }
+}
+
+/// Every section, in the reference's order.
+pub const SECTIONS: &[Section] = &[
+    Section {
+        name: "plate",
+        title: "`plate` — geometry, material, modal discretisation",
+        before: "",
+        after: "",
+        params: &[
+            p("plate.inner_radius", Ty::Double, "double", "m", Value::Double(0.075), "0.075", "> 0, < `plate.outer_radius`; r_i/r_a ≥ 1e-6; (r_a − r_i)/r_a ≥ 1e-3", "inner radius r_i"),
+            p("plate.outer_radius", Ty::Double, "double", "m", Value::Double(0.15), "0.15", "> 0", "outer radius r_a"),
+            p("plate.thickness", Ty::Double, "double", "m", Value::Double(0.01), "0.01", "> 0", "thickness h"),
+            p("plate.density", Ty::Double, "double", "kg/m³", Value::Double(7850.0), "7850", "> 0", "mass density ρ"),
+            p("plate.youngs_modulus", Ty::Double, "double", "Pa", Value::Double(210000000000.0), "2.1e11", "> 0", "Young's modulus E"),
+            p("plate.shear_modulus", Ty::Double, "double", "Pa", Value::None, "—", "> 0; gives ν = E/(2G) − 1 (paper 4.1), which must lie in (−1, 0.5), i.e. G > E/3; not together with `plate.poisson_ratio`", "shear modulus G, as the paper's parameter"),
+            p("plate.poisson_ratio", Ty::Double, "double", "—", Value::Double(0.3), "0.3 (when neither is given)", "in (−1, 0.5) exclusive; not together with `plate.shear_modulus`", "Poisson ratio ν"),
+            p("plate.inner_boundary", Ty::String, "string", "—", Value::Str("clamped"), "`clamped`", "`free`, `supported` or `clamped`", "boundary condition at r_i (`boundaryConditionRI`)"),
+            p("plate.outer_boundary", Ty::String, "string", "—", Value::Str("free"), "`free`", "`free`, `supported` or `clamped`", "boundary condition at r_a (`boundaryConditionRA`)"),
+            p("plate.nodal_diameters", Ty::IntegerArray, "integer array", "—", Value::Integers(&[0, 1, 2, 3, 4, 5, 6, 7]), "[0, 1, 2, 3, 4, 5, 6, 7]", "non-empty, each 0 ≤ k ≤ 200, distinct", "nodal diameter numbers k to include"),
+            p("plate.nodal_circles", Ty::IntegerArray, "integer array", "—", Value::Integers(&[0, 1]), "[0, 1]", "non-empty, each 0 ≤ l ≤ 50, distinct", "nodal circle numbers l to include"),
+            p("plate.damping", Ty::DoubleArray, "double array", "—", Value::Doubles(&[0.0]), "[0.0]", "each in [0, 1); length 1 (all modes) or n (one per mode, in `modes` order)", "modal damping ratios ζ"),
+            p("plate.radial_splines", Ty::Integer, "integer", "—", Value::Integer(32), "32", "≤ 400; at least `min_radial_splines` (below)", "cubic B-splines of the radial discretisation, before boundary conditions"),
+        ],
+    },
+    Section {
+        name: "nodes",
+        title: "`nodes` — node frames (the paper's ξ, section 4.1)",
+        before: "",
+        after: "Nodes are numbered from 1 in the order given (`~/ale_1/wrench`, …).",
+        params: &[
+            p("nodes.lagrange_radial", Ty::DoubleArray, "double array", "—", Value::Doubles(&[]), "[]", "each in [0, 1]; same length as `nodes.lagrange_angular`", "ξ_r of material points turning with the plate (0 at r_i, 1 at r_a)"),
+            p("nodes.lagrange_angular", Ty::DoubleArray, "double array", "—", Value::Doubles(&[]), "[]", "each in [0, 1]; same length as `nodes.lagrange_radial`", "ξ_φ of those points (0..1 for 0..2π)"),
+            p("nodes.ale_radial", Ty::DoubleArray, "double array", "—", Value::Doubles(&[]), "[]", "each in [0, 1]; same length as `nodes.ale_angular`", "ξ_r of space-fixed points the plate slides under"),
+            p("nodes.ale_angular", Ty::DoubleArray, "double array", "—", Value::Doubles(&[]), "[]", "each in [0, 1]; same length as `nodes.ale_radial`", "ξ_φ of those points"),
+        ],
+    },
+    Section {
+        name: "loads",
+        title: "`loads` — constant wrenches held from t = 0",
+        before: "",
+        after: "",
+        params: &[
+            p("loads.ale_wrench", Ty::DoubleArray, "double array", "N, N·m", Value::Doubles(&[]), "[]", "empty or 6 × (number of ALE nodes); finite; per node ‖f‖ ≤ `limits.max_force`, ‖m‖ ≤ `limits.max_moment`", "`fx fy fz mx my mz` per ALE node, in the node frame; empty: zero"),
+            p("loads.lagrange_wrench", Ty::DoubleArray, "double array", "N, N·m", Value::Doubles(&[]), "[]", "as above, per Lagrangian node", "`fx fy fz mx my mz` per Lagrangian node"),
+            p("loads.follower", Ty::Bool, "bool", "—", Value::Bool(false), "false", "—", "wrenches turn with the deformed surface (follower loads, paper 5.3)"),
+        ],
+    },
+    Section {
+        name: "joint",
+        title: "`joint` — the rotational joint at the plate axis",
+        before: "",
+        after: "",
+        params: &[
+            p("joint.speed", Ty::Double, "double", "rad/s", Value::Double(0.0), "0", "finite, \\|Ω\\| ≤ `limits.max_speed`", "commanded speed Ω; held from t = 0 and the plate starts at it"),
+            p("joint.max_acceleration", Ty::Double, "double", "rad/s²", Value::Double(50.0), "50", "> 0", "acceleration limit of the drive"),
+            p("joint.max_torque", Ty::Double, "double", "N·m", Value::None, "none (stiff drive)", "> 0 when given", "torque limit of the drive; omitted: the joint follows its command kinematically"),
+            p("joint.initial_position", Ty::Double, "double", "rad", Value::Double(0.0), "0", "finite", "initial joint angle χ(0)"),
+        ],
+    },
+    Section {
+        name: "reference",
+        title: "`reference` — prescribed motion of the reference frame",
+        before: "",
+        after: "",
+        params: &[
+            p("reference.tilt", Ty::Double, "double", "rad", Value::Double(0.0), "0", "\\|tilt\\| < π/2", "constant tilt of the spin axis about the world x axis"),
+            p("reference.angular_velocity", Ty::DoubleArray, "double array (3)", "rad/s", Value::Doubles(&[0.0, 0.0, 0.0]), "[0, 0, 0]", "3 finite values", "constant angular velocity of the reference frame, reference axes"),
+            p("reference.acceleration", Ty::DoubleArray, "double array (3)", "m/s²", Value::Doubles(&[0.0, 0.0, 0.0]), "[0, 0, 0]", "3 finite values", "constant linear acceleration of the reference origin, reference axes"),
+        ],
+    },
+    Section {
+        name: "",
+        title: "Top level",
+        before: "",
+        after: "",
+        params: &[
+            p("gravity", Ty::DoubleArray, "double array (3)", "m/s²", Value::Doubles(&[0.0, 0.0, 0.0]), "[0, 0, 0]", "3 finite values", "gravity in the world frame (the reference frame before its tilt)"),
+            p("use_sim_time", Ty::Bool, "bool", "—", Value::Bool(false), "false", "bool", "the standard ROS 2 parameter every node has (often set for all nodes under `/**`); accepted here, used by the node only"),
+        ],
+    },
+    Section {
+        name: "simulation",
+        title: "`simulation`",
+        before: "",
+        after: "",
+        params: &[
+            p("simulation.rate_hz", Ty::Double, "double", "Hz", Value::Double(1000.0), "1000", "> 0, ≤ 1e6", "fixed step and output rate"),
+            p("simulation.substeps", Ty::Integer, "integer", "—", Value::Integer(1), "1", "1 ..= 10000", "integration sub-steps per output step"),
+            p("simulation.integrator", Ty::String, "string", "—", Value::Str("exponential"), "`exponential`", "`exponential`, `implicit_midpoint` or `rk4`", "time integration scheme (exact exponential per mode for held loads; A-stable energy-conserving implicit midpoint; classical Runge–Kutta 4, sub-stepping below its stability limit)"),
+            p("simulation.coordinates", Ty::String, "string", "—", Value::Str("ale"), "`ale`", "`ale` or `lagrangian`", "modal amplitudes integrated in the non-rotating frame (ALE, eq. 20) or in the rotating plate frame"),
+            p("simulation.realtime_factor", Ty::Double, "double", "—", Value::Double(1.0), "1", "≥ 0", "1 = wall clock, 0 = as fast as possible (the node only)"),
+            p("simulation.publish_divisor", Ty::Integer, "integer", "—", Value::Integer(1), "1", "≥ 1", "publish every n-th step (the node only)"),
+            p("simulation.rk4_step_limit", Ty::Double, "double", "—", Value::Double(0.2), "0.2", "> 0, ≤ 2.5", "`rk4` sub-steps itself so that h·λ_max stays below this; its amplitude error per step is (hω)⁶/144 (the brake-squeal scene uses 0.1)"),
+        ],
+    },
+    Section {
+        name: "limits",
+        title: "`limits` — plausibility limits",
+        before: "",
+        after: "",
+        params: &[
+            p("limits.max_force", Ty::Double, "double", "N", Value::Double(10000000.0), "1e7", "> 0", "larger forces (per node, magnitude) are rejected as absurd"),
+            p("limits.max_moment", Ty::Double, "double", "N·m", Value::Double(1000000.0), "1e6", "> 0", "larger moments (per node, magnitude) are rejected as absurd"),
+            p("limits.max_speed", Ty::Double, "double", "rad/s", Value::Double(10000.0), "1e4", "> 0", "larger joint speeds are rejected"),
+            p("limits.max_deflection_thicknesses", Ty::Double, "double", "—", Value::Double(1000.0), "1e3", "> 0", "divergence guard: a modal amplitude beyond this many plate thicknesses stops the run"),
+        ],
+    },
+    Section {
+        name: "pads",
+        title: "`pads` — brake pads (paper 5.3, Fig. 18; docs/scenes.md)",
+        before: "Off unless `pads.ale_nodes` is given; the other `pads.*` keys are refused without it.",
+        after: "",
+        params: &[
+            p("pads.ale_nodes", Ty::IntegerArray, "integer array", "—", Value::Integers(&[]), "[]", "each an existing ALE node (from 1), distinct", "contact points: at each a pad presses on each face of the disc"),
+            p("pads.contact_pad", Ty::IntegerArray, "integer array", "—", Value::None, "all 1", "same length as `pads.ale_nodes`; pads numbered 1..P without gaps", "the pad each contact point belongs to (a pad shares one clamp force)"),
+            p("pads.clamp_force", Ty::DoubleArray, "double array", "N", Value::Doubles(&[0.0]), "[0]", "each ≥ 0 and ≤ `limits.max_force`; 1 value (all pads) or one per pad", "clamp force per pad at t = 0: the force each face is pressed with, shared by the pad's contact points (the command `set_pad_clamp_force` changes it)"),
+            p("pads.contact_stiffness", Ty::Double, "double", "N/m", Value::Double(5000000.0), "5e6", "> 0", "axial stiffness k_c per contact point and face"),
+            p("pads.contact_damping", Ty::Double, "double", "N·s/m", Value::Double(0.0), "0", "≥ 0", "axial damping c_c per contact point and face (on the gap-closing rate ∂w/∂t at the fixed point)"),
+            p("pads.friction_coefficient", Ty::Double, "double", "—", Value::Double(0.4), "0.4", "≥ 0, ≤ 2", "μ: friction μN per face against the sliding direction"),
+            p("pads.lift_off", Ty::Bool, "bool", "—", Value::Bool(false), "false", "—", "a contact that would pull is released (N ≥ 0)"),
+            p("pads.follower_friction", Ty::Bool, "bool", "—", Value::Bool(true), "true", "—", "friction lies in the deformed surface (follower forces, the squeal mechanism)"),
+            p("pads.caliper", Ty::String, "string", "—", Value::Str("floating"), "`floating`", "`floating` or `fixed`", "`floating`: each face's pad is a rigid backing plate pressed with the clamp force (a force, as from a hydraulic piston); `fixed`: the caliper stays where the clamp force puts it on an undeformed disc"),
+        ],
+    },
+    Section {
+        name: "tool",
+        title: "`tool` — lathe tool (paper 5.1; docs/scenes.md)",
+        before: "Off unless `tool.ale_node` is given (0 or absent: no tool).",
+        after: "",
+        params: &[
+            p("tool.ale_node", Ty::Integer, "integer", "—", Value::Integer(0), "0 (no tool)", "an existing ALE node (from 1) at ξ_r = 1 (the rim)", "where the feed force acts"),
+            p("tool.depth_of_cut", Ty::Double, "double", "m", Value::Double(0.002), "0.002", "> 0, < r_a − r_i", "radial depth of cut = chip width b"),
+            p("tool.feed_rate", Ty::Double, "double", "m/s", Value::Double(0.002), "0.002 (120 mm/min)", "\\|v\\| ≤ 1", "feed along −z at t = 0 (the command `set_tool_feed` changes it; negative retracts)"),
+            p("tool.start_clearance", Ty::Double, "double", "m", Value::Double(0.0), "0", "≥ 0", "gap between the tool tip and the +z face at t = 0"),
+            p("tool.stiffness", Ty::Double, "double", "N/m", Value::Double(20000000.0), "2e7", "> 0", "spring between tool holder and tip"),
+            p("tool.damping", Ty::Double, "double", "N·s/m", Value::Double(2000.0), "2e3", "≥ 0", "damper between tool holder and tip (no tip mass)"),
+            p("tool.specific_force", Ty::Double, "double", "Pa", Value::Double(351000000.0), "3.51e8", "> 0", "k_f1.1 of eq. (21): 351 N/mm² for a 1 mm × 1 mm chip"),
+            p("tool.force_exponent", Ty::Double, "double", "—", Value::Double(0.7013), "0.7013", "≥ 0, < 1", "m_f of eq. (21)"),
+        ],
+    },
+    Section {
+        name: "links",
+        title: "`links` — swash-plate pitch links (paper 5.2; docs/scenes.md)",
+        before: "Off unless `links.lagrange_nodes` is given. Each link pushes its node along +z with
+F = `links.mean_force` + `links.cyclic_force` · cos(ψ − `links.cyclic_phase`), ψ = φ + χ the node's azimuth.",
+        after: "",
+        params: &[
+            p("links.lagrange_nodes", Ty::IntegerArray, "integer array", "—", Value::Integers(&[]), "[]", "each an existing Lagrangian node (from 1), distinct", "the linkage attachment points"),
+            p("links.mean_force", Ty::Double, "double", "N", Value::Double(0.0), "0", "\\|F\\| ≤ `limits.max_force`", "steady part of each link force"),
+            p("links.cyclic_force", Ty::Double, "double", "N", Value::Double(0.0), "0", "\\|F\\| ≤ `limits.max_force`", "amplitude of the once-per-revolution part"),
+            p("links.cyclic_phase", Ty::Double, "double", "rad", Value::Double(0.0), "0", "finite", "azimuth of the largest push"),
+        ],
+    },
+    Section {
+        name: "springs",
+        title: "`springs` — space-fixed point springs (the load-model example of docs/architecture.md)",
+        before: "Off unless `springs.ale_nodes` is given. Each spring pushes the plate under its node along z with F = −`springs.stiffness` · w − `springs.damping` · ∂w/∂t.",
+        after: "",
+        params: &[
+            p("springs.ale_nodes", Ty::IntegerArray, "integer array", "—", Value::Integers(&[]), "[]", "each an existing ALE node (from 1), distinct", "where the springs act"),
+            p("springs.stiffness", Ty::Double, "double", "N/m", Value::Double(0.0), "0", "≥ 0", "stiffness k_s of each spring"),
+            p("springs.damping", Ty::Double, "double", "N·s/m", Value::Double(0.0), "0", "≥ 0", "damping c_s of each spring"),
+        ],
+    },
+    Section {
+        name: "initial",
+        title: "`initial` — initial elastic state",
+        before: "",
+        after: "",
+        params: &[
+            p("initial.q", Ty::DoubleArray, "double array", "m", Value::Doubles(&[]), "[] (at rest)", "empty or one per mode; \\|q\\| ≤ `limits.max_deflection_thicknesses` × thickness", "Lagrangian modal amplitudes at t = 0, in `modes` order"),
+            p("initial.q_dot", Ty::DoubleArray, "double array", "m/s", Value::Doubles(&[]), "[]", "empty or one per mode", "their rates at t = 0"),
+        ],
+    },
+    Section {
+        name: "ros",
+        title: "`ros` — the node's own keys (checked by the node; accepted by `modes`/`simulate`)",
+        before: "",
+        after: "Also the standard `use_sim_time` (see above). Topics, services and QoS: [docs/ros.md](ros.md).",
+        params: &[
+            p("ros.frame_prefix", Ty::String, "string", "—", Value::Str(""), "\"\"", "prefix of every frame and joint name; letters, digits, `_`, `/`, `-`, `.`; not starting with `/`", ""),
+            p("ros.world_frame", Ty::String, "string", "—", Value::Str("world"), "\"world\"", "parent of plate_base in /tf_static (not prefixed); non-empty, same characters", ""),
+            p("ros.publish_clock", Ty::Bool, "bool", "—", Value::Bool(false), "false", "publish /clock and stamp outputs with simulated time (also when use_sim_time is true)", ""),
+            p("ros.wrench_timeout", Ty::Double, "double", "s", Value::Double(0.0), "0.0", "s of simulated time after which a wrench not renewed drops to zero; 0 = hold forever; finite, >= 0", ""),
+            p("ros.start_paused", Ty::Bool, "bool", "—", Value::Bool(false), "false", "start paused (resume with ~/set_paused, advance with ~/step)", ""),
+            p("ros.diagnostics_period", Ty::Double, "double", "s", Value::Double(1.0), "1.0", "s of wall time between /diagnostics messages; finite, > 0", ""),
+            p("ros.reject_log_period", Ty::Double, "double", "s", Value::Double(1.0), "1.0", "s of wall time between log lines about rejected inputs of one kind; finite, >= 0", ""),
+            p("ros.service_mapping", Ty::String, "string", "—", Value::Str("enhanced"), "\"enhanced\"", "request/reply mapping of all services: enhanced (rmw_fastrtps, the Jazzy default), cyclone (rmw_cyclonedds_cpp) or basic", ""),
+        ],
+    },
+];
+
+/// Every parameter, section by section.
+pub fn params() -> impl Iterator<Item = &'static Param> {
+    SECTIONS.iter().flat_map(|s| s.params.iter())
+}
+
+/// The declaration of `key`.
+pub fn find(key: &str) -> Option<&'static Param> {
+    params().find(|p| p.key == key)
+}
+
+/// The section named `name` (`pads`, `ros`; `""`: top level).
+pub fn section(name: &str) -> Option<&'static Section> {
+    SECTIONS.iter().find(|s| s.name == name)
+}
+
+/// The keys of section `name`.
+pub fn keys(name: &str) -> Vec<&'static str> {
+    section(name).map_or_else(Vec::new, |s| s.params.iter().map(|p| p.key).collect())
+}
+
+/// Sections that are off unless their first key is given (load models):
+/// their other keys have no effect, and no default, without it.
+pub fn enabled_by(section_name: &str) -> Option<&'static str> {
+    match section_name {
+        "pads" | "tool" | "links" | "springs" => section(section_name).map(|s| s.params[0].key),
+        _ => None,
+    }
+}
+
+fn cell(text: &str) -> &str {
+    if text.is_empty() {
+        "—"
+    } else {
+        text
+    }
+}
+
+/// The reference of docs/parameters.md: per section its text and a table of
+/// key, type, unit, default, rule and meaning.
+pub fn reference_markdown() -> String {
+    let mut out = String::new();
+    for s in SECTIONS {
+        out.push_str(&format!("### {}\n\n", s.title));
+        if !s.before.is_empty() {
+            out.push_str(&format!("{}\n\n", s.before));
+        }
+        out.push_str("| Key | Type | Unit | Default | Rule | Meaning |\n|---|---|---|---|---|---|\n");
+        for p in s.params {
+            out.push_str(&format!(
+                "| `{}` | {} | {} | {} | {} | {} |\n",
+                p.key,
+                p.type_text,
+                cell(p.unit),
+                cell(p.default_text),
+                cell(p.rule),
+                cell(p.meaning)
+            ));
+        }
+        if !s.after.is_empty() {
+            out.push_str(&format!("\n{}\n", s.after));
+        }
+        out.push('\n');
+    }
+    out
+}
+
+/// The README's key index: per section the keys, linking to the reference.
+pub fn key_index_markdown() -> String {
+    let mut out = String::from("| Section | Keys |\n|---|---|\n");
+    for s in SECTIONS {
+        let anchor: String = s
+            .title
+            .to_lowercase()
+            .chars()
+            .filter(|c| c.is_alphanumeric() || *c == ' ' || *c == '-' || *c == '_')
+            .map(|c| if c == ' ' { '-' } else { c })
+            .collect();
+        let name = if s.name.is_empty() { "top level".to_string() } else { format!("`{}`", s.name) };
+        let keys: Vec<String> = s.params.iter().map(|p| format!("`{}`", p.key)).collect();
+        out.push_str(&format!("| [{name}](docs/parameters.md#{anchor}) | {} |\n", keys.join(", ")));
+    }
+    out
+}
