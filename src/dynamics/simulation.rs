@@ -3,6 +3,7 @@
 
 use crate::config::{Config, Coordinates, IntegratorKind};
 use crate::model::PlateModel;
+use nalgebra::{Isometry3, Quaternion, Translation3, UnitQuaternion, Vector3};
 
 use super::ale::{harmonics, lagrange_to_ale};
 use super::commands::{check, check_batch, Checked, CheckedBatch, Command};
@@ -49,7 +50,9 @@ pub struct JointOutput {
     pub effort: f64,
 }
 
-/// A rigid transform: translation (m) and unit quaternion (x, y, z, w).
+/// A rigid transform as the messages carry it: translation (m) and unit
+/// quaternion (x, y, z, w). The maths is nalgebra's ([`Pose::isometry`],
+/// `From<Isometry3>`).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Pose {
     pub translation: [f64; 3],
@@ -61,8 +64,20 @@ impl Pose {
 
     /// A rotation about z by `angle`.
     pub fn about_z(angle: f64) -> Pose {
-        let (s, c) = (0.5 * angle).sin_cos();
-        Pose { translation: [0.0; 3], rotation: [0.0, 0.0, s, c] }
+        Isometry3::from_parts(Translation3::identity(), UnitQuaternion::from_axis_angle(&Vector3::z_axis(), angle)).into()
+    }
+
+    pub fn isometry(&self) -> Isometry3<f64> {
+        let [x, y, z, w] = self.rotation;
+        let q = UnitQuaternion::new_unchecked(Quaternion::new(w, x, y, z));
+        Isometry3::from_parts(Translation3::from(self.translation), q)
+    }
+}
+
+impl From<Isometry3<f64>> for Pose {
+    fn from(iso: Isometry3<f64>) -> Pose {
+        let q = iso.rotation.coords;
+        Pose { translation: iso.translation.vector.into(), rotation: [q[0], q[1], q[2], q[3]] }
     }
 }
 
@@ -428,7 +443,7 @@ impl NodeOutput {
         };
         let p = node.position();
         NodeOutput {
-            pose: Pose { translation: [p[0], p[1], d.w], rotation: tilt_quaternion(d.tilt) },
+            pose: Isometry3::from_parts(Translation3::new(p[0], p[1], d.w), tilt_rotation(d.tilt)).into(),
             uz: d.w,
             uz_dot,
             tilt: d.tilt,
@@ -437,12 +452,7 @@ impl NodeOutput {
     }
 }
 
-/// Unit quaternion (x, y, z, w) of the small-slope rotation vector (θ_x, θ_y, 0).
-pub fn tilt_quaternion(tilt: [f64; 2]) -> [f64; 4] {
-    let angle = (tilt[0] * tilt[0] + tilt[1] * tilt[1]).sqrt();
-    if angle < 1e-300 {
-        return [0.0, 0.0, 0.0, 1.0];
-    }
-    let (s, c) = (0.5 * angle).sin_cos();
-    [tilt[0] / angle * s, tilt[1] / angle * s, 0.0, c]
+/// The rotation of the small-slope rotation vector (θ_x, θ_y, 0).
+pub fn tilt_rotation(tilt: [f64; 2]) -> UnitQuaternion<f64> {
+    UnitQuaternion::from_scaled_axis(Vector3::new(tilt[0], tilt[1], 0.0))
 }

@@ -78,6 +78,17 @@ impl Source {
     pub const ALL: [Source; 6] =
         [Source::SpeedCommand, Source::NodeWrench, Source::WrenchArray, Source::PadClampForce, Source::PadClampForces, Source::ToolFeed];
 
+    /// The counter of a load-model command: numbered instances one at a time
+    /// (`pad_clamp_force`), their batch (`pad_clamp_forces`), or a single
+    /// instance's command (`tool_feed`).
+    pub fn of_load_command(indexed: bool, batch: bool) -> Source {
+        match (indexed, batch) {
+            (true, false) => Source::PadClampForce,
+            (true, true) => Source::PadClampForces,
+            (false, _) => Source::ToolFeed,
+        }
+    }
+
     /// The counter's name in /diagnostics: `accepted_<name>`.
     pub fn name(self) -> &'static str {
         match self {

@@ -1,7 +1,7 @@
 //! Topic names, before resolution (`~` = the node's name, see `args.rs`).
 //! Remap any of them with `-r from:=to`.
 
-use crate::dynamics::NodeKind;
+use crate::dynamics::{CommandSpec, NodeKind};
 
 pub const SPEED_COMMAND: &str = "~/speed_command";
 pub const WRENCHES: &str = "~/wrenches";
@@ -24,6 +24,21 @@ pub fn node_wrench(kind: NodeKind, j: usize) -> String {
     format!("~/{}_{j}/wrench", kind.name())
 }
 
+/// The topic of a load-model command for instance j (from 1): `~/<instance>_<j>/<token>`
+/// for numbered instances (`~/pad_2/clamp_force`), `~/<instance>_<token>` otherwise (`~/tool_feed`).
+pub fn load_command(spec: &CommandSpec, j: usize) -> String {
+    if spec.indexed {
+        format!("~/{}_{j}/{}", spec.instance, spec.token)
+    } else {
+        format!("~/{}_{}", spec.instance, spec.token)
+    }
+}
+
+/// The batch topic of a numbered load-model command: `~/<instance>_<token>s` (`~/pad_clamp_forces`).
+pub fn load_batch(spec: &CommandSpec) -> String {
+    format!("~/{}_{}s", spec.instance, spec.token)
+}
+
 /// `~/pad_<j>/clamp_force`, pad j from 1.
 pub fn pad_clamp_force(j: usize) -> String {
     format!("~/pad_{j}/clamp_force")
@@ -38,5 +53,10 @@ mod tests {
         assert_eq!(node_wrench(NodeKind::Ale, 3), "~/ale_3/wrench");
         assert_eq!(node_wrench(NodeKind::Lagrange, 1), "~/lagrange_1/wrench");
         assert_eq!(pad_clamp_force(1), "~/pad_1/clamp_force");
+        // The load models' command topics, discovered from their specs, keep these names.
+        use crate::dynamics::load_models::{pad::CLAMP_FORCE, tool::FEED_RATE};
+        assert_eq!(load_command(&CLAMP_FORCE, 2), pad_clamp_force(2));
+        assert_eq!(load_batch(&CLAMP_FORCE), PAD_CLAMP_FORCES);
+        assert_eq!(load_command(&FEED_RATE, 1), TOOL_FEED);
     }
 }

@@ -13,6 +13,7 @@ pub mod bspline;
 pub mod eigen;
 mod error;
 pub mod modes;
+pub mod nodal_lines;
 pub mod quadrature;
 pub mod radial;
 pub mod shape;

@@ -136,56 +136,61 @@ impl InputValidator {
         })
     }
 
-    /// The load-model command `token` (`clamp_force`, `feed`) of model `model`: (model, command).
-    fn load_command(&self, model: &str) -> Option<usize> {
-        self.rules.model(model).map(|(i, _)| i)
+    /// Command `command` of load model `model` for instance `instance` (0-based).
+    pub fn load_command(&self, model: usize, command: usize, instance: usize, value: f64) -> Result<Input, Rejection> {
+        self.one(Command::Load { model, command, instance, value })
+    }
+
+    /// A batch of one indexed load-model command: instance numbers (from 1)
+    /// and their values (a PadClampForces message), applied whole or not at all.
+    pub fn load_batch(&self, model: usize, command: usize, numbers: &[u32], values: &[f64]) -> Result<Input, Rejection> {
+        let instance = self.rules.load_commands().find(|c| c.0 == model && c.1 == command).map_or("entry", |c| c.2.instance);
+        if numbers.len() != values.len() {
+            return Err(Rejection::new(
+                RejectReason::MalformedBatch,
+                format!("{instance} has {} entries but the values {}; the array was not applied", numbers.len(), values.len()),
+            ));
+        }
+        if let Some(position) = numbers.iter().position(|&p| p == 0) {
+            return Err(Rejection::new(
+                RejectReason::NoSuchNode,
+                format!("{instance}[{position}] = 0, but {instance} numbers start at 1; the array was not applied"),
+            ));
+        }
+        let commands = numbers.iter().zip(values).map(|(&n, &value)| Command::Load { model, command, instance: n as usize - 1, value });
+        check_batch(&self.rules, commands).map(Input::Batch).map_err(|e| {
+            batch_rejection(e, "entry", |position| format!("{instance}[{position}] names {instance} {} a second time", numbers[position]))
+        })
+    }
+
+    /// The model named `name` (`pads`, `tool`), if the scene has it.
+    fn model(&self, name: &str) -> Option<usize> {
+        self.rules.model(name).map(|(i, _)| i)
     }
 
     /// A clamp force on the topic of pad `pad` (0-based), N.
     pub fn clamp_force(&self, pad: usize, newtons: f64) -> Result<Input, Rejection> {
-        let Some(model) = self.load_command("pads") else {
-            return Err(Rejection::from_input_error(InputError::NoSuchInstance { instance: "pad", index: pad + 1, count: 0 }));
-        };
-        self.one(Command::Load { model, command: 0, instance: pad, value: newtons })
+        match self.model("pads") {
+            Some(model) => self.load_command(model, 0, pad, newtons),
+            None => Err(Rejection::from_input_error(InputError::NoSuchInstance { instance: "pad", index: pad + 1, count: 0 })),
+        }
     }
 
     /// A PadClampForces message: pad numbers (from 1) and their clamp forces, N.
     pub fn clamp_forces(&self, pads: &[u32], forces: &[f64]) -> Result<Input, Rejection> {
-        if pads.len() != forces.len() {
-            return Err(Rejection::new(
-                RejectReason::MalformedBatch,
-                format!("pad has {} entries but clamp_force {}; the array was not applied", pads.len(), forces.len()),
-            ));
+        match self.model("pads") {
+            Some(model) => self.load_batch(model, 0, pads, forces),
+            None if pads.is_empty() && forces.is_empty() => Ok(Input::Batch(CheckedBatch::default())),
+            None => Err(Rejection::from_input_error(InputError::NoSuchInstance { instance: "pad", index: pads.first().map_or(1, |&p| p as usize), count: 0 })),
         }
-        if let Some(position) = pads.iter().position(|&p| p == 0) {
-            return Err(Rejection::new(
-                RejectReason::NoSuchNode,
-                format!("pad[{position}] = 0, but pad numbers start at 1; the array was not applied"),
-            ));
-        }
-        let model = self.load_command("pads");
-        let commands: Vec<Command> = pads
-            .iter()
-            .zip(forces)
-            .map(|(&number, &value)| Command::Load { model: model.unwrap_or(usize::MAX), command: 0, instance: number as usize - 1, value })
-            .collect();
-        if model.is_none() {
-            if let Some(&first) = pads.first() {
-                let e = InputError::NoSuchInstance { instance: "pad", index: first as usize, count: 0 };
-                return Err(batch_rejection(BatchError::Invalid { position: 0, error: e }, "entry", |_| String::new()));
-            }
-        }
-        check_batch(&self.rules, commands.iter().copied())
-            .map(Input::Batch)
-            .map_err(|e| batch_rejection(e, "entry", |position| format!("pad[{position}] names pad {} a second time", pads[position])))
     }
 
     /// A tool feed rate, m/s.
     pub fn tool_feed(&self, rate: f64) -> Result<Input, Rejection> {
-        let Some(model) = self.load_command("tool") else {
-            return Err(Rejection::from_input_error(InputError::NoSuchModel { model: "tool", key: "tool.ale_node" }));
-        };
-        self.one(Command::Load { model, command: 0, instance: 0, value: rate })
+        match self.model("tool") {
+            Some(model) => self.load_command(model, 0, 0, rate),
+            None => Err(Rejection::from_input_error(InputError::NoSuchModel { model: "tool", key: "tool.ale_node" })),
+        }
     }
 }
 

@@ -7,7 +7,7 @@ use super::inputs::{Input, InputStats, InputValidator, RejectReason, Rejection, 
 use super::logging::{parse_level, Logger};
 use crate::messages::types::{
     Clock, DiagnosticArray, Float64, JointState, ModalAmplitudes, NodeWrenchArray, PadClampForces, PadStates, RosType,
-    TFMessage, ToolState, WrenchStamped,
+    TFMessage, Time, ToolState, WrenchStamped,
 };
 use crate::messages::outputs::{static_transforms, FrameNames, OutputMessages, Shared};
 use super::params_service::{effective_parameters, ParamStore};
@@ -15,9 +15,9 @@ use super::services::{self, Command};
 use crate::messages::settings::RosSettings;
 use super::sim_loop::{LoopSettings, Publishers, SimLoop};
 use crate::messages::{qos, topics};
-use crate::bag::recorder::{NodeBag, NodeTopics, Recorder, Sample};
+use crate::bag::recorder::{NodeBag, NodeTopics, Recorder, RecorderThread, Sample};
 use crate::config::{Config, ConfigError, Params};
-use crate::dynamics::{NodeKind, Simulation, Wrench};
+use crate::dynamics::{InputRules, NodeKind, Simulation, Wrench};
 use super::error::NodeError;
 use futures::StreamExt;
 use ros2_client::{Context, ContextOptions, MessageTypeName, Name, Node, NodeName, NodeOptions, Publisher, QosProfile, Subscription};
@@ -191,9 +191,179 @@ fn to_wrench(w: &crate::messages::types::Wrench) -> Wrench {
     Wrench { force: w.force.to_array(), moment: w.torque.to_array() }
 }
 
+/// The node's output publishers (the pad and tool states only for scenes with them).
+fn create_publishers(node: &mut Node, names: &NameResolver, settings: &RosSettings, sim: &Simulation) -> Result<Publishers, NodeError> {
+    Ok(Publishers {
+        joint_states: publisher::<JointState, Shared<JointState>>(node, names, topics::JOINT_STATES, &qos::STATE)?,
+        tf: publisher::<TFMessage, Shared<TFMessage>>(node, names, topics::TF, &qos::TF)?,
+        modal: publisher::<ModalAmplitudes, Shared<ModalAmplitudes>>(node, names, topics::MODAL_AMPLITUDES, &qos::STATE)?,
+        pad_states: (sim.pad_count() > 0)
+            .then(|| publisher::<PadStates, Shared<PadStates>>(node, names, topics::PAD_STATES, &qos::STATE))
+            .transpose()?,
+        tool_state: sim.has_tool().then(|| publisher::<ToolState, Shared<ToolState>>(node, names, topics::TOOL_STATE, &qos::STATE)).transpose()?,
+        clock: settings.sim_time.then(|| publisher::<Clock, Clock>(node, names, topics::CLOCK, &qos::CLOCK)).transpose()?,
+        diagnostics: publisher::<DiagnosticArray, DiagnosticArray>(node, names, topics::DIAGNOSTICS, &qos::DIAGNOSTICS)?,
+    })
+}
+
+/// `run --record`: the writer thread, fed by the loop; /tf_static goes first.
+fn start_recording(bag: Option<NodeBag>, static_msg: &TFMessage, stamp: Time, logger: &Logger) -> Result<Option<(Recorder, RecorderThread)>, NodeError> {
+    let Some(bag) = bag else { return Ok(None) };
+    let dir = bag.dir().display().to_string();
+    let (recorder, thread) =
+        Recorder::start(bag, RECORD_QUEUE).map_err(|error| NodeError::System { what: "cannot start the bag writer thread", error })?;
+    recorder.record(Sample::TfStatic(static_msg.clone()), stamp);
+    logger.info(&format!("recording the node's topics to {dir}"));
+    Ok(Some((recorder, thread)))
+}
+
+/// One input task per input topic: the speed command, the node wrenches, the wrench array.
+fn subscribe_inputs(node: &mut Node, names: &NameResolver, frames: &FrameNames, ctx: &InputContext) -> Result<Vec<JoinHandle<()>>, NodeError> {
+    let mut tasks = Vec::new();
+    let topic = names.resolve(topics::SPEED_COMMAND)?;
+    let sub = subscription::<Float64>(node, &topic, &qos::INPUT)?;
+    tasks.push(spawn_input(sub, topic, Source::SpeedCommand, ctx.clone(), |v, m: Float64| Ok((v.speed(m.data)?, 0))));
+    for (kind, count) in [(NodeKind::Ale, frames.ale.len()), (NodeKind::Lagrange, frames.lagrange.len())] {
+        for node_index in 0..count {
+            let topic = names.resolve(&topics::node_wrench(kind, node_index + 1))?;
+            let sub = subscription::<WrenchStamped>(node, &topic, &qos::INPUT)?;
+            tasks.push(spawn_input(sub, topic, Source::NodeWrench, ctx.clone(), move |v, m: WrenchStamped| {
+                let stamp = m.header.stamp.to_nanos();
+                Ok((v.wrench_stamped(kind, node_index, &m.header.frame_id, to_wrench(&m.wrench))?, stamp))
+            }));
+        }
+    }
+    let topic = names.resolve(topics::WRENCHES)?;
+    let sub = subscription::<NodeWrenchArray>(node, &topic, &qos::INPUT)?;
+    tasks.push(spawn_input(sub, topic, Source::WrenchArray, ctx.clone(), |v, m: NodeWrenchArray| {
+        let stamp = m.header.stamp.to_nanos();
+        Ok((v.batch(m.wrenches.iter().map(|w| (w.kind, w.index, to_wrench(&w.wrench))))?, stamp))
+    }));
+    Ok(tasks)
+}
+
+/// The load models' commands, discovered from their specs: a std_msgs/Float64
+/// topic per instance (`~/pad_<j>/clamp_force`, `~/tool_feed`) and, for
+/// numbered instances, one batch topic (`~/pad_clamp_forces`, PadClampForces).
+fn subscribe_load_commands(node: &mut Node, names: &NameResolver, rules: &InputRules, ctx: &InputContext) -> Result<Vec<JoinHandle<()>>, NodeError> {
+    let mut tasks = Vec::new();
+    for (model, command, spec, instances) in rules.load_commands() {
+        let source = Source::of_load_command(spec.indexed, false);
+        for instance in 0..instances {
+            let topic = names.resolve(&topics::load_command(spec, instance + 1))?;
+            let sub = subscription::<Float64>(node, &topic, &qos::INPUT)?;
+            tasks.push(spawn_input(sub, topic, source, ctx.clone(), move |v, m: Float64| {
+                Ok((v.load_command(model, command, instance, m.data)?, 0))
+            }));
+        }
+        if spec.indexed {
+            let topic = names.resolve(&topics::load_batch(spec))?;
+            let sub = subscription::<PadClampForces>(node, &topic, &qos::INPUT)?;
+            tasks.push(spawn_input(sub, topic, Source::of_load_command(true, true), ctx.clone(), move |v, m: PadClampForces| {
+                Ok((v.load_batch(model, command, &m.pad, &m.clamp_force)?, m.header.stamp.to_nanos()))
+            }));
+        }
+    }
+    Ok(tasks)
+}
+
+/// Reset, pause and step services and the six parameter services.
+fn start_services(node: &mut Node, setup: &NodeSetup, tx: &SyncSender<Command>) -> Result<Vec<JoinHandle<()>>, NodeError> {
+    let (names, settings) = (&setup.names, &setup.settings);
+    let service_names = [names.resolve(services::RESET)?, names.resolve(services::SET_PAUSED)?, names.resolve(services::STEP)?];
+    let mut tasks =
+        services::spawn(node, settings.service_mapping, [&service_names[0], &service_names[1], &service_names[2]], tx.clone())?;
+    let store = Arc::new(Mutex::new(ParamStore::new(effective_parameters(&setup.params, settings))));
+    tasks.extend(super::params_service::spawn(node, settings.service_mapping, &names.fully_qualified_node_name(), store, tx.clone())?);
+    Ok(tasks)
+}
+
+/// The loop's settings from the scene and the node's `ros.*` settings.
+fn loop_settings(setup: &NodeSetup) -> LoopSettings {
+    let (settings, simulation) = (&setup.settings, &setup.config.simulation);
+    LoopSettings {
+        publish_divisor: simulation.publish_divisor,
+        realtime_factor: simulation.realtime_factor,
+        start_paused: settings.start_paused,
+        sim_time: settings.sim_time,
+        wrench_timeout: settings.wrench_timeout,
+        diagnostics_period: Duration::from_secs_f64(settings.diagnostics_period),
+        node_name: setup.names.fully_qualified_node_name(),
+    }
+}
+
+/// The simulation thread; the receiver fires when its loop ends.
+fn start_loop(sim_loop: SimLoop) -> Result<(std::thread::JoinHandle<()>, tokio::sync::oneshot::Receiver<()>), NodeError> {
+    let (done_tx, done_rx) = tokio::sync::oneshot::channel::<()>();
+    let thread = std::thread::Builder::new()
+        .name("annular_plate-sim".into())
+        .spawn(move || {
+            sim_loop.run();
+            let _ = done_tx.send(());
+        })
+        .map_err(|error| NodeError::System { what: "cannot start the simulation thread", error })?;
+    Ok((thread, done_rx))
+}
+
+/// The start-up line: scene, nodes, modes, load models, clock.
+fn startup_line(setup: &NodeSetup, sim: &Simulation, domain: u16) -> String {
+    let (n_pads, frames) = (sim.pad_count(), setup.frame_names());
+    format!(
+        "{} up on ROS_DOMAIN_ID {domain}: scene {}, {} ALE and {} Lagrangian nodes, {} modes, {} pad{}{}, {} time",
+        setup.names.fully_qualified_node_name(),
+        setup.scene,
+        frames.ale.len(),
+        frames.lagrange.len(),
+        sim.model().n_modes(),
+        n_pads,
+        if n_pads == 1 { "" } else { "s" },
+        if sim.has_tool() { ", a tool" } else { "" },
+        if setup.settings.sim_time { "simulated (/clock)" } else { "wall-clock" }
+    )
+}
+
+/// Wait for SIGINT, SIGTERM or the loop's end; say which.
+async fn wait_for_stop(done_rx: tokio::sync::oneshot::Receiver<()>) -> Result<&'static str, NodeError> {
+    use tokio::signal::unix::{signal, SignalKind};
+    let mut sigint = signal(SignalKind::interrupt()).map_err(|error| NodeError::System { what: "cannot handle SIGINT", error })?;
+    let mut sigterm = signal(SignalKind::terminate()).map_err(|error| NodeError::System { what: "cannot handle SIGTERM", error })?;
+    Ok(tokio::select! {
+        _ = sigint.recv() => "SIGINT",
+        _ = sigterm.recv() => "SIGTERM",
+        _ = done_rx => "the simulation loop ended",
+    })
+}
+
+/// Let the writer thread finish the bag; `Err` with the reason if it could not.
+async fn finish_recording(thread: RecorderThread, logger: &Logger) -> Result<(), String> {
+    let r = tokio::task::spawn_blocking(move || thread.finish()).await.map_err(|e| format!("the bag writer thread failed: {e}"))?;
+    match &r.summary {
+        Ok(s) => {
+            let msg = format!(
+                "recorded {} messages on {} topics ({:.3} s, {} bytes) to {}; {} dropped",
+                s.message_count,
+                s.topics.len(),
+                s.duration as f64 * 1e-9,
+                s.bytes,
+                s.dir.display(),
+                r.dropped
+            );
+            if r.dropped > 0 || r.error.is_some() {
+                logger.warn(&format!("{msg}{}", r.error.as_ref().map(|e| format!("; stopped early: {e}")).unwrap_or_default()));
+            } else {
+                logger.info(&msg);
+            }
+            Ok(())
+        }
+        Err(e) => {
+            logger.error(&format!("the bag could not be finished: {e}"));
+            Err(e.clone())
+        }
+    }
+}
+
 async fn serve(setup: NodeSetup, sim: Simulation, domain: u16, bag: Option<NodeBag>) -> Result<(), NodeError> {
-    let names = &setup.names;
-    let settings = &setup.settings;
+    let (names, settings) = (&setup.names, &setup.settings);
     let context = Context::with_options(ContextOptions::new().domain_id(domain))
         .map_err(|e| NodeError::dds(format!("cannot join DDS domain {domain}"), e))?;
     let mut node = context
@@ -203,7 +373,6 @@ async fn serve(setup: NodeSetup, sim: Simulation, domain: u16, bag: Option<NodeB
             NodeOptions::new().enable_rosout(setup.args.rosout_logs).start_parameter_services(false),
         )
         .map_err(|e| NodeError::dds("cannot create the node", e))?;
-    let fqn = names.fully_qualified_node_name();
     let logger = Arc::new(Logger::new(
         setup.args.rosout_logs.then(|| node.logging_handle()),
         names.node_name(),
@@ -213,43 +382,11 @@ async fn serve(setup: NodeSetup, sim: Simulation, domain: u16, bag: Option<NodeB
     ));
     let frames = setup.frame_names();
 
-    // Outputs.
-    let pubs = Publishers {
-        joint_states: publisher::<JointState, Shared<JointState>>(&mut node, names, topics::JOINT_STATES, &qos::STATE)?,
-        tf: publisher::<TFMessage, Shared<TFMessage>>(&mut node, names, topics::TF, &qos::TF)?,
-        modal: publisher::<ModalAmplitudes, Shared<ModalAmplitudes>>(&mut node, names, topics::MODAL_AMPLITUDES, &qos::STATE)?,
-        pad_states: if sim.pad_count() > 0 {
-            Some(publisher::<PadStates, Shared<PadStates>>(&mut node, names, topics::PAD_STATES, &qos::STATE)?)
-        } else {
-            None
-        },
-        tool_state: if sim.has_tool() {
-            Some(publisher::<ToolState, Shared<ToolState>>(&mut node, names, topics::TOOL_STATE, &qos::STATE)?)
-        } else {
-            None
-        },
-        clock: if settings.sim_time {
-            Some(publisher::<Clock, Clock>(&mut node, names, topics::CLOCK, &qos::CLOCK)?)
-        } else {
-            None
-        },
-        diagnostics: publisher::<DiagnosticArray, DiagnosticArray>(&mut node, names, topics::DIAGNOSTICS, &qos::DIAGNOSTICS)?,
-    };
+    let pubs = create_publishers(&mut node, names, settings, &sim)?;
     let tf_static = publisher::<TFMessage, TFMessage>(&mut node, names, topics::TF_STATIC, &qos::TF_STATIC)?;
-    let static_stamp = if settings.sim_time { crate::messages::types::Time::default() } else { crate::messages::types::Time::wall_now() };
+    let static_stamp = if settings.sim_time { Time::default() } else { Time::wall_now() };
     let static_msg = static_transforms(&frames, setup.config.reference.tilt, static_stamp);
-
-    // Recording (`run --record`): a writer thread fed by the loop.
-    let recording = match bag {
-        Some(bag) => {
-            let dir = bag.dir().display().to_string();
-            let (recorder, thread) = Recorder::start(bag, RECORD_QUEUE).map_err(|error| NodeError::System { what: "cannot start the bag writer thread", error })?;
-            recorder.record(Sample::TfStatic(static_msg.clone()), static_stamp);
-            logger.info(&format!("recording the node's topics to {dir}"));
-            Some((recorder, thread))
-        }
-        None => None,
-    };
+    let recording = start_recording(bag, &static_msg, static_stamp, &logger)?;
     if let Err(e) = tf_static.publish(static_msg) {
         logger.warn(&format!("could not publish /tf_static: {e:?}"));
     }
@@ -263,114 +400,21 @@ async fn serve(setup: NodeSetup, sim: Simulation, domain: u16, bag: Option<NodeB
         logger: Arc::clone(&logger),
         tx: tx.clone(),
     };
+    let mut tasks = subscribe_inputs(&mut node, names, &frames, &ctx)?;
+    tasks.extend(subscribe_load_commands(&mut node, names, &sim.scene().rules, &ctx)?);
+    tasks.extend(start_services(&mut node, &setup, &tx)?);
 
-    let mut tasks: Vec<JoinHandle<()>> = Vec::new();
-    let resolve = |t: &str| names.resolve(t).map_err(NodeError::from);
-
-    let topic = resolve(topics::SPEED_COMMAND)?;
-    let sub = subscription::<Float64>(&mut node, &topic, &qos::INPUT)?;
-    tasks.push(spawn_input(sub, topic, Source::SpeedCommand, ctx.clone(), |v, m: Float64| Ok((v.speed(m.data)?, 0))));
-
-    for (kind, count) in [(NodeKind::Ale, frames.ale.len()), (NodeKind::Lagrange, frames.lagrange.len())] {
-        for node_index in 0..count {
-            let topic = resolve(&topics::node_wrench(kind, node_index + 1))?;
-            let sub = subscription::<WrenchStamped>(&mut node, &topic, &qos::INPUT)?;
-            tasks.push(spawn_input(sub, topic, Source::NodeWrench, ctx.clone(), move |v, m: WrenchStamped| {
-                let stamp = m.header.stamp.to_nanos();
-                Ok((v.wrench_stamped(kind, node_index, &m.header.frame_id, to_wrench(&m.wrench))?, stamp))
-            }));
-        }
-    }
-
-    let topic = resolve(topics::WRENCHES)?;
-    let sub = subscription::<NodeWrenchArray>(&mut node, &topic, &qos::INPUT)?;
-    tasks.push(spawn_input(sub, topic, Source::WrenchArray, ctx.clone(), |v, m: NodeWrenchArray| {
-        let stamp = m.header.stamp.to_nanos();
-        Ok((v.batch(m.wrenches.iter().map(|w| (w.kind, w.index, to_wrench(&w.wrench))))?, stamp))
-    }));
-
-    // Load-model commands: only for the pads and the tool the scene has.
-    for pad in 0..sim.pad_count() {
-        let topic = resolve(&topics::pad_clamp_force(pad + 1))?;
-        let sub = subscription::<Float64>(&mut node, &topic, &qos::INPUT)?;
-        tasks.push(spawn_input(sub, topic, Source::PadClampForce, ctx.clone(), move |v, m: Float64| {
-            Ok((v.clamp_force(pad, m.data)?, 0))
-        }));
-    }
-    if sim.pad_count() > 0 {
-        let topic = resolve(topics::PAD_CLAMP_FORCES)?;
-        let sub = subscription::<PadClampForces>(&mut node, &topic, &qos::INPUT)?;
-        tasks.push(spawn_input(sub, topic, Source::PadClampForces, ctx.clone(), |v, m: PadClampForces| {
-            Ok((v.clamp_forces(&m.pad, &m.clamp_force)?, m.header.stamp.to_nanos()))
-        }));
-    }
-    if sim.has_tool() {
-        let topic = resolve(topics::TOOL_FEED)?;
-        let sub = subscription::<Float64>(&mut node, &topic, &qos::INPUT)?;
-        tasks.push(spawn_input(sub, topic, Source::ToolFeed, ctx.clone(), |v, m: Float64| Ok((v.tool_feed(m.data)?, 0))));
-    }
-
-    // Services.
-    let service_names = [resolve(services::RESET)?, resolve(services::SET_PAUSED)?, resolve(services::STEP)?];
-    tasks.extend(services::spawn(
-        &mut node,
-        settings.service_mapping,
-        [&service_names[0], &service_names[1], &service_names[2]],
-        tx.clone(),
-    )?);
-    let store = Arc::new(Mutex::new(ParamStore::new(effective_parameters(&setup.params, settings))));
-    tasks.extend(super::params_service::spawn(&mut node, settings.service_mapping, &fqn, store, tx.clone())?);
-
-    // The simulation thread.
-    let n_modes = sim.model().n_modes();
-    let (n_pads, has_tool) = (sim.pad_count(), sim.has_tool());
+    let line = startup_line(&setup, &sim, domain);
     let outputs = OutputMessages::new(&sim, &frames);
-    let loop_settings = LoopSettings {
-        publish_divisor: setup.config.simulation.publish_divisor,
-        realtime_factor: setup.config.simulation.realtime_factor,
-        start_paused: settings.start_paused,
-        sim_time: settings.sim_time,
-        wrench_timeout: settings.wrench_timeout,
-        diagnostics_period: Duration::from_secs_f64(settings.diagnostics_period),
-        node_name: fqn.clone(),
-    };
-    let (done_tx, done_rx) = tokio::sync::oneshot::channel::<()>();
-    let mut sim_loop = SimLoop::new(sim, outputs, pubs, rx, Arc::clone(&stats), Arc::clone(&logger), loop_settings);
-    let record_thread = match recording {
-        Some((recorder, thread)) => {
-            sim_loop = sim_loop.with_recorder(recorder);
-            Some(thread)
-        }
-        None => None,
-    };
-    let sim_thread = std::thread::Builder::new()
-        .name("annular_plate-sim".into())
-        .spawn(move || {
-            sim_loop.run();
-            let _ = done_tx.send(());
-        })
-        .map_err(|error| NodeError::System { what: "cannot start the simulation thread", error })?;
-    logger.info(&format!(
-        "{fqn} up on ROS_DOMAIN_ID {domain}: scene {}, {} ALE and {} Lagrangian nodes, {} modes, {} pad{}{}, {} time",
-        setup.scene,
-        frames.ale.len(),
-        frames.lagrange.len(),
-        n_modes,
-        n_pads,
-        if n_pads == 1 { "" } else { "s" },
-        if has_tool { ", a tool" } else { "" },
-        if settings.sim_time { "simulated (/clock)" } else { "wall-clock" }
-    ));
+    let mut sim_loop = SimLoop::new(sim, outputs, pubs, rx, Arc::clone(&stats), Arc::clone(&logger), loop_settings(&setup));
+    let (recorder, record_thread) = recording.unzip();
+    if let Some(recorder) = recorder {
+        sim_loop = sim_loop.with_recorder(recorder);
+    }
+    let (sim_thread, done_rx) = start_loop(sim_loop)?;
+    logger.info(&line);
 
-    // Wait for a signal (or the loop's end).
-    use tokio::signal::unix::{signal, SignalKind};
-    let mut sigint = signal(SignalKind::interrupt()).map_err(|error| NodeError::System { what: "cannot handle SIGINT", error })?;
-    let mut sigterm = signal(SignalKind::terminate()).map_err(|error| NodeError::System { what: "cannot handle SIGTERM", error })?;
-    let why = tokio::select! {
-        _ = sigint.recv() => "SIGINT",
-        _ = sigterm.recv() => "SIGTERM",
-        _ = done_rx => "the simulation loop ended",
-    };
+    let why = wait_for_stop(done_rx).await?;
     logger.info(&format!("{why}: shutting down"));
     // A hung shutdown must not keep the process: give it two seconds.
     std::thread::spawn(|| {
@@ -394,34 +438,10 @@ async fn serve(setup: NodeSetup, sim: Simulation, domain: u16, bag: Option<NodeB
     let joined = tokio::task::spawn_blocking(move || sim_thread.join()).await;
     // The loop (and with it the recorder's queue) is gone: the writer
     // thread drains the queue, finishes the MCAP file and metadata.yaml.
-    let mut record_failed = None;
-    if let Some(thread) = record_thread {
-        match tokio::task::spawn_blocking(move || thread.finish()).await {
-            Ok(r) => match &r.summary {
-                Ok(s) => {
-                    let msg = format!(
-                        "recorded {} messages on {} topics ({:.3} s, {} bytes) to {}; {} dropped",
-                        s.message_count,
-                        s.topics.len(),
-                        s.duration as f64 * 1e-9,
-                        s.bytes,
-                        s.dir.display(),
-                        r.dropped
-                    );
-                    if r.dropped > 0 || r.error.is_some() {
-                        logger.warn(&format!("{msg}{}", r.error.as_ref().map(|e| format!("; stopped early: {e}")).unwrap_or_default()));
-                    } else {
-                        logger.info(&msg);
-                    }
-                }
-                Err(e) => {
-                    logger.error(&format!("the bag could not be finished: {e}"));
-                    record_failed = Some(e.clone());
-                }
-            },
-            Err(e) => record_failed = Some(format!("the bag writer thread failed: {e}")),
-        }
-    }
+    let record_failed = match record_thread {
+        Some(thread) => finish_recording(thread, &logger).await.err(),
+        None => None,
+    };
     let result = if !matches!(joined, Ok(Ok(()))) {
         logger.error("the simulation thread ended abnormally");
         Err(NodeError::SimulationThread)

@@ -1,0 +1,194 @@
+//! `annular_plate plot ...`: pictures, PNG or SVG (by the output's extension),
+//! drawn with plotters; text in DejaVu Sans embedded in the binary.
+//!
+//! - `plot csv FILE --columns q2,q3 [--panel qale2,qale3 ...] --out F`: time
+//!   histories from a `simulate` CSV, one panel per column list (the paper's
+//!   Figs. 9, 15, 17);
+//! - `plot modes PARAMS --out F [--k 0,1,2 --l 0,1]`: a grid of ⟨k, l⟩ mode
+//!   shapes seen from above, sign-coloured, with their nodal lines (Fig. 2);
+//! - `plot mode PARAMS (--index N | --k K --l L) --out F`: one mode as a
+//!   shaded surface beside its top view (Fig. 3).
+//!
+//! The drawing functions return the pixel geometry they used, so tests can
+//! check that a curve or a nodal line is where the data puts it.
+
+use crate::config::{Config, Params};
+use crate::model::AngularShape;
+use anyhow::{anyhow, bail};
+use std::path::{Path, PathBuf};
+use std::str::FromStr;
+
+
+mod csv;
+mod modes;
+mod pareto;
+mod render;
+
+pub use self::csv::*;
+pub use self::modes::*;
+pub use self::pareto::*;
+pub use self::render::*;
+pub use crate::model::nodal_lines::{nodal_angles, nodal_radii};
+
+
+// ---------------------------------------------------------------- CLI
+
+/// Picture size in pixels, `WIDTHxHEIGHT`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Size {
+    pub width: u32,
+    pub height: u32,
+}
+
+impl FromStr for Size {
+    type Err = String;
+    fn from_str(s: &str) -> Result<Size, String> {
+        let bad = || format!("size must be WIDTHxHEIGHT in pixels (e.g. 1200x800), got {s:?}");
+        let (w, h) = s.split_once(['x', 'X']).ok_or_else(bad)?;
+        let (width, height) = (w.trim().parse::<u32>().map_err(|_| bad())?, h.trim().parse::<u32>().map_err(|_| bad())?);
+        if !(100..=10_000).contains(&width) || !(100..=10_000).contains(&height) {
+            return Err(format!("size {width}x{height}: each side must be 100..10000 pixels"));
+        }
+        Ok(Size { width, height })
+    }
+}
+
+impl std::fmt::Display for Size {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "{}x{}", self.width, self.height)
+    }
+}
+
+#[derive(clap::Subcommand, Debug, Clone)]
+pub enum PlotCommand {
+    /// Time histories from a `simulate` CSV: one panel per column list, stacked.
+    Csv {
+        /// The CSV written by `annular_plate simulate`.
+        file: PathBuf,
+        /// Columns of the first panel, comma-separated; `*` matches any text (e.g. `ale*_uz`).
+        #[arg(long, value_name = "LIST")]
+        columns: Option<String>,
+        /// A further panel below the others (repeatable), columns as for --columns.
+        #[arg(long = "panel", value_name = "LIST")]
+        panels: Vec<String>,
+        /// The column on the horizontal axis.
+        #[arg(long, default_value = "time")]
+        x: String,
+        /// Axis label of each panel, in panel order (repeatable); default from the column names.
+        #[arg(long = "ylabel", value_name = "TEXT")]
+        ylabels: Vec<String>,
+        #[arg(long)]
+        title: Option<String>,
+        /// Output file, .png or .svg.
+        #[arg(long)]
+        out: PathBuf,
+        #[arg(long, default_value = "1200x800")]
+        size: Size,
+    },
+    /// A grid of mode shapes seen from above (rows: nodal circles l, columns: nodal diameters k).
+    Modes {
+        /// Params file (ROS 2 format) giving the plate.
+        params: PathBuf,
+        /// Parameter overrides `-p name:=value` (as after --ros-args), e.g. -p plate.inner_boundary:=supported.
+        #[arg(short = 'p', long = "param", value_name = "NAME:=VALUE")]
+        overrides: Vec<String>,
+        /// Nodal diameters to show (default: the file's, at most 8).
+        #[arg(long, value_delimiter = ',')]
+        k: Option<Vec<u32>>,
+        /// Nodal circles to show (default: the file's, at most 4).
+        #[arg(long, value_delimiter = ',')]
+        l: Option<Vec<u32>>,
+        #[arg(long)]
+        title: Option<String>,
+        #[arg(long)]
+        out: PathBuf,
+        /// Picture size; default: 230 × 250 pixels per mode.
+        #[arg(long)]
+        size: Option<Size>,
+    },
+    /// One mode as a shaded surface beside its top view.
+    Mode {
+        params: PathBuf,
+        #[arg(short = 'p', long = "param", value_name = "NAME:=VALUE")]
+        overrides: Vec<String>,
+        /// Mode number as listed by `annular_plate modes` (from 1).
+        #[arg(long, conflicts_with_all = ["k", "l"])]
+        index: Option<usize>,
+        /// Nodal diameters of the mode (with --l).
+        #[arg(long, requires = "l")]
+        k: Option<u32>,
+        /// Nodal circles of the mode (with --k).
+        #[arg(long, requires = "k")]
+        l: Option<u32>,
+        /// cos or sin (for k ≥ 1; default cos).
+        #[arg(long, default_value = "cos")]
+        shape: String,
+        #[arg(long)]
+        title: Option<String>,
+        #[arg(long)]
+        out: PathBuf,
+        #[arg(long, default_value = "1400x640")]
+        size: Size,
+    },
+}
+
+pub fn main(cmd: PlotCommand) -> anyhow::Result<()> {
+    match cmd {
+        PlotCommand::Csv { file, columns, panels, x, ylabels, title, out, size } => {
+            let data = CsvData::read(&file)?;
+            let mut specs: Vec<String> = columns.into_iter().collect();
+            specs.extend(panels);
+            if specs.is_empty() {
+                bail!("give the columns to plot: --columns LIST (and --panel LIST for more panels); {} has {}", file.display(), summarize_names(&data.header));
+            }
+            let panels = specs.iter().map(|s| data.expand(s)).collect::<anyhow::Result<Vec<_>>>()?;
+            let plot = CsvPlot { data: &data, x: &x, panels, ylabels, title };
+            plot.render(&out, size)?;
+        }
+        PlotCommand::Modes { params, overrides, k, l, title, out, size } => {
+            let config = load_with_overrides(&params, &overrides)?;
+            let ks = k.unwrap_or_else(|| first_sorted(&config.plate.nodal_diameters, 8));
+            let ls = l.unwrap_or_else(|| first_sorted(&config.plate.nodal_circles, 4));
+            let size = size.unwrap_or(Size { width: (230 * ks.len() as u32).max(400) + 20, height: 250 * ls.len() as u32 + 70 });
+            mode_grid(&config, &ks, &ls, title.as_deref(), &out, size)?;
+        }
+        PlotCommand::Mode { params, overrides, index, k, l, shape, title, out, size } => {
+            let config = load_with_overrides(&params, &overrides)?;
+            let which = match (index, k, l) {
+                (Some(i), _, _) => ModeChoice::Index(i),
+                (None, Some(k), Some(l)) => {
+                    let shape = match shape.as_str() {
+                        "cos" => AngularShape::Cos,
+                        "sin" => AngularShape::Sin,
+                        other => bail!("--shape must be cos or sin, got {other:?}"),
+                    };
+                    ModeChoice::KL { k, l, shape }
+                }
+                _ => bail!("say which mode: --index N (as numbered by `annular_plate modes`) or --k K --l L"),
+            };
+            mode_picture(&config, which, title.as_deref(), &out, size)?;
+        }
+    }
+    Ok(())
+}
+
+fn first_sorted(v: &[u32], n: usize) -> Vec<u32> {
+    let mut v = v.to_vec();
+    v.sort_unstable();
+    v.truncate(n);
+    v
+}
+
+/// Read a params file and apply `name:=value` overrides.
+pub fn load_with_overrides(path: &Path, overrides: &[String]) -> anyhow::Result<Config> {
+    if overrides.is_empty() {
+        return super::load_config(path);
+    }
+    let mut params = Params::from_file(path, super::DEFAULT_NODE_NAME).map_err(|e| anyhow!("{}: {e}", path.display()))?;
+    for o in overrides {
+        let (name, value) = o.split_once(":=").ok_or_else(|| anyhow!("-p {o:?}: expected NAME:=VALUE"))?;
+        params.set_override(name.trim(), value.trim()).map_err(|e| anyhow!("-p {o}: {e}"))?;
+    }
+    Config::from_params(&params).map_err(|e| anyhow!("{} (with -p overrides): {e}", path.display()))
+}
+
