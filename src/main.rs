@@ -89,8 +89,8 @@ fn run() -> anyhow::Result<()> {
             cli::modes::write(&model, json, &mut stdout.lock())?;
             Ok(())
         }
-        Some(Command::Plot { what }) => cli::plot::main(what),
-        Some(Command::Study(args)) => cli::study::main(args),
+        Some(Command::Plot { what }) => Ok(cli::plot::main(what)?),
+        Some(Command::Study(args)) => Ok(cli::study::main(args)?),
         Some(Command::Simulate { file, duration, csv, bag, quiet }) => {
             anyhow::ensure!(csv.is_some() || bag.is_some(), "simulate writes --csv OUT, --bag DIR or both: give at least one");
             anyhow::ensure!(duration.is_finite() && duration >= 0.0, "--duration must be a finite number ≥ 0 s, got {duration}");
@@ -126,12 +126,6 @@ fn run() -> anyhow::Result<()> {
     }
 }
 
-#[cfg(feature = "ros")]
 fn run_node(file: Option<PathBuf>, ros_args: &[String], record: Option<PathBuf>) -> anyhow::Result<()> {
     Ok(annular_plate::ros::run_node(file, ros_args, record)?)
-}
-
-#[cfg(not(feature = "ros"))]
-fn run_node(_file: Option<PathBuf>, _ros_args: &[String], _record: Option<PathBuf>) -> anyhow::Result<()> {
-    anyhow::bail!("this build has no ROS 2 node (built without the `ros` feature); `modes` and `simulate` work")
 }

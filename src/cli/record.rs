@@ -1,6 +1,7 @@
 //! `simulate --bag DIR`: the CLI's end of `bag::offline` (which needs the
 //! node's message code, so the `ros` feature; without it `--bag` says so).
 
+use super::error::{CliError, CliResult};
 use crate::dynamics::Simulation;
 use std::path::Path;
 
@@ -13,19 +14,19 @@ pub struct BagOutput {
 #[cfg(feature = "ros")]
 impl BagOutput {
     /// Create the rosbag2 directory `dir` (it must not exist).
-    pub fn create(dir: &Path, sim: &Simulation) -> anyhow::Result<BagOutput> {
-        let inner = crate::bag::OfflineRecorder::create(dir, sim).map_err(|e| anyhow::anyhow!("--bag: {e}"))?;
+    pub fn create(dir: &Path, sim: &Simulation) -> CliResult<BagOutput> {
+        let inner = crate::bag::OfflineRecorder::create(dir, sim).map_err(|e| CliError::Usage(format!("--bag: {e}")))?;
         Ok(BagOutput { inner })
     }
 
     /// Record the current state (t = 0, then after every step).
-    pub fn record(&mut self, sim: &Simulation) -> anyhow::Result<()> {
-        self.inner.record(sim).map_err(|e| anyhow::anyhow!("--bag: {e}"))
+    pub fn record(&mut self, sim: &Simulation) -> CliResult<()> {
+        self.inner.record(sim).map_err(|e| CliError::Usage(format!("--bag: {e}")))
     }
 
     /// Finish the bag; returns a one-line summary.
-    pub fn finish(self) -> anyhow::Result<String> {
-        let s = self.inner.finish().map_err(|e| anyhow::anyhow!("--bag: {e}"))?;
+    pub fn finish(self) -> CliResult<String> {
+        let s = self.inner.finish().map_err(|e| CliError::Usage(format!("--bag: {e}")))?;
         let topics: Vec<String> = s.topics.iter().map(|t| format!("{} {}", t.name, t.count)).collect();
         Ok(format!(
             "bag {}: {} messages ({}), {:.3} s, {} bytes",
@@ -40,15 +41,15 @@ impl BagOutput {
 
 #[cfg(not(feature = "ros"))]
 impl BagOutput {
-    pub fn create(_dir: &Path, _sim: &Simulation) -> anyhow::Result<BagOutput> {
-        anyhow::bail!(
+    pub fn create(_dir: &Path, _sim: &Simulation) -> CliResult<BagOutput> {
+        return Err(CliError::Usage(format!(
             "--bag needs the `ros` feature (the bag holds the node's messages); this build has none: build with the default features"
-        )
+        )))
     }
-    pub fn record(&mut self, _sim: &Simulation) -> anyhow::Result<()> {
+    pub fn record(&mut self, _sim: &Simulation) -> CliResult<()> {
         Ok(())
     }
-    pub fn finish(self) -> anyhow::Result<String> {
+    pub fn finish(self) -> CliResult<String> {
         Ok(String::new())
     }
 }

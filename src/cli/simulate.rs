@@ -8,6 +8,7 @@
 //! tool_tip_z, tool_chip_thickness (m), tool_feed_force (N);
 //! link{j}_force (N).
 
+use super::error::{CliError, CliResult};
 use crate::dynamics::Simulation;
 use std::io::Write;
 
@@ -64,7 +65,7 @@ pub fn write_row(sim: &Simulation, line: &mut String) {
 
 /// Run for `duration` seconds writing a row per output step (t = 0 included).
 /// `progress` is called with the fraction done.
-pub fn run(sim: &mut Simulation, duration: f64, out: &mut impl Write, progress: impl FnMut(f64)) -> anyhow::Result<u64> {
+pub fn run(sim: &mut Simulation, duration: f64, out: &mut impl Write, progress: impl FnMut(f64)) -> CliResult<u64> {
     run_with(sim, duration, Some(out), |_| Ok(()), progress)
 }
 
@@ -74,9 +75,9 @@ pub fn run_with<W: Write + ?Sized>(
     sim: &mut Simulation,
     duration: f64,
     mut out: Option<&mut W>,
-    mut each: impl FnMut(&Simulation) -> anyhow::Result<()>,
+    mut each: impl FnMut(&Simulation) -> CliResult<()>,
     mut progress: impl FnMut(f64),
-) -> anyhow::Result<u64> {
+) -> CliResult<u64> {
     let steps = (duration / sim.dt()).round() as u64;
     let mut line = String::with_capacity(4096);
     if let Some(out) = out.as_mut() {
@@ -87,7 +88,7 @@ pub fn run_with<W: Write + ?Sized>(
     each(sim)?;
     let report_every = (steps / 200).max(1);
     for s in 1..=steps {
-        sim.step().map_err(|e| anyhow::anyhow!("{e}"))?;
+        sim.step().map_err(|e| CliError::Usage(format!("{e}")))?;
         if let Some(out) = out.as_mut() {
             write_row(sim, &mut line);
             writeln!(out, "{line}")?;

@@ -3,8 +3,8 @@
 //! Prints a table (or `--json`), optionally draws the Pareto picture
 //! (`--plot OUT.png|OUT.svg`), shows a progress bar on a terminal.
 
+use super::error::{CliError, CliResult};
 use crate::study::{self, Recommendation, StudyPlan, StudyReport};
-use anyhow::Context;
 use std::fmt::Write as _;
 use std::io::{IsTerminal, Write};
 use std::path::PathBuf;
@@ -34,24 +34,25 @@ pub struct StudyArgs {
 }
 
 /// The plan the arguments ask for.
-pub fn plan(args: &StudyArgs) -> anyhow::Result<StudyPlan> {
+pub fn plan(args: &StudyArgs) -> CliResult<StudyPlan> {
     let mut plan = if args.quick { StudyPlan::quick() } else { StudyPlan::full() };
     if let Some(t) = &args.targets {
-        anyhow::ensure!(!t.is_empty() && t.iter().all(|x| x.is_finite() && *x > 0.0 && *x < 1.0), "--targets must be numbers in (0, 1), got {t:?}");
+        if !(!t.is_empty() && t.iter().all(|x| x.is_finite() && *x > 0.0 && *x < 1.0)) {
+            return Err(CliError::Usage(format!("--targets must be numbers in (0, 1), got {t:?}")));
+        };
         plan.targets = t.clone();
     }
     if let Some(d) = args.duration {
-        anyhow::ensure!(
-            d.is_finite() && d * plan.sample_rate_hz >= 1.0 && d <= 10.0,
-            "--duration must be between {} s and 10 s, got {d}",
-            1.0 / plan.sample_rate_hz
-        );
+        if !(d.is_finite() && d * plan.sample_rate_hz >= 1.0 && d <= 10.0) {
+            return Err(CliError::Usage(format!("--duration must be between {} s and 10 s, got {d}",
+            1.0 / plan.sample_rate_hz)));
+        };
         plan.duration_s = d;
     }
     Ok(plan)
 }
 
-pub fn main(args: StudyArgs) -> anyhow::Result<()> {
+pub fn main(args: StudyArgs) -> CliResult<()> {
     let plan = plan(&args)?;
     let (config, source) = match &args.file {
         Some(f) => (super::load_config(f)?, f.display().to_string()),
@@ -71,12 +72,12 @@ pub fn main(args: StudyArgs) -> anyhow::Result<()> {
         bar.set_position(done as u64);
         bar.set_message(what.to_string());
     })
-    .with_context(|| format!("study of {source}"))?;
+    .map_err(|error| CliError::Study { source_name: source.clone(), error })?;
     bar.finish_and_clear();
     let stdout = std::io::stdout();
     let mut out = stdout.lock();
     if args.json {
-        serde_json::to_writer_pretty(&mut out, &report)?;
+        serde_json::to_writer_pretty(&mut out, &report).map_err(std::io::Error::from)?;
         writeln!(out)?;
     } else {
         out.write_all(table(&report).as_bytes())?;

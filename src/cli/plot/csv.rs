@@ -1,8 +1,8 @@
 //! Time histories from a `simulate` CSV: columns by name or pattern, panels, decimation.
 
+use crate::cli::error::{CliError, CliResult};
 use super::render::*;
 use super::Size;
-use anyhow::{anyhow, bail, Context};
 use plotters::coord::Shift;
 use plotters::prelude::*;
 use std::path::{Path, PathBuf};
@@ -19,50 +19,50 @@ pub struct CsvData {
 }
 
 impl CsvData {
-    pub fn read(path: &Path) -> anyhow::Result<CsvData> {
-        let text = std::fs::read_to_string(path).with_context(|| format!("cannot read {}", path.display()))?;
+    pub fn read(path: &Path) -> CliResult<CsvData> {
+        let text = std::fs::read_to_string(path).map_err(|error| CliError::Io { what: "read", path: path.display().to_string(), error })?;
         Self::parse(&text, path)
     }
 
-    pub fn parse(text: &str, path: &Path) -> anyhow::Result<CsvData> {
+    pub fn parse(text: &str, path: &Path) -> CliResult<CsvData> {
         let mut lines = text.lines().enumerate().filter(|(_, l)| !l.trim().is_empty());
-        let (_, head) = lines.next().ok_or_else(|| anyhow!("{}: empty file, expected a CSV header", path.display()))?;
+        let (_, head) = lines.next().ok_or_else(|| CliError::Usage(format!("{}: empty file, expected a CSV header", path.display())))?;
         let header: Vec<String> = head.split(',').map(|s| s.trim().to_string()).collect();
         if header.iter().any(|h| h.parse::<f64>().is_ok()) {
-            bail!("{}: the first line must be the header (column names), found numbers", path.display());
+            return Err(CliError::Usage(format!("{}: the first line must be the header (column names), found numbers", path.display())));
         }
         let mut columns = vec![Vec::new(); header.len()];
         for (no, line) in lines {
             let cells: Vec<&str> = line.split(',').collect();
             if cells.len() != header.len() {
-                bail!("{}:{}: {} cells, the header has {}", path.display(), no + 1, cells.len(), header.len());
+                return Err(CliError::Usage(format!("{}:{}: {} cells, the header has {}", path.display(), no + 1, cells.len(), header.len())));
             }
             for (j, c) in cells.iter().enumerate() {
-                let v = c.trim().parse::<f64>().map_err(|_| anyhow!("{}:{}: column {} is not a number: {:?}", path.display(), no + 1, header[j], c.trim()))?;
+                let v = c.trim().parse::<f64>().map_err(|_| CliError::Usage(format!("{}:{}: column {} is not a number: {:?}", path.display(), no + 1, header[j], c.trim())))?;
                 columns[j].push(v);
             }
         }
         if columns.first().is_none_or(|c| c.is_empty()) {
-            bail!("{}: no data rows", path.display());
+            return Err(CliError::Usage(format!("{}: no data rows", path.display())));
         }
         Ok(CsvData { path: path.to_path_buf(), header, columns })
     }
 
-    pub fn column(&self, name: &str) -> anyhow::Result<&[f64]> {
+    pub fn column(&self, name: &str) -> CliResult<&[f64]> {
         match self.header.iter().position(|h| h == name) {
             Some(j) => Ok(&self.columns[j]),
-            None => bail!("unknown column {name:?} in {}; it has {}", self.path.display(), summarize_names(&self.header)),
+            None => return Err(CliError::Usage(format!("unknown column {name:?} in {}; it has {}", self.path.display(), summarize_names(&self.header)))),
         }
     }
 
     /// Column names of a comma list, `*` patterns expanded (in file order).
-    pub fn expand(&self, spec: &str) -> anyhow::Result<Vec<String>> {
+    pub fn expand(&self, spec: &str) -> CliResult<Vec<String>> {
         let mut out = Vec::new();
         for item in spec.split(',').map(str::trim).filter(|s| !s.is_empty()) {
             if item.contains('*') {
                 let hits: Vec<&String> = self.header.iter().filter(|h| glob_match(item, h)).collect();
                 if hits.is_empty() {
-                    bail!("no column matches {item:?} in {}; it has {}", self.path.display(), summarize_names(&self.header));
+                    return Err(CliError::Usage(format!("no column matches {item:?} in {}; it has {}", self.path.display(), summarize_names(&self.header))));
                 }
                 out.extend(hits.into_iter().cloned());
             } else {
@@ -71,7 +71,7 @@ impl CsvData {
             }
         }
         if out.is_empty() {
-            bail!("empty column list {spec:?}");
+            return Err(CliError::Usage(format!("empty column list {spec:?}")));
         }
         Ok(out)
     }
@@ -186,7 +186,7 @@ pub struct CsvPlot<'a> {
 }
 
 impl CsvPlot<'_> {
-    pub fn render(&self, out: &Path, size: Size) -> anyhow::Result<Vec<PanelGeometry>> {
+    pub fn render(&self, out: &Path, size: Size) -> CliResult<Vec<PanelGeometry>> {
         self.data.column(self.x)?;
         for p in &self.panels {
             for c in p {
@@ -199,8 +199,8 @@ impl CsvPlot<'_> {
 
 /// A 2-px polyline through pixel vertices: Bresenham per segment, a 2×2 brush,
 /// clipped to `clip` = (x0, x1, y0, y1) (exclusive ends).
-pub(super) fn thick_polyline<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, pts: &[(i32, i32)], color: RGBColor, clip: (i32, i32, i32, i32)) -> anyhow::Result<()> {
-    let dot = |x: i32, y: i32| -> anyhow::Result<()> {
+pub(super) fn thick_polyline<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, pts: &[(i32, i32)], color: RGBColor, clip: (i32, i32, i32, i32)) -> CliResult<()> {
+    let dot = |x: i32, y: i32| -> CliResult<()> {
         for (dx, dy) in [(0, 0), (1, 0), (0, 1), (1, 1)] {
             let (px, py) = (x + dx, y + dy);
             if px >= clip.0 && px < clip.1 && py >= clip.2 && py < clip.3 {
@@ -282,7 +282,7 @@ pub(super) fn padded_range(values: impl Iterator<Item = f64>) -> (f64, f64) {
 
 impl Painter for CsvPlot<'_> {
     type Out = Vec<PanelGeometry>;
-    fn paint<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>, format: Format) -> anyhow::Result<Vec<PanelGeometry>> {
+    fn paint<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>, format: Format) -> CliResult<Vec<PanelGeometry>> {
         let area = match &self.title {
             Some(t) => {
                 let (top, rest) = root.split_vertically(44);
@@ -305,7 +305,7 @@ impl Painter for CsvPlot<'_> {
         let mut geometry = Vec::new();
         let areas = area.split_evenly((self.panels.len(), 1));
         for (pi, (pa, names)) in areas.iter().zip(&self.panels).enumerate() {
-            let ys: Vec<&[f64]> = names.iter().map(|n| self.data.column(n)).collect::<anyhow::Result<_>>()?;
+            let ys: Vec<&[f64]> = names.iter().map(|n| self.data.column(n)).collect::<CliResult<_>>()?;
             let y_range = padded_range(ys.iter().flat_map(|c| c.iter().copied()));
             let mut chart = ChartBuilder::on(pa)
                 .margin(14)

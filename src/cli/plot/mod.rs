@@ -12,9 +12,9 @@
 //! The drawing functions return the pixel geometry they used, so tests can
 //! check that a curve or a nodal line is where the data puts it.
 
+use crate::cli::error::{CliError, CliResult};
 use crate::config::{Config, Params};
 use crate::model::AngularShape;
-use anyhow::{anyhow, bail};
 use std::path::{Path, PathBuf};
 use std::str::FromStr;
 
@@ -132,16 +132,16 @@ pub enum PlotCommand {
     },
 }
 
-pub fn main(cmd: PlotCommand) -> anyhow::Result<()> {
+pub fn main(cmd: PlotCommand) -> CliResult<()> {
     match cmd {
         PlotCommand::Csv { file, columns, panels, x, ylabels, title, out, size } => {
             let data = CsvData::read(&file)?;
             let mut specs: Vec<String> = columns.into_iter().collect();
             specs.extend(panels);
             if specs.is_empty() {
-                bail!("give the columns to plot: --columns LIST (and --panel LIST for more panels); {} has {}", file.display(), summarize_names(&data.header));
+                return Err(CliError::Usage(format!("give the columns to plot: --columns LIST (and --panel LIST for more panels); {} has {}", file.display(), summarize_names(&data.header))));
             }
-            let panels = specs.iter().map(|s| data.expand(s)).collect::<anyhow::Result<Vec<_>>>()?;
+            let panels = specs.iter().map(|s| data.expand(s)).collect::<CliResult<Vec<_>>>()?;
             let plot = CsvPlot { data: &data, x: &x, panels, ylabels, title };
             plot.render(&out, size)?;
         }
@@ -160,11 +160,11 @@ pub fn main(cmd: PlotCommand) -> anyhow::Result<()> {
                     let shape = match shape.as_str() {
                         "cos" => AngularShape::Cos,
                         "sin" => AngularShape::Sin,
-                        other => bail!("--shape must be cos or sin, got {other:?}"),
+                        other => return Err(CliError::Usage(format!("--shape must be cos or sin, got {other:?}"))),
                     };
                     ModeChoice::KL { k, l, shape }
                 }
-                _ => bail!("say which mode: --index N (as numbered by `annular_plate modes`) or --k K --l L"),
+                _ => return Err(CliError::Usage(format!("say which mode: --index N (as numbered by `annular_plate modes`) or --k K --l L"))),
             };
             mode_picture(&config, which, title.as_deref(), &out, size)?;
         }
@@ -180,15 +180,15 @@ fn first_sorted(v: &[u32], n: usize) -> Vec<u32> {
 }
 
 /// Read a params file and apply `name:=value` overrides.
-pub fn load_with_overrides(path: &Path, overrides: &[String]) -> anyhow::Result<Config> {
+pub fn load_with_overrides(path: &Path, overrides: &[String]) -> CliResult<Config> {
     if overrides.is_empty() {
         return super::load_config(path);
     }
-    let mut params = Params::from_file(path, super::DEFAULT_NODE_NAME).map_err(|e| anyhow!("{}: {e}", path.display()))?;
+    let mut params = Params::from_file(path, super::DEFAULT_NODE_NAME).map_err(|e| CliError::Usage(format!("{}: {e}", path.display())))?;
     for o in overrides {
-        let (name, value) = o.split_once(":=").ok_or_else(|| anyhow!("-p {o:?}: expected NAME:=VALUE"))?;
-        params.set_override(name.trim(), value.trim()).map_err(|e| anyhow!("-p {o}: {e}"))?;
+        let (name, value) = o.split_once(":=").ok_or_else(|| CliError::Usage(format!("-p {o:?}: expected NAME:=VALUE")))?;
+        params.set_override(name.trim(), value.trim()).map_err(|e| CliError::Usage(format!("-p {o}: {e}")))?;
     }
-    Config::from_params(&params).map_err(|e| anyhow!("{} (with -p overrides): {e}", path.display()))
+    Config::from_params(&params).map_err(|e| CliError::Usage(format!("{} (with -p overrides): {e}", path.display())))
 }
 

@@ -1,10 +1,10 @@
 //! Mode pictures: the grid of top views with nodal lines, one mode in 3-D.
 
+use crate::cli::error::{CliError, CliResult};
 use super::render::*;
 use super::Size;
 use crate::config::Config;
 use crate::model::{AngularShape, PlateModel};
-use anyhow::{anyhow, bail};
 use plotters::coord::Shift;
 use plotters::prelude::*;
 use std::f64::consts::TAU;
@@ -56,7 +56,7 @@ pub(super) fn draw_top_view<DB: DrawingBackend>(
     mode: usize,
     center: (i32, i32),
     scale: f64,
-) -> anyhow::Result<TopView> {
+) -> CliResult<TopView> {
     let m = &model.modes()[mode];
     let p = model.plate();
     let (ri, ra) = (p.inner_radius, p.outer_radius);
@@ -83,7 +83,7 @@ pub(super) fn draw_top_view<DB: DrawingBackend>(
         buf.extend_from_slice(&[c.0, c.1, c.2]);
     }
     let element =
-        BitMapElement::<(i32, i32)>::with_owned_buffer((center.0 - half, center.1 - half), (side, side), buf).ok_or_else(|| anyhow!("raster size"))?;
+        BitMapElement::<(i32, i32)>::with_owned_buffer((center.0 - half, center.1 - half), (side, side), buf).ok_or_else(|| CliError::Usage(format!("raster size")))?;
     root.draw(&element).map_err(de)?;
     // Nodal lines, exact: diameters at the zeros of cos/sin(kφ), circles at the zeros of R_l.
     let radii = nodal_radii(model, mode);
@@ -119,16 +119,16 @@ pub(super) fn edges_text(config: &Config) -> String {
 }
 
 /// The plate of `config` with exactly the ⟨k, l⟩ sets `ks` × `ls`.
-pub(super) fn model_for(config: &Config, ks: &[u32], ls: &[u32]) -> anyhow::Result<PlateModel> {
+pub(super) fn model_for(config: &Config, ks: &[u32], ls: &[u32]) -> CliResult<PlateModel> {
     let mut plate = config.plate.clone();
     plate.nodal_diameters = ks.to_vec();
     plate.nodal_circles = ls.to_vec();
     plate.damping = vec![0.0];
     plate.radial_splines = plate.radial_splines.max(plate.min_radial_splines());
     if ks.iter().any(|&k| k > 200) || ls.iter().any(|&l| l > 50) {
-        bail!("nodal diameters must be ≤ 200 and nodal circles ≤ 50");
+        return Err(CliError::Usage(format!("nodal diameters must be ≤ 200 and nodal circles ≤ 50")));
     }
-    PlateModel::new(&plate).map_err(|e| anyhow!("{e}"))
+    PlateModel::new(&plate).map_err(|e| CliError::Usage(format!("{e}")))
 }
 
 pub(super) struct ModeGrid<'a> {
@@ -140,9 +140,9 @@ pub(super) struct ModeGrid<'a> {
 }
 
 /// Draw a grid of ⟨k, l⟩ mode shapes (rows l, columns k; the cos member of each pair).
-pub fn mode_grid(config: &Config, ks: &[u32], ls: &[u32], title: Option<&str>, out: &Path, size: Size) -> anyhow::Result<Vec<TopView>> {
+pub fn mode_grid(config: &Config, ks: &[u32], ls: &[u32], title: Option<&str>, out: &Path, size: Size) -> CliResult<Vec<TopView>> {
     if ks.is_empty() || ls.is_empty() {
-        bail!("choose at least one nodal diameter (--k) and one nodal circle (--l)");
+        return Err(CliError::Usage(format!("choose at least one nodal diameter (--k) and one nodal circle (--l)")));
     }
     let mut ks = ks.to_vec();
     ks.sort_unstable();
@@ -166,7 +166,7 @@ pub fn mode_grid(config: &Config, ks: &[u32], ls: &[u32], title: Option<&str>, o
 
 impl Painter for ModeGrid<'_> {
     type Out = Vec<TopView>;
-    fn paint<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>, _format: Format) -> anyhow::Result<Vec<TopView>> {
+    fn paint<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>, _format: Format) -> CliResult<Vec<TopView>> {
         let (w, h) = root.dim_in_pixel();
         let title_h = 44;
         let font_size = (w as f64 / 75.0).clamp(13.0, 22.0);
@@ -236,12 +236,12 @@ pub(super) struct ModePicture {
 }
 
 /// One mode: a shaded surface (left) and its top view with nodal lines (right).
-pub fn mode_picture(config: &Config, which: ModeChoice, title: Option<&str>, out: &Path, size: Size) -> anyhow::Result<TopView> {
+pub fn mode_picture(config: &Config, which: ModeChoice, title: Option<&str>, out: &Path, size: Size) -> CliResult<TopView> {
     let (model, mode) = match which {
         ModeChoice::Index(i) => {
-            let model = PlateModel::new(&config.plate).map_err(|e| anyhow!("{e}"))?;
+            let model = PlateModel::new(&config.plate).map_err(|e| CliError::Usage(format!("{e}")))?;
             if i == 0 || i > model.n_modes() {
-                bail!("--index {i}: the model has modes 1..{} (see `annular_plate modes`)", model.n_modes());
+                return Err(CliError::Usage(format!("--index {i}: the model has modes 1..{} (see `annular_plate modes`)", model.n_modes())));
             }
             (model, i - 1)
         }
@@ -252,7 +252,7 @@ pub fn mode_picture(config: &Config, which: ModeChoice, title: Option<&str>, out
                 .modes()
                 .iter()
                 .position(|m| m.shape == shape)
-                .ok_or_else(|| anyhow!("⟨k = {k}, l = {l}⟩ is a rigid-body motion of this free–free plate, not a mode"))?;
+                .ok_or_else(|| CliError::Usage(format!("⟨k = {k}, l = {l}⟩ is a rigid-body motion of this free–free plate, not a mode")))?;
             (model, mode)
         }
     };
@@ -266,7 +266,7 @@ pub fn mode_picture(config: &Config, which: ModeChoice, title: Option<&str>, out
 
 impl Painter for ModePicture {
     type Out = TopView;
-    fn paint<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>, _format: Format) -> anyhow::Result<TopView> {
+    fn paint<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>, _format: Format) -> CliResult<TopView> {
         let (w, h) = root.dim_in_pixel();
         let (w, h) = (w as i32, h as i32);
         let font_size = (w as f64 / 60.0).clamp(14.0, 24.0);
@@ -290,7 +290,7 @@ impl Painter for ModePicture {
 
 /// The mode as a shaded, sign-coloured surface in an oblique view, painter's
 /// algorithm (far quads first), nodal lines traced on the surface.
-pub(super) fn draw_surface<DB: DrawingBackend>(root: &DrawingArea<DB, Shift>, model: &PlateModel, mode: usize, rect: (i32, i32, i32, i32)) -> anyhow::Result<()> {
+pub(super) fn draw_surface<DB: DrawingBackend>(root: &DrawingArea<DB, Shift>, model: &PlateModel, mode: usize, rect: (i32, i32, i32, i32)) -> CliResult<()> {
     let m = &model.modes()[mode];
     let p = model.plate();
     let (ri, ra) = (p.inner_radius, p.outer_radius);

@@ -1,5 +1,6 @@
 //! The study's accuracy-against-cost picture (Pareto fronts).
 
+use crate::cli::error::CliResult;
 use super::render::*;
 use super::Size;
 use crate::study::StudyReport;
@@ -12,7 +13,7 @@ use std::path::Path;
 
 /// The study's error-vs-cost picture: one log–log panel per axis, the Pareto
 /// front, the targets and the recommended settings ringed.
-pub fn pareto(report: &StudyReport, out: &Path, size: Size) -> anyhow::Result<()> {
+pub fn pareto(report: &StudyReport, out: &Path, size: Size) -> CliResult<()> {
     render(out, size, &ParetoPicture { report })
 }
 
@@ -138,7 +139,7 @@ pub(super) fn decade_range(values: impl Iterator<Item = f64>) -> (f64, f64) {
 
 impl Painter for ParetoPicture<'_> {
     type Out = ();
-    fn paint<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>, _format: Format) -> anyhow::Result<()> {
+    fn paint<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>, _format: Format) -> CliResult<()> {
         let r = self.report;
         let (top, rest) = root.split_vertically(44);
         draw_title(

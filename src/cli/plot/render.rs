@@ -1,8 +1,8 @@
 //! Rendering helpers shared by every picture: output format and path checks, fonts, the
 //! PNG/SVG back ends, titles, the palette, tick labels, thick polylines.
 
+use crate::cli::error::{CliError, CliResult};
 use super::Size;
-use anyhow::{anyhow, bail};
 use plotters::coord::Shift;
 use plotters::prelude::*;
 use std::path::Path;
@@ -16,27 +16,27 @@ pub enum Format {
     Svg,
 }
 
-pub fn format_of(path: &Path) -> anyhow::Result<Format> {
+pub fn format_of(path: &Path) -> CliResult<Format> {
     match path.extension().and_then(|e| e.to_str()).map(|e| e.to_ascii_lowercase()).as_deref() {
         Some("png") => Ok(Format::Png),
         Some("svg") => Ok(Format::Svg),
-        _ => bail!("output {}: the name must end in .png or .svg", path.display()),
+        _ => return Err(CliError::Usage(format!("output {}: the name must end in .png or .svg", path.display()))),
     }
 }
 
 /// The output's format is known and its folder exists.
-pub fn check_output_path(path: &Path) -> anyhow::Result<()> {
+pub fn check_output_path(path: &Path) -> CliResult<()> {
     format_of(path)?;
     if let Some(dir) = path.parent().filter(|d| !d.as_os_str().is_empty()) {
         if !dir.is_dir() {
-            bail!("output {}: folder {} does not exist", path.display(), dir.display());
+            return Err(CliError::Usage(format!("output {}: folder {} does not exist", path.display(), dir.display())));
         }
     }
     Ok(())
 }
 
-pub(super) fn de<E: std::fmt::Debug>(e: E) -> anyhow::Error {
-    anyhow!("drawing failed: {e:?}")
+pub(super) fn de<E: std::fmt::Debug>(e: E) -> CliError {
+    CliError::Draw(format!("{e:?}"))
 }
 
 pub(super) const FONT: &str = "sans-serif";
@@ -54,14 +54,14 @@ pub fn ensure_fonts() {
 pub(super) trait Painter {
     type Out;
     /// `format`: what the backend writes (PNG and SVG draw thick polylines differently).
-    fn paint<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>, format: Format) -> anyhow::Result<Self::Out>;
+    fn paint<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>, format: Format) -> CliResult<Self::Out>;
 }
 
-pub(super) fn render<P: Painter>(path: &Path, size: Size, painter: &P) -> anyhow::Result<P::Out> {
+pub(super) fn render<P: Painter>(path: &Path, size: Size, painter: &P) -> CliResult<P::Out> {
     check_output_path(path)?;
     ensure_fonts();
     let dims = (size.width, size.height);
-    let write_err = |e: &dyn std::fmt::Debug| anyhow!("cannot write {}: {e:?}", path.display());
+    let write_err = |e: &dyn std::fmt::Debug| CliError::Usage(format!("cannot write {}: {e:?}", path.display()));
     match format_of(path)? {
         Format::Png => {
             // Drawn into memory, then encoded with the best PNG compression
@@ -94,7 +94,7 @@ pub(super) fn render<P: Painter>(path: &Path, size: Size, painter: &P) -> anyhow
 }
 
 /// A title centred on `area`, its font shrunk until it fits the width.
-pub(super) fn draw_title<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, text: &str, size: f64) -> anyhow::Result<()> {
+pub(super) fn draw_title<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, text: &str, size: f64) -> CliResult<()> {
     let (w, h) = area.dim_in_pixel();
     let mut size = size;
     while size > 9.0 {
