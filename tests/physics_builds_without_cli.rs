@@ -16,7 +16,7 @@ fn cargo(args: &[&str]) -> String {
 
 #[test]
 fn the_library_without_default_features_has_no_ros_plotting_or_cli_crates() {
-    let tree = cargo(&["tree", "--locked", "--no-default-features", "--lib", "-e", "normal", "--prefix", "none", "--format", "{p}"]);
+    let tree = cargo(&["tree", "--locked", "--no-default-features", "-e", "normal", "--prefix", "none", "--format", "{p}"]);
     let crates: Vec<&str> = tree.lines().filter_map(|l| l.split_whitespace().next()).collect();
     assert!(crates.contains(&"faer") && crates.contains(&"nalgebra"), "the tree was read: {crates:?}");
     for forbidden in ["ros2-client", "rustdds", "tokio", "futures", "mcap", "plotters", "clap", "indicatif", "anyhow", "image"] {

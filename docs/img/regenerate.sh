@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Regenerate the README's pictures (docs/img/*.png) from a release build:
-#   cargo build --release --no-default-features && bash docs/img/regenerate.sh
+#   cargo build --release && bash docs/img/regenerate.sh
 # The study picture's timings are this machine's (see docs/study.md); everything
 # else is deterministic.
 set -euo pipefail

@@ -452,7 +452,15 @@ impl NodeOutput {
     }
 }
 
-/// The rotation of the small-slope rotation vector (θ_x, θ_y, 0).
+/// The rotation of the small-slope rotation vector (θ_x, θ_y, 0): about the
+/// axis (θ_x, θ_y, 0)/θ by θ = |(θ_x, θ_y)|. Written out (rather than
+/// `UnitQuaternion::from_scaled_axis`, which rounds differently in the last
+/// digit) so the published quaternions stay what they were.
 pub fn tilt_rotation(tilt: [f64; 2]) -> UnitQuaternion<f64> {
-    UnitQuaternion::from_scaled_axis(Vector3::new(tilt[0], tilt[1], 0.0))
+    let angle = (tilt[0] * tilt[0] + tilt[1] * tilt[1]).sqrt();
+    if angle < 1e-300 {
+        return UnitQuaternion::identity();
+    }
+    let (s, c) = (0.5 * angle).sin_cos();
+    UnitQuaternion::new_unchecked(Quaternion::new(c, tilt[0] / angle * s, tilt[1] / angle * s, 0.0))
 }
