@@ -29,6 +29,15 @@ pub enum ConfigError {
     #[error("the parameter file is not valid YAML for ROS 2 parameters: {message}")]
     Yaml { message: String },
 
+    #[error("{quantity} = {value:e}, derived from {keys}, lies outside [{low:e}, {high:e}]: the model cannot be built in floating point; check the values and units of {keys}")]
+    DerivedOutOfRange { quantity: &'static str, value: f64, low: f64, high: f64, keys: &'static str },
+
+    #[error("line {line}: the YAML nests deeper than {limit} levels; a ROS 2 parameter file needs about four (node, ros__parameters, section, key) and flat arrays")]
+    TooDeep { line: usize, limit: usize },
+
+    #[error("the parameter file {} has {bytes} bytes, more than the limit of {limit} bytes", path.display())]
+    TooLarge { path: PathBuf, bytes: u64, limit: u64 },
+
     #[error("the parameter file has no entry for the node `{node}` (entries found: {}); add `{node}:` or `/**:` with `ros__parameters:` under it", list_or_none(found))]
     NoEntryForNode { node: String, found: Vec<String> },
 

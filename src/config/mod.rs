@@ -10,6 +10,7 @@ mod error;
 mod params_file;
 mod raw;
 pub mod table;
+mod text_limits;
 mod validate;
 
 pub use error::{ConfigError, Degeneracy};

@@ -7,6 +7,7 @@
 //! (`plate: {inner_radius: 0.075}` ≡ `plate.inner_radius: 0.075`). Values
 //! are the ROS 2 parameter types: scalars and flat arrays only.
 
+use super::text_limits::{check_depth, MAX_FILE_BYTES};
 use std::collections::BTreeMap;
 use std::fmt;
 use std::path::Path;
@@ -107,6 +108,11 @@ impl Params {
 
     /// Read a ROS 2 parameter file for the node `node_name`.
     pub fn from_file(path: &Path, node_name: &str) -> Result<Params, ConfigError> {
+        let io = |e: std::io::Error| ConfigError::Io { path: path.to_path_buf(), message: e.to_string() };
+        let bytes = std::fs::metadata(path).map_err(io)?.len();
+        if bytes > MAX_FILE_BYTES {
+            return Err(ConfigError::TooLarge { path: path.to_path_buf(), bytes, limit: MAX_FILE_BYTES });
+        }
         let text = std::fs::read_to_string(path)
             .map_err(|e| ConfigError::Io { path: path.to_path_buf(), message: e.to_string() })?;
         Params::from_yaml_str(&text, node_name).map_err(|e| match e {
@@ -122,6 +128,7 @@ impl Params {
     /// other wildcard entries matching the node (file order), then the node's
     /// own entries (file order).
     pub fn from_yaml_str(text: &str, node_name: &str) -> Result<Params, ConfigError> {
+        check_depth(text)?;
         let doc: Value = serde_yaml_ng::from_str(text).map_err(|e| ConfigError::Yaml { message: e.to_string() })?;
         let top = match doc {
             Value::Mapping(m) => m,
@@ -175,6 +182,7 @@ impl Params {
     /// as a YAML scalar or flat list (`0.1`, `clamped`, `[0, 1, 2]`, `true`).
     pub fn set_override(&mut self, name: &str, value_text: &str) -> Result<(), ConfigError> {
         check_name(name)?;
+        check_depth(value_text)?;
         let value: Value = serde_yaml_ng::from_str(value_text).map_err(|e| ConfigError::BadOverride {
             key: name.to_string(),
             text: value_text.to_string(),

@@ -178,6 +178,7 @@ fn read_plate(r: &Reader) -> Result<PlateConfig, ConfigError> {
         radial_splines: splines as usize,
     };
 
+    check_derived(&plate)?;
     let needed = plate.min_radial_splines();
     if plate.radial_splines < needed {
         let removed = inner_boundary.essential_conditions() + outer_boundary.essential_conditions();
@@ -208,6 +209,32 @@ fn read_plate(r: &Reader) -> Result<PlateConfig, ConfigError> {
     plate.damping = damping;
     Ok(plate)
 }
+
+/// The quantities the model is built from must be representable with room
+/// to spare: flexural rigidity D (eq. 2), mass per area ρh and the frequency
+/// scale D/(ρh r_a⁴). Each is refused with the keys it comes from.
+fn check_derived(plate: &PlateConfig) -> Result<(), ConfigError> {
+    let nu = plate.poisson_ratio;
+    let rigidity = plate.youngs_modulus * plate.thickness.powi(3) / (12.0 * (1.0 - nu * nu));
+    let areal_density = plate.density * plate.thickness;
+    let scale = rigidity / (areal_density * plate.outer_radius.powi(4));
+    let checks = [
+        ("the flexural rigidity D = E h³ / (12 (1 − ν²))", rigidity, DERIVED_RANGE, "plate.youngs_modulus, plate.thickness, plate.poisson_ratio"),
+        ("the mass per area ρ h", areal_density, DERIVED_RANGE, "plate.density, plate.thickness"),
+        ("the frequency scale D / (ρ h r_a⁴)", scale, FREQUENCY_SCALE_RANGE, "plate.youngs_modulus, plate.density, plate.thickness, plate.outer_radius"),
+    ];
+    for (quantity, value, (low, high), keys) in checks {
+        if !(low..=high).contains(&value) {
+            return Err(ConfigError::DerivedOutOfRange { quantity, value, low, high, keys });
+        }
+    }
+    Ok(())
+}
+
+/// Range of D (N·m) and ρ h (kg/m²): 40 decades around any real plate.
+const DERIVED_RANGE: (f64, f64) = (1e-20, 1e20);
+/// Range of D / (ρ h r_a⁴) (1/s²): frequencies from 1e-10 to 1e15 rad/s.
+const FREQUENCY_SCALE_RANGE: (f64, f64) = (1e-20, 1e30);
 
 /// ν from `plate.poisson_ratio` or from `plate.shear_modulus` (ν = E/2G − 1), exactly one of them.
 fn read_poisson_ratio(r: &Reader, youngs_modulus: f64, default: f64) -> Result<f64, ConfigError> {
