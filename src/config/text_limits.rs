@@ -85,7 +85,7 @@ mod tests {
         for level in 0..40 {
             block.push_str(&format!("{}k{level}:\n", " ".repeat(level)));
         }
-        assert!(matches!(check_depth(&block), Err(ConfigError::TooDeep { line: 32, .. })), "{:?}", check_depth(&block));
+        assert!(matches!(check_depth(&block), Err(ConfigError::TooDeep { line: 33, .. })), "{:?}", check_depth(&block));
         let dashes = format!("a:\n  {}x\n", "- ".repeat(40));
         assert!(matches!(check_depth(&dashes), Err(ConfigError::TooDeep { line: 2, .. })));
     }
