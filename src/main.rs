@@ -6,6 +6,9 @@ use anyhow::Context;
 use clap::{Parser, Subcommand};
 use std::io::{BufWriter, IsTerminal, Write};
 use std::path::PathBuf;
+use std::sync::atomic::AtomicBool;
+use std::sync::Arc;
+use signal_hook::consts::{SIGINT, SIGTERM};
 
 #[derive(Parser)]
 #[command(name = "annular_plate", version, about = "A rotating annular Kirchhoff plate as a ROS 2 node (DLR FlexibleBodies AnnularPlate)")]
@@ -112,9 +115,24 @@ fn run() -> anyhow::Result<()> {
             };
             let mut bag = bag.map(|dir| cli::record::BagOutput::create(&dir, &sim)).transpose()?;
             let record = |s: &Simulation| bag.as_mut().map_or(Ok(()), |b| b.record(s));
-            let steps = cli::simulate::run_with(&mut sim, duration, out.as_deref_mut(), record, progress)?;
+            // SIGINT / SIGTERM end the run after the current step and the bag is
+            // finished as after a full run; a second signal ends the process at once.
+            let stop = Arc::new(AtomicBool::new(false));
+            for signal in [SIGINT, SIGTERM] {
+                signal_hook::flag::register_conditional_shutdown(signal, 1, Arc::clone(&stop)).context("cannot handle signals")?;
+                signal_hook::flag::register(signal, Arc::clone(&stop)).context("cannot handle signals")?;
+            }
+            let result = cli::simulate::run_with(&mut sim, duration, out.as_deref_mut(), record, progress, &stop);
             bar.finish_and_clear();
+            drop(out);
             let bag_line = bag.map(|b| b.finish()).transpose()?;
+            let steps = result?;
+            if stop.load(std::sync::atomic::Ordering::Relaxed) {
+                if let Some(line) = bag_line {
+                    eprintln!("{line}");
+                }
+                return Err(cli::error::CliError::Interrupted { time: sim.time(), steps }.into());
+            }
             if !quiet {
                 eprintln!("{steps} steps, {duration} s simulated in {:.3} s wall", started.elapsed().as_secs_f64());
                 if let Some(line) = bag_line {

@@ -33,6 +33,9 @@ pub enum CliError {
     /// An option or argument that cannot be used (the message says which and why).
     #[error("{0}")]
     Usage(String),
+    /// SIGINT or SIGTERM ended a run early; what was written is complete up to `time`.
+    #[error("interrupted at t = {time} s ({steps} steps): the outputs hold every step up to then, the bag finished")]
+    Interrupted { time: f64, steps: u64 },
     /// The picture back end failed.
     #[error("drawing failed: {0}")]
     Draw(String),

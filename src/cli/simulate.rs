@@ -8,7 +8,8 @@
 //! tool_tip_z, tool_chip_thickness (m), tool_feed_force (N);
 //! link{j}_force (N).
 
-use super::error::{CliError, CliResult};
+use std::sync::atomic::{AtomicBool, Ordering};
+use super::error::CliResult;
 use crate::dynamics::Simulation;
 use std::io::Write;
 
@@ -66,17 +67,20 @@ pub fn write_row(sim: &Simulation, line: &mut String) {
 /// Run for `duration` seconds writing a row per output step (t = 0 included).
 /// `progress` is called with the fraction done.
 pub fn run(sim: &mut Simulation, duration: f64, out: &mut impl Write, progress: impl FnMut(f64)) -> CliResult<u64> {
-    run_with(sim, duration, Some(out), |_| Ok(()), progress)
+    run_with(sim, duration, Some(out), |_| Ok(()), progress, &AtomicBool::new(false))
 }
 
 /// [`run`] with the CSV optional, calling `each` with the state at t = 0
-/// and after every step (`simulate --bag` records there).
+/// and after every step (`simulate --bag` records there). When `stop` is set
+/// (SIGINT, SIGTERM) the run ends after the current step, everything written
+/// so far flushed, and returns the steps done.
 pub fn run_with<W: Write + ?Sized>(
     sim: &mut Simulation,
     duration: f64,
     mut out: Option<&mut W>,
     mut each: impl FnMut(&Simulation) -> CliResult<()>,
     mut progress: impl FnMut(f64),
+    stop: &AtomicBool,
 ) -> CliResult<u64> {
     let steps = (duration / sim.dt()).round() as u64;
     let mut line = String::with_capacity(4096);
@@ -87,8 +91,13 @@ pub fn run_with<W: Write + ?Sized>(
     }
     each(sim)?;
     let report_every = (steps / 200).max(1);
+    let mut done = 0;
     for s in 1..=steps {
-        sim.step().map_err(|e| CliError::Usage(format!("{e}")))?;
+        if stop.load(Ordering::Relaxed) {
+            break;
+        }
+        sim.step()?;
+        done = s;
         if let Some(out) = out.as_mut() {
             write_row(sim, &mut line);
             writeln!(out, "{line}")?;
@@ -101,5 +110,5 @@ pub fn run_with<W: Write + ?Sized>(
     if let Some(out) = out.as_mut() {
         out.flush()?;
     }
-    Ok(steps)
+    Ok(done)
 }
