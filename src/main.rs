@@ -49,6 +49,11 @@ enum Command {
     },
     /// Measure accuracy against cost (radial splines, mode count, integrator and step) and recommend settings.
     Study(cli::study::StudyArgs),
+    /// Work on a recorded bag: `bag repair DIR` makes a killed recording readable.
+    Bag {
+        #[command(subcommand)]
+        what: BagCommand,
+    },
     /// Run the ROS 2 node (default scene: a brake test bench).
     Run {
         /// Params file (ROS 2 format); omitted: the built-in brake test bench.
@@ -60,6 +65,14 @@ enum Command {
         #[arg(trailing_var_arg = true, allow_hyphen_values = true)]
         ros_args: Vec<String>,
     },
+}
+
+#[derive(Subcommand)]
+enum BagCommand {
+    /// Rewrite a bag whose recording was killed (no MCAP summary) with every
+    /// message up to where the file breaks off, and a fresh metadata.yaml;
+    /// the damaged file is kept as `<name>.broken`.
+    Repair { dir: PathBuf },
 }
 
 /// Errors go to stderr as one readable message (with its causes), exit status 1.
@@ -90,6 +103,21 @@ fn run() -> anyhow::Result<()> {
             let model = annular_plate::model::PlateModel::new(&config.plate).with_context(|| format!("{}", file.display()))?;
             let stdout = std::io::stdout();
             cli::modes::write(&model, json, &mut stdout.lock())?;
+            Ok(())
+        }
+        Some(Command::Bag { what: BagCommand::Repair { dir } }) => {
+            match annular_plate::bag::repair::repair(&dir).with_context(|| format!("bag repair {}", dir.display()))? {
+                annular_plate::bag::repair::Repair::AlreadyComplete { file } => eprintln!("{} is complete: nothing to repair", file.display()),
+                annular_plate::bag::repair::Repair::Repaired { summary, broken } => eprintln!(
+                    "repaired {}: {} messages on {} topics ({:.3} s) in {}; the damaged file is {}",
+                    summary.dir.display(),
+                    summary.message_count,
+                    summary.topics.len(),
+                    summary.duration as f64 * 1e-9,
+                    summary.file,
+                    broken.display()
+                ),
+            }
             Ok(())
         }
         Some(Command::Plot { what }) => Ok(cli::plot::main(what)?),

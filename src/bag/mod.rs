@@ -7,13 +7,16 @@
 //! - [`schemas`]: the message definitions with their dependencies appended;
 //! - [`recorder`]: the node's topics ([`recorder::NodeBag`]) and the writer
 //!   thread of `annular_plate run --record DIR` ([`recorder::Recorder`]);
-//! - [`offline`]: `annular_plate simulate --bag DIR`.
+//! - [`offline`]: `annular_plate simulate --bag DIR`;
+//! - [`repair`]: `annular_plate bag repair DIR` for a recording that was killed.
 //!
-//! The messages are built by the node's own code (`ros::outputs`,
-//! `ros::diagnostics`), so the module comes with the `ros` feature.
+//! The messages are built by the messages layer (`messages::outputs`,
+//! `messages::diagnostics`), shared with the node; the module comes with the
+//! `ros` feature.
 
 pub mod offline;
 pub mod recorder;
+pub mod repair;
 pub mod schemas;
 pub mod writer;
 

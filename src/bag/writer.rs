@@ -28,7 +28,7 @@ use std::collections::BTreeMap;
 use std::fs::File;
 use std::io::{BufWriter, Write};
 use std::path::{Path, PathBuf};
-use std::time::Duration;
+use std::time::{Duration, Instant};
 
 /// The CDR encapsulation header: representation CDR_LE, no options.
 pub const CDR_LE_HEADER: [u8; 4] = [0x00, 0x01, 0x00, 0x00];
@@ -105,6 +105,21 @@ pub struct BagWriter {
     first: Option<u64>,
     last: u64,
     count: u64,
+    /// When the last chunk was closed and metadata.yaml rewritten.
+    checkpoint: Option<Instant>,
+}
+
+/// How often a recording closes its MCAP chunk and rewrites metadata.yaml,
+/// so that a killed recording loses at most this much (`bag repair`).
+pub const CHECKPOINT_PERIOD: Duration = Duration::from_millis(500);
+
+/// `dir/metadata.yaml`, replaced atomically.
+fn write_metadata_yaml(dir: &Path, metadata: &Metadata) -> Result<(), BagError> {
+    let yaml = serde_yaml_ng::to_string(&MetadataFile { rosbag2_bagfile_information: metadata }).map_err(|e| BagError::Yaml(e.to_string()))?;
+    let meta_path = dir.join("metadata.yaml");
+    let tmp = dir.join("metadata.yaml.tmp");
+    std::fs::write(&tmp, yaml).map_err(io(&tmp))?;
+    std::fs::rename(&tmp, &meta_path).map_err(io(&meta_path))
 }
 
 fn io(path: &Path) -> impl FnOnce(std::io::Error) -> BagError + '_ {
@@ -164,7 +179,11 @@ impl BagWriter {
             .map(|s| s.to_string_lossy().into_owned())
             .filter(|s| !s.is_empty() && s != "." && s != "..")
             .unwrap_or_else(|| "bag".to_string());
-        let file_name = format!("{stem}_0.mcap");
+        BagWriter::create_file(dir, format!("{stem}_0.mcap"))
+    }
+
+    /// A new MCAP file `file_name` in the existing directory `dir` (`bag repair`).
+    pub fn create_file(dir: &Path, file_name: String) -> Result<BagWriter, BagError> {
         let path = dir.join(&file_name);
         let file = File::create(&path).map_err(io(&path))?;
         let mcap = mcap::WriteOptions::new()
@@ -182,6 +201,7 @@ impl BagWriter {
             first: None,
             last: 0,
             count: 0,
+            checkpoint: None,
         })
     }
 
@@ -195,12 +215,16 @@ impl BagWriter {
 
     /// Add a topic of type `type_name` (`pkg/msg/Type`) offered with `qos`.
     pub fn add_topic(&mut self, name: &str, type_name: &str, qos: &QosProfile) -> Result<TopicId, BagError> {
+        let text = schemas::ros2msg(type_name).ok_or_else(|| BagError::UnknownType(type_name.to_string()))?;
+        self.add_topic_with_schema(name, type_name, text.as_bytes(), offered_qos_yaml(qos))
+    }
+
+    /// Add a topic with its `ros2msg` schema text and `offered_qos_profiles` text as given.
+    pub fn add_topic_with_schema(&mut self, name: &str, type_name: &str, schema_text: &[u8], qos: String) -> Result<TopicId, BagError> {
         if self.topics.iter().any(|t| t.name == name) {
             return Err(BagError::DuplicateTopic(name.to_string()));
         }
-        let text = schemas::ros2msg(type_name).ok_or_else(|| BagError::UnknownType(type_name.to_string()))?;
-        let schema = self.mcap.add_schema(type_name, "ros2msg", text.as_bytes()).map_err(|e| self.mcap_error(e))?;
-        let qos = offered_qos_yaml(qos);
+        let schema = self.mcap.add_schema(type_name, "ros2msg", schema_text).map_err(|e| self.mcap_error(e))?;
         let metadata = BTreeMap::from([("offered_qos_profiles".to_string(), qos.clone())]);
         let channel = self.mcap.add_channel(schema, name, "cdr", &metadata).map_err(|e| self.mcap_error(e))?;
         self.topics.push(Topic { name: name.to_string(), type_name: type_name.to_string(), qos, channel, count: 0 });
@@ -209,11 +233,19 @@ impl BagWriter {
 
     /// Serialize `msg` (CDR, little endian) and write it at `log_time` ns.
     pub fn write<T: Serialize>(&mut self, topic: TopicId, log_time: u64, msg: &T) -> Result<(), BagError> {
-        self.buf.clear();
-        self.buf.extend_from_slice(&CDR_LE_HEADER);
+        let mut buf = std::mem::take(&mut self.buf);
+        buf.clear();
+        buf.extend_from_slice(&CDR_LE_HEADER);
+        let serialized = cdr_encoding::to_writer::<T, LittleEndian, _>(&mut buf, msg)
+            .map_err(|e| BagError::Cdr { topic: self.topics[topic.0].name.clone(), message: e.to_string() });
+        let written = serialized.and_then(|()| self.write_raw(topic, log_time, &buf));
+        self.buf = buf;
+        written
+    }
+
+    /// Write an already serialized message (CDR header included) at `log_time` ns.
+    pub fn write_raw(&mut self, topic: TopicId, log_time: u64, data: &[u8]) -> Result<(), BagError> {
         let t = &mut self.topics[topic.0];
-        cdr_encoding::to_writer::<T, LittleEndian, _>(&mut self.buf, msg)
-            .map_err(|e| BagError::Cdr { topic: t.name.clone(), message: e.to_string() })?;
         let header = mcap::records::MessageHeader {
             channel_id: t.channel,
             sequence: t.count as u32,
@@ -224,9 +256,25 @@ impl BagWriter {
         self.count += 1;
         self.first = Some(self.first.map_or(log_time, |f| f.min(log_time)));
         self.last = self.last.max(log_time);
-        let r = self.mcap.write_to_known_channel(&header, &self.buf);
-        r.map_err(|e| self.mcap_error(e))
+        let r = self.mcap.write_to_known_channel(&header, data);
+        r.map_err(|e| self.mcap_error(e))?;
+        if self.checkpoint.is_none_or(|t| t.elapsed() >= CHECKPOINT_PERIOD) {
+            self.checkpoint()?;
+        }
+        Ok(())
     }
+
+    /// Close the current chunk (flushed to the file) and rewrite
+    /// metadata.yaml with what is in the file now: a recording killed after
+    /// this opens with `bag repair` up to here.
+    pub fn checkpoint(&mut self) -> Result<(), BagError> {
+        self.mcap.flush().map_err(|e| self.mcap_error(e))?;
+        write_metadata_yaml(&self.dir, &self.metadata())?;
+        self.checkpoint = Some(Instant::now());
+        Ok(())
+    }
+
+
 
     /// Messages written so far.
     pub fn message_count(&self) -> u64 {
@@ -287,12 +335,7 @@ impl BagWriter {
         file.sync_all().map_err(io(&path))?;
         let bytes = file.metadata().map_err(io(&path))?.len();
 
-        let yaml = serde_yaml_ng::to_string(&MetadataFile { rosbag2_bagfile_information: &metadata })
-            .map_err(|e| BagError::Yaml(e.to_string()))?;
-        let meta_path = self.dir.join("metadata.yaml");
-        let tmp = self.dir.join("metadata.yaml.tmp");
-        std::fs::write(&tmp, yaml).map_err(io(&tmp))?;
-        std::fs::rename(&tmp, &meta_path).map_err(io(&meta_path))?;
+        write_metadata_yaml(&self.dir, &metadata)?;
 
         Ok(BagSummary {
             dir: self.dir.clone(),
