@@ -29,8 +29,8 @@ enum Command {
     /// Simulate offline and write a CSV and/or a rosbag2 bag.
     Simulate {
         file: PathBuf,
-        /// Simulated time, s.
-        #[arg(long)]
+        /// Simulated time, s (at least one step, 1/simulation.rate_hz).
+        #[arg(long, allow_negative_numbers = true)]
         duration: f64,
         /// Output CSV file ("-" for stdout).
         #[arg(long)]
@@ -76,14 +76,24 @@ enum BagCommand {
 }
 
 /// Errors go to stderr as one readable message (with its causes), exit status 1.
+/// A closed pipe on the output (`simulate --csv - | head`) ends the program quietly.
 fn main() -> std::process::ExitCode {
     match run() {
         Ok(()) => std::process::ExitCode::SUCCESS,
+        Err(e) if is_broken_pipe(&e) => std::process::ExitCode::SUCCESS,
         Err(e) => {
             eprintln!("error: {e:#}");
             std::process::ExitCode::FAILURE
         }
     }
+}
+
+fn is_broken_pipe(e: &anyhow::Error) -> bool {
+    let pipe = |io: &std::io::Error| io.kind() == std::io::ErrorKind::BrokenPipe;
+    e.chain().any(|c| {
+        c.downcast_ref::<std::io::Error>().is_some_and(pipe)
+            || matches!(c.downcast_ref::<cli::error::CliError>(), Some(cli::error::CliError::Write(io)) if pipe(io))
+    })
 }
 
 fn run() -> anyhow::Result<()> {
@@ -126,6 +136,11 @@ fn run() -> anyhow::Result<()> {
             anyhow::ensure!(csv.is_some() || bag.is_some(), "simulate writes --csv OUT, --bag DIR or both: give at least one");
             anyhow::ensure!(duration.is_finite() && duration >= 0.0, "--duration must be a finite number ≥ 0 s, got {duration}");
             let config = cli::load_config(&file)?;
+            let dt = 1.0 / config.simulation.rate_hz;
+            anyhow::ensure!(
+                duration == 0.0 || duration >= 0.5 * dt,
+                "--duration {duration} s is shorter than one step (1/simulation.rate_hz = {dt} s): give 0 (the initial state only) or at least {dt} s"
+            );
             let mut sim = Simulation::new(config).with_context(|| format!("{}", file.display()))?;
             let show = !quiet && std::io::stderr().is_terminal();
             let bar = indicatif::ProgressBar::new(1000);

@@ -104,3 +104,45 @@ fn simulate_writes_the_contract_columns_one_row_per_step_matching_the_library() 
         assert_eq!(row[3 + 2 * n + 2], sim.lagrange_node(0).uz);
     }
 }
+
+/// `simulate` with these arguments: (status success, stdout, stderr).
+fn simulate_args(args: &[&str]) -> (bool, String, String) {
+    let scene = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("config/lathe.yaml");
+    let out = Command::new(BIN).arg("simulate").arg(&scene).args(args).output().unwrap();
+    (out.status.success(), String::from_utf8_lossy(&out.stdout).into_owned(), String::from_utf8_lossy(&out.stderr).into_owned())
+}
+
+#[test]
+fn a_negative_or_sub_step_duration_is_refused_naming_the_rule() {
+    let (ok, _, err) = simulate_args(&["--duration", "-1", "--csv", "-"]);
+    assert!(!ok && err.contains("--duration must be a finite number ≥ 0 s, got -1"), "{err}");
+    let (ok, _, err) = simulate_args(&["--duration", "0.0004", "--csv", "-"]);
+    assert!(!ok && err.contains("shorter than one step") && err.contains("0.001 s"), "{err}");
+    // Zero is the initial state alone; one step is one step.
+    let (ok, out, _) = simulate_args(&["--duration", "0", "--csv", "-", "--quiet"]);
+    assert!(ok && out.lines().count() == 2, "{out}");
+    let (ok, out, _) = simulate_args(&["--duration", "0.001", "--csv", "-", "--quiet"]);
+    assert!(ok && out.lines().count() == 3, "{out}");
+}
+
+#[test]
+fn a_closed_output_pipe_ends_simulate_quietly() {
+    use std::io::Read;
+    let scene = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("config/lathe.yaml");
+    let mut child = Command::new(BIN)
+        .arg("simulate")
+        .arg(&scene)
+        .args(["--duration", "50", "--csv", "-", "--quiet"])
+        .stdout(std::process::Stdio::piped())
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .unwrap();
+    // Read the header and close the pipe, as `| head -1` does.
+    let mut first = [0u8; 16];
+    child.stdout.take().unwrap().read_exact(&mut first).unwrap();
+    let out = child.wait_with_output().unwrap();
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(out.status.success(), "exit status {:?}: {err}", out.status);
+    assert!(!err.contains("Broken pipe") && !err.contains("error"), "{err}");
+    assert_eq!(&first[..5], b"time,");
+}

@@ -86,7 +86,7 @@ fn serialize_seconds<S: serde::Serializer>(d: &Duration, s: S) -> Result<S::Ok, 
 }
 
 impl StudyPlan {
-    /// The default study (about a minute in release on 2 shared vCPUs).
+    /// The default study (8 s in release on 2 shared vCPUs).
     pub fn full() -> StudyPlan {
         StudyPlan {
             splines: vec![8, 12, 16, 24, 32, 48, 64],
