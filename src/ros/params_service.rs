@@ -176,6 +176,17 @@ impl ParamStore {
             .collect()
     }
 
+    /// Check one assignment (a raw rcl_interfaces value) without applying it.
+    fn check_raw(&self, name: &str, value: raw::ParameterValue) -> Result<(ParamValue, RuntimeChange), String> {
+        if value.ptype > raw::ParameterType::STRING_ARRAY {
+            return Err(format!(
+                "`{name}`: type code {} is not a ROS 2 parameter type (rcl_interfaces/msg/ParameterType: 0 = not set … 9 = string array)",
+                value.ptype
+            ));
+        }
+        self.check(name, value.into())
+    }
+
     /// Check one assignment without applying it.
     fn check(&self, name: &str, value: RosValue) -> Result<(ParamValue, RuntimeChange), String> {
         let Some(current) = self.values.get(name) else {
@@ -208,7 +219,7 @@ impl ParamStore {
         let mut results = Vec::new();
         let mut changes = Vec::new();
         for p in params {
-            match self.check(&p.name, p.value.into()) {
+            match self.check_raw(&p.name, p.value) {
                 Ok((v, change)) => {
                     self.values.insert(p.name, v);
                     changes.push(change);
@@ -224,7 +235,7 @@ impl ParamStore {
     pub fn set_atomically(&mut self, params: Vec<raw::Parameter>) -> (SetParametersAtomicallyResponse, Vec<RuntimeChange>) {
         let mut checked = Vec::new();
         for p in params {
-            match self.check(&p.name, p.value.into()) {
+            match self.check_raw(&p.name, p.value) {
                 Ok((v, change)) => checked.push((p.name, v, change)),
                 Err(reason) => {
                     return (
@@ -369,6 +380,11 @@ mod tests {
         ]);
         assert!(!r[0].successful && r[0].reason.contains("read only") && r[0].reason.contains("-p a:="));
         assert!(!r[1].successful && r[1].reason.contains("not declared"));
+        // A type code outside rcl_interfaces' is named as such, not as an unset value.
+        let mut bad = raw::Parameter { name: "ros.wrench_timeout".into(), value: raw::ParameterValue::from(RosValue::Double(1.0)) };
+        bad.value.ptype = 99;
+        let (r99, _) = st.set(vec![bad]);
+        assert!(!r99[0].successful && r99[0].reason.contains("type code 99 is not a ROS 2 parameter type"), "{}", r99[0].reason);
         assert!(r[2].successful);
         assert!(!r[3].successful && !r[4].successful);
         assert_eq!(c, vec![RuntimeChange::RealtimeFactor(0.0)]);
