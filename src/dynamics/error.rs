@@ -90,7 +90,6 @@ impl LoadCommandError {
     pub fn from_input(e: InputError) -> LoadCommandError {
         match e {
             InputError::NoSuchInstance { instance: "pad", index, count } => LoadCommandError::NoSuchPad { index, count },
-            InputError::NoSuchModel { model: "pads", .. } => LoadCommandError::NoSuchPad { index: 1, count: 0 },
             InputError::NoSuchModel { model: "tool", .. } => LoadCommandError::NoTool,
             other => LoadCommandError::Input(other),
         }

@@ -13,7 +13,7 @@
 //! eq. (18), constant in frame A; Lagrangian ones act on the modes of (13).
 //! About the axis every wrench gives τ_z = x F_y − y F_x + M_z.
 
-pub use super::commands::Inputs;
+use super::commands::Inputs;
 use super::load_models::ModelWrenches;
 use super::scene::{NodeFrame, Scene};
 use super::wrench::Wrench;

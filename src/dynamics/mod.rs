@@ -25,10 +25,9 @@ pub mod state;
 pub mod stepper;
 pub mod wrench;
 
-pub use commands::{check, check_batch, Checked, CheckedBatch, Command, InputRules};
+pub use commands::{check, check_batch, Checked, CheckedBatch, Command, InputRules, Inputs};
 pub use error::{BatchError, Divergence, InputError, LoadCommandError, SimulationError, StepError};
 pub use load_models::{CommandRule, CommandSpec, LoadCommands, LoadModel, LoadModelState, LoadModels, ModelWrenches};
-pub use loads::Inputs;
 pub use scene::Scene;
 pub use simulation::{JointOutput, NodeOutput, PadOutput, Pose, Simulation, ToolOutput};
 pub use state::{JointAngle, State};

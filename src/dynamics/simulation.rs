@@ -9,7 +9,7 @@ use super::ale::{harmonics, lagrange_to_ale};
 use super::commands::{check, check_batch, Checked, CheckedBatch, Command};
 use super::error::{BatchError, InputError, LoadCommandError, SimulationError, StepError};
 use super::load_models::{ContactForces, LoadContext, ModelWrenches, PadScratch, Pads, PitchLinks, Tool};
-use super::loads::Inputs;
+use super::commands::Inputs;
 use super::scene::{NodeFrame, Scene};
 use super::state::State;
 use super::stepper::{Stepper, StepperSettings};

@@ -171,11 +171,6 @@ impl LoadModels {
         self.models.iter().enumerate().find_map(|(i, m)| m.as_any().downcast_ref::<T>().map(|t| (i, t)))
     }
 
-    /// Index of the model named `name` (`pads`, `tool`, …).
-    pub fn position(&self, name: &str) -> Option<usize> {
-        self.models.iter().position(|m| m.name() == name)
-    }
-
     /// Instances of command `command` of model `model` (0 if either does not exist).
     pub fn instances(&self, model: usize, command: usize) -> usize {
         self.command_ranges.get(model).and_then(|c| c.get(command)).map_or(0, |r| r.len())
