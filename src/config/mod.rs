@@ -89,6 +89,11 @@ pub struct PlateConfig {
     pub radial_splines: usize,
 }
 
+/// Bending rigidity D = E h³ / (12 (1 − ν²)), eq. (2).
+pub fn bending_rigidity(youngs_modulus: f64, thickness: f64, poisson_ratio: f64) -> f64 {
+    youngs_modulus * thickness.powi(3) / (12.0 * (1.0 - poisson_ratio * poisson_ratio))
+}
+
 impl PlateConfig {
     /// The paper's Table 1 / lathe disc with the defaults of the parameter reference.
     pub fn lathe_disc() -> Self {

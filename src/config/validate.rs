@@ -214,8 +214,7 @@ fn read_plate(r: &Reader) -> Result<PlateConfig, ConfigError> {
 /// to spare: flexural rigidity D (eq. 2), mass per area ρh and the frequency
 /// scale D/(ρh r_a⁴). Each is refused with the keys it comes from.
 fn check_derived(plate: &PlateConfig) -> Result<(), ConfigError> {
-    let nu = plate.poisson_ratio;
-    let rigidity = plate.youngs_modulus * plate.thickness.powi(3) / (12.0 * (1.0 - nu * nu));
+    let rigidity = super::bending_rigidity(plate.youngs_modulus, plate.thickness, plate.poisson_ratio);
     let areal_density = plate.density * plate.thickness;
     let scale = rigidity / (areal_density * plate.outer_radius.powi(4));
     let checks = [

@@ -25,10 +25,9 @@ pub use shape::ShapeValue;
 
 use crate::config::PlateConfig;
 
-/// Bending rigidity D = E h³ / (12 (1 − ν²)), eq. (2).
-pub fn bending_rigidity(youngs_modulus: f64, thickness: f64, poisson_ratio: f64) -> f64 {
-    youngs_modulus * thickness.powi(3) / (12.0 * (1.0 - poisson_ratio * poisson_ratio))
-}
+/// Bending rigidity D = E h³ / (12 (1 − ν²)), eq. (2) (defined with the
+/// configuration, whose validation checks its range).
+pub use crate::config::bending_rigidity;
 
 /// The immutable plate model: modes, shapes and body data.
 #[derive(Debug, Clone)]
