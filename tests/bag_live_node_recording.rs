@@ -276,3 +276,46 @@ fn run_record_at_1khz_in_wall_time_drops_nothing_and_finishes_the_bag_on_sigterm
     );
     assert!(node.stderr().contains("0 dropped"), "{}", node.stderr());
 }
+
+/// `message_count` of a bag's metadata.yaml (the writer's last checkpoint).
+fn metadata_count(dir: &std::path::Path) -> u64 {
+    let text = std::fs::read_to_string(dir.join("metadata.yaml")).unwrap_or_default();
+    text.lines().find_map(|l| l.trim().strip_prefix("message_count: ").and_then(|v| v.trim().parse().ok())).unwrap_or(0)
+}
+
+#[test]
+fn a_killed_run_record_is_repaired_keeping_every_message_up_to_its_last_checkpoint() {
+    let _turn = ONE_AT_A_TIME.lock().unwrap_or_else(|e| e.into_inner());
+    let ns = Netns::new();
+    let dir = fresh_dir("run_record_killed");
+    let mut node = start_node_with(&ns, 44, &["--record".as_ref(), dir.as_os_str()], &[]);
+    // Two checkpoints (metadata.yaml rewritten every 0.5 s while recording).
+    let t0 = Instant::now();
+    let first = loop {
+        let n = metadata_count(&dir);
+        if n > 0 {
+            break n;
+        }
+        assert!(t0.elapsed() < Duration::from_secs(30), "no checkpoint in 30 s; stderr:\n{}", node.stderr());
+        std::thread::sleep(Duration::from_millis(20));
+    };
+    while metadata_count(&dir) == first {
+        assert!(t0.elapsed() < Duration::from_secs(30), "no second checkpoint");
+        std::thread::sleep(Duration::from_millis(20));
+    }
+    node.signal("KILL");
+    node.wait_exit(Duration::from_secs(5)).expect("the node is gone");
+    let checkpointed = metadata_count(&dir);
+
+    let repaired = std::process::Command::new(harness::node_binary()).args(["bag".as_ref(), "repair".as_ref(), dir.as_os_str()]).output().unwrap();
+    assert!(repaired.status.success(), "{}", String::from_utf8_lossy(&repaired.stderr));
+    let d = read_bag(&dir, "rosbags", &[]);
+    assert_eq!(d["undecodable"], json!([]), "every message decodes");
+    let total: u64 = d["connections"].as_array().unwrap().iter().map(|c| c["msgcount"].as_u64().unwrap()).sum();
+    assert!(total >= checkpointed, "the repaired bag keeps everything up to the last checkpoint: {total} < {checkpointed}");
+    // The modal amplitudes are a gap-free prefix of the run from its first step.
+    let steps = u64s(&d["topics"][MODAL]["steps"]);
+    let (first_step, n) = assert_consecutive(&steps, 1, "modal amplitudes step");
+    assert_eq!(first_step, 0);
+    assert!(n > 100, "{n} steps kept");
+}
