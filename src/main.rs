@@ -38,6 +38,9 @@ enum Command {
         /// Also (or only) write the node's topics, in simulated time, to this new rosbag2 directory (MCAP).
         #[arg(long, value_name = "DIR")]
         bag: Option<PathBuf>,
+        /// Rows and bag messages at this rate, Hz (it must divide simulation.rate_hz); default: every step.
+        #[arg(long, value_name = "HZ", allow_negative_numbers = true)]
+        output_rate: Option<f64>,
         /// No progress bar.
         #[arg(long)]
         quiet: bool,
@@ -88,6 +91,19 @@ fn main() -> std::process::ExitCode {
     }
 }
 
+/// Steps between two output rows for `--output-rate HZ`: a whole number n with
+/// HZ = simulation.rate_hz / n, otherwise refused naming both rates.
+fn output_every(output_rate: Option<f64>, rate_hz: f64) -> anyhow::Result<u64> {
+    let Some(out) = output_rate else { return Ok(1) };
+    let n = (rate_hz / out).round();
+    anyhow::ensure!(
+        out.is_finite() && out > 0.0 && n >= 1.0 && (n * out - rate_hz).abs() <= 1e-9 * rate_hz,
+        "--output-rate {out} Hz does not divide simulation.rate_hz = {rate_hz} Hz: give rate_hz / n for a whole n ≥ 1 (e.g. {} Hz)",
+        rate_hz / (rate_hz / 1000.0).round().max(1.0)
+    );
+    Ok(n as u64)
+}
+
 fn is_broken_pipe(e: &anyhow::Error) -> bool {
     let pipe = |io: &std::io::Error| io.kind() == std::io::ErrorKind::BrokenPipe;
     e.chain().any(|c| {
@@ -132,7 +148,7 @@ fn run() -> anyhow::Result<()> {
         }
         Some(Command::Plot { what }) => Ok(cli::plot::main(what)?),
         Some(Command::Study(args)) => Ok(cli::study::main(args)?),
-        Some(Command::Simulate { file, duration, csv, bag, quiet }) => {
+        Some(Command::Simulate { file, duration, csv, bag, output_rate, quiet }) => {
             anyhow::ensure!(csv.is_some() || bag.is_some(), "simulate writes --csv OUT, --bag DIR or both: give at least one");
             anyhow::ensure!(duration.is_finite() && duration >= 0.0, "--duration must be a finite number ≥ 0 s, got {duration}");
             let config = cli::load_config(&file)?;
@@ -141,6 +157,7 @@ fn run() -> anyhow::Result<()> {
                 duration == 0.0 || duration >= 0.5 * dt,
                 "--duration {duration} s is shorter than one step (1/simulation.rate_hz = {dt} s): give 0 (the initial state only) or at least {dt} s"
             );
+            let every = output_every(output_rate, config.simulation.rate_hz)?;
             let mut sim = Simulation::new(config).with_context(|| format!("{}", file.display()))?;
             let show = !quiet && std::io::stderr().is_terminal();
             let bar = indicatif::ProgressBar::new(1000);
@@ -165,7 +182,7 @@ fn run() -> anyhow::Result<()> {
                 signal_hook::flag::register_conditional_shutdown(signal, 1, Arc::clone(&stop)).context("cannot handle signals")?;
                 signal_hook::flag::register(signal, Arc::clone(&stop)).context("cannot handle signals")?;
             }
-            let result = cli::simulate::run_with(&mut sim, duration, out.as_deref_mut(), record, progress, &stop);
+            let result = cli::simulate::run_with(&mut sim, duration, every, out.as_deref_mut(), record, progress, &stop);
             bar.finish_and_clear();
             drop(out);
             let bag_line = bag.map(|b| b.finish()).transpose()?;

@@ -146,3 +146,34 @@ fn a_closed_output_pipe_ends_simulate_quietly() {
     assert!(!err.contains("Broken pipe") && !err.contains("error"), "{err}");
     assert_eq!(&first[..5], b"time,");
 }
+
+#[test]
+fn output_rate_rows_are_the_every_step_rows_at_those_times_and_a_rate_that_does_not_divide_is_refused() {
+    let (ok, full, err) = simulate_args(&["--duration", "0.3", "--csv", "-", "--quiet"]);
+    assert!(ok, "{err}");
+    let (ok, decimated, err) = simulate_args(&["--duration", "0.3", "--csv", "-", "--quiet", "--output-rate", "100"]);
+    assert!(ok, "{err}");
+    let full: Vec<&str> = full.lines().collect();
+    let decimated: Vec<&str> = decimated.lines().collect();
+    // Header, t = 0, then every 10th step of the 1 kHz scene: byte-identical rows.
+    let expected: Vec<&str> = std::iter::once(full[0]).chain(full[1..].iter().step_by(10).copied()).collect();
+    assert_eq!(decimated.len(), 2 + 30, "{} rows", decimated.len());
+    assert_eq!(decimated, expected);
+    assert!(decimated[2].starts_with("0.01,"), "{}", decimated[2]);
+
+    // The bag at the same rate: one message per written row on the per-step topics.
+    let dir = std::env::temp_dir().join(format!("annular_plate_output_rate_{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    let (ok, _, err) = simulate_args(&["--duration", "0.3", "--bag", dir.to_str().unwrap(), "--quiet", "--output-rate", "100"]);
+    assert!(ok, "{err}");
+    let mcap = std::fs::read_dir(&dir).unwrap().map(|e| e.unwrap().path()).find(|p| p.extension().is_some_and(|e| e == "mcap")).unwrap();
+    let bytes = std::fs::read(mcap).unwrap();
+    let clocks: Vec<u64> = mcap::MessageStream::new(&bytes).unwrap().map(|m| m.unwrap()).filter(|m| m.channel.topic == "/clock").map(|m| m.log_time).collect();
+    std::fs::remove_dir_all(&dir).unwrap();
+    assert_eq!(clocks, (0..=30).map(|i| i * 10_000_000).collect::<Vec<u64>>(), "/clock every 10 ms from 0");
+
+    for bad in ["300", "0", "-5", "2000"] {
+        let (ok, _, err) = simulate_args(&["--duration", "0.1", "--csv", "-", "--output-rate", bad]);
+        assert!(!ok && err.contains(&format!("--output-rate {bad} Hz does not divide simulation.rate_hz = 1000 Hz")), "{bad}: {err}");
+    }
+}

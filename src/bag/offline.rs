@@ -87,7 +87,7 @@ impl OfflineRecorder {
         if let Some(t) = &self.outputs.tool_state {
             self.bag.write(&Sample::ToolState(t.handle()), stamp)?;
         }
-        if self.recorded_states.is_multiple_of(self.diagnostics_every) {
+        if sim.step_count().is_multiple_of(self.diagnostics_every) {
             let report = LoopReport {
                 diverged: None,
                 paused: false,

@@ -67,16 +67,18 @@ pub fn write_row(sim: &Simulation, line: &mut String) {
 /// Run for `duration` seconds writing a row per output step (t = 0 included).
 /// `progress` is called with the fraction done.
 pub fn run(sim: &mut Simulation, duration: f64, out: &mut impl Write, progress: impl FnMut(f64)) -> CliResult<u64> {
-    run_with(sim, duration, Some(out), |_| Ok(()), progress, &AtomicBool::new(false))
+    run_with(sim, duration, 1, Some(out), |_| Ok(()), progress, &AtomicBool::new(false))
 }
 
-/// [`run`] with the CSV optional, calling `each` with the state at t = 0
-/// and after every step (`simulate --bag` records there). When `stop` is set
+/// [`run`] with the CSV optional, writing a row and calling `each` with the
+/// state at t = 0 and after every `every`-th step (`simulate --output-rate`;
+/// `simulate --bag` records there). When `stop` is set
 /// (SIGINT, SIGTERM) the run ends after the current step, everything written
 /// so far flushed, and returns the steps done.
 pub fn run_with<W: Write + ?Sized>(
     sim: &mut Simulation,
     duration: f64,
+    every: u64,
     mut out: Option<&mut W>,
     mut each: impl FnMut(&Simulation) -> CliResult<()>,
     mut progress: impl FnMut(f64),
@@ -98,6 +100,9 @@ pub fn run_with<W: Write + ?Sized>(
         }
         sim.step()?;
         done = s;
+        if s % every != 0 {
+            continue;
+        }
         if let Some(out) = out.as_mut() {
             write_row(sim, &mut line);
             writeln!(out, "{line}")?;

@@ -111,12 +111,17 @@ impl State {
         self.load_models.copy_from(&other.load_models);
     }
 
+    /// Every value finite, load-model slots included.
     pub fn is_finite(&self) -> bool {
+        self.is_finite_except_load_models() && self.load_models.is_finite()
+    }
+
+    /// Time, joint and both descriptions finite.
+    pub fn is_finite_except_load_models(&self) -> bool {
         self.time.is_finite()
             && self.chi.angle.is_finite()
             && self.speed.is_finite()
             && self.effort.is_finite()
             && self.q.iter().chain(&self.q_dot).chain(&self.q_other).chain(&self.q_dot_other).all(|v| v.is_finite())
-            && self.load_models.is_finite()
     }
 }

@@ -344,7 +344,7 @@ impl StateView<'_> {
 /// Divergence guard: everything finite, amplitudes within the plausibility limit.
 fn check(scene: &Scene, state: &State) -> Result<(), StepError> {
     let diverged = |cause| Err(StepError::Diverged { time: state.time, cause });
-    if !state.is_finite() {
+    if !state.is_finite_except_load_models() || !scene.load_models.state_is_finite(&state.load_models) {
         return diverged(Divergence::NonFinite);
     }
     let limit = scene.limits.max_deflection_thicknesses * scene.model.plate().thickness;

@@ -233,6 +233,11 @@ impl LoadModels {
         LoadModelState { slots: self.models.iter().map(|m| m.initial_state()).collect() }
     }
 
+    /// Whether every model's slot is finite (the divergence guard's check).
+    pub fn state_is_finite(&self, state: &LoadModelState) -> bool {
+        self.models.iter().zip(&state.slots).all(|(m, slot)| m.slot_is_finite(slot))
+    }
+
     /// Before a substep of length `h`.
     pub fn begin_substep(&self, ctx: &LoadContext, state: &mut LoadModelState, h: f64) {
         for (m, slot) in self.models.iter().zip(state.slots.iter_mut()) {

@@ -171,6 +171,13 @@ pub trait LoadModel: Debug + Send + Sync {
 
     /// After the substep of length `h`: advance its state.
     fn commit_substep(&self, _slot: &mut [f64], _commands: &[f64], _h: f64) {}
+
+    /// Whether its slot is finite, for the divergence guard after every step
+    /// (a model whose slot holds values derived from others may check only
+    /// those others).
+    fn slot_is_finite(&self, slot: &[f64]) -> bool {
+        slot.iter().all(|v| v.is_finite())
+    }
 }
 
 /// Surface kinematics under a contact point: deflection w (m) and its rate at

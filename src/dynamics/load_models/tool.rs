@@ -167,6 +167,12 @@ impl LoadModel for Tool {
         let step = ToolStep::load(slot);
         self.commit(slot, &step, commands[0], h);
     }
+
+    /// The surface bins are minima of cut levels made from the tip and the
+    /// deflection (checked with the elastic state): the values before them decide.
+    fn slot_is_finite(&self, slot: &[f64]) -> bool {
+        slot[..SURFACE].iter().all(|v| v.is_finite())
+    }
 }
 
 impl Tool {
