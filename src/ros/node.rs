@@ -55,36 +55,52 @@ pub struct NodeSetup {
     pub scene: String,
 }
 
+/// Whether a parameter set describes a scene: any key besides the node's own
+/// (`ros.*`) and `use_sim_time`, which launch files set for every node.
+fn holds_a_scene(params: &Params) -> bool {
+    params.iter().any(|(k, _)| !k.starts_with("ros.") && k != "use_sim_time")
+}
+
 fn config_error(source: &str, e: ConfigError) -> NodeError {
     NodeError::Config { source_name: source.to_string(), error: e }
 }
 
 impl NodeSetup {
-    /// Read the scene (`None`: the built-in brake bench) and the ROS arguments.
+    /// Read the scene and the ROS arguments. The scene is `scene` (`run
+    /// FILE`); without it, the first `--params-file` whose entry for this
+    /// node holds scene keys (anything besides `ros.*` and `use_sim_time`),
+    /// as `ros2 run … --params-file` and launch files give it; without one,
+    /// the built-in brake bench. The other parameter files, then `-p`, override
+    /// keys of that scene.
     pub fn load(scene: Option<&Path>, ros_args: &[String]) -> Result<NodeSetup, NodeError> {
         let args = RosArgs::parse(ros_args)?;
         let names = NameResolver::new(&args, DEFAULT_NODE_NAME)?;
         let fqn = names.fully_qualified_node_name();
-        let (mut params, scene_name) = match scene {
-            Some(path) => (
-                Params::from_file(path, &fqn).map_err(|e| config_error(&path.display().to_string(), e))?,
-                path.display().to_string(),
-            ),
-            None => (
-                Params::from_yaml_str(DEFAULT_SCENE, &fqn).map_err(|e| config_error("built-in config/brake_bench.yaml", e))?,
-                "built-in config/brake_bench.yaml".to_string(),
-            ),
-        };
+        let mut files = Vec::new();
         for file in &args.params_files {
             match Params::from_file(file, &fqn) {
-                Ok(extra) => {
-                    for (k, v) in extra.iter() {
-                        params.set(k, v.clone()).map_err(|e| config_error(&file.display().to_string(), e))?;
-                    }
-                }
+                Ok(p) => files.push((file.display().to_string(), p)),
                 // A launch file's parameter file may hold only other nodes.
                 Err(ConfigError::NoEntryForNode { .. }) => {}
                 Err(e) => return Err(config_error(&file.display().to_string(), e)),
+            }
+        }
+        let (mut params, scene_name) = match scene {
+            Some(path) => (Params::from_file(path, &fqn).map_err(|e| config_error(&path.display().to_string(), e))?, path.display().to_string()),
+            None => match files.iter().position(|(_, p)| holds_a_scene(p)) {
+                Some(i) => {
+                    let (name, p) = files.remove(i);
+                    (p, name)
+                }
+                None => (
+                    Params::from_yaml_str(DEFAULT_SCENE, &fqn).map_err(|e| config_error("built-in config/brake_bench.yaml", e))?,
+                    "built-in config/brake_bench.yaml".to_string(),
+                ),
+            },
+        };
+        for (file, extra) in &files {
+            for (k, v) in extra.iter() {
+                params.set(k, v.clone()).map_err(|e| config_error(file, e))?;
             }
         }
         for p in args.params_for(names.node_name(), DEFAULT_NODE_NAME) {

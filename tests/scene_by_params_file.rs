@@ -1,0 +1,56 @@
+//! The scene a node runs is decided as ROS users expect: a `--params-file`
+//! that holds a scene (what `ros2 run … --ros-args --params-file F` and a
+//! launch file's `parameters=[F]` give) is the scene — not layered onto the
+//! built-in brake bench — and equals `run F`; further parameter files and
+//! `-p` override its keys; files with only the node's own keys leave the
+//! built-in scene.
+
+mod support;
+
+use annular_plate::config::Config;
+use annular_plate::ros::NodeSetup;
+use support::scene_files;
+
+fn args(list: &[&str]) -> Vec<String> {
+    std::iter::once("--ros-args").chain(list.iter().copied()).map(str::to_string).collect()
+}
+
+#[test]
+fn every_shipped_scene_through_params_file_alone_is_the_scene_run_file_gives() {
+    for file in ["brake_bench.yaml", "brake_squeal.yaml", "design_example.yaml", "lathe.yaml", "swash_plate.yaml"] {
+        let path = scene_files::path(file);
+        let by_params = NodeSetup::load(None, &args(&["--params-file", path.to_str().unwrap()])).unwrap_or_else(|e| panic!("{file}: {e}"));
+        let by_run = NodeSetup::load(Some(&path), &args(&[])).unwrap();
+        let expected = Config::from_params_file(&path, scene_files::NODE).unwrap();
+        assert_eq!(by_params.config, expected, "{file}: --params-file gives the file's scene");
+        assert_eq!(by_run.config, expected, "{file}: run FILE gives the file's scene");
+        assert_eq!(by_params.scene, path.display().to_string(), "{file}: the scene is named");
+    }
+}
+
+#[test]
+fn later_params_files_and_p_override_the_scene_and_node_only_files_keep_the_built_in_one() {
+    let dir = std::env::temp_dir().join(format!("annular_plate_params_{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let speed = dir.join("speed.yaml");
+    std::fs::write(&speed, "/**:\n  ros__parameters:\n    joint.speed: 42.0\n").unwrap();
+    let node_only = dir.join("node_only.yaml");
+    std::fs::write(&node_only, "/**:\n  ros__parameters:\n    use_sim_time: false\n    ros.frame_prefix: bench/\n").unwrap();
+    let lathe = scene_files::path("lathe.yaml");
+
+    let s = NodeSetup::load(None, &args(&["--params-file", lathe.to_str().unwrap(), "--params-file", speed.to_str().unwrap()])).unwrap();
+    assert_eq!(s.config.joint.speed, 42.0);
+    assert!(s.config.tool.is_some(), "still the lathe");
+    let s = NodeSetup::load(None, &args(&["--params-file", lathe.to_str().unwrap(), "-p", "joint.speed:=7.0"])).unwrap();
+    assert_eq!(s.config.joint.speed, 7.0);
+
+    // Only the node's own keys: the built-in brake bench with them.
+    let s = NodeSetup::load(None, &args(&["--params-file", node_only.to_str().unwrap()])).unwrap();
+    assert_eq!(s.scene, "built-in config/brake_bench.yaml");
+    assert_eq!(s.settings.frame_prefix, "bench/");
+    assert_eq!(s.config, Config::from_params_file(&scene_files::path("brake_bench.yaml"), scene_files::NODE).unwrap());
+    // A file with a scene given after a node-only one is still the scene.
+    let s = NodeSetup::load(None, &args(&["--params-file", node_only.to_str().unwrap(), "--params-file", lathe.to_str().unwrap()])).unwrap();
+    assert!(s.config.tool.is_some() && s.settings.frame_prefix == "bench/");
+    std::fs::remove_dir_all(&dir).unwrap();
+}
