@@ -54,3 +54,20 @@ fn later_params_files_and_p_override_the_scene_and_node_only_files_keep_the_buil
     assert!(s.config.tool.is_some() && s.settings.frame_prefix == "bench/");
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+#[test]
+fn the_wildcard_keyed_scenes_apply_to_any_node_name_and_namespace() {
+    for file in ["brake_bench.yaml", "brake_squeal.yaml", "lathe.yaml", "swash_plate.yaml"] {
+        let path = scene_files::path(file);
+        assert!(scene_files::text(file).lines().any(|l| l.starts_with("/**:")), "{file} is keyed /**");
+        let expected = Config::from_params_file(&path, scene_files::NODE).unwrap();
+        for remap in [&["-r", "__node:=disc"][..], &["-r", "__ns:=/bench", "-r", "__node:=disc"][..]] {
+            let mut a = remap.to_vec();
+            a.extend(["--params-file", path.to_str().unwrap()]);
+            let s = NodeSetup::load(None, &args(&a)).unwrap_or_else(|e| panic!("{file} {remap:?}: {e}"));
+            assert_eq!(s.config, expected, "{file} {remap:?}");
+            let s = NodeSetup::load(Some(&path), &args(remap)).unwrap_or_else(|e| panic!("{file} {remap:?}: {e}"));
+            assert_eq!(s.config, expected, "{file} {remap:?} (run FILE)");
+        }
+    }
+}
