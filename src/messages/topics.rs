@@ -1,11 +1,17 @@
-//! Topic names, before resolution (`~` = the node's name, see `args.rs`).
+//! Topic names, before resolution (`~` = the node's name, see `names.rs`).
 //! Remap any of them with `-r from:=to`.
+//!
+//! `joint_states` is relative, as joint_state_publisher's: a namespace
+//! (`-r __ns:=/bench`) moves it, so two discs in two namespaces do not mix
+//! their joints. `/tf` and `/tf_static` stay absolute, as tf2's broadcasters
+//! have them (one transform tree; `ros.frame_prefix` keeps the frames apart;
+//! `-r /tf:=tf` moves them too).
 
 use crate::dynamics::{CommandSpec, NodeKind};
 
 pub const SPEED_COMMAND: &str = "~/speed_command";
 pub const WRENCHES: &str = "~/wrenches";
-pub const JOINT_STATES: &str = "/joint_states";
+pub const JOINT_STATES: &str = "joint_states";
 pub const TF: &str = "/tf";
 pub const TF_STATIC: &str = "/tf_static";
 pub const MODAL_AMPLITUDES: &str = "~/modal_amplitudes";
@@ -58,5 +64,18 @@ mod tests {
         assert_eq!(load_command(&CLAMP_FORCE, 2), pad_clamp_force(2));
         assert_eq!(load_batch(&CLAMP_FORCE), PAD_CLAMP_FORCES);
         assert_eq!(load_command(&FEED_RATE, 1), TOOL_FEED);
+    }
+
+    #[test]
+    fn a_namespace_moves_joint_states_but_not_the_transform_tree() {
+        use crate::messages::names::{NameResolver, RosArgs};
+        let resolve = |args: &[&str], topic: &str| {
+            let a = RosArgs::parse(args).unwrap();
+            NameResolver::new(&a, "annular_plate").unwrap().resolve(topic).unwrap()
+        };
+        assert_eq!(resolve(&[], JOINT_STATES), "/joint_states");
+        assert_eq!(resolve(&["--ros-args", "-r", "__ns:=/bench"], JOINT_STATES), "/bench/joint_states");
+        assert_eq!(resolve(&["--ros-args", "-r", "__ns:=/bench"], TF), "/tf");
+        assert_eq!(resolve(&["--ros-args", "-r", "__ns:=/bench", "-r", "/bench/joint_states:=/joint_states"], JOINT_STATES), "/joint_states");
     }
 }
