@@ -14,6 +14,7 @@
 //! `messages::diagnostics`), shared with the node; the module comes with the
 //! `ros` feature.
 
+pub mod error;
 pub mod offline;
 pub mod recorder;
 pub mod repair;

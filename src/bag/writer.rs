@@ -39,24 +39,7 @@ pub const METADATA_VERSION: u32 = 9;
 /// The distribution whose bag format this is (`ros_distro` in metadata.yaml).
 pub const ROS_DISTRO: &str = "jazzy";
 
-/// What can go wrong writing a bag.
-#[derive(Debug, thiserror::Error)]
-pub enum BagError {
-    #[error("{0} already exists; give a new directory (as `ros2 bag record -o`)")]
-    Exists(PathBuf),
-    #[error("{path}: {source}")]
-    Io { path: PathBuf, source: std::io::Error },
-    #[error("{path}: MCAP: {message}")]
-    Mcap { path: PathBuf, message: String },
-    #[error("no message definition for {0}")]
-    UnknownType(String),
-    #[error("topic {0} added twice")]
-    DuplicateTopic(String),
-    #[error("topic {topic}: CDR serialization failed: {message}")]
-    Cdr { topic: String, message: String },
-    #[error("metadata.yaml: {0}")]
-    Yaml(String),
-}
+pub use super::error::BagError;
 
 /// A topic of the bag, as returned by [`BagWriter::add_topic`].
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
