@@ -168,8 +168,12 @@ pub fn check(rules: &InputRules, command: Command) -> Result<Checked, InputError
             Target::Wrench(kind, node)
         }
         Command::Load { model, command, instance, value } => {
-            let m = rules.models.get(model).ok_or(InputError::NoSuchModel { model: "load model", key: "its section" })?;
-            let (spec, &(first, count)) = m.specs.iter().zip(&m.layout).nth(command).ok_or(InputError::NoSuchModel { model: m.name, key: "its commands" })?;
+            let m = rules.models.get(model).ok_or(InputError::NoSuchLoadModel { index: model, count: rules.models.len() })?;
+            let (spec, &(first, count)) = m.specs.iter().zip(&m.layout).nth(command).ok_or(InputError::NoSuchCommand {
+                model: m.name,
+                index: command,
+                count: m.specs.len(),
+            })?;
             if instance >= count {
                 return Err(InputError::NoSuchInstance { instance: spec.instance, index: instance + 1, count });
             }

@@ -62,6 +62,12 @@ pub enum InputError {
     /// A command of a load model the scene does not use.
     #[error("this scene has no {model} ({key})")]
     NoSuchModel { model: &'static str, key: &'static str },
+    /// A load-model index beyond the scene's models.
+    #[error("there is no load model {index} (0-based; this scene has {count})")]
+    NoSuchLoadModel { index: usize, count: usize },
+    /// A command index beyond a model's commands.
+    #[error("the {model} have no command {index} (0-based; they have {count})")]
+    NoSuchCommand { model: &'static str, index: usize, count: usize },
 }
 
 /// A refused entry of a batch: which one, and why (nothing of the batch was applied).

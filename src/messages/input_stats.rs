@@ -58,7 +58,11 @@ impl RejectReason {
         match e {
             InputError::NonFinite { .. } | InputError::SpeedNotFinite { .. } => RejectReason::NonFinite,
             InputError::Absurd { .. } | InputError::SpeedBeyondLimit { .. } => RejectReason::Absurd,
-            InputError::NoSuchNode { .. } | InputError::NoSuchInstance { .. } | InputError::NoSuchModel { .. } => RejectReason::NoSuchNode,
+            InputError::NoSuchNode { .. }
+            | InputError::NoSuchInstance { .. }
+            | InputError::NoSuchModel { .. }
+            | InputError::NoSuchLoadModel { .. }
+            | InputError::NoSuchCommand { .. } => RejectReason::NoSuchNode,
         }
     }
 }
