@@ -1,4 +1,4 @@
-//! The node's wire structs (src/ros/messages.rs) match the interface
+//! The node's wire structs (src/messages/types.rs) match the interface
 //! definitions field for field, in order and type: this package's own
 //! `msg/*.msg` and `srv/*.srv` (parsed here), and the standard ROS 2 types
 //! the node speaks (their upstream definitions are quoted below).

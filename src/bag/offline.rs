@@ -1,8 +1,8 @@
 //! `simulate FILE --duration S --bag DIR`: the node's topics, recorded from
 //! an offline run instead of the wire.
 //!
-//! The messages come from the node's own builders (`ros::outputs`,
-//! `ros::diagnostics`) on the node's default names (`/annular_plate`, no
+//! The messages come from the builders the node uses too (`messages::outputs`,
+//! `messages::diagnostics`) on the node's default names (`/annular_plate`, no
 //! frame prefix, world frame `world`) in simulated time: the initial state
 //! and every step are stamped and logged at t = step × dt from 0, `/clock`
 //! carries the same time, `/tf_static` is one message at t = 0, and

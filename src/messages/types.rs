@@ -174,7 +174,7 @@ pub struct JointState {
 }
 ros_message!(JointState, "sensor_msgs", "JointState");
 
-/// rosgraph_msgs/Clock: the only type `/clock` carries (see `clock.rs`).
+/// rosgraph_msgs/Clock: the only type `/clock` carries (see `messages/clock.rs`).
 #[derive(Debug, Clone, Copy, PartialEq, Default, Serialize, Deserialize)]
 pub struct Clock {
     pub clock: Time,

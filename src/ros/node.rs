@@ -385,7 +385,7 @@ async fn serve(setup: NodeSetup, sim: Simulation, domain: u16, bag: Option<NodeB
     let mut node = context
         .new_node(
             NodeName::new(names.namespace(), names.node_name()).map_err(|e| NodeError::dds("node name", e))?,
-            // No Spinner and no built-in parameter services: see clock.rs.
+            // No Spinner and no built-in parameter services: see messages/clock.rs.
             NodeOptions::new().enable_rosout(setup.args.rosout_logs).start_parameter_services(false),
         )
         .map_err(|e| NodeError::dds("cannot create the node", e))?;

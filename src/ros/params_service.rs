@@ -3,7 +3,7 @@
 //! set_parameters_atomically) under `<node>/…`, served by this node itself.
 //!
 //! ros2-client would serve them from its `Spinner`, but that Spinner also
-//! subscribes `/clock` with the wrong type (see `clock.rs`), so the node
+//! subscribes `/clock` with the wrong type (see `messages/clock.rs`), so the node
 //! runs no Spinner and answers here instead, from a [`ParamStore`] that
 //! holds the effective value of every parameter: the ones given (scene
 //! file, `--params-file`, `-p`), the defaults of the scalar configuration

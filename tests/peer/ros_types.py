@@ -1,7 +1,7 @@
 """ROS 2 message types as Cyclone DDS IDL structs under their ROS 2 wire names.
 
 This is an independent second implementation of the node's wire types (the
-node's own are Rust structs in src/ros/messages.rs): the integration tests
+node's own are Rust structs in src/messages/types.rs): the integration tests
 only pass if both agree byte for byte. Type `pkg/msg/T` travels as
 `pkg::msg::dds_::T_`, service `pkg/srv/S` as `pkg::srv::dds_::S_Request_` /
 `S_Response_`.
