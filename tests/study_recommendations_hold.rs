@@ -232,9 +232,12 @@ fn quick_study_errors_match_exact_solutions_and_its_recommendations_hold() {
     check_frequency_axis(&config, &r);
     check_response_axis(&config, &r);
     check_trajectory_axis(&config, &plan, &r);
-    // The ODE integrators do get recommended here.
+    // The ODE integrators do get recommended here. Both sub-step themselves to
+    // resolve the 18.7 kHz mode (docs/hard_cases.md), so their cost is nearly
+    // flat in the rate and the cheaper one for each target wins; every claim
+    // was checked against the exact trajectory above.
     let picked: Vec<&str> = r.integrator.recommendations.iter().filter_map(|x| x.setting.as_ref().map(|s| s.integrator)).collect();
-    assert!(picked.contains(&"implicit_midpoint") && picked.contains(&"rk4"), "{picked:?}");
+    assert!(picked.len() == plan.targets.len() && picked.iter().all(|p| ["implicit_midpoint", "rk4"].contains(p)), "{picked:?}");
 }
 
 #[test]

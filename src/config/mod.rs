@@ -304,6 +304,9 @@ pub struct SimulationConfig {
     /// RK4 sub-steps itself so that h·λ_max stays below this (accuracy of the
     /// explicit reference; its amplitude error per step is (hω)⁶/144).
     pub rk4_step_limit: f64,
+    /// The implicit midpoint rule sub-steps itself so that h·λ_max stays below
+    /// this (its relative frequency error is 1 − 2·atan(hω/2)/(hω) ≈ (hω)²/12).
+    pub midpoint_step_limit: f64,
 }
 
 impl Default for SimulationConfig {
@@ -316,12 +319,19 @@ impl Default for SimulationConfig {
             realtime_factor: 1.0,
             publish_divisor: 1,
             rk4_step_limit: DEFAULT_RK4_STEP_LIMIT,
+            midpoint_step_limit: DEFAULT_MIDPOINT_STEP_LIMIT,
         }
     }
 }
 
 /// Default of `simulation.rk4_step_limit`.
 pub const DEFAULT_RK4_STEP_LIMIT: f64 = 0.2;
+/// Default of `simulation.midpoint_step_limit`: the fastest retained mode's
+/// frequency within 2.0 % (1 − 2·atan(0.25)/0.5), slower ones as (hω)²/12.
+pub const DEFAULT_MIDPOINT_STEP_LIMIT: f64 = 0.5;
+/// Largest `simulation.midpoint_step_limit`: large enough to accept unresolved
+/// modes on purpose (the rule stays A-stable but rings without numerical damping).
+pub const MAX_MIDPOINT_STEP_LIMIT: f64 = 1e6;
 /// Largest `simulation.rk4_step_limit`: RK4's stability limit on the imaginary axis is 2√2.
 pub const MAX_RK4_STEP_LIMIT: f64 = 2.5;
 

@@ -179,6 +179,7 @@ pub const SECTIONS: &[Section] = &[
             p("simulation.realtime_factor", Ty::Double, "double", "—", Value::Double(1.0), "1", "≥ 0", "1 = wall clock, 0 = as fast as possible (the node only)"),
             p("simulation.publish_divisor", Ty::Integer, "integer", "—", Value::Integer(1), "1", "≥ 1", "publish every n-th step (the node only)"),
             p("simulation.rk4_step_limit", Ty::Double, "double", "—", Value::Double(0.2), "0.2", "> 0, ≤ 2.5", "`rk4` sub-steps itself so that h·λ_max stays below this; its amplitude error per step is (hω)⁶/144 (the brake-squeal scene uses 0.1)"),
+            p("simulation.midpoint_step_limit", Ty::Double, "double", "—", Value::Double(0.5), "0.5", "> 0, ≤ 1e6", "`implicit_midpoint` sub-steps itself so that h·λ_max stays below this: the fastest mode's frequency is then within 1 − 2·atan(x/2)/x (2.0 % at 0.5), slower ones within (hω)²/12; a huge value accepts unresolved modes (A-stable, they ring without numerical damping)"),
         ],
     },
     Section {

@@ -415,7 +415,11 @@ fn read_simulation(r: &Reader) -> Result<SimulationConfig, ConfigError> {
     if rk4_step_limit > super::MAX_RK4_STEP_LIMIT {
         return Err(ConfigError::AboveMaximum { key: "simulation.rk4_step_limit".into(), value: rk4_step_limit, max: super::MAX_RK4_STEP_LIMIT });
     }
-    Ok(SimulationConfig { rate_hz, substeps, integrator, coordinates, realtime_factor, publish_divisor, rk4_step_limit })
+    let midpoint_step_limit = r.positive("simulation.midpoint_step_limit", d.midpoint_step_limit)?;
+    if midpoint_step_limit > super::MAX_MIDPOINT_STEP_LIMIT {
+        return Err(ConfigError::AboveMaximum { key: "simulation.midpoint_step_limit".into(), value: midpoint_step_limit, max: super::MAX_MIDPOINT_STEP_LIMIT });
+    }
+    Ok(SimulationConfig { rate_hz, substeps, integrator, coordinates, realtime_factor, publish_divisor, rk4_step_limit, midpoint_step_limit })
 }
 
 fn read_choice<T>(

@@ -26,8 +26,8 @@ pub enum Divergence {
 pub enum StepError {
     #[error("the simulation diverged at t = {time} s: {cause}")]
     Diverged { time: f64, cause: Divergence },
-    #[error("rk4 would need {needed} substeps of a {step:e} s step (limit {limit}) at the current speed: use exponential or implicit_midpoint")]
-    ExplicitTooCostly { needed: usize, limit: usize, step: f64 },
+    #[error("{integrator} would need {needed} substeps of a {step:e} s step to resolve the highest mode at the current speed (limit {limit}): use exponential, or raise simulation.rate_hz / simulation.substeps")]
+    TooManySubsteps { integrator: &'static str, needed: usize, limit: usize, step: f64 },
 }
 
 /// A scene the chosen integrator cannot run.
@@ -35,8 +35,10 @@ pub enum StepError {
 pub enum SimulationError {
     #[error(transparent)]
     Model(#[from] ModelError),
-    #[error("simulation.integrator = rk4 would need {needed} substeps per step of {step:e} s for the highest mode ({frequency_hz:.0} Hz) at {speed} rad/s (limit {limit}): use exponential or implicit_midpoint, or raise simulation.rate_hz / simulation.substeps")]
-    ExplicitTooCostly { needed: usize, limit: usize, step: f64, frequency_hz: f64, speed: f64 },
+    /// An integrator that would need more than [`MAX_INNER_SUBSTEPS`](super::integrators::MAX_INNER_SUBSTEPS)
+    /// substeps to keep h·λ_max below its step limit (docs/hard_cases.md).
+    #[error("simulation.integrator = {integrator} would need {needed} substeps per step of {step:e} s to keep h·λ_max ≤ {step_limit} ({limit_key}) for the highest mode ({frequency_hz:.0} Hz) at {speed} rad/s (limit {limit} substeps): use exponential, or raise simulation.rate_hz / simulation.substeps or {limit_key}")]
+    TooManySubsteps { integrator: &'static str, limit_key: &'static str, step_limit: f64, needed: usize, limit: usize, step: f64, frequency_hz: f64, speed: f64 },
     /// A load model with stiff contacts whose forces an integrator would hold over a substep.
     #[error("the {model} ({keys}) couple the modes at rates up to {rate:.0} 1/s, but simulation.integrator = {integrator} holds their forces over a substep of {step:e} s (h × rate = {:.2} > {limit}): use simulation.integrator: rk4, which evaluates the {model} at every stage, or raise simulation.rate_hz / simulation.substeps", step * rate)]
     ModelTooStiffForIntegrator { model: &'static str, keys: &'static str, integrator: &'static str, rate: f64, step: f64, limit: f64 },

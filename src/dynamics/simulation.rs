@@ -1,7 +1,7 @@
 //! The facade the CLI and the ROS node drive: scene + state + stepper +
 //! settings + held inputs, with the outputs derived from the state.
 
-use crate::config::{Config, Coordinates, IntegratorKind};
+use crate::config::{Config, Coordinates};
 use crate::model::PlateModel;
 use nalgebra::{Isometry3, Quaternion, Translation3, UnitQuaternion, Vector3};
 
@@ -12,6 +12,7 @@ use super::load_models::{ContactForces, LoadContext, ModelWrenches, PadScratch, 
 use super::commands::Inputs;
 use super::scene::{NodeFrame, Scene};
 use super::state::State;
+use super::integrators::MAX_INNER_SUBSTEPS;
 use super::stepper::{Stepper, StepperSettings};
 use super::wrench::{NodeKind, Wrench};
 
@@ -114,20 +115,7 @@ impl Simulation {
         let scene = Scene::new(&config, model);
         let settings = StepperSettings::from_config(&config);
         let stepper = Stepper::new(&scene);
-        if settings.integrator == IntegratorKind::Rk4 {
-            let speed = config.joint.speed.abs();
-            let needed = stepper.rk4_substeps(&scene, &settings, settings.h(), speed);
-            if needed > super::integrators::rk4::MAX_SUBSTEPS {
-                let f_max = scene.model.modes().iter().map(|m| m.frequency_hz).fold(0.0, f64::max);
-                return Err(SimulationError::ExplicitTooCostly {
-                    needed,
-                    limit: super::integrators::rk4::MAX_SUBSTEPS,
-                    step: settings.h(),
-                    frequency_hz: f_max,
-                    speed,
-                });
-            }
-        }
+        check_inner_substeps(&config, &scene, &settings, &stepper)?;
         scene.load_models.check_integrator(settings.integrator, settings.h())?;
         let initial = initial_state(&config, &scene);
         let mut inputs = Inputs::default();
@@ -152,8 +140,8 @@ impl Simulation {
     pub fn state(&self) -> &State {
         &self.state
     }
-    /// RK4 substeps per substep in the last step (1 for the other integrators).
-    pub fn rk4_inner_substeps(&self) -> usize {
+    /// Inner substeps per substep in the last step (1 for the exponential integrator).
+    pub fn inner_substeps(&self) -> usize {
         self.stepper.last_inner_substeps()
     }
     pub fn inputs(&self) -> &Inputs {
@@ -463,4 +451,26 @@ pub fn tilt_rotation(tilt: [f64; 2]) -> UnitQuaternion<f64> {
     }
     let (s, c) = (0.5 * angle).sin_cos();
     UnitQuaternion::new_unchecked(Quaternion::new(c, tilt[0] / angle * s, tilt[1] / angle * s, 0.0))
+}
+
+/// Refuse a scene whose integrator would need more than
+/// [`MAX_INNER_SUBSTEPS`] inner substeps at the configured speed to resolve the
+/// fastest mode (the same criterion the stepper applies per step).
+fn check_inner_substeps(config: &Config, scene: &Scene, settings: &StepperSettings, stepper: &Stepper) -> Result<(), SimulationError> {
+    let Some((step_limit, limit_key)) = settings.step_limit() else { return Ok(()) };
+    let speed = config.joint.speed.abs();
+    let needed = stepper.inner_substeps(scene, settings, settings.h(), speed);
+    if needed <= MAX_INNER_SUBSTEPS {
+        return Ok(());
+    }
+    Err(SimulationError::TooManySubsteps {
+        integrator: settings.integrator.name(),
+        limit_key,
+        step_limit,
+        needed,
+        limit: MAX_INNER_SUBSTEPS,
+        step: settings.h(),
+        frequency_hz: scene.model.modes().iter().map(|m| m.frequency_hz).fold(0.0, f64::max),
+        speed,
+    })
 }

@@ -13,7 +13,7 @@ use super::ale::{harmonics, lagrange_to_ale};
 use super::error::{Divergence, StepError};
 use super::integrators::equations::{accelerations, mode_constants, ModeConstants};
 use super::integrators::exponential::ModePropagator;
-use super::integrators::{implicit_midpoint, rk4};
+use super::integrators::{implicit_midpoint, rk4, MAX_INNER_SUBSTEPS};
 use super::joint::drive;
 use super::load_models::{LoadContext, ModelWrenches};
 use super::commands::Inputs;
@@ -51,6 +51,8 @@ pub struct StepperSettings {
     pub substeps: u32,
     /// RK4: largest h·λ_max per inner step (`simulation.rk4_step_limit`).
     pub rk4_step_limit: f64,
+    /// Implicit midpoint: largest h·λ_max per inner step (`simulation.midpoint_step_limit`).
+    pub midpoint_step_limit: f64,
 }
 
 impl Default for StepperSettings {
@@ -64,7 +66,24 @@ impl StepperSettings {
     /// The settings a configuration asks for.
     pub fn from_config(config: &Config) -> StepperSettings {
         let s = &config.simulation;
-        StepperSettings { integrator: s.integrator, dt: 1.0 / s.rate_hz, substeps: s.substeps, rk4_step_limit: s.rk4_step_limit }
+        StepperSettings {
+            integrator: s.integrator,
+            dt: 1.0 / s.rate_hz,
+            substeps: s.substeps,
+            rk4_step_limit: s.rk4_step_limit,
+            midpoint_step_limit: s.midpoint_step_limit,
+        }
+    }
+
+    /// The integrator's largest h·λ_max per inner step and the parameter that
+    /// sets it; `None` for the exponential integrator, exact for the modes at
+    /// any step. One criterion for all (docs/hard_cases.md).
+    pub fn step_limit(&self) -> Option<(f64, &'static str)> {
+        match self.integrator {
+            IntegratorKind::Exponential => None,
+            IntegratorKind::ImplicitMidpoint => Some((self.midpoint_step_limit, "simulation.midpoint_step_limit")),
+            IntegratorKind::Rk4 => Some((self.rk4_step_limit, "simulation.rk4_step_limit")),
+        }
     }
 
     /// Substep length h = dt / substeps.
@@ -87,7 +106,7 @@ pub struct Stepper {
     y: Vec<f64>,
     rk: [Vec<f64>; 5],
     backup: State,
-    /// RK4 substeps used in the last step (1 for the other integrators).
+    /// Inner substeps used in the last step (1 for the exponential integrator).
     last_inner_substeps: usize,
     /// Wrenches of the load models at the last evaluation.
     model_wrenches: ModelWrenches,
@@ -117,18 +136,35 @@ impl Stepper {
         self.last_inner_substeps
     }
 
-    /// RK4 substeps a step of h needs at speeds up to |Ω| (the load models'
-    /// coupling included, as bounded in [`LoadModels`](super::load_models::LoadModels)).
-    pub fn rk4_substeps(&self, scene: &Scene, settings: &StepperSettings, h: f64, speed: f64) -> usize {
+    /// Inner substeps a substep of h needs at speeds up to |Ω| so that
+    /// h·λ_max stays below the integrator's step limit (1 for the exponential
+    /// integrator).
+    pub fn inner_substeps(&self, scene: &Scene, settings: &StepperSettings, h: f64, speed: f64) -> usize {
+        let Some((limit, _)) = settings.step_limit() else { return 1 };
+        ((h * self.lambda_max(scene, speed) / limit).ceil() as usize).max(1)
+    }
+
+    /// λ_max = max over the modes of |ω_eff| + 2ζω + kΩ, the load models'
+    /// coupling included as bounded in [`LoadModels`](super::load_models::LoadModels).
+    fn lambda_max(&self, scene: &Scene, speed: f64) -> f64 {
         let c = scene.load_models.coupling();
-        let lam = scene
+        scene
             .model
             .modes()
             .iter()
             .zip(&self.consts)
             .map(|(m, mc)| (mc.omega_eff_sq.abs() + c.stiffness_rate_sq).sqrt() + mc.damping_rate + c.damping_rate + m.k as f64 * speed.abs())
-            .fold(0.0, f64::max);
-        ((h * lam / settings.rk4_step_limit).ceil() as usize).max(1)
+            .fold(0.0, f64::max)
+    }
+
+    /// The inner substeps for a substep of h from Ω0 under α, or the refusal.
+    fn checked_inner_substeps(&self, scene: &Scene, settings: &StepperSettings, h: f64, speed0: f64, alpha: f64) -> Result<usize, StepError> {
+        let speed_max = speed0.abs().max((speed0 + alpha * h).abs());
+        let inner = self.inner_substeps(scene, settings, h, speed_max);
+        if inner > MAX_INNER_SUBSTEPS {
+            return Err(StepError::TooManySubsteps { integrator: settings.integrator.name(), needed: inner, limit: MAX_INNER_SUBSTEPS, step: h });
+        }
+        Ok(inner)
     }
 
     /// Advance `state` by one output step (dt) under `inputs`. On error the
@@ -189,22 +225,9 @@ impl Stepper {
             }
             IntegratorKind::ImplicitMidpoint => {
                 add_reference_motion(scene, speed_mean, &mut self.loads.ale_frame);
-                let mut chi_mid = chi0;
-                chi_mid.advance(0.5 * h * speed0 + 0.125 * alpha * h * h);
-                harmonics(&chi_mid, scene.layout.k_max, &mut self.harm_end);
-                implicit_midpoint::advance(
-                    scene,
-                    &self.consts,
-                    state.coordinates,
-                    h,
-                    &self.harm_end,
-                    speed_mean,
-                    alpha,
-                    &self.loads.ale_frame,
-                    &self.loads.plate_frame,
-                    &mut state.q,
-                    &mut state.q_dot,
-                );
+                let inner = self.checked_inner_substeps(scene, settings, h, speed0, alpha)?;
+                self.last_inner_substeps = self.last_inner_substeps.max(inner);
+                self.implicit_midpoint(scene, state, h, inner, chi0, speed0, alpha);
             }
             IntegratorKind::Rk4 => self.rk4(scene, settings, state, inputs, h, chi0, speed0, alpha)?,
         }
@@ -262,13 +285,26 @@ impl Stepper {
         lagrange_to_ale(&scene.layout, &self.harm, speed1, ale_q, ale_v);
     }
 
+    /// The implicit midpoint rule over h in `inner` equal steps, the loads
+    /// held, each step's joint angle and speed at its midpoint (χ quadratic in
+    /// time under constant α).
+    #[allow(clippy::too_many_arguments)]
+    fn implicit_midpoint(&mut self, scene: &Scene, state: &mut State, h: f64, inner: usize, chi0: JointAngle, speed0: f64, alpha: f64) {
+        let hi = h / inner as f64;
+        for j in 0..inner {
+            let t_mid = (j as f64 + 0.5) * hi;
+            let mut chi_mid = chi0;
+            chi_mid.advance(speed0 * t_mid + 0.5 * alpha * t_mid * t_mid);
+            harmonics(&chi_mid, scene.layout.k_max, &mut self.harm_end);
+            let speed_mid = speed0 + alpha * t_mid;
+            let (f_ale, f_plate) = (&self.loads.ale_frame, &self.loads.plate_frame);
+            implicit_midpoint::advance(scene, &self.consts, state.coordinates, hi, &self.harm_end, speed_mid, alpha, f_ale, f_plate, &mut state.q, &mut state.q_dot);
+        }
+    }
+
     #[allow(clippy::too_many_arguments)]
     fn rk4(&mut self, scene: &Scene, settings: &StepperSettings, state: &mut State, inputs: &Inputs, h: f64, chi0: JointAngle, speed0: f64, alpha: f64) -> Result<(), StepError> {
-        let speed_max = speed0.abs().max((speed0 + alpha * h).abs());
-        let inner = self.rk4_substeps(scene, settings, h, speed_max);
-        if inner > rk4::MAX_SUBSTEPS {
-            return Err(StepError::ExplicitTooCostly { needed: inner, limit: rk4::MAX_SUBSTEPS, step: h });
-        }
+        let inner = self.checked_inner_substeps(scene, settings, h, speed0, alpha)?;
         self.last_inner_substeps = self.last_inner_substeps.max(inner);
         let n = scene.n_modes();
         let coords = state.coordinates;

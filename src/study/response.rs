@@ -256,7 +256,7 @@ pub fn run(config: &Config, plan: &StudyPlan, tick: &mut dyn FnMut(&str)) -> Res
             let r = partial_sum(&contrib, k_max, l_max);
             let mut set = scene_with_set(&scene, k_max, l_max, damping);
             let mut sim = match Simulation::new(set.clone()) {
-                Err(SimulationError::ExplicitTooCostly { .. }) => {
+                Err(SimulationError::TooManySubsteps { .. }) => {
                     set.simulation.integrator = IntegratorKind::Exponential;
                     if !rk4_fallback_noted {
                         notes.push("rk4 refuses the larger mode sets at the scene's rate: their cost per step is the exponential integrator's".into());

@@ -60,7 +60,7 @@ fn steps_per_sample(rate_hz: f64, sample_rate_hz: f64) -> Result<u64, StudyError
 pub fn record(config: &Config, every: u64, samples: usize) -> Result<(Samples, Simulation), (RunStatus, String)> {
     let mut sim = match Simulation::new(config.clone()) {
         Ok(s) => s,
-        Err(e @ SimulationError::ExplicitTooCostly { .. }) => return Err((RunStatus::Refused, e.to_string())),
+        Err(e @ SimulationError::TooManySubsteps { .. }) => return Err((RunStatus::Refused, e.to_string())),
         Err(e) => return Err((RunStatus::Diverged, e.to_string())),
     };
     let mut out = Vec::with_capacity(samples + 1);

@@ -10,9 +10,6 @@
 /// matters only for weakly damped instabilities (the brake-squeal scene uses 0.1).
 pub const STEP_LIMIT: f64 = crate::config::DEFAULT_RK4_STEP_LIMIT;
 
-/// Beyond this many RK4 substeps per step the run is refused.
-pub const MAX_SUBSTEPS: usize = 100_000;
-
 /// y ← y + h/6 (k1 + 2k2 + 2k3 + k4) with `f(t, y, dy)` the right-hand side.
 /// Scratch vectors have y's length; no allocation.
 pub fn step(
