@@ -17,11 +17,13 @@
 //! - [`diagnostics`]: the `/diagnostics` statuses (shared with `simulate --bag`);
 //! - [`sim_loop`]: the fixed-rate simulation thread;
 //! - [`logging`]: `/rosout` and stderr;
+//! - [`heap`]: handing freed heap back to the OS after peer churn;
 //! - [`node`]: wiring and shutdown.
 //!
 //! The physics (`model`, `dynamics`) never imports anything from here.
 
 pub mod error;
+pub mod heap;
 pub mod inputs;
 pub mod logging;
 pub mod node;

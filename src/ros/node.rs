@@ -428,6 +428,7 @@ async fn serve(setup: NodeSetup, sim: Simulation, domain: u16, bag: Option<NodeB
         sim_loop = sim_loop.with_recorder(recorder);
     }
     let (sim_thread, done_rx) = start_loop(sim_loop)?;
+    super::heap::spawn_trimmer().map_err(|error| NodeError::System { what: "cannot start the heap-trimming thread", error })?;
     logger.info(&line);
 
     let why = wait_for_stop(done_rx).await?;

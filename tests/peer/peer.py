@@ -593,6 +593,29 @@ def scenario_record_bag(p, a):
             "diag_after": values}
 
 
+def scenario_churn(p, a):
+    """`peers` more participants join, each subscribing /joint_states and /tf
+    like an rclpy monitor, until each has a sample; then they leave cleanly
+    (`clean`: their entities deleted, goodbyes sent) or vanish without a
+    goodbye, as a SIGKILLed process does (their leases must expire)."""
+    import gc
+
+    joined = [Peer(a["domain"], p.node) for _ in range(a["peers"])]
+    readers = [(q.reader("/joint_states", T.JointState), q.reader("/tf", T.TFMessage, depth=100)) for q in joined]
+    for q, (js, tf) in zip(joined, readers):
+        q.wait_for(js, timeout=30.0)
+        q.wait_for(tf, timeout=30.0)
+    if not a["clean"]:
+        sys.stdout.write(json.dumps({"joined": len(joined), "left": "killed"}) + "\n")
+        sys.stdout.flush()
+        os._exit(0)
+    readers.clear()
+    joined.clear()
+    gc.collect()
+    time.sleep(0.5)
+    return {"joined": a["peers"], "left": "clean"}
+
+
 SCENARIOS = {name[len("scenario_"):]: fn for name, fn in globals().items() if name.startswith("scenario_")}
 
 
