@@ -173,7 +173,7 @@ fn run() -> anyhow::Result<()> {
                     std::fs::File::create(p).with_context(|| format!("cannot create {}", p.display()))?,
                 ))),
             };
-            let mut bag = bag.map(|dir| cli::record::BagOutput::create(&dir, &sim)).transpose()?;
+            let mut bag = bag.map(|dir| cli::record::BagOutput::create(&dir, &sim, &file)).transpose()?;
             let record = |s: &Simulation| bag.as_mut().map_or(Ok(()), |b| b.record(s));
             // SIGINT / SIGTERM end the run after the current step and the bag is
             // finished as after a full run; a second signal ends the process at once.

@@ -143,6 +143,18 @@ const STANDARD: &[(&str, &str)] = &[
         "byte OK=0\nbyte WARN=1\nbyte ERROR=2\nbyte STALE=3\nbyte level\nstring name\nstring message\nstring hardware_id\nKeyValue[] values",
     ),
     ("diagnostic_msgs/DiagnosticArray", "std_msgs/Header header\nDiagnosticStatus[] status"),
+    ("builtin_interfaces/Duration", "int32 sec\nuint32 nanosec"),
+    ("std_msgs/ColorRGBA", "float32 r\nfloat32 g\nfloat32 b\nfloat32 a"),
+    ("geometry_msgs/Point", "float64 x\nfloat64 y\nfloat64 z"),
+    ("geometry_msgs/Pose", "Point position\nQuaternion orientation"),
+    ("sensor_msgs/CompressedImage", "std_msgs/Header header\nstring format\nuint8[] data"),
+    ("visualization_msgs/UVCoordinate", "float32 u\nfloat32 v"),
+    ("visualization_msgs/MeshFile", "string filename\nuint8[] data"),
+    (
+        "visualization_msgs/Marker",
+        "int32 ARROW=0\nint32 TRIANGLE_LIST=11\nint32 DELETEALL=3\nstd_msgs/Header header\nstring ns\nint32 id\nint32 type\nint32 action\ngeometry_msgs/Pose pose\ngeometry_msgs/Vector3 scale\nstd_msgs/ColorRGBA color\nbuiltin_interfaces/Duration lifetime\nbool frame_locked\ngeometry_msgs/Point[] points\nstd_msgs/ColorRGBA[] colors\nstring texture_resource\nsensor_msgs/CompressedImage texture\nUVCoordinate[] uv_coordinates\nstring text\nstring mesh_resource\nMeshFile mesh_file\nbool mesh_use_embedded_materials",
+    ),
+    ("visualization_msgs/MarkerArray", "Marker[] markers"),
     ("std_srvs/Trigger_Request", ""),
     ("std_srvs/Trigger_Response", "bool success\nstring message"),
     ("std_srvs/SetBool_Request", "bool data"),
@@ -335,6 +347,7 @@ fn standard_messages_match_their_ros2_definitions() {
     check_msg::<m::JointState>(&defs);
     check_msg::<m::Clock>(&defs);
     check_msg::<m::DiagnosticArray>(&defs);
+    check_msg::<annular_plate::messages::visualization::MarkerArray>(&defs);
     check::<m::TriggerRequest>(&defs, "std_srvs/Trigger_Request");
     check::<m::TriggerResponse>(&defs, "std_srvs/Trigger_Response");
     check::<m::SetBoolRequest>(&defs, "std_srvs/SetBool_Request");
@@ -388,6 +401,7 @@ fn bag_schemas_describe_the_wire_structs() {
         ("annular_plate/ToolState", trace::<m::ToolState>()),
         ("rosgraph_msgs/Clock", trace::<m::Clock>()),
         ("diagnostic_msgs/DiagnosticArray", trace::<m::DiagnosticArray>()),
+        ("visualization_msgs/MarkerArray", trace::<annular_plate::messages::visualization::MarkerArray>()),
     ];
     for (full, shape) in recorded {
         from_schema(full).check(full, &shape, full);

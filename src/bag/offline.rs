@@ -7,8 +7,10 @@
 //! and every step are stamped and logged at t = step × dt from 0, `/clock`
 //! carries the same time, `/tf_static` is one message at t = 0, and
 //! `/diagnostics` comes every `ros.diagnostics_period` (1 s) of simulated
-//! time starting at t = 0 — what `annular_plate run` with
-//! `ros.publish_clock: true` would publish for the same scene.
+//! time starting at t = 0, `~/plate_marker` with every step whose count is
+//! a multiple of round(rate_hz / `ros.marker_rate_hz`) — what
+//! `annular_plate run` with `ros.publish_clock: true` would publish for the
+//! same scene.
 
 use super::recorder::{NodeBag, NodeTopics, Sample};
 use super::writer::{BagError, BagSummary};
@@ -18,6 +20,7 @@ use crate::messages::clock::StepClock;
 use crate::messages::diagnostics::{self, LoopReport, Timing};
 use crate::messages::input_stats::InputStats;
 use crate::messages::outputs::{clock_message, static_transforms, FrameNames, OutputMessages};
+use crate::messages::marker::{MarkerInput, MarkerSettings, PlateMarker};
 use crate::messages::settings::RosSettings;
 use crate::messages::DEFAULT_NODE_NAME;
 use std::path::Path;
@@ -36,21 +39,29 @@ pub struct OfflineRecorder {
     timing: Timing,
     last: Option<Instant>,
     recorded_states: u64,
+    /// With `ros.marker_rate_hz` > 0: the builder, its input, the steps
+    /// between markers and the step of the next one.
+    marker: Option<(PlateMarker, MarkerInput, u64, u64)>,
 }
 
 impl OfflineRecorder {
-    /// Create the bag `dir` (it must not exist) for `sim`'s scene.
-    pub fn create(dir: &Path, sim: &Simulation) -> Result<OfflineRecorder, BagError> {
+    /// Create the bag `dir` (it must not exist) for `sim`'s scene, with the
+    /// scene's `ros.marker_*` settings.
+    pub fn create(dir: &Path, sim: &Simulation, marker: &MarkerSettings) -> Result<OfflineRecorder, BagError> {
         let settings = RosSettings::default();
         let names = NameResolver::new(&RosArgs::default(), DEFAULT_NODE_NAME).expect("the default node name is valid");
-        let topics =
-            NodeTopics::resolve(&names, true, sim.pad_count() > 0, sim.has_tool()).expect("the default topic names are valid");
+        let rate_hz = 1.0 / sim.dt();
+        let every = marker.every(rate_hz);
+        let topics = NodeTopics::resolve(&names, true, sim.pad_count() > 0, sim.has_tool(), every.is_some())
+            .expect("the default topic names are valid");
         let mut bag = NodeBag::create(dir, &topics)?;
         let frames =
             FrameNames::new(&settings.frame_prefix, &settings.world_frame, sim.n_ale_nodes(), sim.n_lagrange_nodes());
         let clock = StepClock::new(true, sim.dt());
         bag.write(&Sample::TfStatic(static_transforms(&frames, sim.config().reference.tilt, clock.sim_time())), clock.sim_time())?;
+        let marker = every.map(|n| (PlateMarker::new(sim.model(), &frames, marker, rate_hz / n as f64), MarkerInput::new(sim), n, 0));
         Ok(OfflineRecorder {
+            marker,
             bag,
             outputs: OutputMessages::new(sim, &frames),
             diagnostics_every: (settings.diagnostics_period / sim.dt()).round().max(1.0) as u64,
@@ -87,6 +98,16 @@ impl OfflineRecorder {
         if let Some(t) = &self.outputs.tool_state {
             self.bag.write(&Sample::ToolState(t.handle()), stamp)?;
         }
+        // Due at multiples of `every` (the node's steps); with --output-rate
+        // the first recorded state at or after one.
+        if let Some((marker, input, every, next)) = &mut self.marker {
+            if sim.step_count() >= *next {
+                input.capture(sim, stamp);
+                marker.update(input);
+                self.bag.write(&Sample::Marker(marker.message().handle()), stamp)?;
+                *next = (sim.step_count() / *every + 1) * *every;
+            }
+        }
         if sim.step_count().is_multiple_of(self.diagnostics_every) {
             let report = LoopReport {
                 diverged: None,
@@ -100,6 +121,7 @@ impl OfflineRecorder {
                 // Offline: as fast as possible.
                 realtime_factor: 0.0,
                 publish_failures: 0,
+                markers_skipped: 0,
                 timing: self.timing.report(now),
             };
             let status = vec![

@@ -18,6 +18,7 @@ use crate::messages::types::{
     Clock, DiagnosticArray, JointState, ModalAmplitudes, PadStates, RosType, TFMessage, Time, ToolState,
 };
 use crate::messages::outputs::Shared;
+use crate::messages::visualization::MarkerArray;
 use crate::messages::{qos, topics};
 use ros2_client::QosProfile;
 use std::path::Path;
@@ -37,6 +38,7 @@ pub enum Sample {
     ToolState(Shared<ToolState>),
     Clock(Clock),
     Diagnostics(DiagnosticArray),
+    Marker(Shared<MarkerArray>),
 }
 
 /// The resolved names of the node's outputs (`~` expanded, remaps applied).
@@ -53,12 +55,14 @@ pub struct NodeTopics {
     pub pad_states: Option<String>,
     /// Only when the scene has a tool.
     pub tool_state: Option<String>,
+    /// Only when `ros.marker_rate_hz` > 0.
+    pub plate_marker: Option<String>,
 }
 
 impl NodeTopics {
     /// The names the node publishes under, for `names`, the time mode and
     /// the scene's load models (pads, a tool).
-    pub fn resolve(names: &NameResolver, sim_time: bool, has_pads: bool, has_tool: bool) -> Result<NodeTopics, String> {
+    pub fn resolve(names: &NameResolver, sim_time: bool, has_pads: bool, has_tool: bool, has_marker: bool) -> Result<NodeTopics, String> {
         let r = |t: &str| names.resolve(t).map_err(|e| e.to_string());
         Ok(NodeTopics {
             joint_states: r(topics::JOINT_STATES)?,
@@ -69,6 +73,7 @@ impl NodeTopics {
             clock: if sim_time { Some(r(topics::CLOCK)?) } else { None },
             pad_states: if has_pads { Some(r(topics::PAD_STATES)?) } else { None },
             tool_state: if has_tool { Some(r(topics::TOOL_STATE)?) } else { None },
+            plate_marker: if has_marker { Some(r(topics::PLATE_MARKER)?) } else { None },
         })
     }
 }
@@ -88,6 +93,7 @@ pub struct NodeBag {
     clock: Option<TopicId>,
     pad_states: Option<TopicId>,
     tool_state: Option<TopicId>,
+    plate_marker: Option<TopicId>,
 }
 
 impl NodeBag {
@@ -107,12 +113,16 @@ impl NodeBag {
             Some(t) => Some(add(t, type_name::<ToolState>(), &qos::STATE)?),
             None => None,
         };
+        let plate_marker = match &topics.plate_marker {
+            Some(t) => Some(add(t, type_name::<MarkerArray>(), &qos::MARKER)?),
+            None => None,
+        };
         let diagnostics = add(&topics.diagnostics, type_name::<DiagnosticArray>(), &qos::DIAGNOSTICS)?;
         let clock = match &topics.clock {
             Some(c) => Some(add(c, type_name::<Clock>(), &qos::CLOCK)?),
             None => None,
         };
-        Ok(NodeBag { writer, joint_states, tf, tf_static, modal, diagnostics, clock, pad_states, tool_state })
+        Ok(NodeBag { writer, joint_states, tf, tf_static, modal, diagnostics, clock, pad_states, tool_state, plate_marker })
     }
 
     pub fn dir(&self) -> &Path {
@@ -142,6 +152,10 @@ impl NodeBag {
                 Some(id) => w.write(id, t, m),
                 None => Ok(()),
             },
+            Sample::Marker(m) => match self.plate_marker {
+                Some(id) => w.write(id, t, m),
+                None => Ok(()),
+            },
         }
     }
 
@@ -159,7 +173,9 @@ struct Counters {
     error: Mutex<Option<String>>,
 }
 
-/// The loop's end of a recording: cheap to call every step.
+/// The loop's end of a recording: cheap to call every step. A clone (the
+/// marker thread's) feeds the same queue.
+#[derive(Clone)]
 pub struct Recorder {
     tx: SyncSender<(Sample, Time)>,
     counters: Arc<Counters>,

@@ -275,6 +275,10 @@ F = `links.mean_force` + `links.cyclic_force` · cos(ψ − `links.cyclic_phase`
             p("ros.diagnostics_period", Ty::Double, "double", "s", Value::Double(1.0), "1.0", "s of wall time between /diagnostics messages; finite, > 0", ""),
             p("ros.reject_log_period", Ty::Double, "double", "s", Value::Double(1.0), "1.0", "s of wall time between log lines about rejected inputs of one kind; finite, >= 0", ""),
             p("ros.service_mapping", Ty::String, "string", "—", Value::Str("enhanced"), "\"enhanced\"", "request/reply mapping of all services: enhanced (rmw_fastrtps, the Jazzy default), cyclone (rmw_cyclonedds_cpp) or basic", ""),
+            p("ros.marker_rate_hz", Ty::Double, "double", "Hz", Value::Double(30.0), "30.0", "`~/plate_marker` (the deformed plate for RViz/Foxglove) per second, decimated from the loop (every round(rate_hz / this) steps); 0 = off; finite, >= 0, <= simulation.rate_hz", ""),
+            p("ros.marker_rings", Ty::Integer, "integer", "—", Value::Integer(8), "8", "radial cells of the marker's mesh; 1 ..= 200, rings × sectors <= 20000", ""),
+            p("ros.marker_sectors", Ty::Integer, "integer", "—", Value::Integer(128), "128", "angular cells of the marker's mesh (2 triangles each); 8 ..= 4096", ""),
+            p("ros.marker_scale", Ty::String, "string or double", "—", Value::Str("auto"), "\"auto\"", "magnification of the drawn deflection: `auto` (the largest of the last second drawn as 5 % of the outer radius) or a finite number > 0", ""),
         ],
     },
 ];

@@ -117,6 +117,8 @@ pub struct LoopReport {
     pub rate_hz: f64,
     pub realtime_factor: f64,
     pub publish_failures: u64,
+    /// `~/plate_marker` messages skipped because the previous one was still being built.
+    pub markers_skipped: u64,
     /// From [`Timing::report`].
     pub timing: Vec<(String, String)>,
 }
@@ -167,6 +169,7 @@ pub fn simulation_status(node_name: &str, r: &LoopReport) -> DiagnosticStatus {
         kv("realtime_factor", format!("{}", r.realtime_factor)),
         kv("overruns", r.overruns.to_string()),
         kv("publish_failures", r.publish_failures.to_string()),
+        kv("markers_skipped", r.markers_skipped.to_string()),
     ];
     values.extend(r.timing.iter().map(|(k, v)| kv(k, v.clone())));
     DiagnosticStatus { level, name: format!("{node_name}: simulation"), message, hardware_id: node_name.to_string(), values }
@@ -242,6 +245,7 @@ mod tests {
             rate_hz: 1000.0,
             realtime_factor: 1.0,
             publish_failures: 0,
+            markers_skipped: 0,
             timing: vec![("steps_in_period".into(), "10".into())],
         }
     }

@@ -10,12 +10,14 @@
 pub mod clock;
 pub mod diagnostics;
 pub mod input_stats;
+pub mod marker;
 pub mod names;
 pub mod outputs;
 pub mod qos;
 pub mod settings;
 pub mod topics;
 pub mod types;
+pub mod visualization;
 
 pub use names::DEFAULT_NODE_NAME;
 pub use types::RosType;

@@ -12,6 +12,7 @@ use ros2_client::ServiceMapping;
 use std::fmt;
 
 use crate::config::table;
+use super::marker::{MarkerScale, MarkerSettings, MAX_CELLS};
 
 /// Validated `ros.*` settings.
 #[derive(Debug, Clone, PartialEq)]
@@ -26,6 +27,8 @@ pub struct RosSettings {
     pub diagnostics_period: f64,
     pub reject_log_period: f64,
     pub service_mapping: ServiceMapping,
+    /// `ros.marker_*`: `~/plate_marker`.
+    pub marker: MarkerSettings,
 }
 
 impl Default for RosSettings {
@@ -39,6 +42,7 @@ impl Default for RosSettings {
             diagnostics_period: 1.0,
             reject_log_period: 1.0,
             service_mapping: ServiceMapping::Enhanced,
+            marker: MarkerSettings::default(),
         }
     }
 }
@@ -134,6 +138,7 @@ impl RosSettings {
             }
             s.reject_log_period = p;
         }
+        s.marker = read_marker(params)?;
         if let Some(m) = string("ros.service_mapping")? {
             s.service_mapping = match m.as_str() {
                 "enhanced" => ServiceMapping::Enhanced,
@@ -143,6 +148,14 @@ impl RosSettings {
             };
         }
         Ok(s)
+    }
+
+    /// Refuse a marker faster than the loop (`ros.marker_rate_hz` ≤ `simulation.rate_hz`).
+    pub fn check_against_rate(&self, rate_hz: f64) -> Result<(), SettingsError> {
+        if self.marker.rate_hz > rate_hz {
+            return Err(err("ros.marker_rate_hz", format!("{} Hz is above simulation.rate_hz = {rate_hz} Hz (one marker per step at most)", self.marker.rate_hz)));
+        }
+        Ok(())
     }
 
     /// The effective value of every `ros.*` key, for the parameter services.
@@ -165,8 +178,47 @@ impl RosSettings {
                     .to_string(),
                 ),
             ),
+            ("ros.marker_rate_hz", ParamValue::Double(self.marker.rate_hz)),
+            ("ros.marker_rings", ParamValue::Integer(self.marker.rings as i64)),
+            ("ros.marker_sectors", ParamValue::Integer(self.marker.sectors as i64)),
+            (
+                "ros.marker_scale",
+                match self.marker.scale {
+                    MarkerScale::Auto => ParamValue::String("auto".into()),
+                    MarkerScale::Fixed(v) => ParamValue::Double(v),
+                },
+            ),
         ]
     }
+}
+
+/// The `ros.marker_*` keys.
+fn read_marker(params: &Params) -> Result<MarkerSettings, SettingsError> {
+    let mut m = MarkerSettings::default();
+    match params.get("ros.marker_rate_hz") {
+        None => {}
+        Some(ParamValue::Double(v)) if v.is_finite() && *v >= 0.0 => m.rate_hz = *v,
+        Some(ParamValue::Integer(v)) if *v >= 0 => m.rate_hz = *v as f64,
+        Some(other) => return Err(err("ros.marker_rate_hz", format!("{other} must be a finite number >= 0 (0 = no marker)"))),
+    }
+    let integer = |key: &str, default: u32, low: i64, high: i64| match params.get(key) {
+        None => Ok(default),
+        Some(ParamValue::Integer(v)) if (low..=high).contains(v) => Ok(*v as u32),
+        Some(other) => Err(err(key, format!("{other} must be an integer in {low} ..= {high}"))),
+    };
+    m.rings = integer("ros.marker_rings", m.rings, 1, 200)?;
+    m.sectors = integer("ros.marker_sectors", m.sectors, 8, 4096)?;
+    if m.rings * m.sectors > MAX_CELLS {
+        return Err(err("ros.marker_rings", format!("rings × sectors = {} × {} exceeds {MAX_CELLS} cells (lower ros.marker_rings or ros.marker_sectors)", m.rings, m.sectors)));
+    }
+    m.scale = match params.get("ros.marker_scale") {
+        None => MarkerScale::Auto,
+        Some(ParamValue::String(s)) if s == "auto" => MarkerScale::Auto,
+        Some(ParamValue::Double(v)) if v.is_finite() && *v > 0.0 => MarkerScale::Fixed(*v),
+        Some(ParamValue::Integer(v)) if *v > 0 => MarkerScale::Fixed(*v as f64),
+        Some(other) => return Err(err("ros.marker_scale", format!("{other} must be `auto` or a finite number > 0"))),
+    };
+    Ok(m)
 }
 
 #[cfg(test)]
@@ -216,6 +268,11 @@ mod tests {
             ("ros.diagnostics_period", "0"),
             ("ros.service_mapping", "zenoh"),
             ("ros.frame_prefx", "a"),
+            ("ros.marker_rate_hz", "-1"),
+            ("ros.marker_rings", "0"),
+            ("ros.marker_sectors", "100000"),
+            ("ros.marker_scale", "big"),
+            ("ros.marker_scale", "0"),
         ] {
             let e = RosSettings::from_params(&params(&[(k, v)])).unwrap_err();
             assert_eq!(e.key, k, "{e}");

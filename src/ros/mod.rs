@@ -16,6 +16,7 @@
 //! - [`services`], [`params_service`]: reset/pause/step and the parameter services;
 //! - [`diagnostics`]: the `/diagnostics` statuses (shared with `simulate --bag`);
 //! - [`sim_loop`]: the fixed-rate simulation thread;
+//! - [`marker_thread`]: `~/plate_marker`, built and published off the loop;
 //! - [`logging`]: `/rosout` and stderr;
 //! - [`heap`]: handing freed heap back to the OS after peer churn;
 //! - [`node`]: wiring and shutdown.
@@ -26,6 +27,7 @@ pub mod error;
 pub mod heap;
 pub mod inputs;
 pub mod logging;
+pub mod marker_thread;
 pub mod node;
 pub mod params_service;
 pub mod services;

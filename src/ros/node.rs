@@ -14,6 +14,9 @@ use super::params_service::{effective_parameters, ParamStore};
 use super::services::{self, Command};
 use crate::messages::settings::RosSettings;
 use super::sim_loop::{LoopSettings, Publishers, SimLoop};
+use super::marker_thread::MarkerFeed;
+use crate::messages::marker::PlateMarker;
+use crate::messages::visualization::MarkerArray;
 use crate::messages::{qos, topics};
 use crate::bag::recorder::{NodeBag, NodeTopics, Recorder, RecorderThread, Sample};
 use crate::config::{Config, ConfigError, Params};
@@ -110,6 +113,7 @@ impl NodeSetup {
         // node's settings read only theirs (and `use_sim_time`).
         let settings = RosSettings::from_params(&params).map_err(|error| NodeError::Settings { scene: scene_name.clone(), error })?;
         let config = Config::from_params(&params).map_err(|e| config_error(&scene_name, e))?;
+        settings.check_against_rate(config.simulation.rate_hz).map_err(|error| NodeError::Settings { scene: scene_name.clone(), error })?;
         Ok(NodeSetup { args, names, params, config, settings, scene: scene_name })
     }
 
@@ -128,7 +132,7 @@ pub fn run_node(scene: Option<PathBuf>, ros_args: &[String], record: Option<Path
     // The bag first: a directory that exists is refused before any DDS traffic.
     let bag = match &record {
         Some(dir) => {
-            let topics = NodeTopics::resolve(&setup.names, setup.settings.sim_time, sim.pad_count() > 0, sim.has_tool()).map_err(NodeError::Record)?;
+            let topics = NodeTopics::resolve(&setup.names, setup.settings.sim_time, sim.pad_count() > 0, sim.has_tool(), setup.settings.marker.every(1.0 / sim.dt()).is_some()).map_err(NodeError::Record)?;
             Some(NodeBag::create(dir, &topics)?)
         }
         None => None,
@@ -220,6 +224,23 @@ fn create_publishers(node: &mut Node, names: &NameResolver, settings: &RosSettin
         clock: settings.sim_time.then(|| publisher::<Clock, Clock>(node, names, topics::CLOCK, &qos::CLOCK)).transpose()?,
         diagnostics: publisher::<DiagnosticArray, DiagnosticArray>(node, names, topics::DIAGNOSTICS, &qos::DIAGNOSTICS)?,
     })
+}
+
+/// `~/plate_marker` (unless `ros.marker_rate_hz` is 0): its publisher and thread.
+fn start_marker(
+    node: &mut Node,
+    setup: &NodeSetup,
+    sim: &Simulation,
+    frames: &FrameNames,
+    recorder: Option<Recorder>,
+) -> Result<Option<(MarkerFeed, std::thread::JoinHandle<()>)>, NodeError> {
+    let rate_hz = 1.0 / sim.dt();
+    let Some(every) = setup.settings.marker.every(rate_hz) else { return Ok(None) };
+    let publisher = publisher::<MarkerArray, Shared<MarkerArray>>(node, &setup.names, topics::PLATE_MARKER, &qos::MARKER)?;
+    let marker = PlateMarker::new(sim.model(), frames, &setup.settings.marker, rate_hz / every as f64);
+    let started = super::marker_thread::start(sim, marker, every, publisher, recorder)
+        .map_err(|error| NodeError::System { what: "cannot start the marker thread", error })?;
+    Ok(Some(started))
 }
 
 /// `run --record`: the writer thread, fed by the loop; /tf_static goes first.
@@ -424,6 +445,13 @@ async fn serve(setup: NodeSetup, sim: Simulation, domain: u16, bag: Option<NodeB
     let outputs = OutputMessages::new(&sim, &frames);
     let mut sim_loop = SimLoop::new(sim, outputs, pubs, rx, Arc::clone(&stats), Arc::clone(&logger), loop_settings(&setup));
     let (recorder, record_thread) = recording.unzip();
+    let marker_thread = match start_marker(&mut node, &setup, sim_loop.simulation(), &frames, recorder.clone())? {
+        Some((feed, join)) => {
+            sim_loop = sim_loop.with_marker(feed);
+            Some(join)
+        }
+        None => None,
+    };
     if let Some(recorder) = recorder {
         sim_loop = sim_loop.with_recorder(recorder);
     }
@@ -453,6 +481,11 @@ async fn serve(setup: NodeSetup, sim: Simulation, domain: u16, bag: Option<NodeB
     drop(tx);
     drop(ctx);
     let joined = tokio::task::spawn_blocking(move || sim_thread.join()).await;
+    // The loop dropped the marker feed: the marker thread ends (and with it
+    // its handle on the recorder's queue).
+    if let Some(t) = marker_thread {
+        let _ = tokio::task::spawn_blocking(move || t.join()).await;
+    }
     // The loop (and with it the recorder's queue) is gone: the writer
     // thread drains the queue, finishes the MCAP file and metadata.yaml.
     let record_failed = match record_thread {

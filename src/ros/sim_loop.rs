@@ -20,6 +20,7 @@ use crate::messages::types::{
 use crate::messages::outputs::{clock_message, OutputMessages, Shared};
 use super::params_service::RuntimeChange;
 use super::services::Command;
+use super::marker_thread::MarkerFeed;
 use crate::bag::recorder::{Recorder, Sample};
 use crate::dynamics::{Checked, Command as SimCommand, NodeKind, Simulation, Wrench};
 use ros2_client::Publisher;
@@ -82,6 +83,8 @@ pub struct SimLoop {
     recorder: Option<Recorder>,
     dropped_at_last_report: u64,
     stop: bool,
+    /// `~/plate_marker`: the state goes to the marker thread every so many steps.
+    marker: Option<MarkerFeed>,
 }
 
 impl SimLoop {
@@ -118,8 +121,20 @@ impl SimLoop {
             recorder: None,
             dropped_at_last_report: 0,
             stop: false,
+            marker: None,
             settings,
         }
+    }
+
+    /// The simulation the loop owns (for setting up what it feeds).
+    pub fn simulation(&self) -> &Simulation {
+        &self.sim
+    }
+
+    /// Offer the state to the marker thread on its steps.
+    pub fn with_marker(mut self, feed: MarkerFeed) -> Self {
+        self.marker = Some(feed);
+        self
     }
 
     /// Also hand every published message to `recorder` (`run --record`).
@@ -133,6 +148,7 @@ impl SimLoop {
         // The initial state (t = 0), so subscribers see the plate at once.
         self.publish_state();
         self.publish_clock();
+        self.offer_marker();
         self.logger.info(&format!(
             "simulating at {} Hz ({}), {}",
             1.0 / self.sim.dt(),
@@ -331,6 +347,7 @@ impl SimLoop {
                 if self.clock.total_steps().is_multiple_of(self.settings.publish_divisor.max(1) as u64) {
                     self.publish_state();
                 }
+                self.offer_marker();
             }
             Err(e) => {
                 let msg = e.to_string();
@@ -339,6 +356,12 @@ impl SimLoop {
             }
         }
         self.timing.record(start, deadline, deadline.and(self.pacer.period()), start.elapsed());
+    }
+
+    fn offer_marker(&mut self) {
+        if let Some(m) = &mut self.marker {
+            m.offer(&self.sim, self.clock.stamp());
+        }
     }
 
     fn publish_clock(&mut self) {
@@ -398,6 +421,7 @@ impl SimLoop {
             rate_hz: 1.0 / self.sim.dt(),
             realtime_factor: self.settings.realtime_factor,
             publish_failures: self.publish_failures,
+            markers_skipped: self.marker.as_ref().map_or(0, |m| m.skipped),
             timing: self.timing.report(now),
         };
         self.overruns_at_last_report = overruns;

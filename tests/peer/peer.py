@@ -593,6 +593,31 @@ def scenario_record_bag(p, a):
             "diag_after": values}
 
 
+def scenario_marker(p, a):
+    """Paused node: subscribe ~/plate_marker and ~/modal_amplitudes, step N,
+    return every marker received (with the modal amplitudes of the same
+    stamp) — RViz's view of the plate, decoded by Cyclone DDS."""
+    markers = p.reader(p.private("plate_marker"), T.MarkerArray, depth=100)
+    modal = p.reader(p.private("modal_amplitudes"), T.ModalAmplitudes, depth=10000)
+    p.wait_matched(markers)
+    p.wait_matched(modal)
+    p.set_paused(True)
+    p.step(a["steps"])
+    got = []
+    p.wait_for(markers, lambda s: len(got) >= a["expect"], timeout=30.0, keep=got)
+    q_by_stamp = {}
+    deadline = time.time() + 5.0
+    while time.time() < deadline and not all(m.markers[1].header.stamp.to_nanos() in q_by_stamp for m in got):
+        for s in modal.take(10000):
+            q_by_stamp[s.header.stamp.to_nanos()] = list(s.q_lagrange)
+        time.sleep(0.01)
+    out = []
+    for m in got:
+        stamp = m.markers[1].header.stamp.to_nanos()
+        out.append({"stamp_ns": stamp, "q_lagrange": q_by_stamp.get(stamp), "marker": todict(m)})
+    return {"markers": out}
+
+
 def scenario_churn(p, a):
     """`peers` more participants join, each subscribing /joint_states and /tf
     like an rclpy monitor, until each has a sample; then they leave cleanly
