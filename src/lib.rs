@@ -6,6 +6,7 @@
 
 #[cfg(feature = "cli")]
 pub mod cli;
+pub mod colour_map;
 pub mod config;
 pub mod dynamics;
 pub mod model;

@@ -65,23 +65,11 @@ impl MarkerSettings {
     }
 }
 
-/// The fixed colour map: blue (w = −w_ref) through light grey (0) to red
-/// (+w_ref), linear in each half (the end and middle colours of Moreland's
-/// "cool to warm" map); `t = w / w_ref` is clamped to [−1, 1].
+/// The colour of `t = w / w_ref` on the fixed map of [`crate::colour_map`].
 pub fn colour(t: f64) -> ColorRGBA {
-    let t = if t.is_finite() { t.clamp(-1.0, 1.0) } else { 0.0 };
-    let (from, to, u) = if t < 0.0 { (COLOUR_ZERO, COLOUR_NEGATIVE, -t) } else { (COLOUR_ZERO, COLOUR_POSITIVE, t) };
-    let u = u as f32;
-    let mix = |a: f32, b: f32| a * (1.0 - u) + b * u;
-    ColorRGBA { r: mix(from[0], to[0]), g: mix(from[1], to[1]), b: mix(from[2], to[2]), a: 1.0 }
+    let [r, g, b] = crate::colour_map::rgb(t);
+    ColorRGBA { r, g, b, a: 1.0 }
 }
-
-/// RGB at w = −w_ref.
-pub const COLOUR_NEGATIVE: [f32; 3] = [0.230, 0.299, 0.754];
-/// RGB at w = 0.
-pub const COLOUR_ZERO: [f32; 3] = [0.865, 0.865, 0.865];
-/// RGB at w = +w_ref.
-pub const COLOUR_POSITIVE: [f32; 3] = [0.706, 0.016, 0.150];
 
 /// The polar grid and the mode shapes on it, built once per model.
 #[derive(Debug, Clone)]
@@ -343,17 +331,6 @@ impl PlateMarker {
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    #[test]
-    fn colour_map_ends_and_middle() {
-        let c = colour(-1.0);
-        assert_eq!([c.r, c.g, c.b], COLOUR_NEGATIVE);
-        let c = colour(0.0);
-        assert_eq!([c.r, c.g, c.b], COLOUR_ZERO);
-        let c = colour(5.0);
-        assert_eq!([c.r, c.g, c.b], COLOUR_POSITIVE);
-        assert_eq!(colour(f64::NAN), colour(0.0));
-    }
 
     #[test]
     fn every_decimates_the_loop() {

@@ -7,7 +7,9 @@
 //! - `plot modes PARAMS --out F [--k 0,1,2 --l 0,1]`: a grid of ⟨k, l⟩ mode
 //!   shapes seen from above, sign-coloured, with their nodal lines (Fig. 2);
 //! - `plot mode PARAMS (--index N | --k K --l L) --out F`: one mode as a
-//!   shaded surface beside its top view (Fig. 3).
+//!   shaded surface beside its top view (Fig. 3);
+//! - `plot animate CSV --params FILE --out F.gif|F.mp4`: the deformed plate
+//!   of a simulated run, top and side view, frame by frame.
 //!
 //! The drawing functions return the pixel geometry they used, so tests can
 //! check that a curve or a nodal line is where the data puts it.
@@ -19,11 +21,13 @@ use std::path::{Path, PathBuf};
 use std::str::FromStr;
 
 
+mod animate;
 mod csv;
 mod modes;
 mod pareto;
 mod render;
 
+pub use self::animate::*;
 pub use self::csv::*;
 pub use self::modes::*;
 pub use self::pareto::*;
@@ -130,6 +134,31 @@ pub enum PlotCommand {
         #[arg(long, default_value = "1400x640")]
         size: Size,
     },
+    /// The deformed plate of a `simulate` run as an animation (top and side view, node frames, time).
+    Animate {
+        /// The CSV written by `annular_plate simulate` (its q1…qN columns).
+        csv: PathBuf,
+        /// The params file the run was simulated from (the same modes).
+        #[arg(long)]
+        params: PathBuf,
+        /// .gif (written here) or .mp4 (needs ffmpeg on PATH).
+        #[arg(long)]
+        out: PathBuf,
+        /// Frames per second of the animation.
+        #[arg(long, default_value_t = 25)]
+        fps: u32,
+        /// Animation seconds per simulated second (slow motion > 1).
+        #[arg(long, default_value_t = 1.0)]
+        slowdown: f64,
+        /// Side-view magnification of the deflection; default: the run's largest |w| drawn as 10 % of r_a.
+        #[arg(long)]
+        scale: Option<f64>,
+        #[arg(long, default_value = "960x480")]
+        size: Size,
+        /// No progress bar.
+        #[arg(long)]
+        quiet: bool,
+    },
 }
 
 pub fn main(cmd: PlotCommand) -> CliResult<()> {
@@ -167,6 +196,26 @@ pub fn main(cmd: PlotCommand) -> CliResult<()> {
                 _ => return Err(CliError::Usage(format!("say which mode: --index N (as numbered by `annular_plate modes`) or --k K --l L"))),
             };
             mode_picture(&config, which, title.as_deref(), &out, size)?;
+        }
+        PlotCommand::Animate { csv, params, out, fps, slowdown, scale, size, quiet } => {
+            if fps == 0 || fps > 100 {
+                return Err(CliError::Usage(format!("--fps {fps}: must be 1 ..= 100")));
+            }
+            if !(slowdown.is_finite() && slowdown > 0.0) || scale.is_some_and(|s| !(s.is_finite() && s > 0.0)) {
+                return Err(CliError::Usage("--slowdown and --scale must be finite numbers > 0".into()));
+            }
+            let data = CsvData::read(&csv)?;
+            let config = super::load_config(&params)?;
+            let bar = if quiet { indicatif::ProgressBar::hidden() } else { indicatif::ProgressBar::new(0) };
+            let anim = Animation { fps, slowdown, scale, size };
+            let info = animate(&data, &config, &anim, &out, |done, total| {
+                bar.set_length(total as u64);
+                bar.set_position(done as u64);
+            })?;
+            bar.finish_and_clear();
+            if !quiet {
+                eprintln!("{}: {} frames at {fps} fps, colour ±{:.3e} m, side view ×{:.3e}", out.display(), info.frames, info.w_ref, info.scale);
+            }
         }
     }
     Ok(())
