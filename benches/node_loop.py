@@ -12,7 +12,9 @@ updated at 1 kHz, measure
 
 with the wrenches sent either as one annular_plate/msg/NodeWrenchArray of 18
 per millisecond (`--mode batch`) or as 18 geometry_msgs/WrenchStamped per
-millisecond on the 18 per-node topics (`--mode topics`), and idle (`--mode idle`).
+millisecond on the 18 per-node topics (`--mode topics`), and idle (`--mode idle`);
+with `--marker-rate HZ` the node also publishes ~/plate_marker at that rate
+(0 = off, the default here) and the peer subscribes to it as RViz would.
 
 Run as root from the repository root after `cargo build --release` and one
 `cargo test --release` (which creates target/peer-venv):
@@ -87,7 +89,7 @@ def in_netns_main(args):
     env = dict(os.environ, ROS_DOMAIN_ID="42")
     node = subprocess.Popen(
         [args.node, "run", scene, "--ros-args", "-p", "ros.diagnostics_period:=1.0",
-         "--log-level", "warn"],
+         "-p", f"ros.marker_rate_hz:={args.marker_rate}", "--log-level", "warn"],
         env=env, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
     try:
         dp = DomainParticipant(42)
@@ -95,6 +97,10 @@ def in_netns_main(args):
         modal = DataReader(dp, Topic(dp, "rt/annular_plate/modal_amplitudes", T.ModalAmplitudes), qos=q)
         diag = DataReader(dp, Topic(dp, "rt/diagnostics", T.DiagnosticArray),
                           qos=Qos(Policy.Reliability.Reliable(duration(milliseconds=100)), Policy.History.KeepLast(100)))
+        markers = []
+        if args.marker_rate > 0:
+            markers.append(DataReader(dp, Topic(dp, "rt/annular_plate/plate_marker", T.MarkerArray),
+                                      qos=Qos(Policy.Reliability.Reliable(duration(milliseconds=100)), Policy.History.KeepLast(1))))
         writers = []
         if args.mode == "batch":
             writers = [DataWriter(dp, Topic(dp, "rt/annular_plate/wrenches", T.NodeWrenchArray), qos=q)]
@@ -113,6 +119,20 @@ def in_netns_main(args):
         seen_stamps = set()
         stop = threading.Event()
 
+        received_markers = [0]
+
+        def read_markers():
+            # Raw samples, not decoded (as `ros2 bag record` takes them): a
+            # Python decode of 12,000 points per message would starve the
+            # two cores the node runs on; RViz decodes in C++.
+            from cyclonedds._clayer import ddspy_take
+            from cyclonedds.core import InstanceState, SampleState, ViewState
+            mask = SampleState.Any | ViewState.Any | InstanceState.Any
+            while not stop.is_set():
+                for r in markers:
+                    received_markers[0] += sum(1 for _, info in ddspy_take(r._ref, mask, 100) if info.valid_data)
+                time.sleep(0.005)
+
         def read_states():
             last = None
             while not stop.is_set():
@@ -128,6 +148,8 @@ def in_netns_main(args):
 
         reader = threading.Thread(target=read_states, daemon=True)
         reader.start()
+        marker_reader = threading.Thread(target=read_markers, daemon=True)
+        marker_reader.start()
         t_end = time.time() + args.warmup + window
         t_measure = time.time() + args.warmup
         stat0 = None
@@ -138,7 +160,9 @@ def in_netns_main(args):
         while time.time() < t_end:
             if stat0 is None and time.time() >= t_measure:
                 stat0 = (cpu_ticks(node.pid), time.time())
+                threads0 = thread_ticks(node.pid)
                 latencies.clear()
+                received_markers[0] = 0
                 sent = 0
             k += 1
             fz = -100.0 - 10.0 * (k % 10)
@@ -165,6 +189,8 @@ def in_netns_main(args):
             else:
                 next_t = time.perf_counter()
         stat1 = (cpu_ticks(node.pid), time.time())
+        threads1 = thread_ticks(node.pid)
+        markers_in_window = received_markers[0]
         # The node's per-second reports inside the window.
         time.sleep(1.2)
         reports = []
@@ -187,7 +213,10 @@ def in_netns_main(args):
             return lat[min(len(lat) - 1, int(round(p * (len(lat) - 1))))] if lat else float("nan")
 
         print(f"mode {args.mode}: {N_ALE} ALE wrenches, {sent / (stat1[1] - stat0[1]):.0f} updates/s sent over {stat1[1] - stat0[1]:.1f} s")
-        print(f"  node CPU: {cpu:.1f} % of one core")
+        print(f"  node CPU: {cpu:.1f} % of one core (~/plate_marker at {args.marker_rate} Hz, {markers_in_window / (stat1[1] - stat0[1]):.1f}/s received)")
+        span = stat1[1] - stat0[1]
+        per_thread = {n: (threads1[n] - threads0.get(n, 0)) / hz / span * 100.0 for n in threads1}
+        print("  threads: " + ", ".join(f"{n} {c:.1f} %" for n, c in sorted(per_thread.items(), key=lambda x: -x[1]) if c >= 0.05))
         print(f"  node loop ({len(reports)} one-second /diagnostics reports): achieved {med('achieved_rate_hz'):.1f} Hz, "
               f"step+publish mean {med('step_time_mean_us'):.1f} us (max {mx('step_time_max_us'):.0f} us), "
               f"period jitter p50 {med('period_jitter_p50_us'):.1f} us, p99 {med('period_jitter_p99_us'):.1f} us "
@@ -204,6 +233,21 @@ def in_netns_main(args):
             node.kill()
 
 
+def thread_ticks(pid):
+    """utime + stime per thread name of the process."""
+    out = {}
+    for tid in os.listdir(f"/proc/{pid}/task"):
+        try:
+            with open(f"/proc/{pid}/task/{tid}/stat") as f:
+                text = f.read()
+        except OSError:
+            continue
+        name = text[text.index("(") + 1:text.rindex(")")]
+        fields = text.rsplit(")", 1)[1].split()
+        out[name] = out.get(name, 0) + int(fields[11]) + int(fields[12])
+    return out
+
+
 def cpu_ticks(pid):
     with open(f"/proc/{pid}/stat") as f:
         fields = f.read().rsplit(")", 1)[1].split()
@@ -215,6 +259,7 @@ def main():
     ap.add_argument("--mode", choices=["batch", "topics", "idle"], default="batch")
     ap.add_argument("--seconds", type=float, default=10.0)
     ap.add_argument("--warmup", type=float, default=2.0)
+    ap.add_argument("--marker-rate", type=float, default=0.0)
     ap.add_argument("--node", default=os.path.join(REPO, "target", "release", "annular_plate"))
     ap.add_argument("--in-netns", action="store_true", help=argparse.SUPPRESS)
     args = ap.parse_args()
@@ -223,7 +268,7 @@ def main():
         return
     cmd = ["unshare", "-n", "--", "sh", "-c",
            'ip link set lo up && exec "$0" "$@"', sys.executable, os.path.abspath(__file__), "--in-netns",
-           "--mode", args.mode, "--seconds", str(args.seconds), "--warmup", str(args.warmup), "--node", args.node]
+           "--mode", args.mode, "--marker-rate", str(args.marker_rate), "--seconds", str(args.seconds), "--warmup", str(args.warmup), "--node", args.node]
     with open("/proc/cpuinfo") as f:
         model = next((l.split(":", 1)[1].strip() for l in f if l.startswith("model name")), "?")
     print(f"machine: nproc {os.cpu_count()}, {model}")

@@ -168,7 +168,7 @@ fn run_record_writes_the_stepped_states_equal_to_the_offline_simulation() {
     assert_eq!(m["version"], 9);
     let topics = &d["topics"];
     let names: Vec<&str> = d["connections"].as_array().unwrap().iter().map(|c| c["topic"].as_str().unwrap()).collect();
-    assert_eq!(names, vec!["/tf_static", "/joint_states", "/tf", MODAL, PADS, "/diagnostics", "/clock"]);
+    assert_eq!(names, vec!["/tf_static", "/joint_states", "/tf", MODAL, PADS, "/annular_plate/plate_marker", "/diagnostics", "/clock"]);
     // The initial state (published at start, paused) and one per step.
     assert_eq!(u64s(&topics[MODAL]["steps"]), (0..=steps).collect::<Vec<_>>());
     let ms: Vec<u64> = (0..=steps).map(|k| k * 1_000_000).collect();

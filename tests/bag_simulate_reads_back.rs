@@ -115,6 +115,7 @@ fn a_simulate_bag_holds_the_node_topics_with_the_runs_values() {
         ("/joint_states", "sensor_msgs/msg/JointState"),
         ("/tf", "tf2_msgs/msg/TFMessage"),
         (MODAL, "annular_plate/msg/ModalAmplitudes"),
+        ("/annular_plate/plate_marker", "visualization_msgs/msg/MarkerArray"),
         ("/diagnostics", "diagnostic_msgs/msg/DiagnosticArray"),
         ("/clock", "rosgraph_msgs/msg/Clock"),
     ];
@@ -129,6 +130,8 @@ fn a_simulate_bag_holds_the_node_topics_with_the_runs_values() {
         let want = match topic {
             "/tf_static" => 1,
             "/diagnostics" => n_diag,
+            // Every 33rd step from 0 (30 Hz at 1 kHz).
+            "/annular_plate/plate_marker" => STEPS / 33 + 1,
             _ => STEPS + 1,
         };
         assert_eq!(c["msgcount"].as_u64(), Some(want), "{topic} count in the bag's index");
@@ -139,7 +142,7 @@ fn a_simulate_bag_holds_the_node_topics_with_the_runs_values() {
         let (durability, depth) = match topic {
             "/tf_static" => ("transient_local", 1),
             "/tf" => ("volatile", 100),
-            "/clock" => ("volatile", 1),
+            "/clock" | "/annular_plate/plate_marker" => ("volatile", 1),
             _ => ("volatile", 10),
         };
         assert_eq!((q["durability"].as_str().unwrap(), q["depth"].as_u64().unwrap()), (durability, depth), "{topic} QoS");
@@ -152,7 +155,7 @@ fn a_simulate_bag_holds_the_node_topics_with_the_runs_values() {
     assert_eq!(m["ros_distro"], "jazzy");
     assert_eq!(m["starting_time"]["nanoseconds_since_epoch"], 0);
     assert_eq!(m["duration"]["nanoseconds"].as_u64(), Some(STEPS * 1_000_000));
-    assert_eq!(m["message_count"].as_u64(), Some(4 * (STEPS + 1) + 1 + n_diag));
+    assert_eq!(m["message_count"].as_u64(), Some(4 * (STEPS + 1) + 1 + n_diag + STEPS / 33 + 1));
     let file = format!("{}_0.mcap", bag.file_name().unwrap().to_string_lossy());
     assert_eq!(m["relative_file_paths"], serde_json::json!([file]));
     assert!(bag.join(&file).is_file());

@@ -14,13 +14,14 @@ use std::path::{Path, PathBuf};
 /// Which top-level modules each may use.
 const LAYERS: &[(&str, &[&str])] = &[
     ("config", &[]),
+    ("colour_map", &[]),
     ("model", &["config"]),
     ("dynamics", &["config", "model"]),
     ("study", &["config", "model", "dynamics"]),
-    ("messages", &["config", "model", "dynamics"]),
+    ("messages", &["config", "colour_map", "model", "dynamics"]),
     ("bag", &["config", "model", "dynamics", "messages"]),
     ("ros", &["config", "model", "dynamics", "messages", "bag"]),
-    ("cli", &["config", "model", "dynamics", "study", "messages", "bag", "ros"]),
+    ("cli", &["config", "colour_map", "model", "dynamics", "study", "messages", "bag", "ros"]),
 ];
 
 fn rust_files(dir: &Path, out: &mut Vec<PathBuf>) {

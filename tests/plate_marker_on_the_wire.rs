@@ -187,6 +187,16 @@ fn rviz_sees_the_modal_sum_and_the_recordings_hold_the_same_markers() {
     assert!(status.success());
     let offline = bag_markers(&read_bag(&offline_dir, "rosbags", &[TOPIC]));
     assert_eq!(offline.keys().copied().collect::<Vec<_>>(), vec![0, 33_000_000, 66_000_000], "simulate --bag: a marker every 33 steps");
+    // `plot marker` draws the bag's last marker without RViz: red where the
+    // plate deflects up, blue where down (the mesh's own colours).
+    let png = offline_dir.with_file_name("plate_marker.png");
+    let status = std::process::Command::new(node_binary()).args(["plot", "marker"]).arg(&offline_dir).arg("--out").arg(&png).status().unwrap();
+    assert!(status.success());
+    let img = image::open(&png).unwrap().to_rgb8();
+    let reddish = img.pixels().filter(|p| p[0] as i32 - p[2] as i32 > 60).count();
+    let bluish = img.pixels().filter(|p| p[2] as i32 - p[0] as i32 > 60).count();
+    println!("plot marker: {reddish} reddish and {bluish} bluish pixels");
+    assert!(reddish > 1000 && bluish > 1000);
     for m in live {
         let stamp = m["stamp_ns"].as_i64().unwrap();
         let from_wire = &m["marker"];

@@ -32,6 +32,13 @@ $B plot csv "$T/squeal.csv" --columns q1,q2 --panel q3,q4 \
   --title "config/brake_squeal.yaml (paper Fig. 17): modal amplitudes at μ = 0.6, above the flutter threshold 0.300 (sampled at 1 kHz)" \
   --out docs/img/scene_brake_squeal.png
 
+# The plate as RViz/Foxglove get it (docs/ros.md): a marker drawn from a bag,
+# and an animation of a run (from its CSV).
+$B simulate config/swash_plate.yaml --duration 0.3 --bag "$T/swash_bag" --csv "$T/swash_short.csv" --quiet
+$B plot marker "$T/swash_bag" --out docs/img/plate_marker_bag.png
+$B plot animate "$T/swash_short.csv" --params config/swash_plate.yaml --fps 20 --slowdown 2 --size 720x360 --quiet \
+  --out docs/img/swash_plate.gif
+
 # Accuracy against cost (docs/study.md).
 $B study --quiet --plot docs/img/study_pareto.png > "$T/study.txt"
 cat "$T/study.txt"

@@ -82,6 +82,8 @@ pub struct MarkerGrid {
     radial: Vec<f64>,
     /// Θ_i(φ_s), mode-major: `angular[i * angles.len() + s]`.
     angular: Vec<f64>,
+    /// (cos φ_s, sin φ_s).
+    directions: Vec<(f64, f64)>,
 }
 
 impl MarkerGrid {
@@ -97,7 +99,8 @@ impl MarkerGrid {
             radial.extend(radii.iter().map(|&r| shape.value(r)));
             angular.extend(angles.iter().map(|&phi| m.shape.eval(m.k, phi).0));
         }
-        MarkerGrid { radii, angles, radial, angular }
+        let directions = angles.iter().map(|a| (a.cos(), a.sin())).collect();
+        MarkerGrid { radii, angles, radial, angular, directions }
     }
 
     /// w at every grid vertex, ring-major (`w[j * sectors + s]`), for the
@@ -265,9 +268,9 @@ impl PlateMarker {
         let mut colors = Vec::with_capacity(points.capacity());
         let vertex = |j: usize, s: usize| {
             let s = s % ns;
-            let (r, phi, w) = (self.grid.radii[j], self.grid.angles[s], self.w[j * ns + s]);
+            let (r, (c, sn), w) = (self.grid.radii[j], self.grid.directions[s], self.w[j * ns + s]);
             let t = if self.colour_reference > 0.0 { w / self.colour_reference } else { 0.0 };
-            (Point { x: r * phi.cos(), y: r * phi.sin(), z: self.scale * w }, colour(t))
+            (Point { x: r * c, y: r * sn, z: self.scale * w }, colour(t))
         };
         for j in 0..nr - 1 {
             for s in 0..ns {

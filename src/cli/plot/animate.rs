@@ -105,7 +105,7 @@ fn amplitudes(data: &CsvData, n: usize) -> CliResult<Vec<Vec<f64>>> {
 pub fn frame_rows(times: &[f64], fps: u32, slowdown: f64) -> CliResult<Vec<usize>> {
     let (t0, t1) = (times[0], *times.last().unwrap());
     let n = ((t1 - t0) * slowdown * fps as f64).round();
-    if !(n >= 2.0) {
+    if n.is_nan() || n < 2.0 {
         return Err(CliError::Usage(format!(
             "the run spans {} s: at --fps {fps} and --slowdown {slowdown} that is {n} frames (at least 2 needed); raise --slowdown",
             t1 - t0

@@ -51,7 +51,7 @@ impl CsvData {
     pub fn column(&self, name: &str) -> CliResult<&[f64]> {
         match self.header.iter().position(|h| h == name) {
             Some(j) => Ok(&self.columns[j]),
-            None => return Err(CliError::Usage(format!("unknown column {name:?} in {}; it has {}", self.path.display(), summarize_names(&self.header)))),
+            None => Err(CliError::Usage(format!("unknown column {name:?} in {}; it has {}", self.path.display(), summarize_names(&self.header)))),
         }
     }
 

@@ -9,7 +9,9 @@
 //! - `plot mode PARAMS (--index N | --k K --l L) --out F`: one mode as a
 //!   shaded surface beside its top view (Fig. 3);
 //! - `plot animate CSV --params FILE --out F.gif|F.mp4`: the deformed plate
-//!   of a simulated run, top and side view, frame by frame.
+//!   of a simulated run, top and side view, frame by frame;
+//! - `plot marker BAG --out F.png [--at S]`: a recorded `~/plate_marker` as
+//!   RViz draws its triangles (without RViz).
 //!
 //! The drawing functions return the pixel geometry they used, so tests can
 //! check that a curve or a nodal line is where the data puts it.
@@ -23,12 +25,16 @@ use std::str::FromStr;
 
 mod animate;
 mod csv;
+#[cfg(feature = "ros")]
+mod marker_view;
 mod modes;
 mod pareto;
 mod render;
 
 pub use self::animate::*;
 pub use self::csv::*;
+#[cfg(feature = "ros")]
+pub use self::marker_view::*;
 pub use self::modes::*;
 pub use self::pareto::*;
 pub use self::render::*;
@@ -159,6 +165,20 @@ pub enum PlotCommand {
         #[arg(long)]
         quiet: bool,
     },
+    /// A recorded `~/plate_marker` (from `simulate --bag` or `run --record`) drawn as RViz draws its triangles.
+    #[cfg(feature = "ros")]
+    Marker {
+        /// The bag directory (or its .mcap file).
+        bag: PathBuf,
+        /// Seconds after the bag's first marker; default: the last marker.
+        #[arg(long)]
+        at: Option<f64>,
+        /// Output file, .png.
+        #[arg(long)]
+        out: PathBuf,
+        #[arg(long, default_value = "900x640")]
+        size: Size,
+    },
 }
 
 pub fn main(cmd: PlotCommand) -> CliResult<()> {
@@ -196,6 +216,11 @@ pub fn main(cmd: PlotCommand) -> CliResult<()> {
                 _ => return Err(CliError::Usage(format!("say which mode: --index N (as numbered by `annular_plate modes`) or --k K --l L"))),
             };
             mode_picture(&config, which, title.as_deref(), &out, size)?;
+        }
+        #[cfg(feature = "ros")]
+        PlotCommand::Marker { bag, at, out, size } => {
+            let (t, triangles) = plot_marker(&bag, at, &out, size)?;
+            eprintln!("{}: the marker logged at {:.3} s, {triangles} triangles", out.display(), t as f64 * 1e-9);
         }
         PlotCommand::Animate { csv, params, out, fps, slowdown, scale, size, quiet } => {
             if fps == 0 || fps > 100 {

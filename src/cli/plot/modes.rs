@@ -83,7 +83,7 @@ pub(super) fn draw_top_view<DB: DrawingBackend>(
         buf.extend_from_slice(&[c.0, c.1, c.2]);
     }
     let element =
-        BitMapElement::<(i32, i32)>::with_owned_buffer((center.0 - half, center.1 - half), (side, side), buf).ok_or_else(|| CliError::Usage(format!("raster size")))?;
+        BitMapElement::<(i32, i32)>::with_owned_buffer((center.0 - half, center.1 - half), (side, side), buf).ok_or_else(|| CliError::Usage("raster size".to_string()))?;
     root.draw(&element).map_err(de)?;
     // Nodal lines, exact: diameters at the zeros of cos/sin(kφ), circles at the zeros of R_l.
     let radii = nodal_radii(model, mode);
@@ -126,7 +126,7 @@ pub(super) fn model_for(config: &Config, ks: &[u32], ls: &[u32]) -> CliResult<Pl
     plate.damping = vec![0.0];
     plate.radial_splines = plate.radial_splines.max(plate.min_radial_splines());
     if ks.iter().any(|&k| k > 200) || ls.iter().any(|&l| l > 50) {
-        return Err(CliError::Usage(format!("nodal diameters must be ≤ 200 and nodal circles ≤ 50")));
+        return Err(CliError::Usage("nodal diameters must be ≤ 200 and nodal circles ≤ 50".to_string()));
     }
     PlateModel::new(&plate).map_err(|e| CliError::Usage(format!("{e}")))
 }
@@ -142,7 +142,7 @@ pub(super) struct ModeGrid<'a> {
 /// Draw a grid of ⟨k, l⟩ mode shapes (rows l, columns k; the cos member of each pair).
 pub fn mode_grid(config: &Config, ks: &[u32], ls: &[u32], title: Option<&str>, out: &Path, size: Size) -> CliResult<Vec<TopView>> {
     if ks.is_empty() || ls.is_empty() {
-        return Err(CliError::Usage(format!("choose at least one nodal diameter (--k) and one nodal circle (--l)")));
+        return Err(CliError::Usage("choose at least one nodal diameter (--k) and one nodal circle (--l)".to_string()));
     }
     let mut ks = ks.to_vec();
     ks.sort_unstable();
