@@ -228,6 +228,10 @@ impl Params {
 
 /// `None` if `entry` does not apply to `node`; otherwise its rank (lower applies first).
 fn entry_priority(entry: &str, node: &str) -> Option<u8> {
+    // As rcl's YAML parser and rclcpp: a name without a leading `/` is in
+    // the root namespace (`annular_plate` ≡ `/annular_plate`), and an entry
+    // applies to the node whose fully qualified name it is — or matches as a
+    // wildcard pattern.
     let entry_tokens = tokens(entry);
     let node_tokens = tokens(node);
     if entry_tokens == ["**"] {
@@ -236,12 +240,7 @@ fn entry_priority(entry: &str, node: &str) -> Option<u8> {
     if entry_tokens.iter().any(|t| t.contains('*')) {
         return glob_match(&entry_tokens, &node_tokens).then_some(1);
     }
-    if entry_tokens == node_tokens {
-        return Some(2);
-    }
-    // One side without a namespace: compare the node's base name only.
-    let one_unqualified = entry_tokens.len() == 1 || node_tokens.len() == 1;
-    (one_unqualified && entry_tokens.last() == node_tokens.last() && !entry_tokens.is_empty()).then_some(2)
+    (!entry_tokens.is_empty() && entry_tokens == node_tokens).then_some(2)
 }
 
 fn tokens(name: &str) -> Vec<&str> {
@@ -478,8 +477,10 @@ mod tests {
         assert_eq!(entry_priority("/**", "annular_plate"), Some(0));
         assert_eq!(entry_priority("annular_plate", "annular_plate"), Some(2));
         assert_eq!(entry_priority("/annular_plate", "annular_plate"), Some(2));
-        assert_eq!(entry_priority("/ns/annular_plate", "annular_plate"), Some(2));
-        assert_eq!(entry_priority("annular_plate", "/ns/annular_plate"), Some(2));
+        assert_eq!(entry_priority("annular_plate", "/annular_plate"), Some(2));
+        // rclcpp: an entry without a namespace is the root namespace's node only.
+        assert_eq!(entry_priority("/ns/annular_plate", "annular_plate"), None);
+        assert_eq!(entry_priority("annular_plate", "/ns/annular_plate"), None);
         assert_eq!(entry_priority("/ns/annular_plate", "/ns/annular_plate"), Some(2));
         assert_eq!(entry_priority("/other/annular_plate", "/ns/annular_plate"), None);
         assert_eq!(entry_priority("other_node", "annular_plate"), None);
