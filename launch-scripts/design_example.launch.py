@@ -1,6 +1,6 @@
 """Launch the annular_plate node on config/design_example.yaml (see scene.launch.py for the arguments).
 
-    ros2 launch launch-scripts/design_example.launch.py [use_sim_time:=true] [run_example:=true]
+    ros2 launch launch-scripts/design_example.launch.py [publish_clock:=true | use_sim_time:=true] [run_example:=true]
 """
 
 import importlib.util

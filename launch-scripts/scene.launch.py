@@ -2,7 +2,11 @@
 
     ros2 launch launch-scripts/scene.launch.py scene:=config/brake_bench.yaml
     ros2 launch launch-scripts/scene.launch.py scene:=config/brake_bench.yaml \
-        use_sim_time:=true frame_prefix:=left/ namespace:=/bench run_example:=true
+        publish_clock:=true frame_prefix:=left/ namespace:=/bench run_example:=true
+
+`publish_clock:=true`: the node runs on its own simulated time and publishes
+/clock (the example follows it). `use_sim_time:=true`: the node follows an
+external /clock (Gazebo, `ros2 bag play --clock`) and steps with it.
 
 The node is the Rust program `annular_plate` (docs/ros.md): found as
 $ANNULAR_PLATE_EXECUTABLE, else in this package's lib/ (colcon install),
@@ -60,13 +64,16 @@ def launch_setup(context, *args, **kwargs):
     scene = LaunchConfiguration("scene").perform(context)
     name = LaunchConfiguration("node_name").perform(context)
     namespace = LaunchConfiguration("namespace").perform(context)
+    publish_clock = LaunchConfiguration("publish_clock").perform(context).lower() == "true"
+    use_sim_time = LaunchConfiguration("use_sim_time").perform(context).lower() == "true"
     node = Node(
         executable=node_executable(),
         name=name,
         namespace=namespace,
         arguments=["run", os.path.abspath(scene)] if scene else ["run"],
         parameters=[{
-            "use_sim_time": ParameterValue(LaunchConfiguration("use_sim_time"), value_type=bool),
+            "use_sim_time": use_sim_time,
+            "ros.publish_clock": publish_clock,
             "ros.frame_prefix": LaunchConfiguration("frame_prefix"),
             "ros.start_paused": ParameterValue(LaunchConfiguration("start_paused"), value_type=bool),
         }],
@@ -80,8 +87,8 @@ def launch_setup(context, *args, **kwargs):
     example = Node(
         executable=example_script(),
         name="brake_load_example",
-        parameters=[{"target": target,
-                     "use_sim_time": ParameterValue(LaunchConfiguration("use_sim_time"), value_type=bool)}],
+        # The example runs on the clock the node runs on.
+        parameters=[{"target": target, "use_sim_time": publish_clock or use_sim_time}],
         output="screen",
         condition=IfCondition(LaunchConfiguration("run_example")),
     )
@@ -95,7 +102,9 @@ def generate_launch_description(scene=None):
         DeclareLaunchArgument("node_name", default_value="annular_plate"),
         DeclareLaunchArgument("namespace", default_value=""),
         DeclareLaunchArgument("use_sim_time", default_value="false",
-                              description="stamp with simulated time and publish /clock"),
+                              description="follow an external /clock and step with it (docs/ros.md, Time)"),
+        DeclareLaunchArgument("publish_clock", default_value="false",
+                              description="ros.publish_clock: the node's own simulated time, published on /clock"),
         DeclareLaunchArgument("frame_prefix", default_value="", description="ros.frame_prefix"),
         DeclareLaunchArgument("start_paused", default_value="false", description="ros.start_paused"),
         DeclareLaunchArgument("log_level", default_value="info"),

@@ -163,7 +163,7 @@ pub const SECTIONS: &[Section] = &[
         after: "",
         params: &[
             p("gravity", Ty::DoubleArray, "double array (3)", "m/s²", Value::Doubles(&[0.0, 0.0, 0.0]), "[0, 0, 0]", "3 finite values", "gravity in the world frame (the reference frame before its tilt)"),
-            p("use_sim_time", Ty::Bool, "bool", "—", Value::Bool(false), "false", "bool", "the standard ROS 2 parameter every node has (often set for all nodes under `/**`); accepted here, used by the node only"),
+            p("use_sim_time", Ty::Bool, "bool", "—", Value::Bool(false), "false", "bool", "the standard ROS 2 parameter every node has (often set for all nodes under `/**`): the node follows an external /clock — stamps from it, one step of dt per dt it advances, no step while it stands still (docs/ros.md, Time); accepted here, used by the node only"),
         ],
     },
     Section {
@@ -269,7 +269,7 @@ F = `links.mean_force` + `links.cyclic_force` · cos(ψ − `links.cyclic_phase`
         params: &[
             p("ros.frame_prefix", Ty::String, "string", "—", Value::Str(""), "\"\"", "prefix of every frame and joint name; letters, digits, `_`, `/`, `-`, `.`; not starting with `/`", ""),
             p("ros.world_frame", Ty::String, "string", "—", Value::Str("world"), "\"world\"", "parent of plate_base in /tf_static (not prefixed); non-empty, same characters", ""),
-            p("ros.publish_clock", Ty::Bool, "bool", "—", Value::Bool(false), "false", "publish /clock and stamp outputs with simulated time (also when use_sim_time is true)", ""),
+            p("ros.publish_clock", Ty::Bool, "bool", "—", Value::Bool(false), "false", "publish /clock and stamp outputs with the node's own simulated time; refused together with use_sim_time: true (that node follows another clock)", ""),
             p("ros.wrench_timeout", Ty::Double, "double", "s", Value::Double(0.0), "0.0", "s of simulated time after which a wrench not renewed drops to zero; 0 = hold forever; finite, >= 0", ""),
             p("ros.start_paused", Ty::Bool, "bool", "—", Value::Bool(false), "false", "start paused (resume with ~/set_paused, advance with ~/step)", ""),
             p("ros.diagnostics_period", Ty::Double, "double", "s", Value::Double(1.0), "1.0", "s of wall time between /diagnostics messages; finite, > 0", ""),

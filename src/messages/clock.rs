@@ -10,6 +10,9 @@
 //!   after every step. ROS time never goes backwards: a `~/reset` returns
 //!   the plate to its initial state, but the clock keeps counting (as
 //!   Gazebo's reset_world), so tf buffers and bag files stay consistent.
+//! - **followed** (`use_sim_time: true`): outputs are stamped with an
+//!   external `/clock`, and the loop steps as that clock advances
+//!   ([`ClockFollower`]); the node publishes no `/clock` of its own.
 //!
 //! **The /clock type trap.** ros2-client's `Spinner` subscribes `/clock`
 //! typed `builtin_interfaces/msg/Time`; a Clock-typed writer in the same
@@ -19,21 +22,39 @@
 //! so `/clock` only ever carries `rosgraph_msgs::msg::dds_::Clock_`. The
 //! wire test `clock_has_one_type_and_monotonic_stamps` checks exactly that.
 
+use super::clock_follower::ClockFollower;
 use super::types::Time;
 use std::time::{Duration, Instant};
 
-/// Stamps for the outputs: simulated (from the total step count) or wall.
+/// Stamps for the outputs: simulated (from the total step count), an
+/// external clock's, or wall.
 #[derive(Debug, Clone)]
 pub struct StepClock {
     sim: bool,
     dt: f64,
     /// Steps since the node started (not reset by `~/reset`).
     total_steps: u64,
+    /// `use_sim_time`: the external `/clock` (stamps and the steps due).
+    follow: Option<ClockFollower>,
 }
 
 impl StepClock {
     pub fn new(sim: bool, dt: f64) -> Self {
-        StepClock { sim, dt, total_steps: 0 }
+        StepClock { sim, dt, total_steps: 0, follow: None }
+    }
+
+    /// Stamps from an external `/clock` (`use_sim_time: true`).
+    pub fn following(dt: f64) -> Self {
+        StepClock { sim: false, dt, total_steps: 0, follow: Some(ClockFollower::new(dt)) }
+    }
+
+    /// The external clock being followed, if any.
+    pub fn follower(&self) -> Option<&ClockFollower> {
+        self.follow.as_ref()
+    }
+
+    pub fn follower_mut(&mut self) -> Option<&mut ClockFollower> {
+        self.follow.as_mut()
     }
 
     pub fn is_sim(&self) -> bool {
@@ -43,6 +64,9 @@ impl StepClock {
     /// One step taken.
     pub fn advance(&mut self) {
         self.total_steps += 1;
+        if let Some(f) = &mut self.follow {
+            f.stepped();
+        }
     }
 
     pub fn total_steps(&self) -> u64 {
@@ -50,14 +74,18 @@ impl StepClock {
     }
 
     /// Simulated ROS time: total steps × dt, rounded to the nanosecond (no
-    /// drift for rates whose period is not a whole number of nanoseconds).
+    /// drift for rates whose period is not a whole number of nanoseconds);
+    /// following an external clock, that clock's time on the step grid.
     pub fn sim_time(&self) -> Time {
-        Time::from_nanos((self.total_steps as f64 * self.dt * 1e9).round() as i64)
+        match &self.follow {
+            Some(f) => Time::from_nanos(f.stamp_ns()),
+            None => Time::from_nanos((self.total_steps as f64 * self.dt * 1e9).round() as i64),
+        }
     }
 
     /// The stamp for outputs of the current step.
     pub fn stamp(&self) -> Time {
-        if self.sim {
+        if self.sim || self.follow.is_some() {
             self.sim_time()
         } else {
             Time::wall_now()
@@ -136,6 +164,17 @@ mod tests {
         let mut c = StepClock::new(true, 1e-3);
         c.advance();
         assert_eq!(c.stamp(), Time { sec: 0, nanosec: 1_000_000 });
+    }
+
+    #[test]
+    fn a_followed_clock_stamps_each_step_on_its_grid() {
+        let mut c = StepClock::following(1e-3);
+        c.follower_mut().unwrap().observe(2_000_000_000);
+        c.follower_mut().unwrap().observe(2_003_000_000);
+        assert_eq!(c.follower().unwrap().due(), 3);
+        c.advance();
+        assert_eq!(c.stamp(), Time { sec: 2, nanosec: 1_000_000 });
+        assert_eq!(c.follower().unwrap().due(), 2);
     }
 
     #[test]

@@ -8,6 +8,7 @@
 //! Data flows one way: `dynamics` → `messages` → `ros` / `bag` / `cli`.
 
 pub mod clock;
+pub mod clock_follower;
 pub mod diagnostics;
 pub mod input_stats;
 pub mod marker;

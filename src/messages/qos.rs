@@ -35,6 +35,14 @@ pub const MARKER: QosProfile = reliable(1, Durability::Volatile);
 /// best-effort `ClockQoS` readers and rclpy's reliable depth-10 default.
 pub const CLOCK: QosProfile = reliable(1, Durability::Volatile);
 
+/// `/clock` as followed with `use_sim_time: true`: best effort, volatile,
+/// keep last 1 — rclcpp's `ClockQoS`; it matches reliable and best-effort
+/// clock writers alike.
+pub const CLOCK_SUBSCRIPTION: QosProfile = QosProfile::subscription_default()
+    .reliability(Reliability::BestEffort)
+    .durability(Durability::Volatile)
+    .history(History::KeepLast { depth: 1 });
+
 /// `/diagnostics`: reliable, volatile, keep last 10.
 pub const DIAGNOSTICS: QosProfile = reliable(10, Durability::Volatile);
 

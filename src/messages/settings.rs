@@ -19,8 +19,11 @@ use super::marker::{MarkerScale, MarkerSettings, MAX_CELLS};
 pub struct RosSettings {
     pub frame_prefix: String,
     pub world_frame: String,
-    /// `ros.publish_clock || use_sim_time`.
+    /// `ros.publish_clock`: the node's own simulated time, published on `/clock`.
     pub sim_time: bool,
+    /// `use_sim_time`: stamps follow an external `/clock` and the loop steps
+    /// with it (never together with `sim_time`).
+    pub use_sim_time: bool,
     /// s; 0 = never.
     pub wrench_timeout: f64,
     pub start_paused: bool,
@@ -37,6 +40,7 @@ impl Default for RosSettings {
             frame_prefix: String::new(),
             world_frame: "world".to_string(),
             sim_time: false,
+            use_sim_time: false,
             wrench_timeout: 0.0,
             start_paused: false,
             diagnostics_period: 1.0,
@@ -118,7 +122,14 @@ impl RosSettings {
         }
         let publish_clock = boolean("ros.publish_clock")?.unwrap_or(false);
         let use_sim_time = boolean("use_sim_time")?.unwrap_or(false);
-        s.sim_time = publish_clock || use_sim_time;
+        if publish_clock && use_sim_time {
+            return Err(err(
+                "ros.publish_clock",
+                "true together with use_sim_time: true is refused: a node that follows an external /clock must not publish a second one (set one of them false)",
+            ));
+        }
+        s.sim_time = publish_clock;
+        s.use_sim_time = use_sim_time;
         if let Some(t) = double("ros.wrench_timeout")? {
             if !t.is_finite() || t < 0.0 {
                 return Err(err("ros.wrench_timeout", format!("{t} must be finite and >= 0 (0 = hold wrenches until replaced)")));
@@ -250,11 +261,21 @@ mod tests {
         ]))
         .unwrap();
         assert_eq!(s.frame_prefix, "left_");
-        assert!(s.sim_time && s.start_paused);
+        assert!(s.sim_time && s.start_paused && !s.use_sim_time);
         assert_eq!(s.wrench_timeout, 0.5);
         assert_eq!(s.diagnostics_period, 2.0);
         assert_eq!(s.service_mapping, ServiceMapping::Cyclone);
-        assert!(RosSettings::from_params(&params(&[("use_sim_time", "true")])).unwrap().sim_time);
+        let follow = RosSettings::from_params(&params(&[("use_sim_time", "true")])).unwrap();
+        assert!(follow.use_sim_time && !follow.sim_time, "use_sim_time follows /clock, it does not publish one");
+    }
+
+    #[test]
+    fn use_sim_time_and_publish_clock_together_are_refused() {
+        let e = RosSettings::from_params(&params(&[("use_sim_time", "true"), ("ros.publish_clock", "true")])).unwrap_err();
+        assert_eq!(e.key, "ros.publish_clock");
+        assert!(e.message.contains("use_sim_time"), "{e}");
+        let s = RosSettings::from_params(&params(&[("use_sim_time", "true"), ("ros.publish_clock", "false")])).unwrap();
+        assert!(s.use_sim_time && !s.sim_time);
     }
 
     #[test]
@@ -284,7 +305,7 @@ mod tests {
         let p = params(&[("ros.frame_prefix", "a"), ("plate.thickness", "0.01"), ("use_sim_time", "true")]);
         let s = RosSettings::from_params(&p).unwrap();
         assert_eq!(s.frame_prefix, "a");
-        assert!(s.sim_time);
+        assert!(s.use_sim_time);
         assert!(crate::config::Config::from_params(&p).is_ok(), "the config accepts the ros.* names too");
     }
 }

@@ -12,7 +12,7 @@
 //! - [`topics`], [`qos`]: names and QoS of every endpoint;
 //! - [`inputs`]: checking and counting incoming messages (no ROS types);
 //! - [`outputs`]: the per-step messages, preallocated;
-//! - [`clock`]: stamps, `/clock`, pacing;
+//! - [`clock`]: stamps, `/clock`, pacing; [`clock_input`]: following an external `/clock` (`use_sim_time`);
 //! - [`services`], [`params_service`]: reset/pause/step and the parameter services;
 //! - [`diagnostics`]: the `/diagnostics` statuses (shared with `simulate --bag`);
 //! - [`sim_loop`]: the fixed-rate simulation thread;
@@ -23,6 +23,7 @@
 //!
 //! The physics (`model`, `dynamics`) never imports anything from here.
 
+pub mod clock_input;
 pub mod error;
 pub mod heap;
 pub mod inputs;

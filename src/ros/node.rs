@@ -323,6 +323,7 @@ fn loop_settings(setup: &NodeSetup) -> LoopSettings {
         realtime_factor: simulation.realtime_factor,
         start_paused: settings.start_paused,
         sim_time: settings.sim_time,
+        follow_clock: settings.use_sim_time,
         wrench_timeout: settings.wrench_timeout,
         diagnostics_period: Duration::from_secs_f64(settings.diagnostics_period),
         node_name: setup.names.fully_qualified_node_name(),
@@ -355,7 +356,11 @@ fn startup_line(setup: &NodeSetup, sim: &Simulation, domain: u16) -> String {
         n_pads,
         if n_pads == 1 { "" } else { "s" },
         if sim.has_tool() { ", a tool" } else { "" },
-        if setup.settings.sim_time { "simulated (/clock)" } else { "wall-clock" }
+        match (setup.settings.sim_time, setup.settings.use_sim_time) {
+            (true, _) => "simulated (publishing /clock)",
+            (_, true) => "following /clock (use_sim_time)",
+            _ => "wall-clock",
+        }
     )
 }
 
@@ -421,7 +426,7 @@ async fn serve(setup: NodeSetup, sim: Simulation, domain: u16, bag: Option<NodeB
 
     let pubs = create_publishers(&mut node, names, settings, &sim)?;
     let tf_static = publisher::<TFMessage, TFMessage>(&mut node, names, topics::TF_STATIC, &qos::TF_STATIC)?;
-    let static_stamp = if settings.sim_time { Time::default() } else { Time::wall_now() };
+    let static_stamp = if settings.sim_time || settings.use_sim_time { Time::default() } else { Time::wall_now() };
     let static_msg = static_transforms(&frames, setup.config.reference.tilt, static_stamp);
     let recording = start_recording(bag, &static_msg, static_stamp, &logger)?;
     if let Err(e) = tf_static.publish(static_msg) {
@@ -440,6 +445,9 @@ async fn serve(setup: NodeSetup, sim: Simulation, domain: u16, bag: Option<NodeB
     let mut tasks = subscribe_inputs(&mut node, names, &frames, &ctx)?;
     tasks.extend(subscribe_load_commands(&mut node, names, &sim.scene().rules, &ctx)?);
     tasks.extend(start_services(&mut node, &setup, &tx)?);
+    if settings.use_sim_time {
+        tasks.push(super::clock_input::spawn(&mut node, &names.resolve(topics::CLOCK)?, tx.clone())?);
+    }
 
     let line = startup_line(&setup, &sim, domain);
     let outputs = OutputMessages::new(&sim, &frames);

@@ -155,7 +155,7 @@ impl ParamStore {
             .map(|n| {
                 let runtime = RUNTIME_KEYS.iter().find(|(k, _)| k == n);
                 let description = match (table::find(n), n.as_str()) {
-                    (_, "use_sim_time") => "stamp outputs with simulated time and publish /clock (same as ros.publish_clock)".to_string(),
+                    (_, "use_sim_time") => "follow an external /clock: stamps from it, one step per dt it advances (docs/ros.md, Time)".to_string(),
                     (Some(p), _) => describe(p),
                     _ => String::new(),
                 };

@@ -36,6 +36,8 @@ pub enum Command {
     SetPaused(bool, oneshot::Sender<SetBoolResponse>),
     Step(u32, oneshot::Sender<StepResponse>),
     Runtime(RuntimeChange),
+    /// A `/clock` message (ns), `use_sim_time: true` only (`clock_input.rs`).
+    Clock(i64),
     Stop,
 }
 

@@ -10,6 +10,7 @@
 //! thread without waiting (`bag::recorder`).
 
 use crate::messages::clock::{Pacer, StepClock};
+use crate::messages::clock_follower::ClockUpdate;
 use crate::messages::diagnostics::{self, LoopReport, Timing};
 use super::inputs::{Input, InputStats, Source, StaleWrenches};
 use super::logging::Logger;
@@ -51,6 +52,8 @@ pub struct LoopSettings {
     pub realtime_factor: f64,
     pub start_paused: bool,
     pub sim_time: bool,
+    /// `use_sim_time`: step as an external `/clock` advances (`Command::Clock`).
+    pub follow_clock: bool,
     pub wrench_timeout: f64,
     pub diagnostics_period: Duration,
     /// `/ns/node`, for diagnostics names.
@@ -100,7 +103,7 @@ impl SimLoop {
         let now = Instant::now();
         let dt = sim.dt();
         SimLoop {
-            clock: StepClock::new(settings.sim_time, dt),
+            clock: if settings.follow_clock { StepClock::following(dt) } else { StepClock::new(settings.sim_time, dt) },
             pacer: Pacer::new(dt, settings.realtime_factor, now),
             stale: StaleWrenches::new(settings.wrench_timeout, sim.n_ale_nodes(), sim.n_lagrange_nodes()),
             paused: settings.start_paused,
@@ -152,9 +155,10 @@ impl SimLoop {
         self.logger.info(&format!(
             "simulating at {} Hz ({}), {}",
             1.0 / self.sim.dt(),
-            match self.pacer.period() {
-                Some(_) => format!("realtime_factor {}", self.settings.realtime_factor),
-                None => "as fast as possible".to_string(),
+            match (self.clock.follower(), self.pacer.period()) {
+                (Some(_), _) => "following /clock".to_string(),
+                (None, Some(_)) => format!("realtime_factor {}", self.settings.realtime_factor),
+                (None, None) => "as fast as possible".to_string(),
             },
             if self.paused { "paused" } else { "running" }
         ));
@@ -179,6 +183,18 @@ impl SimLoop {
                 if !self.paused && self.diverged.is_none() {
                     self.pacer.restart(Instant::now());
                 }
+            } else if let Some(due) = self.clock.follower().map(|f| f.due()) {
+                // use_sim_time: the steps the external clock's advance holds.
+                if due == 0 {
+                    let wait = self.next_diagnostics.saturating_duration_since(Instant::now());
+                    self.wait_command(wait);
+                    continue;
+                }
+                self.drain_commands();
+                if self.stop || self.paused {
+                    continue;
+                }
+                self.step_once(None);
             } else {
                 let deadline = self.pacer.deadline();
                 let now = Instant::now();
@@ -275,7 +291,10 @@ impl SimLoop {
                 let _ = reply.send(SetBoolResponse { success: true, message });
             }
             Command::Step(n, reply) => {
-                if !self.paused {
+                if self.clock.follower().is_some() {
+                    let msg = "use_sim_time is true: the external /clock drives the steps (pause it, or this node with ~/set_paused)";
+                    let _ = reply.send(self.step_response(false, msg.into()));
+                } else if !self.paused {
                     let _ = reply.send(self.step_response(
                         false,
                         "the simulation is running; pause it first (~/set_paused with data: true)".into(),
@@ -298,7 +317,26 @@ impl SimLoop {
                 self.stale.set_timeout(t);
                 self.logger.info(&format!("ros.wrench_timeout set to {t} s"));
             }
+            Command::Clock(t_ns) => self.follow_clock(t_ns),
             Command::Stop => self.stop = true,
+        }
+    }
+
+    /// A `/clock` message: what it makes due (skipped while paused or diverged).
+    fn follow_clock(&mut self, t_ns: i64) {
+        let (paused, diverged) = (self.paused, self.diverged.is_some());
+        let Some(f) = self.clock.follower_mut() else { return };
+        let update = f.observe(t_ns);
+        if paused || diverged {
+            f.skip();
+        }
+        match update {
+            ClockUpdate::Started => self.logger.info(&format!("following /clock from t = {} s", t_ns as f64 * 1e-9)),
+            ClockUpdate::Backwards => self.logger.warn(&format!(
+                "/clock went back to t = {} s: stamps follow it from there (the plate's state is kept)",
+                t_ns as f64 * 1e-9
+            )),
+            ClockUpdate::Forward => {}
         }
     }
 

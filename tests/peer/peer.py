@@ -641,6 +641,88 @@ def scenario_churn(p, a):
     return {"joined": a["peers"], "left": "clean"}
 
 
+def scenario_follow_clock(p, a):
+    """use_sim_time: the peer's /clock (a best-effort writer: it matches only a
+    best-effort reader, rclcpp's ClockQoS) drives the node's steps and stamps."""
+    ms = 1_000_000
+    t0 = a["t0_ns"]
+    clock = p.writer("/clock", T.Clock, reliable=False, depth=1)
+    modal = p.reader(p.private("modal_amplitudes"), T.ModalAmplitudes, depth=100000)
+    js = p.reader("/joint_states", T.JointState, depth=100000)
+    for e in (clock, modal, js):
+        p.wait_matched(e)
+    seen, joints, out = [], [], {}
+
+    def collect():
+        seen.extend(s for s in modal.take(100000) if s.step > 0)
+        joints.extend(js.take(100000))
+        return max((s.step for s in seen), default=0)
+
+    def send(t_ns):
+        clock.write(T.Clock(clock=T.Time(sec=t_ns // 1_000_000_000, nanosec=t_ns % 1_000_000_000)))
+
+    def clock_until(t_ns, step, timeout=30.0):
+        """Publish t until the node has reached `step` (best effort: repeat)."""
+        deadline = time.time() + timeout
+        while time.time() < deadline:
+            send(t_ns)
+            if collect() >= step:
+                return
+            time.sleep(0.02)
+        raise Timeout(f"the node did not reach step {step} for /clock {t_ns} ns within {timeout} s (at {collect()})")
+
+    def hold(seconds, t_ns=None):
+        """Let `seconds` of wall time pass (re-sending t if given); the newest step then."""
+        deadline = time.time() + seconds
+        while time.time() < deadline:
+            if t_ns is not None:
+                send(t_ns)
+            collect()
+            time.sleep(0.02)
+        return collect()
+
+    # No clock yet: the node, running (not paused), does not step.
+    out["before_clock"] = hold(1.0)
+    out["before_clock_diag_step"] = p.wait_diag(lambda v: "step" in v)[0]["step"]
+    # The first /clock is the origin: diagnostics report its time, no step.
+    deadline = time.time() + 30.0
+    while True:
+        send(t0)
+        try:
+            v, _ = p.wait_diag(lambda v: "ros_time" in v and abs(float(v["ros_time"]) - t0 * 1e-9) < 1e-6, timeout=0.2)
+            break
+        except Timeout:
+            if time.time() > deadline:
+                raise
+    out["origin_diag_step"] = v["step"]
+    out["after_origin"] = collect()
+    # Five steps' worth at once.
+    clock_until(t0 + 5 * ms, 5)
+    # Half a step more: none due.
+    out["after_half_step"] = hold(0.5, t0 + 5 * ms + ms // 2)
+    clock_until(t0 + 10 * ms, 10)
+    # The clock stands still: so does the node.
+    out["after_standstill"] = hold(1.0)
+    # Twenty ticks of one step each, then the last one until it arrives.
+    for k in range(11, 31):
+        send(t0 + k * ms)
+        time.sleep(0.005)
+    clock_until(t0 + 30 * ms, 30)
+    out["step_service"] = todict(p.step(1))
+    # Paused by its service, the node lets the clock's advance pass unstepped ...
+    out["pause"] = todict(p.set_paused(True))
+    out["while_paused"] = hold(0.5, t0 + 50 * ms)
+    out["resume"] = todict(p.set_paused(False))
+    out["after_resume"] = hold(0.3, t0 + 50 * ms)
+    # ... and steps again as the clock advances beyond it.
+    clock_until(t0 + 53 * ms, 33)
+    out["final"] = hold(0.3)
+    out["modal"] = [{"step": s.step, "stamp": s.header.stamp.sec * 1_000_000_000 + s.header.stamp.nanosec, "sim_time": s.sim_time} for s in seen]
+    last = [j for j in joints if j.header.stamp.sec * 1_000_000_000 + j.header.stamp.nanosec == t0 + 53 * ms]
+    out["last_joint_state"] = todict(last[-1]) if last else None
+    return out
+
+
 SCENARIOS = {name[len("scenario_"):]: fn for name, fn in globals().items() if name.startswith("scenario_")}
 
 
