@@ -159,6 +159,17 @@ const STANDARD: &[(&str, &str)] = &[
     ("std_srvs/Trigger_Response", "bool success\nstring message"),
     ("std_srvs/SetBool_Request", "bool data"),
     ("std_srvs/SetBool_Response", "bool success\nstring message"),
+    // simulation_interfaces 1.0/2.0 (Humble to Rolling).
+    ("simulation_interfaces/Result", "uint8 RESULT_FEATURE_UNSUPPORTED=0\nuint8 RESULT_OK=1\nuint8 result\nstring error_message"),
+    ("simulation_interfaces/SimulationState", "uint8 STATE_STOPPED=0\nuint8 state"),
+    ("simulation_interfaces/ResetSimulation_Request", "uint8 SCOPE_DEFAULT=0\nuint8 scope"),
+    ("simulation_interfaces/ResetSimulation_Response", "Result result"),
+    ("simulation_interfaces/StepSimulation_Request", "uint64 steps 1"),
+    ("simulation_interfaces/StepSimulation_Response", "Result result"),
+    ("simulation_interfaces/GetSimulationState_Request", ""),
+    ("simulation_interfaces/GetSimulationState_Response", "SimulationState state\n\nResult result"),
+    ("simulation_interfaces/SetSimulationState_Request", "SimulationState state"),
+    ("simulation_interfaces/SetSimulationState_Response", "uint8 ALREADY_IN_TARGET_STATE=101\nResult result"),
 ];
 
 #[derive(Debug, Clone)]
@@ -352,6 +363,22 @@ fn standard_messages_match_their_ros2_definitions() {
     check::<m::TriggerResponse>(&defs, "std_srvs/Trigger_Response");
     check::<m::SetBoolRequest>(&defs, "std_srvs/SetBool_Request");
     check::<m::SetBoolResponse>(&defs, "std_srvs/SetBool_Response");
+}
+
+#[test]
+fn simulation_interfaces_match_their_ros2_definitions() {
+    use annular_plate::messages::simulation_interfaces as si;
+    let defs = Definitions::load();
+    check::<si::SimResult>(&defs, "simulation_interfaces/Result");
+    check::<si::SimulationState>(&defs, "simulation_interfaces/SimulationState");
+    check::<si::ResetSimulationRequest>(&defs, "simulation_interfaces/ResetSimulation_Request");
+    check::<si::ResetSimulationResponse>(&defs, "simulation_interfaces/ResetSimulation_Response");
+    check::<si::StepSimulationRequest>(&defs, "simulation_interfaces/StepSimulation_Request");
+    check::<si::StepSimulationResponse>(&defs, "simulation_interfaces/StepSimulation_Response");
+    check::<si::GetSimulationStateRequest>(&defs, "simulation_interfaces/GetSimulationState_Request");
+    check::<si::GetSimulationStateResponse>(&defs, "simulation_interfaces/GetSimulationState_Response");
+    check::<si::SetSimulationStateRequest>(&defs, "simulation_interfaces/SetSimulationState_Request");
+    check::<si::SetSimulationStateResponse>(&defs, "simulation_interfaces/SetSimulationState_Response");
 }
 
 #[test]

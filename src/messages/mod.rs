@@ -16,6 +16,7 @@ pub mod names;
 pub mod outputs;
 pub mod qos;
 pub mod settings;
+pub mod simulation_interfaces;
 pub mod topics;
 pub mod types;
 pub mod visualization;

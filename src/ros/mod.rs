@@ -14,6 +14,7 @@
 //! - [`outputs`]: the per-step messages, preallocated;
 //! - [`clock`]: stamps, `/clock`, pacing; [`clock_input`]: following an external `/clock` (`use_sim_time`);
 //! - [`services`], [`params_service`]: reset/pause/step and the parameter services;
+//!   [`sim_services`]: the same through the standard `simulation_interfaces` services;
 //! - [`diagnostics`]: the `/diagnostics` statuses (shared with `simulate --bag`);
 //! - [`sim_loop`]: the fixed-rate simulation thread;
 //! - [`marker_thread`]: `~/plate_marker`, built and published off the loop;
@@ -33,6 +34,7 @@ pub mod node;
 pub mod params_service;
 pub mod services;
 pub mod sim_loop;
+pub mod sim_services;
 
 pub use crate::messages::RosType;
 pub use error::NodeError;

@@ -310,6 +310,14 @@ fn start_services(node: &mut Node, setup: &NodeSetup, tx: &SyncSender<Command>) 
     let service_names = [names.resolve(services::RESET)?, names.resolve(services::SET_PAUSED)?, names.resolve(services::STEP)?];
     let mut tasks =
         services::spawn(node, settings.service_mapping, [&service_names[0], &service_names[1], &service_names[2]], tx.clone())?;
+    use super::sim_services as si;
+    let si_names = [
+        names.resolve(si::RESET_SIMULATION)?,
+        names.resolve(si::STEP_SIMULATION)?,
+        names.resolve(si::GET_SIMULATION_STATE)?,
+        names.resolve(si::SET_SIMULATION_STATE)?,
+    ];
+    tasks.extend(si::spawn(node, settings.service_mapping, [&si_names[0], &si_names[1], &si_names[2], &si_names[3]], tx.clone())?);
     let store = Arc::new(Mutex::new(ParamStore::new(effective_parameters(&setup.params, settings))));
     tasks.extend(super::params_service::spawn(node, settings.service_mapping, &names.fully_qualified_node_name(), store, tx.clone())?);
     Ok(tasks)

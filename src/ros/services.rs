@@ -27,6 +27,16 @@ pub enum RuntimeChange {
     WrenchTimeout(f64),
 }
 
+/// The loop's state, as a status query sees it.
+#[derive(Debug, Clone, PartialEq)]
+pub struct LoopStatus {
+    pub paused: bool,
+    /// Why the simulation diverged, if it did (it then takes no step until a reset).
+    pub diverged: Option<String>,
+    pub step: u64,
+    pub sim_time: f64,
+}
+
 /// Everything the simulation loop is told, in arrival order.
 #[derive(Debug)]
 pub enum Command {
@@ -38,6 +48,8 @@ pub enum Command {
     Runtime(RuntimeChange),
     /// A `/clock` message (ns), `use_sim_time: true` only (`clock_input.rs`).
     Clock(i64),
+    /// Report the loop's state (`sim_services.rs`, GetSimulationState).
+    Status(oneshot::Sender<LoopStatus>),
     Stop,
 }
 
@@ -87,7 +99,7 @@ where
         .map_err(|e| super::error::NodeError::dds(format!("cannot create the service {resolved_name}"), e))
 }
 
-fn busy<T>(e: TrySendError<T>) -> String {
+pub(crate) fn busy<T>(e: TrySendError<T>) -> String {
     match e {
         TrySendError::Full(_) => "the simulation is busy (command queue full); try again".to_string(),
         TrySendError::Disconnected(_) => "the simulation has stopped".to_string(),

@@ -20,7 +20,7 @@ use crate::messages::types::{
 };
 use crate::messages::outputs::{clock_message, OutputMessages, Shared};
 use super::params_service::RuntimeChange;
-use super::services::Command;
+use super::services::{Command, LoopStatus};
 use super::marker_thread::MarkerFeed;
 use crate::bag::recorder::{Recorder, Sample};
 use crate::dynamics::{Checked, Command as SimCommand, NodeKind, Simulation, Wrench};
@@ -318,6 +318,14 @@ impl SimLoop {
                 self.logger.info(&format!("ros.wrench_timeout set to {t} s"));
             }
             Command::Clock(t_ns) => self.follow_clock(t_ns),
+            Command::Status(reply) => {
+                let _ = reply.send(LoopStatus {
+                    paused: self.paused,
+                    diverged: self.diverged.clone(),
+                    step: self.sim.step_count(),
+                    sim_time: self.sim.time(),
+                });
+            }
             Command::Stop => self.stop = true,
         }
     }

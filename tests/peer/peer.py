@@ -723,6 +723,58 @@ def scenario_follow_clock(p, a):
     return out
 
 
+def scenario_simulation_interfaces(p, a):
+    """The simulation_interfaces services as a Gazebo tool calls them: state
+    query, step N (with a wrench applied), pause/resume, reset, stop."""
+    def get_state():
+        return todict(p.call("get_simulation_state", T.GetSimulationStateRequest, T.GetSimulationStateResponse, T.GetSimulationStateRequest()))
+
+    def set_state(s):
+        req = T.SetSimulationStateRequest(state=T.SimulationState(state=s))
+        return todict(p.call("set_simulation_state", T.SetSimulationStateRequest, T.SetSimulationStateResponse, req))
+
+    def step(n):
+        req = T.StepSimulationRequest(steps=n)
+        return todict(p.call("step_simulation", T.StepSimulationRequest, T.StepSimulationResponse, req, timeout=60.0))
+
+    def reset(scope):
+        req = T.ResetSimulationRequest(scope=scope)
+        return todict(p.call("reset_simulation", T.ResetSimulationRequest, T.ResetSimulationResponse, req))
+
+    out = {}
+    modal = p.reader(p.private("modal_amplitudes"), T.ModalAmplitudes, depth=10000)
+    p.wait_matched(modal)
+    out["initial"] = get_state()
+    w = p.writer(p.private(f"ale_{a['node']}/wrench"), T.WrenchStamped)
+    p.wait_matched(w)
+    f = a["wrench"]
+    w.write(T.WrenchStamped(header=T.Header(), wrench=T.Wrench(force=T.Vector3(*f[:3]), torque=T.Vector3(*f[3:]))))
+    p.wait_diag(lambda v: int(v.get("accepted_node_wrench", 0)) >= 1)
+    out["step"] = step(a["steps"])
+    out["modal"] = todict(p.wait_for(modal, lambda s: s.step == a["steps"]))
+    out["after_step"] = get_state()
+    out["play"] = set_state(1)
+    out["playing"] = get_state()
+    out["step_while_playing"] = step(3)
+    out["play_again"] = set_state(1)
+    out["pause"] = set_state(2)
+    out["paused"] = get_state()
+    time.sleep(0.3)
+    out["still_paused"] = get_state()
+    out["pause_again"] = set_state(2)
+    out["reset_time_only"] = reset(1)
+    out["reset"] = reset(0)
+    out["after_reset"] = get_state()
+    out["step_after_reset"] = step(5)
+    out["after_reset_step"] = get_state()
+    out["play_before_stop"] = set_state(1)
+    out["stop"] = set_state(0)
+    out["stopped"] = get_state()
+    out["quit"] = set_state(3)
+    out["bad_state"] = set_state(9)
+    return out
+
+
 SCENARIOS = {name[len("scenario_"):]: fn for name, fn in globals().items() if name.startswith("scenario_")}
 
 

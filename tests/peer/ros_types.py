@@ -468,3 +468,57 @@ PARAMETER_INTEGER = 2
 PARAMETER_DOUBLE = 3
 PARAMETER_STRING = 4
 PARAMETER_DOUBLE_ARRAY = 8
+
+
+# ---- simulation_interfaces (1.0/2.0, Humble to Rolling) ---------------------
+
+@dataclass
+class SimResult(IdlStruct, typename="simulation_interfaces::msg::dds_::Result_"):
+    result: uint8 = 0
+    error_message: str = ""
+
+
+@dataclass
+class SimulationState(IdlStruct, typename="simulation_interfaces::msg::dds_::SimulationState_"):
+    state: uint8 = 0
+
+
+@dataclass
+class ResetSimulationRequest(IdlStruct, typename="simulation_interfaces::srv::dds_::ResetSimulation_Request_"):
+    scope: uint8 = 0
+
+
+@dataclass
+class ResetSimulationResponse(IdlStruct, typename="simulation_interfaces::srv::dds_::ResetSimulation_Response_"):
+    result: SimResult = field(default_factory=SimResult)
+
+
+@dataclass
+class StepSimulationRequest(IdlStruct, typename="simulation_interfaces::srv::dds_::StepSimulation_Request_"):
+    steps: uint64 = 1
+
+
+@dataclass
+class StepSimulationResponse(IdlStruct, typename="simulation_interfaces::srv::dds_::StepSimulation_Response_"):
+    result: SimResult = field(default_factory=SimResult)
+
+
+@dataclass
+class GetSimulationStateRequest(IdlStruct, typename="simulation_interfaces::srv::dds_::GetSimulationState_Request_"):
+    structure_needs_at_least_one_member: uint8 = 0
+
+
+@dataclass
+class GetSimulationStateResponse(IdlStruct, typename="simulation_interfaces::srv::dds_::GetSimulationState_Response_"):
+    state: SimulationState = field(default_factory=SimulationState)
+    result: SimResult = field(default_factory=SimResult)
+
+
+@dataclass
+class SetSimulationStateRequest(IdlStruct, typename="simulation_interfaces::srv::dds_::SetSimulationState_Request_"):
+    state: SimulationState = field(default_factory=SimulationState)
+
+
+@dataclass
+class SetSimulationStateResponse(IdlStruct, typename="simulation_interfaces::srv::dds_::SetSimulationState_Response_"):
+    result: SimResult = field(default_factory=SimResult)

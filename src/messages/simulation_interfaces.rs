@@ -1,0 +1,123 @@
+//! The ROS 2 standard simulator-control interfaces the node serves
+//! (package `simulation_interfaces`, 1.0/2.0 as released for Humble, Jazzy,
+//! Kilted and Rolling): plain serde structs in `.msg` / `.srv` field order
+//! like those in [`types`](super::types), so tools written for Gazebo
+//! (`/gzserver/step_simulation`, …) drive the plate too.
+//! `tests/ros_messages_match_msg_files.rs` checks them against the upstream
+//! definitions; docs/ros.md ("Services") says what each call does here.
+
+use ros2_client::Message;
+use serde::{Deserialize, Serialize};
+
+/// simulation_interfaces/msg/Result: a result code and a message (named
+/// `SimResult` in Rust, beside `std::result::Result`; `Result` to serde).
+#[derive(Debug, Clone, PartialEq, Eq, Default, Serialize, Deserialize)]
+#[serde(rename = "Result")]
+pub struct SimResult {
+    pub result: u8,
+    pub error_message: String,
+}
+impl Message for SimResult {}
+
+impl SimResult {
+    pub const RESULT_FEATURE_UNSUPPORTED: u8 = 0;
+    pub const RESULT_OK: u8 = 1;
+    pub const RESULT_NOT_FOUND: u8 = 2;
+    pub const RESULT_INCORRECT_STATE: u8 = 3;
+    pub const RESULT_OPERATION_FAILED: u8 = 4;
+
+    pub fn ok(message: impl Into<String>) -> Self {
+        SimResult { result: Self::RESULT_OK, error_message: message.into() }
+    }
+
+    pub fn code(result: u8, message: impl Into<String>) -> Self {
+        SimResult { result, error_message: message.into() }
+    }
+}
+
+/// simulation_interfaces/msg/SimulationState.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
+pub struct SimulationState {
+    pub state: u8,
+}
+impl Message for SimulationState {}
+
+impl SimulationState {
+    pub const STATE_STOPPED: u8 = 0;
+    pub const STATE_PLAYING: u8 = 1;
+    pub const STATE_PAUSED: u8 = 2;
+    pub const STATE_QUITTING: u8 = 3;
+}
+
+/// simulation_interfaces/srv/ResetSimulation request.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
+pub struct ResetSimulationRequest {
+    pub scope: u8,
+}
+impl Message for ResetSimulationRequest {}
+
+impl ResetSimulationRequest {
+    pub const SCOPE_DEFAULT: u8 = 0;
+    pub const SCOPE_TIME: u8 = 1;
+    pub const SCOPE_STATE: u8 = 2;
+    pub const SCOPE_SPAWNED: u8 = 4;
+    pub const SCOPE_ALL: u8 = 255;
+}
+
+/// simulation_interfaces/srv/ResetSimulation response.
+#[derive(Debug, Clone, PartialEq, Eq, Default, Serialize, Deserialize)]
+pub struct ResetSimulationResponse {
+    pub result: SimResult,
+}
+impl Message for ResetSimulationResponse {}
+
+/// simulation_interfaces/srv/StepSimulation request.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
+pub struct StepSimulationRequest {
+    pub steps: u64,
+}
+impl Message for StepSimulationRequest {}
+
+/// simulation_interfaces/srv/StepSimulation response.
+#[derive(Debug, Clone, PartialEq, Eq, Default, Serialize, Deserialize)]
+pub struct StepSimulationResponse {
+    pub result: SimResult,
+}
+impl Message for StepSimulationResponse {}
+
+/// simulation_interfaces/srv/GetSimulationState request (empty in the
+/// .srv; ROS 2's IDL gives an empty structure one
+/// `uint8 structure_needs_at_least_one_member`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
+pub struct GetSimulationStateRequest {
+    pub structure_needs_at_least_one_member: u8,
+}
+impl Message for GetSimulationStateRequest {}
+
+/// simulation_interfaces/srv/GetSimulationState response.
+#[derive(Debug, Clone, PartialEq, Eq, Default, Serialize, Deserialize)]
+pub struct GetSimulationStateResponse {
+    pub state: SimulationState,
+    pub result: SimResult,
+}
+impl Message for GetSimulationStateResponse {}
+
+/// simulation_interfaces/srv/SetSimulationState request.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
+pub struct SetSimulationStateRequest {
+    pub state: SimulationState,
+}
+impl Message for SetSimulationStateRequest {}
+
+/// simulation_interfaces/srv/SetSimulationState response.
+#[derive(Debug, Clone, PartialEq, Eq, Default, Serialize, Deserialize)]
+pub struct SetSimulationStateResponse {
+    pub result: SimResult,
+}
+impl Message for SetSimulationStateResponse {}
+
+impl SetSimulationStateResponse {
+    pub const ALREADY_IN_TARGET_STATE: u8 = 101;
+    pub const STATE_TRANSITION_ERROR: u8 = 102;
+    pub const INCORRECT_TRANSITION: u8 = 103;
+}
