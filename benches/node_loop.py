@@ -15,6 +15,21 @@ per millisecond (`--mode batch`) or as 18 geometry_msgs/WrenchStamped per
 millisecond on the 18 per-node topics (`--mode topics`), and idle (`--mode idle`);
 with `--marker-rate HZ` the node also publishes ~/plate_marker at that rate
 (0 = off, the default here) and the peer subscribes to it as RViz would.
+`--wrench-topics N` sends on the first N of the 18 per-node topics only.
+
+`--compare` runs, in one invocation and alternating, the node and the Cyclone
+DDS C floor for the same sample traffic in the four cases — idle, 3 wrench
+topics, 18 wrench topics, the batch topic — `--repeat` times each, and prints
+the node's CPU, the floor's and their ratio with ranges. The floor is
+`ddsperf` (Debian package cyclonedds-tools; installed with apt-get when
+missing): one ddsperf process in the node's role publishes 1000 samples/s of
+600 bytes (the size of the ModalAmplitudes the peer subscribes to) to a
+second ddsperf and subscribes to what that one publishes: nothing (idle),
+1000 Hz bursts of 3 or 18 samples of 80 bytes (WrenchStamped), or 1000
+samples/s of 1100 bytes (the NodeWrenchArray of 18); the CPU of the first
+process over the same window is the floor:
+
+    target/peer-venv/bin/python benches/node_loop.py --compare --seconds 10 --repeat 3
 
 Run as root from the repository root after `cargo build --release` and one
 `cargo test --release` (which creates target/peer-venv):
@@ -106,7 +121,7 @@ def in_netns_main(args):
             writers = [DataWriter(dp, Topic(dp, "rt/annular_plate/wrenches", T.NodeWrenchArray), qos=q)]
         elif args.mode == "topics":
             writers = [DataWriter(dp, Topic(dp, f"rt/annular_plate/ale_{j}/wrench", T.WrenchStamped), qos=q)
-                       for j in range(1, N_ALE + 1)]
+                       for j in range(1, args.wrench_topics + 1)]
         deadline = time.time() + 20
         time.sleep(0.5)
         if node.poll() is not None:
@@ -212,7 +227,9 @@ def in_netns_main(args):
         def pct(p):
             return lat[min(len(lat) - 1, int(round(p * (len(lat) - 1))))] if lat else float("nan")
 
-        print(f"mode {args.mode}: {N_ALE} ALE wrenches, {sent / (stat1[1] - stat0[1]):.0f} updates/s sent over {stat1[1] - stat0[1]:.1f} s")
+        n_in = {"batch": N_ALE, "topics": args.wrench_topics, "idle": 0}[args.mode]
+        print(f"mode {args.mode}: {n_in} of {N_ALE} ALE wrenches, {sent / (stat1[1] - stat0[1]):.0f} updates/s sent over {stat1[1] - stat0[1]:.1f} s")
+        print(f"RESULT node_cpu {cpu:.3f}")
         print(f"  node CPU: {cpu:.1f} % of one core (~/plate_marker at {args.marker_rate} Hz, {markers_in_window / (stat1[1] - stat0[1]):.1f}/s received)")
         span = stat1[1] - stat0[1]
         per_thread = {n: (threads1[n] - threads0.get(n, 0)) / hz / span * 100.0 for n in threads1}
@@ -254,24 +271,124 @@ def cpu_ticks(pid):
     return int(fields[11]) + int(fields[12])  # utime + stime
 
 
+# The floor's traffic per case: (samples per burst at 1 kHz, bytes per sample) the
+# node receives; it publishes 1000 samples/s of FLOOR_OUT_BYTES in every case.
+FLOOR_OUT_BYTES = 600
+FLOOR_CASES = {
+    "idle": None,
+    "topics3": (3, 80),
+    "topics18": (18, 80),
+    "batch": (1, 1100),
+}
+# The node's run for each case.
+NODE_CASES = {
+    "idle": ["--mode", "idle"],
+    "topics3": ["--mode", "topics", "--wrench-topics", "3"],
+    "topics18": ["--mode", "topics", "--wrench-topics", "18"],
+    "batch": ["--mode", "batch"],
+}
+
+
+def floor_main(args):
+    """Runs inside the network namespace: the ddsperf pair of one case."""
+    env = dict(os.environ, CYCLONEDDS_URI="file://" + os.path.join(REPO, "tests", "peer", "cyclonedds.xml"))
+    run_for = args.warmup + args.seconds + 2
+    base = ["ddsperf", "-i", "43", "-D", f"{run_for:.0f}", "-T", "KS"]
+    node_role = subprocess.Popen(base + ["pub", "1000Hz", "size", str(FLOOR_OUT_BYTES), "sub"],
+                                 env=env, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    case = FLOOR_CASES[args.floor]
+    peer_modes = ["sub"] if case is None else ["pub", "1000Hz", "burst", str(case[0]), "size", str(case[1]), "sub"]
+    peer = subprocess.Popen(base + peer_modes, env=env, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    try:
+        time.sleep(args.warmup)
+        c0, t0 = cpu_ticks(node_role.pid), time.time()
+        time.sleep(args.seconds)
+        c1, t1 = cpu_ticks(node_role.pid), time.time()
+        cpu = (c1 - c0) / os.sysconf("SC_CLK_TCK") / (t1 - t0) * 100.0
+        print(f"RESULT floor_cpu {cpu:.3f}")
+    finally:
+        for p in (node_role, peer):
+            p.send_signal(2)
+        for p in (node_role, peer):
+            try:
+                p.wait(timeout=5)
+            except subprocess.TimeoutExpired:
+                p.kill()
+
+
+def ensure_ddsperf():
+    if subprocess.call(["sh", "-c", "command -v ddsperf >/dev/null"]) == 0:
+        return
+    print("ddsperf missing: apt-get install -y cyclonedds-tools", flush=True)
+    if subprocess.call(["apt-get", "install", "-y", "-q", "cyclonedds-tools"], stdout=subprocess.DEVNULL) != 0:
+        subprocess.check_call(["apt-get", "update", "-q"], stdout=subprocess.DEVNULL)
+        subprocess.check_call(["apt-get", "install", "-y", "-q", "cyclonedds-tools"], stdout=subprocess.DEVNULL)
+
+
+def netns_run(args, extra):
+    """This script inside a private network namespace; its RESULT value and output."""
+    cmd = ["unshare", "-n", "--", "sh", "-c",
+           'ip link set lo up && exec "$0" "$@"', sys.executable, os.path.abspath(__file__), "--in-netns",
+           "--seconds", str(args.seconds), "--warmup", str(args.warmup), "--node", args.node,
+           "--marker-rate", str(args.marker_rate)] + extra
+    out = subprocess.run(cmd, stdout=subprocess.PIPE, text=True).stdout
+    value = next((float(l.split()[2]) for l in out.splitlines() if l.startswith("RESULT")), float("nan"))
+    return value, "\n".join(l for l in out.splitlines() if not l.startswith("RESULT"))
+
+
+def compare(args):
+    ensure_ddsperf()
+    results = {case: ([], []) for case in NODE_CASES}
+    for r in range(args.repeat):
+        for case in NODE_CASES:
+            node, text = netns_run(args, NODE_CASES[case])
+            floor, _ = netns_run(args, ["--floor", case])
+            results[case][0].append(node)
+            results[case][1].append(floor)
+            print(f"[run {r + 1}/{args.repeat}] {case}: node {node:.1f} %, floor {floor:.1f} %, ratio {node / floor:.2f}")
+            if args.verbose:
+                print(text)
+            sys.stdout.flush()
+    rng = lambda xs: f"{min(xs):.1f}–{max(xs):.1f}"
+    print("\n| case | node CPU % | ddsperf floor % | node / floor |")
+    print("|---|---|---|---|")
+    for case, (node, floor) in results.items():
+        ratios = [n / f for n, f in zip(node, floor)]
+        print(f"| {case} | {rng(node)} | {rng(floor)} | {min(ratios):.1f}–{max(ratios):.1f} |")
+    t18, batch = results["topics18"][0], results["batch"][0]
+    print(f"\n18 topics / batch (node CPU, run by run): " + ", ".join(f"{a / b:.2f}" for a, b in zip(t18, batch)))
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--mode", choices=["batch", "topics", "idle"], default="batch")
+    ap.add_argument("--wrench-topics", type=int, default=N_ALE, help="with --mode topics: send on the first N per-node topics")
     ap.add_argument("--seconds", type=float, default=10.0)
     ap.add_argument("--warmup", type=float, default=2.0)
     ap.add_argument("--marker-rate", type=float, default=0.0)
     ap.add_argument("--node", default=os.path.join(REPO, "target", "release", "annular_plate"))
+    ap.add_argument("--compare", action="store_true", help="node against the ddsperf floor in the four cases")
+    ap.add_argument("--repeat", type=int, default=3, help="with --compare: runs per case")
+    ap.add_argument("--verbose", action="store_true", help="with --compare: the node runs' full output")
+    ap.add_argument("--floor", choices=list(FLOOR_CASES), help=argparse.SUPPRESS)
     ap.add_argument("--in-netns", action="store_true", help=argparse.SUPPRESS)
     args = ap.parse_args()
     if args.in_netns:
-        in_netns_main(args)
+        if args.floor:
+            floor_main(args)
+        else:
+            in_netns_main(args)
         return
-    cmd = ["unshare", "-n", "--", "sh", "-c",
-           'ip link set lo up && exec "$0" "$@"', sys.executable, os.path.abspath(__file__), "--in-netns",
-           "--mode", args.mode, "--marker-rate", str(args.marker_rate), "--seconds", str(args.seconds), "--warmup", str(args.warmup), "--node", args.node]
     with open("/proc/cpuinfo") as f:
         model = next((l.split(":", 1)[1].strip() for l in f if l.startswith("model name")), "?")
     print(f"machine: nproc {os.cpu_count()}, {model}")
+    if args.compare:
+        compare(args)
+        return
+    cmd = ["unshare", "-n", "--", "sh", "-c",
+           'ip link set lo up && exec "$0" "$@"', sys.executable, os.path.abspath(__file__), "--in-netns",
+           "--mode", args.mode, "--wrench-topics", str(args.wrench_topics), "--marker-rate", str(args.marker_rate),
+           "--seconds", str(args.seconds), "--warmup", str(args.warmup), "--node", args.node]
     sys.exit(subprocess.call(cmd))
 
 

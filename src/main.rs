@@ -168,8 +168,8 @@ fn run() -> anyhow::Result<()> {
             let started = std::time::Instant::now();
             let mut out: Option<Box<dyn Write>> = match &csv {
                 None => None,
-                Some(p) if p.as_os_str() == "-" => Some(Box::new(BufWriter::new(std::io::stdout().lock()))),
-                Some(p) => Some(Box::new(BufWriter::new(
+                Some(p) if p.as_os_str() == "-" => Some(Box::new(BufWriter::with_capacity(1 << 18, std::io::stdout().lock()))),
+                Some(p) => Some(Box::new(BufWriter::with_capacity(1 << 18,
                     std::fs::File::create(p).with_context(|| format!("cannot create {}", p.display()))?,
                 ))),
             };

@@ -1,6 +1,7 @@
 //! Command-line front ends: `modes` and `simulate` (the node is `ros::run_node`).
 
 pub mod error;
+pub mod float_text;
 pub mod modes;
 pub mod plot;
 pub mod record;

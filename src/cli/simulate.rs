@@ -10,6 +10,7 @@
 
 use std::sync::atomic::{AtomicBool, Ordering};
 use super::error::CliResult;
+use super::float_text::{push_display, push_exp};
 use crate::dynamics::Simulation;
 use std::io::Write;
 
@@ -34,33 +35,67 @@ pub fn header(sim: &Simulation) -> String {
     cols.join(",")
 }
 
-/// One CSV row of the current state (shortest round-trip formatting).
-pub fn write_row(sim: &Simulation, line: &mut String) {
-    use std::fmt::Write as _;
-    line.clear();
-    let j = sim.joint();
-    let _ = write!(line, "{},{},{}", sim.time(), j.position, j.velocity);
-    for v in sim.q_lagrange().iter().chain(sim.q_ale()) {
-        let _ = write!(line, ",{v:e}");
+/// Formats CSV rows into one reused buffer: shortest round-trip floats
+/// (`{}` for time and joint, `{:e}` for the rest, src/cli/float_text.rs), no
+/// allocation per row.
+pub struct RowWriter {
+    line: Vec<u8>,
+    ryu: ryu::Buffer,
+}
+
+impl Default for RowWriter {
+    fn default() -> RowWriter {
+        RowWriter { line: Vec::with_capacity(4096), ryu: ryu::Buffer::new() }
     }
-    for i in 0..sim.n_ale_nodes() {
-        let _ = write!(line, ",{:e}", sim.ale_node(i).uz);
+}
+
+impl RowWriter {
+    fn display(&mut self, v: f64) {
+        push_display(&mut self.line, v, &mut self.ryu);
     }
-    for i in 0..sim.n_lagrange_nodes() {
-        let _ = write!(line, ",{:e}", sim.lagrange_node(i).uz);
+
+    fn exp(&mut self, v: f64) {
+        self.line.push(b',');
+        push_exp(&mut self.line, v, &mut self.ryu);
     }
-    if !sim.scene().load_models.is_empty() {
-        let _ = write!(line, ",{:e}", sim.joint().effort);
-    }
-    for p in 0..sim.pad_count() {
-        let o = sim.pad_output(p);
-        let _ = write!(line, ",{:e},{:e},{:e}", o.clamp_force, o.normal_force, o.friction_torque);
-    }
-    if let Some(t) = sim.tool_output() {
-        let _ = write!(line, ",{:e},{:e},{:e}", t.tip, t.chip, t.feed_force);
-    }
-    for j in 0..sim.link_count() {
-        let _ = write!(line, ",{:e}", sim.link_force(j));
+
+    /// The row of the current state, newline included.
+    pub fn row(&mut self, sim: &Simulation) -> &[u8] {
+        self.line.clear();
+        let j = sim.joint();
+        self.display(sim.time());
+        self.line.push(b',');
+        self.display(j.position);
+        self.line.push(b',');
+        self.display(j.velocity);
+        for &v in sim.q_lagrange().iter().chain(sim.q_ale()) {
+            self.exp(v);
+        }
+        for i in 0..sim.n_ale_nodes() {
+            self.exp(sim.ale_node(i).uz);
+        }
+        for i in 0..sim.n_lagrange_nodes() {
+            self.exp(sim.lagrange_node(i).uz);
+        }
+        if !sim.scene().load_models.is_empty() {
+            self.exp(j.effort);
+        }
+        for p in 0..sim.pad_count() {
+            let o = sim.pad_output(p);
+            for v in [o.clamp_force, o.normal_force, o.friction_torque] {
+                self.exp(v);
+            }
+        }
+        if let Some(t) = sim.tool_output() {
+            for v in [t.tip, t.chip, t.feed_force] {
+                self.exp(v);
+            }
+        }
+        for j in 0..sim.link_count() {
+            self.exp(sim.link_force(j));
+        }
+        self.line.push(b'\n');
+        &self.line
     }
 }
 
@@ -85,11 +120,10 @@ pub fn run_with<W: Write + ?Sized>(
     stop: &AtomicBool,
 ) -> CliResult<u64> {
     let steps = (duration / sim.dt()).round() as u64;
-    let mut line = String::with_capacity(4096);
+    let mut rows = RowWriter::default();
     if let Some(out) = out.as_mut() {
         writeln!(out, "{}", header(sim))?;
-        write_row(sim, &mut line);
-        writeln!(out, "{line}")?;
+        out.write_all(rows.row(sim))?;
     }
     each(sim)?;
     let report_every = (steps / 200).max(1);
@@ -104,8 +138,7 @@ pub fn run_with<W: Write + ?Sized>(
             continue;
         }
         if let Some(out) = out.as_mut() {
-            write_row(sim, &mut line);
-            writeln!(out, "{line}")?;
+            out.write_all(rows.row(sim))?;
         }
         each(sim)?;
         if s % report_every == 0 {

@@ -1,0 +1,263 @@
+//! Shortest round-trip float text for the CSV, byte for byte what Rust's
+//! `{:e}` (LowerExp) and `{}` (Display) print, at Ryū's speed.
+//!
+//! Both Rust's formatter (Grisu with a Dragon fallback) and Ryū give the
+//! shortest digit string that reads back to the same `f64`, the one closest to
+//! the exact value; they differ in layout, and when the exact value lies
+//! midway between two shortest candidates (Ryū rounds the tie to even, Rust
+//! up). [`push_exp`] and [`push_display`] take Ryū's digits and decimal
+//! exponent and lay them out as Rust does, and leave the values that can be
+//! such a tie (an exact expansion of at most 18 significant digits — never a
+//! simulation's amplitudes) to Rust's formatter, so `simulate` writes the
+//! same bytes as before
+//! (tests/outputs_match_recorded_before_refactor.rs), and the unit tests below
+//! compare against `format!` on millions of bit patterns.
+
+/// The shortest decimal of a finite, nonzero |v|: digits d1 d2 … dn (no
+/// leading or trailing zero) and E with |v| = d1.d2…dn × 10^E.
+struct Decimal {
+    digits: [u8; 24],
+    n: usize,
+    exp: i32,
+}
+
+/// Ryū's text of a finite, nonzero |v| in its decimal notation (`123.45`,
+/// `1000.0`, `0.00123`: what Ryū prints for 1e-5 ≤ |v| < 1e16) read back into
+/// digits and exponent.
+fn from_decimal_notation(text: &[u8]) -> Decimal {
+    let mut d = Decimal { digits: [0; 24], n: 0, exp: 0 };
+    let point = text.iter().position(|&c| c == b'.').unwrap_or(text.len());
+    let (int, frac) = (&text[..point], text.get(point + 1..).unwrap_or(&[]));
+    if int == b"0" {
+        let zeros = frac.iter().take_while(|&&c| c == b'0').count();
+        let digits = &frac[zeros..];
+        d.digits[..digits.len()].copy_from_slice(digits);
+        d.n = digits.len();
+        d.exp = -(zeros as i32) - 1;
+    } else {
+        d.digits[..int.len()].copy_from_slice(int);
+        d.digits[int.len()..int.len() + frac.len()].copy_from_slice(frac);
+        d.n = int.len() + frac.len();
+        d.exp = int.len() as i32 - 1;
+    }
+    while d.n > 1 && d.digits[d.n - 1] == b'0' {
+        d.n -= 1;
+    }
+    d
+}
+
+/// Ryū's text in scientific notation (`1.5e-7`, `1e21`), read back.
+fn from_scientific(text: &[u8], e: usize) -> Decimal {
+    let mut d = from_decimal_notation(&text[..e]);
+    let (negative, digits) = match text[e + 1] {
+        b'-' => (true, &text[e + 2..]),
+        _ => (false, &text[e + 1..]),
+    };
+    let magnitude = digits.iter().fold(0i32, |acc, &c| acc * 10 + (c - b'0') as i32);
+    d.exp += if negative { -magnitude } else { magnitude };
+    d
+}
+
+/// Whether the finite, nonzero `abs` could lie midway between two shortest
+/// decimals: its exact value m·2^e has at most 18 significant digits
+/// (m' · 5^-e' < 10^18 with m' odd, e' < 0), or it is an integer beyond 2^53.
+fn may_tie(abs: f64) -> bool {
+    let bits = abs.to_bits();
+    let (biased, fraction) = ((bits >> 52) as i32, bits & ((1 << 52) - 1));
+    let (m, e) = if biased == 0 { (fraction, -1074) } else { (fraction | (1 << 52), biased - 1075) };
+    let t = m.trailing_zeros() as i32;
+    let (m, e) = (m >> t, e + t);
+    if e >= 0 {
+        return abs >= 9_007_199_254_740_992.0;
+    }
+    -e <= 26 && (m as u128) * 5u128.pow(-e as u32) < 1_000_000_000_000_000_000
+}
+
+/// The shortest decimal of a finite |v|; `None` for zero.
+fn decimal(abs: f64, ryu: &mut ryu::Buffer) -> Option<Decimal> {
+    if abs == 0.0 {
+        return None;
+    }
+    let text = ryu.format_finite(abs).as_bytes();
+    Some(match text.iter().position(|&c| c == b'e') {
+        Some(e) => from_scientific(text, e),
+        None => from_decimal_notation(text),
+    })
+}
+
+fn push_int(out: &mut Vec<u8>, v: i32) {
+    let mut buf = [0u8; 12];
+    let mut n = v.unsigned_abs();
+    let mut at = buf.len();
+    loop {
+        at -= 1;
+        buf[at] = b'0' + (n % 10) as u8;
+        n /= 10;
+        if n == 0 {
+            break;
+        }
+    }
+    if v < 0 {
+        out.push(b'-');
+    }
+    out.extend_from_slice(&buf[at..]);
+}
+
+/// Non-finite values as Rust prints them (`NaN`, `inf`, `-inf`); `false` for finite ones.
+fn push_non_finite(out: &mut Vec<u8>, v: f64) -> bool {
+    if v.is_nan() {
+        out.extend_from_slice(b"NaN");
+    } else if v.is_infinite() {
+        out.extend_from_slice(if v < 0.0 { b"-inf" } else { b"inf" });
+    } else {
+        return false;
+    }
+    true
+}
+
+/// Append `v` as `format!("{v:e}")` would: `0e0`, `-1e0`, `1.5e-7`, `1.2345e2`.
+pub fn push_exp(out: &mut Vec<u8>, v: f64, ryu: &mut ryu::Buffer) {
+    if push_non_finite(out, v) {
+        return;
+    }
+    if v.is_sign_negative() {
+        out.push(b'-');
+    }
+    let abs = v.abs();
+    if abs == 0.0 {
+        out.extend_from_slice(b"0e0");
+        return;
+    }
+    if may_tie(abs) {
+        use std::io::Write as _;
+        let _ = write!(out, "{abs:e}");
+        return;
+    }
+    let text = ryu.format_finite(abs).as_bytes();
+    // Ryū's scientific notation is already Rust's: digits without trailing
+    // zeros, lowercase `e`, an unpadded exponent without `+`.
+    if text.contains(&b'e') {
+        out.extend_from_slice(text);
+        return;
+    }
+    let d = from_decimal_notation(text);
+    out.push(d.digits[0]);
+    if d.n > 1 {
+        out.push(b'.');
+        out.extend_from_slice(&d.digits[1..d.n]);
+    }
+    out.push(b'e');
+    push_int(out, d.exp);
+}
+
+/// Append `v` as `format!("{v}")` would: no exponent, no trailing `.0`
+/// (`0`, `-0`, `11.11111111111111`, `0.0001`, `1000000000000000000000`).
+pub fn push_display(out: &mut Vec<u8>, v: f64, ryu: &mut ryu::Buffer) {
+    if push_non_finite(out, v) {
+        return;
+    }
+    if v.is_sign_negative() {
+        out.push(b'-');
+    }
+    let abs = v.abs();
+    if abs != 0.0 && may_tie(abs) {
+        use std::io::Write as _;
+        let _ = write!(out, "{abs}");
+        return;
+    }
+    let Some(d) = decimal(abs, ryu) else {
+        out.push(b'0');
+        return;
+    };
+    let digits = &d.digits[..d.n];
+    if d.exp < 0 {
+        out.extend_from_slice(b"0.");
+        out.resize(out.len() + (-d.exp - 1) as usize, b'0');
+        out.extend_from_slice(digits);
+    } else {
+        let int_len = d.exp as usize + 1;
+        if d.n <= int_len {
+            out.extend_from_slice(digits);
+            out.resize(out.len() + int_len - d.n, b'0');
+        } else {
+            out.extend_from_slice(&digits[..int_len]);
+            out.push(b'.');
+            out.extend_from_slice(&digits[int_len..]);
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn check(v: f64, ryu: &mut ryu::Buffer, out: &mut Vec<u8>) {
+        out.clear();
+        push_exp(out, v, ryu);
+        assert_eq!(std::str::from_utf8(out).unwrap(), format!("{v:e}"), "{{:e}} of bits {:#x}", v.to_bits());
+        out.clear();
+        push_display(out, v, ryu);
+        assert_eq!(std::str::from_utf8(out).unwrap(), format!("{v}"), "{{}} of bits {:#x}", v.to_bits());
+    }
+
+    #[test]
+    fn special_values_print_as_rust_does() {
+        let (mut ryu, mut out) = (ryu::Buffer::new(), Vec::new());
+        for v in [
+            0.0,
+            -0.0,
+            1.0,
+            -1.0,
+            10.0,
+            0.1,
+            1e-7,
+            1.5e-7,
+            123.456,
+            1e15,
+            1e16,
+            1e21,
+            1e22,
+            1e-5,
+            1e-6,
+            f64::MAX,
+            f64::MIN_POSITIVE,
+            5e-324,
+            -5e-324,
+            f64::EPSILON,
+            11.11111111111111,
+            f64::NAN,
+            f64::INFINITY,
+            f64::NEG_INFINITY,
+            0.3,
+            2.0f64.powi(60),
+            9007199254740993.0,
+            // Exactly between 1.3948654250235362e15 and …63e15: Ryū rounds to even, Rust up.
+            f64::from_bits(0x4313_d27d_a8ac_08c1),
+        ] {
+            check(v, &mut ryu, &mut out);
+        }
+    }
+
+    /// Random bit patterns over the whole `f64` range and values of the
+    /// magnitudes a simulation writes (1e-12 … 1e4), both signs.
+    #[test]
+    fn random_values_print_as_rust_does() {
+        let (mut ryu, mut out) = (ryu::Buffer::new(), Vec::new());
+        let mut x: u64 = 0x9e37_79b9_7f4a_7c15;
+        for i in 0..400_000u32 {
+            // xorshift64*
+            x ^= x >> 12;
+            x ^= x << 25;
+            x ^= x >> 27;
+            let r = x.wrapping_mul(0x2545_f491_4f6c_dd1d);
+            check(f64::from_bits(r), &mut ryu, &mut out);
+            let scaled = (r >> 11) as f64 / (1u64 << 53) as f64 * 10f64.powi((i % 17) as i32 - 12);
+            check(if i % 2 == 0 { scaled } else { -scaled }, &mut ryu, &mut out);
+            // Short decimals and large integers with fractions (where ties
+            // between two shortest candidates are).
+            check((r % 100_000) as f64 / 1000.0, &mut ryu, &mut out);
+            check((r >> 10) as f64 + 0.25 * (r % 4) as f64, &mut ryu, &mut out);
+            check(f64::from_bits(0x4313_d27d_a8ac_08c1) + (r % 64) as f64, &mut ryu, &mut out);
+        }
+    }
+}
