@@ -6,6 +6,7 @@
 //! flat arrays only), rejects unknown keys and checks every rule; errors name
 //! the key (`plate.inner_radius`) and the rule.
 
+mod centrifugal;
 mod error;
 mod params_file;
 mod raw;
@@ -13,6 +14,7 @@ pub mod table;
 mod text_limits;
 mod validate;
 
+pub use centrifugal::{CentrifugalConfig, InPlaneInner};
 pub use error::{ConfigError, Degeneracy};
 pub use params_file::{ParamValue, Params};
 
@@ -496,6 +498,8 @@ pub struct Config {
     pub springs: Option<SpringsConfig>,
     /// Initial elastic state (`initial.*`).
     pub initial: InitialConfig,
+    /// Centrifugal stiffening (`plate.centrifugal_stiffening`, `plate.in_plane_inner`).
+    pub centrifugal: CentrifugalConfig,
 }
 
 impl Config {
@@ -541,6 +545,7 @@ impl Default for Config {
             links: None,
             springs: None,
             initial: InitialConfig::default(),
+            centrifugal: CentrifugalConfig::default(),
         }
     }
 }

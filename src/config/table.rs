@@ -108,6 +108,8 @@ pub const SECTIONS: &[Section] = &[
             p("plate.nodal_circles", Ty::IntegerArray, "integer array", "—", Value::Integers(&[0, 1]), "[0, 1]", "non-empty, each 0 ≤ l ≤ 50, distinct", "nodal circle numbers l to include"),
             p("plate.damping", Ty::DoubleArray, "double array", "—", Value::Doubles(&[0.0]), "[0.0]", "each in [0, 1); length 1 (all modes) or n (one per mode, in `modes` order)", "modal damping ratios ζ"),
             p("plate.radial_splines", Ty::Integer, "integer", "—", Value::Integer(32), "32", "≤ 400; at least `min_radial_splines` (below)", "cubic B-splines of the radial discretisation, before boundary conditions"),
+            p("plate.centrifugal_stiffening", Ty::Bool, "bool", "—", Value::Bool(false), "false", "—", "the membrane prestress of the spinning annulus (Lamé, ∝ Ω²) stiffens the plate: geometric stiffness in `campbell`, critical speeds (docs/rotor_dynamics.md)"),
+            p("plate.in_plane_inner", Ty::String, "string", "—", Value::Str("auto"), "`auto`", "`auto`, `fixed` or `free`", "in-plane condition at r_i for the prestress: `fixed` u(r_i) = 0 (hub), `free` σ_r(r_i) = 0; `auto`: fixed when `plate.inner_boundary` is clamped or supported, free when free"),
         ],
     },
     Section {

@@ -58,8 +58,9 @@ pub(super) fn config_from_params(params: &Params) -> Result<Config, ConfigError>
     let links = read_links(&r, &nodes, &limits)?;
     let springs = read_springs(&r, &nodes)?;
     let initial = read_initial(&r, &plate, &limits)?;
+    let centrifugal = super::centrifugal::read_centrifugal(&r)?;
 
-    Ok(Config { plate, nodes, loads, joint, reference, gravity, simulation, limits, pads, tool, links, springs, initial })
+    Ok(Config { plate, nodes, loads, joint, reference, gravity, simulation, limits, pads, tool, links, springs, initial, centrifugal })
 }
 
 // ---- unknown keys ------------------------------------------------------------

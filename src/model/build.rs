@@ -25,9 +25,7 @@ pub(super) fn build(plate: &PlateConfig) -> Result<PlateModel, ModelError> {
             min_splines: plate.min_radial_splines(),
         });
     }
-    // Shift: a stiffness scale between the width and the outer radius.
-    let width = plate.outer_radius - plate.inner_radius;
-    let sigma = rigidity / (rho_h * width * width * plate.outer_radius * plate.outer_radius);
+    let sigma = eigen_shift(plate, rigidity);
 
     let mut ks: Vec<u32> = plate.nodal_diameters.clone();
     ks.sort_unstable();
@@ -101,6 +99,13 @@ pub(super) fn build(plate: &PlateConfig) -> Result<PlateModel, ModelError> {
     }
     let body = BodyData::new(plate, &modes, &radial_shapes);
     Ok(PlateModel { plate: plate.clone(), rigidity, modes, radial_shapes, skipped_rigid_body_modes: skipped, body })
+}
+
+/// The shift σ of the eigenproblem (ω² scale): a stiffness scale between
+/// the width and the outer radius.
+pub(super) fn eigen_shift(plate: &PlateConfig, rigidity: f64) -> f64 {
+    let width = plate.outer_radius - plate.inner_radius;
+    rigidity / (plate.density * plate.thickness * width * width * plate.outer_radius * plate.outer_radius)
 }
 
 fn degenerate_hint(plate: &PlateConfig) -> String {

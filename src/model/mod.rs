@@ -14,14 +14,17 @@ pub mod eigen;
 mod error;
 pub mod modes;
 pub mod nodal_lines;
+pub mod prestress;
 pub mod quadrature;
 pub mod radial;
 pub mod shape;
+pub mod spinning;
 
 pub use body::BodyData;
 pub use error::ModelError;
 pub use modes::{AngularShape, Mode, RadialShape};
 pub use shape::ShapeValue;
+pub use spinning::{ModalGeometricStiffness, SpinningSpectrum};
 
 use crate::config::PlateConfig;
 

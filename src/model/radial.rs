@@ -127,21 +127,7 @@ impl RadialDiscretisation {
         for p in &self.points {
             let r = p.r;
             let w = p.weight * r * ck;
-            let mut count = 0;
-            if let Some((rm, width)) = self.rigid_functions {
-                local[0] = (0, [1.0, 0.0, 0.0]);
-                local[1] = (1, [(r - rm) / width, 1.0 / width, 0.0]);
-                count = 2;
-            }
-            for j in 0..4 {
-                let g = p.span + j;
-                if self.rigid_functions.is_some() && g < 2 {
-                    continue;
-                }
-                let Some(pos) = self.slot[g] else { continue };
-                local[count] = (pos, [p.ders[0][j], p.ders[1][j], p.ders[2][j]]);
-                count += 1;
-            }
+            let count = self.local_functions(p, &mut local);
             // Per function: R'' (A), R'/r − k²R/r² (B), R'/r − R/r² (C); laplacian A + B.
             let mut abc = [[0.0; 3]; 6];
             for (f, &(_, [v, d1, d2])) in abc.iter_mut().zip(&local[..count]) {
@@ -160,6 +146,53 @@ impl RadialDiscretisation {
             }
         }
         (kk, mm)
+    }
+
+    /// The free functions non-zero at a quadrature point: (slot, [R, R', R'']).
+    /// Up to six: the span's four B-splines, or for a free–free plate the
+    /// rigid-like pair and the span's others.
+    fn local_functions(&self, p: &QuadPoint, local: &mut [(usize, [f64; 3]); 6]) -> usize {
+        let r = p.r;
+        let mut count = 0;
+        if let Some((rm, width)) = self.rigid_functions {
+            local[0] = (0, [1.0, 0.0, 0.0]);
+            local[1] = (1, [(r - rm) / width, 1.0 / width, 0.0]);
+            count = 2;
+        }
+        for j in 0..4 {
+            let g = p.span + j;
+            if self.rigid_functions.is_some() && g < 2 {
+                continue;
+            }
+            let Some(pos) = self.slot[g] else { continue };
+            local[count] = (pos, [p.ders[0][j], p.ders[1][j], p.ders[2][j]]);
+            count += 1;
+        }
+        count
+    }
+
+    /// Geometric stiffness K̄_g of the in-plane prestress (σ_r, σ_θ) =
+    /// `stresses(r)` for nodal-diameter number k, over the free coefficients:
+    /// U_g = ½ c_k h ∫ (σ_r R'² + σ_θ k² R²/r²) r dr (DESIGN.md "Spinning
+    /// prestress"; docs/rotor_dynamics.md).
+    pub fn assemble_geometric(&self, k: u32, thickness: f64, stresses: impl Fn(f64) -> (f64, f64)) -> Mat<f64> {
+        let n = self.n_free();
+        let mut kg = Mat::<f64>::zeros(n, n);
+        let k2 = (k as f64) * (k as f64);
+        let ck = angular_norm(k);
+        let mut local: [(usize, [f64; 3]); 6] = [(0, [0.0; 3]); 6];
+        for p in &self.points {
+            let r = p.r;
+            let w = p.weight * r * ck * thickness;
+            let (sr, st) = stresses(r);
+            let count = self.local_functions(p, &mut local);
+            for &(gi, [vi, di, _]) in &local[..count] {
+                for &(gj, [vj, dj, _]) in &local[..count] {
+                    kg[(gi, gj)] += w * (sr * di * dj + st * k2 * vi * vj / (r * r));
+                }
+            }
+        }
+        kg
     }
 
     /// Expand free coefficients to B-spline coefficients of all splines (zeros
