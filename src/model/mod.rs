@@ -16,11 +16,13 @@ pub mod modes;
 pub mod nodal_lines;
 pub mod quadrature;
 pub mod radial;
+pub mod residual;
 pub mod shape;
 
 pub use body::BodyData;
 pub use error::ModelError;
 pub use modes::{AngularShape, Mode, RadialShape};
+pub use residual::{ResidualKernel, StaticHarmonics};
 pub use shape::ShapeValue;
 
 use crate::config::PlateConfig;
