@@ -48,6 +48,20 @@ impl BSplineBasis {
         BSplineBasis { a, b, n: n_uniform + extra, knots }
     }
 
+    /// Cubic B-splines on the given strictly increasing breakpoints (first and
+    /// last are the interval ends, each repeated to an open knot vector):
+    /// `breaks.len() + 2` functions. Used by the residual flexibility's static
+    /// solve, whose knots are graded towards the node radii.
+    pub fn with_breakpoints(breaks: &[f64]) -> Self {
+        assert!(breaks.len() >= 2 && breaks.windows(2).all(|w| w[1] > w[0]));
+        let (a, b) = (breaks[0], breaks[breaks.len() - 1]);
+        let mut knots = Vec::with_capacity(breaks.len() + 2 * DEGREE);
+        knots.extend(std::iter::repeat_n(a, DEGREE));
+        knots.extend_from_slice(breaks);
+        knots.extend(std::iter::repeat_n(b, DEGREE));
+        BSplineBasis { a, b, n: breaks.len() + DEGREE - 1, knots }
+    }
+
     /// Greville abscissae ξ*_j = (t_{j+1} + t_{j+2} + t_{j+3})/3: Σ ξ*_j N_j(r) = r.
     pub fn greville(&self) -> Vec<f64> {
         (0..self.n).map(|j| (self.knots[j + 1] + self.knots[j + 2] + self.knots[j + 3]) / 3.0).collect()

@@ -17,12 +17,14 @@ pub mod nodal_lines;
 pub mod prestress;
 pub mod quadrature;
 pub mod radial;
+pub mod residual;
 pub mod shape;
 pub mod spinning;
 
 pub use body::BodyData;
 pub use error::ModelError;
 pub use modes::{AngularShape, Mode, RadialShape};
+pub use residual::{ResidualKernel, StaticHarmonics};
 pub use shape::ShapeValue;
 pub use spinning::{ModalGeometricStiffness, SpinningSpectrum};
 
