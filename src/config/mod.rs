@@ -195,6 +195,40 @@ pub struct NodePosition {
     pub angular: f64,
 }
 
+/// Where through the thickness a node frame sits (`nodes.ale_surface`,
+/// `nodes.lagrange_surface`): a Kirchhoff plate's face point at z moves
+/// in-plane by −z∇w (docs/dynamics.md, "Node frames on a face").
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Surface {
+    /// z = +h/2.
+    Top,
+    /// z = −h/2.
+    Bottom,
+    /// z = 0 (the paper's node frames).
+    #[default]
+    Mid,
+}
+
+impl Surface {
+    pub fn name(self) -> &'static str {
+        match self {
+            Surface::Top => "top",
+            Surface::Bottom => "bottom",
+            Surface::Mid => "mid",
+        }
+    }
+
+    /// z of the surface for a plate of thickness `h`, m.
+    pub fn z(self, thickness: f64) -> f64 {
+        match self {
+            Surface::Top => 0.5 * thickness,
+            Surface::Bottom => -0.5 * thickness,
+            Surface::Mid => 0.0,
+        }
+    }
+}
+
 /// Node frames (`nodes.*`).
 #[derive(Debug, Clone, PartialEq, Default, Serialize)]
 pub struct NodesConfig {
@@ -202,6 +236,21 @@ pub struct NodesConfig {
     pub lagrange: Vec<NodePosition>,
     /// Space-fixed points the plate slides under.
     pub ale: Vec<NodePosition>,
+    /// The surface of each Lagrangian node (empty or shorter: `mid` for the rest).
+    pub lagrange_surface: Vec<Surface>,
+    /// The surface of each ALE node (empty or shorter: `mid` for the rest).
+    pub ale_surface: Vec<Surface>,
+}
+
+impl NodesConfig {
+    /// The surface of Lagrangian node `j` (0-based).
+    pub fn lagrange_surface(&self, j: usize) -> Surface {
+        self.lagrange_surface.get(j).copied().unwrap_or_default()
+    }
+    /// The surface of ALE node `j` (0-based).
+    pub fn ale_surface(&self, j: usize) -> Surface {
+        self.ale_surface.get(j).copied().unwrap_or_default()
+    }
 }
 
 /// A wrench: force (N) and moment (N·m), in the node frame.

@@ -93,6 +93,16 @@ impl<'a> Reader<'a> {
         }
     }
 
+    /// A list of strings (empty when not given).
+    pub(super) fn string_array(&self, key: &str) -> Result<Vec<String>, ConfigError> {
+        match self.get(key) {
+            None => Ok(Vec::new()),
+            Some(ParamValue::StringArray(v)) => Ok(v.clone()),
+            Some(other) if other.array_len() == Some(0) => Ok(Vec::new()),
+            Some(other) => Err(wrong_type(key, "a list of strings (string array)", other)),
+        }
+    }
+
     /// A list of finite doubles (integers accepted); a non-finite element is
     /// reported as `key[index]`.
     pub(super) fn f64_array(&self, key: &str, default: &[f64]) -> Result<Vec<f64>, ConfigError> {

@@ -17,6 +17,7 @@ pub enum Ty {
     String,
     IntegerArray,
     DoubleArray,
+    StringArray,
 }
 
 /// A declared default value (`None`: the key has no value unless given).
@@ -122,6 +123,8 @@ pub const SECTIONS: &[Section] = &[
             p("nodes.lagrange_angular", Ty::DoubleArray, "double array", "—", Value::Doubles(&[]), "[]", "each in [0, 1]; same length as `nodes.lagrange_radial`", "ξ_φ of those points (0..1 for 0..2π)"),
             p("nodes.ale_radial", Ty::DoubleArray, "double array", "—", Value::Doubles(&[]), "[]", "each in [0, 1]; same length as `nodes.ale_angular`", "ξ_r of space-fixed points the plate slides under"),
             p("nodes.ale_angular", Ty::DoubleArray, "double array", "—", Value::Doubles(&[]), "[]", "each in [0, 1]; same length as `nodes.ale_radial`", "ξ_φ of those points"),
+            p("nodes.lagrange_surface", Ty::StringArray, "string array", "—", Value::None, "all `mid`", "each `top`, `bottom` or `mid`; same length as `nodes.lagrange_radial`", "the face each Lagrangian node sits on: z = +h/2, −h/2 or the mid-plane; a wrench there acts through the face kinematics (an in-plane force F at z adds −z F·∇w_i) and its /tf pose is on the face"),
+            p("nodes.ale_surface", Ty::StringArray, "string array", "—", Value::None, "all `mid`", "each `top`, `bottom` or `mid`; same length as `nodes.ale_radial`", "the face each ALE node sits on (as `nodes.lagrange_surface`)"),
         ],
     },
     Section {

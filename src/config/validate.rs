@@ -14,7 +14,7 @@ use std::f64::consts::FRAC_PI_2;
 use super::raw::{positive, Reader};
 use super::{
     Boundary, Caliper, Config, ConfigError, Coordinates, InitialConfig, IntegratorKind, JointConfig, LimitsConfig, LinksConfig,
-    LoadsConfig, NodePosition, NodesConfig, PadContact, PadsConfig, Params, PlateConfig, ReferenceConfig,
+    LoadsConfig, NodePosition, NodesConfig, Surface, PadContact, PadsConfig, Params, PlateConfig, ReferenceConfig,
     SimulationConfig, SpringsConfig, ToolConfig, WrenchConfig, MAX_TOOL_FEED_RATE,
 };
 use super::error::Degeneracy;
@@ -27,6 +27,7 @@ pub(super) fn known_keys() -> Vec<&'static str> {
 const INTEGRATORS: &[&str] = &["exponential", "implicit_midpoint", "rk4"];
 const COORDINATES: &[&str] = &["ale", "lagrangian"];
 const CALIPERS: &[&str] = &["floating", "fixed"];
+const SURFACES: &[&str] = &["top", "bottom", "mid"];
 
 /// Largest nodal-diameter number k accepted.
 const MAX_NODAL_DIAMETER: i64 = 200;
@@ -298,10 +299,35 @@ fn rigid_body_modes_selected(plate: &PlateConfig) -> Vec<(u32, u32)> {
 // ---- nodes and loads ---------------------------------------------------------
 
 fn read_nodes(r: &Reader) -> Result<NodesConfig, ConfigError> {
+    let lagrange = read_node_list(r, "nodes.lagrange_radial", "nodes.lagrange_angular")?;
+    let ale = read_node_list(r, "nodes.ale_radial", "nodes.ale_angular")?;
     Ok(NodesConfig {
-        lagrange: read_node_list(r, "nodes.lagrange_radial", "nodes.lagrange_angular")?,
-        ale: read_node_list(r, "nodes.ale_radial", "nodes.ale_angular")?,
+        lagrange_surface: read_surfaces(r, "nodes.lagrange_surface", "nodes.lagrange_radial", lagrange.len())?,
+        ale_surface: read_surfaces(r, "nodes.ale_surface", "nodes.ale_radial", ale.len())?,
+        lagrange,
+        ale,
     })
+}
+
+/// `top|bottom|mid` per node; not given: all `mid`.
+fn read_surfaces(r: &Reader, key: &str, nodes_key: &str, nodes: usize) -> Result<Vec<Surface>, ConfigError> {
+    let names = r.string_array(key)?;
+    if names.is_empty() {
+        return Ok(vec![Surface::Mid; nodes]);
+    }
+    if names.len() != nodes {
+        return Err(ConfigError::LengthMismatch { key_a: key.to_string(), len_a: names.len(), key_b: nodes_key.to_string(), len_b: nodes });
+    }
+    names
+        .iter()
+        .enumerate()
+        .map(|(index, name)| match name.trim() {
+            "top" => Ok(Surface::Top),
+            "bottom" => Ok(Surface::Bottom),
+            "mid" => Ok(Surface::Mid),
+            _ => Err(ConfigError::UnknownChoice { key: format!("{key}[{index}]"), value: name.clone(), allowed: SURFACES }),
+        })
+        .collect()
 }
 
 fn read_node_list(r: &Reader, radial_key: &str, angular_key: &str) -> Result<Vec<NodePosition>, ConfigError> {

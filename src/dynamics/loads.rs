@@ -12,6 +12,10 @@
 //! (paper 5.3). ALE-node forces are generalized forces on the ALE modes of
 //! eq. (18), constant in frame A; Lagrangian ones act on the modes of (13).
 //! About the axis every wrench gives τ_z = x F_y − y F_x + M_z.
+//!
+//! A frame on a face (z = ±h/2, `nodes.*_surface`) moves in-plane by −z∇w
+//! (Kirchhoff), so its in-plane force F_t does the virtual work −z F_t·∇w_i:
+//! the moment z e_z × F about the mid-plane point, added to M.
 
 use super::commands::Inputs;
 use super::load_models::ModelWrenches;
@@ -44,8 +48,10 @@ fn add_node(node: &NodeFrame, w: &Wrench, q_own: &[f64], follower: bool, out: &m
         let t = node.deflection(q_own).tilt;
         fz += t[0] * f[1] - t[1] * f[0];
     }
+    let face = node.face_moment(&f);
+    let (mx, my) = (w.moment[0] + face[0], w.moment[1] + face[1]);
     for (o, s) in out.iter_mut().zip(&node.shapes) {
-        *o += s.w * fz + s.tilt[0] * w.moment[0] + s.tilt[1] * w.moment[1];
+        *o += s.w * fz + s.tilt[0] * mx + s.tilt[1] * my;
     }
     let p = node.position();
     p[0] * f[1] - p[1] * f[0] + w.moment[2]

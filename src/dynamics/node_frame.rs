@@ -35,6 +35,9 @@ pub struct NodeFrame {
     pub shapes: Vec<NodeShape>,
     /// Per mode ∂w_i/∂φ (for the material velocity under an ALE point).
     pub w_phi: Vec<f64>,
+    /// z of the frame through the thickness: +h/2 (top face), −h/2 (bottom
+    /// face) or 0 (mid-plane), m (`nodes.*_surface`).
+    pub z: f64,
     /// Undeformed position (r cos, r sin) in the parent frame, m.
     xy: [f64; 2],
 }
@@ -46,7 +49,8 @@ pub struct NodeShape {
 }
 
 impl NodeFrame {
-    pub(super) fn new(model: &PlateModel, kind: NodeKind, p: NodePosition) -> NodeFrame {
+    /// The frame at `p` on the surface at `z` (0: the mid-plane).
+    pub(super) fn new(model: &PlateModel, kind: NodeKind, p: NodePosition, z: f64) -> NodeFrame {
         let radius = model.radius_at(p.radial);
         let angle = p.angular * TAU;
         let values: Vec<ShapeValue> = (0..model.n_modes()).map(|i| model.mode_shape(i, radius, angle)).collect();
@@ -56,13 +60,29 @@ impl NodeFrame {
             angle,
             shapes: values.iter().map(|s| NodeShape { w: s.w, tilt: s.tilt(radius, angle) }).collect(),
             w_phi: values.iter().map(|s| s.w_phi).collect(),
+            z,
             xy: [radius * angle.cos(), radius * angle.sin()],
         }
     }
 
-    /// Position in the node's parent frame (undeformed).
+    /// Position of the mid-plane point under the frame in the node's parent frame (undeformed).
     pub fn position(&self) -> [f64; 3] {
         [self.xy[0], self.xy[1], 0.0]
+    }
+
+    /// Position of the frame's point for the deflection `d` there: the
+    /// Kirchhoff face point at z is displaced by w along the axis and by
+    /// −z∇w in-plane, ∇w = (∂w/∂x, ∂w/∂y) = (−θ_y, θ_x).
+    pub fn surface_position(&self, d: &NodeShape) -> [f64; 3] {
+        [self.xy[0] + self.z * d.tilt[1], self.xy[1] - self.z * d.tilt[0], self.z + d.w]
+    }
+
+    /// The moment about the mid-plane point of an in-plane force F at the
+    /// frame's z: z e_z × F = (−z F_y, z F_x, 0). Its virtual work through the
+    /// tilt, θ_x M_x + θ_y M_y = −z F·∇w, is the face kinematics' share.
+    #[inline]
+    pub fn face_moment(&self, force: &[f64; 3]) -> [f64; 2] {
+        [-self.z * force[1], self.z * force[0]]
     }
 
     /// Deflection w and tilt at the node for amplitudes `q` in the node's own description.

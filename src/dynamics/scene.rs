@@ -53,8 +53,16 @@ pub struct Scene {
 impl Scene {
     pub fn new(config: &Config, model: PlateModel) -> Scene {
         let layout = ModeLayout::new(&model);
-        let ale_nodes: Vec<NodeFrame> = config.nodes.ale.iter().map(|&p| NodeFrame::new(&model, NodeKind::Ale, p)).collect();
-        let lagrange_nodes: Vec<NodeFrame> = config.nodes.lagrange.iter().map(|&p| NodeFrame::new(&model, NodeKind::Lagrange, p)).collect();
+        let h = config.plate.thickness;
+        let ale_nodes: Vec<NodeFrame> =
+            config.nodes.ale.iter().enumerate().map(|(j, &p)| NodeFrame::new(&model, NodeKind::Ale, p, config.nodes.ale_surface(j).z(h))).collect();
+        let lagrange_nodes: Vec<NodeFrame> = config
+            .nodes
+            .lagrange
+            .iter()
+            .enumerate()
+            .map(|(j, &p)| NodeFrame::new(&model, NodeKind::Lagrange, p, config.nodes.lagrange_surface(j).z(h)))
+            .collect();
         // Gravity is given in world axes; the reference frame is tilted about world x.
         let (st, ct) = config.reference.tilt.sin_cos();
         let g = config.gravity;

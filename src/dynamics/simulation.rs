@@ -429,9 +429,9 @@ impl NodeOutput {
             NodeKind::Lagrange => uz_dot,
             NodeKind::Ale => uz_dot + speed * node.w_phi.iter().zip(q).map(|(w, qi)| w * qi).sum::<f64>(),
         };
-        let p = node.position();
+        let p = node.surface_position(&d);
         NodeOutput {
-            pose: Isometry3::from_parts(Translation3::new(p[0], p[1], d.w), tilt_rotation(d.tilt)).into(),
+            pose: Isometry3::from_parts(Translation3::new(p[0], p[1], p[2]), tilt_rotation(d.tilt)).into(),
             uz: d.w,
             uz_dot,
             tilt: d.tilt,
