@@ -35,8 +35,17 @@ fn scene() -> PathBuf {
     let d = repo().join("target/bag-tests");
     std::fs::create_dir_all(&d).unwrap();
     let p = d.join("design_example_tilted.yaml");
-    std::fs::write(&p, format!("{}\n    reference:\n      tilt: {TILT}\n", text.trim_end())).unwrap();
+    write_atomically(&p, &format!("{}\n    reference:\n      tilt: {TILT}\n", text.trim_end()));
     p
+}
+
+/// Tests run in parallel and share scene files: each writes its copy under a
+/// name of its own and renames it into place, so no test reads a half-written file.
+fn write_atomically(path: &Path, text: &str) {
+    std::fs::create_dir_all(path.parent().unwrap()).unwrap();
+    let tmp = path.with_extension(format!("tmp{:?}", std::thread::current().id()).replace(['(', ')'], ""));
+    std::fs::write(&tmp, text).unwrap();
+    std::fs::rename(&tmp, path).unwrap();
 }
 
 fn simulate(scene: &Path, extra: &[&std::ffi::OsStr]) -> std::process::Output {
@@ -286,7 +295,7 @@ fn a_simulate_bag_of_a_scene_with_load_models_holds_their_states() {
     let text = std::fs::read_to_string(repo().join("config/brake_bench.yaml")).unwrap();
     assert!(text.contains("clamp_force: [0.0]"), "the bench starts unclamped");
     let bench = repo().join("target/bag-tests/brake_bench_clamped.yaml");
-    std::fs::write(&bench, text.replace("clamp_force: [0.0]", "clamp_force: [5000.0]")).unwrap();
+    write_atomically(&bench, &text.replace("clamp_force: [0.0]", "clamp_force: [5000.0]"));
     let lathe = repo().join("config/lathe.yaml");
     for (scene, topic, ty, columns) in [
         (
