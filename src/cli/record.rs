@@ -14,14 +14,14 @@ pub struct BagOutput {
 #[cfg(feature = "ros")]
 impl BagOutput {
     /// Create the rosbag2 directory `dir` (it must not exist) for the scene
-    /// `file` (its `ros.marker_*` keys set the marker).
+    /// `file` (its `ros.*` keys: frame prefix, world frame, diagnostics period, marker).
     pub fn create(dir: &Path, sim: &Simulation, file: &Path) -> CliResult<BagOutput> {
         use crate::messages::settings::RosSettings;
         let usage = |e: String| CliError::Usage(format!("{}: {e}", file.display()));
         let params = crate::config::Params::from_file(file, crate::messages::DEFAULT_NODE_NAME).map_err(|e| usage(e.to_string()))?;
         let settings = RosSettings::from_params(&params).map_err(|e| usage(e.to_string()))?;
         settings.check_against_rate(1.0 / sim.dt()).map_err(|e| usage(e.to_string()))?;
-        let inner = crate::bag::OfflineRecorder::create(dir, sim, &settings.marker).map_err(|e| CliError::Usage(format!("--bag: {e}")))?;
+        let inner = crate::bag::OfflineRecorder::create(dir, sim, &settings).map_err(|e| CliError::Usage(format!("--bag: {e}")))?;
         Ok(BagOutput { inner })
     }
 
