@@ -25,6 +25,9 @@ enum Command {
         /// Machine-readable output: {"modes": [{"k", "l", "shape", "frequency_hz", ...}]}.
         #[arg(long)]
         json: bool,
+        /// Parameter overrides `-p NAME:=VALUE` (as after --ros-args), e.g. -p plate.inner_boundary:=supported.
+        #[arg(short = 'p', long = "param", value_name = "NAME:=VALUE")]
+        overrides: Vec<String>,
     },
     /// Simulate offline and write a CSV and/or a rosbag2 bag.
     Simulate {
@@ -44,6 +47,9 @@ enum Command {
         /// No progress bar.
         #[arg(long)]
         quiet: bool,
+        /// Parameter overrides `-p NAME:=VALUE` (as after --ros-args), e.g. -p joint.speed:=40.0.
+        #[arg(short = 'p', long = "param", value_name = "NAME:=VALUE")]
+        overrides: Vec<String>,
     },
     /// Draw pictures (PNG or SVG): time histories from a `simulate` CSV, mode shapes.
     Plot {
@@ -124,8 +130,8 @@ fn run() -> anyhow::Result<()> {
             extra.extend_from_slice(ros_args);
             run_node(file, &extra, record)
         }
-        Some(Command::Modes { file, json }) => {
-            let config = cli::load_config(&file)?;
+        Some(Command::Modes { file, json, overrides }) => {
+            let config = cli::load_config_with(&file, &overrides)?;
             let model = annular_plate::model::PlateModel::new(&config.plate).with_context(|| format!("{}", file.display()))?;
             let stdout = std::io::stdout();
             cli::modes::write(&model, json, &mut stdout.lock())?;
@@ -148,10 +154,10 @@ fn run() -> anyhow::Result<()> {
         }
         Some(Command::Plot { what }) => Ok(cli::plot::main(what)?),
         Some(Command::Study(args)) => Ok(cli::study::main(args)?),
-        Some(Command::Simulate { file, duration, csv, bag, output_rate, quiet }) => {
+        Some(Command::Simulate { file, duration, csv, bag, output_rate, quiet, overrides }) => {
             anyhow::ensure!(csv.is_some() || bag.is_some(), "simulate writes --csv OUT, --bag DIR or both: give at least one");
             anyhow::ensure!(duration.is_finite() && duration >= 0.0, "--duration must be a finite number ≥ 0 s, got {duration}");
-            let config = cli::load_config(&file)?;
+            let config = cli::load_config_with(&file, &overrides)?;
             let dt = 1.0 / config.simulation.rate_hz;
             anyhow::ensure!(
                 duration == 0.0 || duration >= 0.5 * dt,
@@ -173,7 +179,7 @@ fn run() -> anyhow::Result<()> {
                     std::fs::File::create(p).with_context(|| format!("cannot create {}", p.display()))?,
                 ))),
             };
-            let mut bag = bag.map(|dir| cli::record::BagOutput::create(&dir, &sim, &file)).transpose()?;
+            let mut bag = bag.map(|dir| cli::record::BagOutput::create(&dir, &sim, &file, &overrides)).transpose()?;
             let record = |s: &Simulation| bag.as_mut().map_or(Ok(()), |b| b.record(s));
             // SIGINT / SIGTERM end the run after the current step and the bag is
             // finished as after a full run; a second signal ends the process at once.

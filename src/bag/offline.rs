@@ -2,8 +2,8 @@
 //! an offline run instead of the wire.
 //!
 //! The messages come from the builders the node uses too (`messages::outputs`,
-//! `messages::diagnostics`) on the node's default names (`/annular_plate`, no
-//! frame prefix, world frame `world`) in simulated time: the initial state
+//! `messages::diagnostics`) on the node's default names (`/annular_plate`)
+//! with the scene's `ros.frame_prefix` and `ros.world_frame`, in simulated time: the initial state
 //! and every step are stamped and logged at t = step × dt from 0, `/clock`
 //! carries the same time, `/tf_static` is one message at t = 0, and
 //! `/diagnostics` comes every `ros.diagnostics_period` (1 s) of simulated
@@ -20,7 +20,7 @@ use crate::messages::clock::StepClock;
 use crate::messages::diagnostics::{self, LoopReport, Timing};
 use crate::messages::input_stats::InputStats;
 use crate::messages::outputs::{clock_message, static_transforms, FrameNames, OutputMessages};
-use crate::messages::marker::{MarkerInput, MarkerSettings, PlateMarker};
+use crate::messages::marker::{MarkerInput, PlateMarker};
 use crate::messages::settings::RosSettings;
 use crate::messages::DEFAULT_NODE_NAME;
 use std::path::Path;
@@ -46,9 +46,10 @@ pub struct OfflineRecorder {
 
 impl OfflineRecorder {
     /// Create the bag `dir` (it must not exist) for `sim`'s scene, with the
-    /// scene's `ros.marker_*` settings.
-    pub fn create(dir: &Path, sim: &Simulation, marker: &MarkerSettings) -> Result<OfflineRecorder, BagError> {
-        let settings = RosSettings::default();
+    /// scene's `ros.*` settings (frame prefix, world frame, diagnostics
+    /// period, `ros.marker_*`).
+    pub fn create(dir: &Path, sim: &Simulation, settings: &RosSettings) -> Result<OfflineRecorder, BagError> {
+        let marker = &settings.marker;
         let names = NameResolver::new(&RosArgs::default(), DEFAULT_NODE_NAME).expect("the default node name is valid");
         let rate_hz = 1.0 / sim.dt();
         let every = marker.every(rate_hz);

@@ -14,14 +14,15 @@ pub struct BagOutput {
 #[cfg(feature = "ros")]
 impl BagOutput {
     /// Create the rosbag2 directory `dir` (it must not exist) for the scene
-    /// `file` (its `ros.marker_*` keys set the marker).
-    pub fn create(dir: &Path, sim: &Simulation, file: &Path) -> CliResult<BagOutput> {
+    /// `file` with its `-p` overrides (its `ros.*` keys: frame prefix, world
+    /// frame, diagnostics period, marker).
+    pub fn create(dir: &Path, sim: &Simulation, file: &Path, overrides: &[String]) -> CliResult<BagOutput> {
         use crate::messages::settings::RosSettings;
         let usage = |e: String| CliError::Usage(format!("{}: {e}", file.display()));
-        let params = crate::config::Params::from_file(file, crate::messages::DEFAULT_NODE_NAME).map_err(|e| usage(e.to_string()))?;
+        let params = super::params_with_overrides(file, overrides)?;
         let settings = RosSettings::from_params(&params).map_err(|e| usage(e.to_string()))?;
         settings.check_against_rate(1.0 / sim.dt()).map_err(|e| usage(e.to_string()))?;
-        let inner = crate::bag::OfflineRecorder::create(dir, sim, &settings.marker).map_err(|e| CliError::Usage(format!("--bag: {e}")))?;
+        let inner = crate::bag::OfflineRecorder::create(dir, sim, &settings).map_err(|e| CliError::Usage(format!("--bag: {e}")))?;
         Ok(BagOutput { inner })
     }
 
@@ -47,7 +48,7 @@ impl BagOutput {
 
 #[cfg(not(feature = "ros"))]
 impl BagOutput {
-    pub fn create(_dir: &Path, _sim: &Simulation, _file: &Path) -> CliResult<BagOutput> {
+    pub fn create(_dir: &Path, _sim: &Simulation, _file: &Path, _overrides: &[String]) -> CliResult<BagOutput> {
         return Err(CliError::Usage(format!(
             "--bag needs the `ros` feature (the bag holds the node's messages); this build has none: build with the default features"
         )))

@@ -35,6 +35,28 @@ pub fn header(sim: &Simulation) -> String {
     cols.join(",")
 }
 
+/// The unit of a column of [`header`] (for axis labels), `None` for a name
+/// that is not one of its columns.
+pub fn column_unit(name: &str) -> Option<&'static str> {
+    let numbered = |prefix: &str, suffix: &str| {
+        name.strip_prefix(prefix)
+            .and_then(|r| r.strip_suffix(suffix))
+            .is_some_and(|d| !d.is_empty() && d.bytes().all(|c| c.is_ascii_digit()))
+    };
+    Some(match name {
+        "time" => "s",
+        "joint_position" => "rad",
+        "joint_velocity" => "rad/s",
+        "joint_effort" => "N·m",
+        "tool_tip_z" | "tool_chip_thickness" => "m",
+        "tool_feed_force" => "N",
+        _ if numbered("q", "") || numbered("qale", "") || numbered("ale", "_uz") || numbered("lagrange", "_uz") => "m",
+        _ if numbered("pad", "_clamp_force") || numbered("pad", "_normal_force") || numbered("link", "_force") => "N",
+        _ if numbered("pad", "_friction_torque") => "N·m",
+        _ => return None,
+    })
+}
+
 /// Formats CSV rows into one reused buffer: shortest round-trip floats
 /// (`{}` for time and joint, `{:e}` for the rest, src/cli/float_text.rs), no
 /// allocation per row.

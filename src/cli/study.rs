@@ -31,6 +31,9 @@ pub struct StudyArgs {
     /// No progress bar.
     #[arg(long)]
     pub quiet: bool,
+    /// Parameter overrides `-p NAME:=VALUE` on FILE (as after --ros-args), e.g. -p plate.thickness:=0.01.
+    #[arg(short = 'p', long = "param", value_name = "NAME:=VALUE", requires = "file")]
+    pub overrides: Vec<String>,
 }
 
 /// The plan the arguments ask for.
@@ -55,7 +58,7 @@ pub fn plan(args: &StudyArgs) -> CliResult<StudyPlan> {
 pub fn main(args: StudyArgs) -> CliResult<()> {
     let plan = plan(&args)?;
     let (config, source) = match &args.file {
-        Some(f) => (super::load_config(f)?, f.display().to_string()),
+        Some(f) => (super::load_config_with(f, &args.overrides)?, f.display().to_string()),
         None => (study::lathe_scene(), "built-in lathe disc".to_string()),
     };
     if let Some(p) = &args.plot {

@@ -165,7 +165,12 @@ pub fn start_node_with(ns: &Netns, domain: u16, run_args: &[&OsStr], ros_args: &
 
 /// Start `annular_plate run <scene_file> <run_args> --ros-args <ros_args>` (another scene than the default).
 pub fn start_node_on(ns: &Netns, domain: u16, scene_file: &Path, run_args: &[&OsStr], ros_args: &[&str]) -> NodeProcess {
-    let stderr_path = temp_dir().join(format!("node-domain{domain}.stderr"));
+    start_node_tagged(ns, domain, "", scene_file, run_args, ros_args)
+}
+
+/// The same, for one of several nodes on one domain (`tag` names its stderr file).
+pub fn start_node_tagged(ns: &Netns, domain: u16, tag: &str, scene_file: &Path, run_args: &[&OsStr], ros_args: &[&str]) -> NodeProcess {
+    let stderr_path = temp_dir().join(format!("node-domain{domain}{tag}.stderr"));
     let stderr = std::fs::File::create(&stderr_path).expect("create the node's stderr file");
     let mut cmd = ns.command(node_binary());
     cmd.arg("run").arg(scene_file).args(run_args).arg("--ros-args").args(ros_args);

@@ -775,6 +775,47 @@ def scenario_simulation_interfaces(p, a):
     return out
 
 
+def scenario_two_nodes(p, a):
+    """Two nodes in two namespaces on one domain: each one's joint_states, its
+    prefixed tf frames and its commands stay its own."""
+    nodes = a["nodes"]  # [{"node": "/left/disc", "ns": "/left", "prefix": "left/"}, ...]
+    js = {n["node"]: p.reader(n["ns"] + "/joint_states", T.JointState, depth=10000) for n in nodes}
+    modal = {n["node"]: p.reader(n["node"] + "/modal_amplitudes", T.ModalAmplitudes, depth=10000) for n in nodes}
+    tf = p.reader("/tf", T.TFMessage, depth=100000)
+    for r in list(js.values()) + list(modal.values()) + [tf]:
+        p.wait_matched(r)
+    first, second = nodes[0]["node"], nodes[1]["node"]
+    # Commands to the first node only: a speed and a wrench.
+    speed = p.writer(first + "/speed_command", T.Float64)
+    w = p.writer(first + "/ale_2/wrench", T.WrenchStamped)
+    p.wait_matched(speed)
+    p.wait_matched(w)
+    speed.write(T.Float64(data=a["speed"]))
+    w.write(T.WrenchStamped(header=T.Header(), wrench=wrench(fz=a["fz"])))
+    p.wait_diag(lambda v: int(v.get("accepted_node_wrench", 0)) >= 1 and int(v.get("accepted_speed_command", 0)) >= 1)
+    for n in nodes:
+        p.take(js[n["node"]])
+        p.take(modal[n["node"]])
+    out = {"step": {}, "joint_state": {}, "modal": {}}
+    for n in nodes:
+        name = n["node"]
+        resp = p.call(name + "/step", T.StepRequest, T.StepResponse, T.StepRequest(steps=a["steps"]), timeout=60.0)
+        out["step"][name] = todict(resp)
+        out["modal"][name] = todict(p.wait_for(modal[name], lambda s, k=resp.step: s.step == k))
+        # One joint state per step (publish_divisor 1): the last of them is the stepped state.
+        seen = []
+        p.wait_for(js[name], lambda s: len(seen) >= a["steps"], keep=seen)
+        assert all(s.name == [n["prefix"] + "plate_joint"] for s in seen), [s.name for s in seen[:3]]
+        out["joint_state"][name] = todict(seen[-1])
+        out["joint_states_seen"] = out.get("joint_states_seen", {}) | {name: len(seen)}
+    frames = set()
+    for m in p.take(tf):
+        for t in m.transforms:
+            frames.add((t.header.frame_id, t.child_frame_id))
+    out["tf_frames"] = sorted(frames)
+    return out
+
+
 SCENARIOS = {name[len("scenario_"):]: fn for name, fn in globals().items() if name.startswith("scenario_")}
 
 

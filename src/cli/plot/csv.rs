@@ -136,7 +136,7 @@ pub fn summarize_names(names: &[String]) -> String {
 }
 
 /// Default axis label for a panel's columns.
-pub(super) fn auto_ylabel(names: &[String]) -> String {
+pub fn auto_ylabel(names: &[String]) -> String {
     let all = |f: &dyn Fn(&str) -> bool| names.iter().all(|n| f(n));
     let numbered = |n: &str, prefix: &str| n.strip_prefix(prefix).is_some_and(|r| !r.is_empty() && r.bytes().all(|c| c.is_ascii_digit()));
     if all(&|n| numbered(n, "qale")) {
@@ -152,7 +152,20 @@ pub(super) fn auto_ylabel(names: &[String]) -> String {
     } else if all(&|n| n == "joint_position") {
         "joint angle (rad)".into()
     } else {
-        names.join(", ")
+        with_units(names)
+    }
+}
+
+/// Column names with their units (`simulate::column_unit`): one unit for
+/// all, `pad1_normal_force, pad2_normal_force (N)`; otherwise each its own,
+/// `joint_effort (N·m), pad1_normal_force (N)`. A column of another CSV
+/// keeps its bare name.
+fn with_units(names: &[String]) -> String {
+    use crate::cli::simulate::column_unit;
+    let units: Vec<Option<&str>> = names.iter().map(|n| column_unit(n)).collect();
+    match units.first() {
+        Some(Some(u)) if units.iter().all(|x| x == &Some(*u)) => format!("{} ({u})", names.join(", ")),
+        _ => names.iter().zip(&units).map(|(n, u)| u.map_or_else(|| n.clone(), |u| format!("{n} ({u})"))).collect::<Vec<_>>().join(", "),
     }
 }
 

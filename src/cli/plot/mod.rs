@@ -17,7 +17,7 @@
 //! check that a curve or a nodal line is where the data puts it.
 
 use crate::cli::error::{CliError, CliResult};
-use crate::config::{Config, Params};
+use crate::config::Config;
 use crate::model::AngularShape;
 use std::path::{Path, PathBuf};
 use std::str::FromStr;
@@ -255,14 +255,6 @@ fn first_sorted(v: &[u32], n: usize) -> Vec<u32> {
 
 /// Read a params file and apply `name:=value` overrides.
 pub fn load_with_overrides(path: &Path, overrides: &[String]) -> CliResult<Config> {
-    if overrides.is_empty() {
-        return super::load_config(path);
-    }
-    let mut params = Params::from_file(path, super::DEFAULT_NODE_NAME).map_err(|e| CliError::Usage(format!("{}: {e}", path.display())))?;
-    for o in overrides {
-        let (name, value) = o.split_once(":=").ok_or_else(|| CliError::Usage(format!("-p {o:?}: expected NAME:=VALUE")))?;
-        params.set_override(name.trim(), value.trim()).map_err(|e| CliError::Usage(format!("-p {o}: {e}")))?;
-    }
-    Config::from_params(&params).map_err(|e| CliError::Usage(format!("{} (with -p overrides): {e}", path.display())))
+    super::load_config_with(path, overrides)
 }
 

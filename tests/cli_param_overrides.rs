@@ -1,0 +1,79 @@
+//! `-p NAME:=VALUE` for `modes`, `simulate` and `study` (issue 16: only
+//! `plot` and `run` took it): an override gives exactly what the same value
+//! written into the file gives, and a bad one is refused naming the key.
+
+mod support;
+
+use std::path::PathBuf;
+use std::process::{Command, Output};
+use support::scene_files;
+
+const BIN: &str = env!("CARGO_BIN_EXE_annular_plate");
+
+fn run(args: &[&str]) -> Output {
+    Command::new(BIN).args(args).output().unwrap()
+}
+
+fn ok(args: &[&str]) -> String {
+    let out = run(args);
+    assert!(out.status.success(), "{args:?}: {}", String::from_utf8_lossy(&out.stderr));
+    String::from_utf8(out.stdout).unwrap()
+}
+
+fn refused(args: &[&str]) -> String {
+    let out = run(args);
+    assert!(!out.status.success(), "{args:?} was accepted");
+    String::from_utf8(out.stderr).unwrap()
+}
+
+/// The brake bench with one line of the file replaced.
+fn edited(name: &str, from: &str, to: &str) -> PathBuf {
+    let text = scene_files::text("brake_bench.yaml");
+    assert_eq!(text.matches(from).count(), 1, "{from} is in the file once");
+    let dir = std::env::temp_dir().join(format!("annular_plate_overrides_{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let path = dir.join(name);
+    std::fs::write(&path, text.replace(from, to)).unwrap();
+    path
+}
+
+#[test]
+fn modes_with_an_override_equal_modes_of_the_edited_file() {
+    let bench = scene_files::path("brake_bench.yaml");
+    let file = edited("thin.yaml", "thickness: 0.0181", "thickness: 0.012");
+    let by_p = ok(&["modes", bench.to_str().unwrap(), "--json", "-p", "plate.thickness:=0.012"]);
+    let by_file = ok(&["modes", file.to_str().unwrap(), "--json"]);
+    let plain = ok(&["modes", bench.to_str().unwrap(), "--json"]);
+    assert_eq!(by_p, by_file);
+    assert_ne!(by_p, plain, "the override changed the frequencies");
+    let fewer = ok(&["modes", bench.to_str().unwrap(), "--json", "--param", "plate.nodal_diameters:=[0, 1]"]);
+    assert!(fewer.len() < plain.len(), "fewer nodal diameters, fewer modes");
+}
+
+#[test]
+fn simulate_with_an_override_equals_simulate_of_the_edited_file() {
+    let bench = scene_files::path("brake_bench.yaml");
+    let file = edited("fast.yaml", "speed: 25.0", "speed: 40.0");
+    let common = ["--duration", "0.01", "--csv", "-", "--quiet"];
+    let mut a = vec!["simulate", bench.to_str().unwrap(), "-p", "joint.speed:=40.0"];
+    a.extend(common);
+    let mut b = vec!["simulate", file.to_str().unwrap()];
+    b.extend(common);
+    let (by_p, by_file) = (ok(&a), ok(&b));
+    assert_eq!(by_p, by_file);
+    assert!(by_p.lines().count() > 10, "{by_p}");
+}
+
+#[test]
+fn bad_overrides_are_refused_naming_the_key_or_the_form() {
+    let bench = scene_files::path("brake_bench.yaml");
+    let b = bench.to_str().unwrap();
+    let e = refused(&["modes", b, "-p", "plate.thickness:=-1"]);
+    assert!(e.contains("plate.thickness"), "{e}");
+    let e = refused(&["simulate", b, "--duration", "0.01", "--csv", "-", "-p", "joint.speed"]);
+    assert!(e.contains("expected NAME:=VALUE"), "{e}");
+    let e = refused(&["study", b, "--quick", "-p", "plate.no_such_key:=1"]);
+    assert!(e.contains("plate.no_such_key"), "{e}");
+    let e = refused(&["study", "--quick", "-p", "plate.thickness:=0.01"]);
+    assert!(e.contains("FILE") || e.contains("file"), "-p needs a file to override: {e}");
+}
