@@ -1,7 +1,10 @@
 //! The fixed-rate loop: one OS thread owns the [`Simulation`], applies the
 //! checked inputs and service commands in arrival order between steps,
 //! steps, and publishes. A dedicated thread (not a tokio timer, whose
-//! resolution is 1 ms) keeps the step period; it sleeps in
+//! resolution is 1 ms) keeps the step period. Waiting for a step at most
+//! [`SLEEP_THROUGH_INPUTS`] away it sleeps, and the inputs that arrive
+//! meanwhile wait in the queue for the step boundary: one wakeup per step
+//! however many samples arrive; a longer wait (a slow rate, paused) is a
 //! `recv_timeout`, so an input or a service call wakes it at once.
 //!
 //! Per step (nothing allocated on our side): drop stale wrenches, step,
@@ -28,6 +31,12 @@ use std::collections::VecDeque;
 use std::sync::mpsc::{Receiver, RecvTimeoutError};
 use std::sync::Arc;
 use std::time::{Duration, Instant};
+
+/// A wait for the next step at most this long sleeps through arriving inputs
+/// and service calls (they queue, and are handled in arrival order at the
+/// step boundary, where an input takes effect anyway); a longer one wakes for
+/// each, so a slow loop still answers services at once.
+const SLEEP_THROUGH_INPUTS: Duration = Duration::from_millis(2);
 use tokio::sync::oneshot;
 
 /// The loop's writers.
@@ -183,8 +192,14 @@ impl SimLoop {
                 let deadline = self.pacer.deadline();
                 let now = Instant::now();
                 if now < deadline {
-                    let until = deadline.min(self.next_diagnostics);
-                    self.wait_command(until - now);
+                    let wait = deadline.min(self.next_diagnostics) - now;
+                    if wait <= SLEEP_THROUGH_INPUTS {
+                        // Inputs take effect at the step anyway: queue them
+                        // and wake once per step, not once per sample.
+                        std::thread::sleep(wait);
+                    } else {
+                        self.wait_command(wait);
+                    }
                     continue;
                 }
                 // Apply everything that arrived before the deadline.
