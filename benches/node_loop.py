@@ -25,9 +25,10 @@ the node's CPU, the floor's and their ratio with ranges. The floor is
 missing): one ddsperf process in the node's role publishes 1000 samples/s of
 600 bytes (the size of the ModalAmplitudes the peer subscribes to) to a
 second ddsperf and subscribes to what that one publishes: nothing (idle),
-1000 Hz bursts of 3 or 18 samples of 80 bytes (WrenchStamped), or 1000
-samples/s of 1100 bytes (the NodeWrenchArray of 18); the CPU of the first
-process over the same window is the floor:
+bursts of 3 or 18 samples of 80 bytes (WrenchStamped), or samples of 1100
+bytes (the NodeWrenchArray of 18), at the update rate the Python peer
+reached in the node's run just before (1000/s when it keeps up); the CPU of
+the first process over the same window is the floor:
 
     target/peer-venv/bin/python benches/node_loop.py --compare --seconds 10 --repeat 3
 
@@ -230,6 +231,7 @@ def in_netns_main(args):
         n_in = {"batch": N_ALE, "topics": args.wrench_topics, "idle": 0}[args.mode]
         print(f"mode {args.mode}: {n_in} of {N_ALE} ALE wrenches, {sent / (stat1[1] - stat0[1]):.0f} updates/s sent over {stat1[1] - stat0[1]:.1f} s")
         print(f"RESULT node_cpu {cpu:.3f}")
+        print(f"RESULT sent_rate {sent / (stat1[1] - stat0[1]):.1f}")
         print(f"  node CPU: {cpu:.1f} % of one core (~/plate_marker at {args.marker_rate} Hz, {markers_in_window / (stat1[1] - stat0[1]):.1f}/s received)")
         span = stat1[1] - stat0[1]
         per_thread = {n: (threads1[n] - threads0.get(n, 0)) / hz / span * 100.0 for n in threads1}
@@ -297,7 +299,8 @@ def floor_main(args):
     node_role = subprocess.Popen(base + ["pub", "1000Hz", "size", str(FLOOR_OUT_BYTES), "sub"],
                                  env=env, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
     case = FLOOR_CASES[args.floor]
-    peer_modes = ["sub"] if case is None else ["pub", "1000Hz", "burst", str(case[0]), "size", str(case[1]), "sub"]
+    rate = f"{args.floor_rate:.0f}Hz"
+    peer_modes = ["sub"] if case is None else ["pub", rate, "burst", str(case[0]), "size", str(case[1]), "sub"]
     peer = subprocess.Popen(base + peer_modes, env=env, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
     try:
         time.sleep(args.warmup)
@@ -330,10 +333,10 @@ def netns_run(args, extra):
     cmd = ["unshare", "-n", "--", "sh", "-c",
            'ip link set lo up && exec "$0" "$@"', sys.executable, os.path.abspath(__file__), "--in-netns",
            "--seconds", str(args.seconds), "--warmup", str(args.warmup), "--node", args.node,
-           "--marker-rate", str(args.marker_rate)] + extra
+           "--marker-rate", str(args.marker_rate), "--floor-rate", str(args.floor_rate)] + extra
     out = subprocess.run(cmd, stdout=subprocess.PIPE, text=True).stdout
-    value = next((float(l.split()[2]) for l in out.splitlines() if l.startswith("RESULT")), float("nan"))
-    return value, "\n".join(l for l in out.splitlines() if not l.startswith("RESULT"))
+    values = {l.split()[1]: float(l.split()[2]) for l in out.splitlines() if l.startswith("RESULT")}
+    return values, "\n".join(l for l in out.splitlines() if not l.startswith("RESULT"))
 
 
 def compare(args):
@@ -341,11 +344,14 @@ def compare(args):
     results = {case: ([], []) for case in NODE_CASES}
     for r in range(args.repeat):
         for case in NODE_CASES:
-            node, text = netns_run(args, NODE_CASES[case])
-            floor, _ = netns_run(args, ["--floor", case])
+            values, text = netns_run(args, NODE_CASES[case])
+            node, sent = values.get("node_cpu", float("nan")), values.get("sent_rate", 0.0)
+            # The floor carries the wrench rate the Python peer reached in the node's run.
+            floor = netns_run(args, ["--floor", case, "--floor-rate", str(max(sent, 1.0))])[0].get("floor_cpu", float("nan"))
             results[case][0].append(node)
             results[case][1].append(floor)
-            print(f"[run {r + 1}/{args.repeat}] {case}: node {node:.1f} %, floor {floor:.1f} %, ratio {node / floor:.2f}")
+            print(f"[run {r + 1}/{args.repeat}] {case}: wrench updates {sent:.0f}/s, node {node:.1f} %, floor {floor:.1f} %, "
+                  f"ratio {node / floor:.2f}")
             if args.verbose:
                 print(text)
             sys.stdout.flush()
@@ -371,6 +377,7 @@ def main():
     ap.add_argument("--repeat", type=int, default=3, help="with --compare: runs per case")
     ap.add_argument("--verbose", action="store_true", help="with --compare: the node runs' full output")
     ap.add_argument("--floor", choices=list(FLOOR_CASES), help=argparse.SUPPRESS)
+    ap.add_argument("--floor-rate", type=float, default=1000.0, help=argparse.SUPPRESS)
     ap.add_argument("--in-netns", action="store_true", help=argparse.SUPPRESS)
     args = ap.parse_args()
     if args.in_netns:

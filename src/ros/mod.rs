@@ -11,6 +11,7 @@
 //! - [`messages`]: wire types (standard ROS ones and this package's `msg/`, `srv/`);
 //! - [`topics`], [`qos`]: names and QoS of every endpoint;
 //! - [`inputs`]: checking and counting incoming messages (no ROS types);
+//! - [`input_polling`]: the input subscriptions, read by the loop at step boundaries;
 //! - [`outputs`]: the per-step messages, preallocated;
 //! - [`clock`]: stamps, `/clock`, pacing; [`clock_input`]: following an external `/clock` (`use_sim_time`);
 //! - [`services`], [`params_service`]: reset/pause/step and the parameter services;
@@ -27,6 +28,7 @@
 pub mod clock_input;
 pub mod error;
 pub mod heap;
+pub mod input_polling;
 pub mod inputs;
 pub mod logging;
 pub mod marker_thread;

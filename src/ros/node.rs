@@ -3,7 +3,8 @@
 //! and shuts everything down in order on SIGINT or SIGTERM.
 
 use crate::messages::names::{domain_id_from_env, NameResolver, RosArgs};
-use super::inputs::{Input, InputStats, InputValidator, RejectReason, Rejection, Source};
+use super::input_polling::{polled, InputContext, PolledInput};
+use super::inputs::{InputStats, InputValidator, Source};
 use super::logging::{parse_level, Logger};
 use crate::messages::types::{
     Clock, DiagnosticArray, Float64, JointState, ModalAmplitudes, NodeWrenchArray, PadClampForces, PadStates, RosType,
@@ -22,12 +23,10 @@ use crate::bag::recorder::{NodeBag, NodeTopics, Recorder, RecorderThread, Sample
 use crate::config::{Config, ConfigError, Params};
 use crate::dynamics::{InputRules, NodeKind, Simulation, Wrench};
 use super::error::NodeError;
-use futures::StreamExt;
 use ros2_client::{Context, ContextOptions, MessageTypeName, Name, Node, NodeName, NodeOptions, Publisher, QosProfile, Subscription};
-use serde::de::DeserializeOwned;
 use serde::Serialize;
 use std::path::{Path, PathBuf};
-use std::sync::mpsc::{sync_channel, SyncSender, TrySendError};
+use std::sync::mpsc::{sync_channel, SyncSender};
 use std::sync::{Arc, Mutex};
 use std::time::Duration;
 use tokio::task::JoinHandle;
@@ -163,50 +162,6 @@ fn subscription<T: RosType + 'static>(node: &mut Node, resolved: &str, qos: &Qos
     node.create_subscription::<T>(&t, Some(qos.clone())).map_err(|e| NodeError::dds(format!("cannot subscribe {resolved}"), e))
 }
 
-/// What every input task shares.
-#[derive(Clone)]
-struct InputContext {
-    validator: Arc<InputValidator>,
-    stats: Arc<InputStats>,
-    logger: Arc<Logger>,
-    tx: SyncSender<Command>,
-}
-
-impl InputContext {
-    fn reject(&self, topic: &str, r: Rejection) {
-        self.stats.reject(r.reason);
-        self.logger.rejection(topic, &r);
-    }
-}
-
-/// One task per input topic: decode, check, hand over to the loop.
-fn spawn_input<M, F>(sub: Subscription<M>, topic: String, source: Source, ctx: InputContext, check: F) -> JoinHandle<()>
-where
-    M: DeserializeOwned + Send + Sync + 'static,
-    F: Fn(&InputValidator, M) -> Result<(Input, i64), Rejection> + Send + 'static,
-{
-    tokio::spawn(async move {
-        let stream = sub.async_stream();
-        futures::pin_mut!(stream);
-        while let Some(item) = stream.next().await {
-            match item {
-                Ok((msg, _info)) => match check(&ctx.validator, msg) {
-                    Ok((input, stamp)) => match ctx.tx.try_send(Command::Input(input, source, stamp)) {
-                        Ok(()) => {}
-                        Err(TrySendError::Full(_)) => ctx.reject(
-                            &topic,
-                            Rejection { reason: RejectReason::QueueFull, detail: "the simulation's input queue is full".into() },
-                        ),
-                        Err(TrySendError::Disconnected(_)) => return,
-                    },
-                    Err(r) => ctx.reject(&topic, r),
-                },
-                Err(e) => ctx.reject(&topic, Rejection { reason: RejectReason::Undecodable, detail: format!("{e:?}") }),
-            }
-        }
-    })
-}
-
 fn to_wrench(w: &crate::messages::types::Wrench) -> Wrench {
     Wrench { force: w.force.to_array(), moment: w.torque.to_array() }
 }
@@ -254,17 +209,17 @@ fn start_recording(bag: Option<NodeBag>, static_msg: &TFMessage, stamp: Time, lo
     Ok(Some((recorder, thread)))
 }
 
-/// One input task per input topic: the speed command, the node wrenches, the wrench array.
-fn subscribe_inputs(node: &mut Node, names: &NameResolver, frames: &FrameNames, ctx: &InputContext) -> Result<Vec<JoinHandle<()>>, NodeError> {
-    let mut tasks = Vec::new();
+/// The input topics the loop reads (`ros/input_polling.rs`): the speed command, the node wrenches, the wrench array.
+fn subscribe_inputs(node: &mut Node, names: &NameResolver, frames: &FrameNames, ctx: &InputContext) -> Result<Vec<Box<dyn PolledInput>>, NodeError> {
+    let mut inputs = Vec::new();
     let topic = names.resolve(topics::SPEED_COMMAND)?;
     let sub = subscription::<Float64>(node, &topic, &qos::INPUT)?;
-    tasks.push(spawn_input(sub, topic, Source::SpeedCommand, ctx.clone(), |v, m: Float64| Ok((v.speed(m.data)?, 0))));
+    inputs.push(polled(sub, topic, Source::SpeedCommand, ctx.clone(), |v, m: Float64| Ok((v.speed(m.data)?, 0))));
     for (kind, count) in [(NodeKind::Ale, frames.ale.len()), (NodeKind::Lagrange, frames.lagrange.len())] {
         for node_index in 0..count {
             let topic = names.resolve(&topics::node_wrench(kind, node_index + 1))?;
             let sub = subscription::<WrenchStamped>(node, &topic, &qos::INPUT)?;
-            tasks.push(spawn_input(sub, topic, Source::NodeWrench, ctx.clone(), move |v, m: WrenchStamped| {
+            inputs.push(polled(sub, topic, Source::NodeWrench, ctx.clone(), move |v, m: WrenchStamped| {
                 let stamp = m.header.stamp.to_nanos();
                 Ok((v.wrench_stamped(kind, node_index, &m.header.frame_id, to_wrench(&m.wrench))?, stamp))
             }));
@@ -272,36 +227,36 @@ fn subscribe_inputs(node: &mut Node, names: &NameResolver, frames: &FrameNames, 
     }
     let topic = names.resolve(topics::WRENCHES)?;
     let sub = subscription::<NodeWrenchArray>(node, &topic, &qos::INPUT)?;
-    tasks.push(spawn_input(sub, topic, Source::WrenchArray, ctx.clone(), |v, m: NodeWrenchArray| {
+    inputs.push(polled(sub, topic, Source::WrenchArray, ctx.clone(), |v, m: NodeWrenchArray| {
         let stamp = m.header.stamp.to_nanos();
         Ok((v.batch(m.wrenches.iter().map(|w| (w.kind, w.index, to_wrench(&w.wrench))))?, stamp))
     }));
-    Ok(tasks)
+    Ok(inputs)
 }
 
 /// The load models' commands, discovered from their specs: a std_msgs/Float64
 /// topic per instance (`~/pad_<j>/clamp_force`, `~/tool_feed`) and, for
 /// numbered instances, one batch topic (`~/pad_clamp_forces`, PadClampForces).
-fn subscribe_load_commands(node: &mut Node, names: &NameResolver, rules: &InputRules, ctx: &InputContext) -> Result<Vec<JoinHandle<()>>, NodeError> {
-    let mut tasks = Vec::new();
+fn subscribe_load_commands(node: &mut Node, names: &NameResolver, rules: &InputRules, ctx: &InputContext) -> Result<Vec<Box<dyn PolledInput>>, NodeError> {
+    let mut inputs = Vec::new();
     for (model, command, spec, instances) in rules.load_commands() {
         let source = Source::of_load_command(spec.indexed, false);
         for instance in 0..instances {
             let topic = names.resolve(&topics::load_command(spec, instance + 1))?;
             let sub = subscription::<Float64>(node, &topic, &qos::INPUT)?;
-            tasks.push(spawn_input(sub, topic, source, ctx.clone(), move |v, m: Float64| {
+            inputs.push(polled(sub, topic, source, ctx.clone(), move |v, m: Float64| {
                 Ok((v.load_command(model, command, instance, m.data)?, 0))
             }));
         }
         if spec.indexed {
             let topic = names.resolve(&topics::load_batch(spec))?;
             let sub = subscription::<PadClampForces>(node, &topic, &qos::INPUT)?;
-            tasks.push(spawn_input(sub, topic, Source::of_load_command(true, true), ctx.clone(), move |v, m: PadClampForces| {
+            inputs.push(polled(sub, topic, Source::of_load_command(true, true), ctx.clone(), move |v, m: PadClampForces| {
                 Ok((v.load_batch(model, command, &m.pad, &m.clamp_force)?, m.header.stamp.to_nanos()))
             }));
         }
     }
-    Ok(tasks)
+    Ok(inputs)
 }
 
 /// Reset, pause and step services and the six parameter services.
@@ -448,18 +403,18 @@ async fn serve(setup: NodeSetup, sim: Simulation, domain: u16, bag: Option<NodeB
         validator: Arc::new(InputValidator::new(frames.ale.clone(), frames.lagrange.clone(), sim.scene().rules.clone())),
         stats: Arc::clone(&stats),
         logger: Arc::clone(&logger),
-        tx: tx.clone(),
     };
-    let mut tasks = subscribe_inputs(&mut node, names, &frames, &ctx)?;
-    tasks.extend(subscribe_load_commands(&mut node, names, &sim.scene().rules, &ctx)?);
-    tasks.extend(start_services(&mut node, &setup, &tx)?);
+    let mut inputs = subscribe_inputs(&mut node, names, &frames, &ctx)?;
+    inputs.extend(subscribe_load_commands(&mut node, names, &sim.scene().rules, &ctx)?);
+    let mut tasks = start_services(&mut node, &setup, &tx)?;
     if settings.use_sim_time {
         tasks.push(super::clock_input::spawn(&mut node, &names.resolve(topics::CLOCK)?, tx.clone())?);
     }
 
     let line = startup_line(&setup, &sim, domain);
     let outputs = OutputMessages::new(&sim, &frames);
-    let mut sim_loop = SimLoop::new(sim, outputs, pubs, rx, Arc::clone(&stats), Arc::clone(&logger), loop_settings(&setup));
+    let mut sim_loop =
+        SimLoop::new(sim, outputs, pubs, rx, Arc::clone(&stats), Arc::clone(&logger), loop_settings(&setup)).with_inputs(inputs);
     let (recorder, record_thread) = recording.unzip();
     let marker_thread = match start_marker(&mut node, &setup, sim_loop.simulation(), &frames, recorder.clone())? {
         Some((feed, join)) => {
@@ -484,8 +439,8 @@ async fn serve(setup: NodeSetup, sim: Simulation, domain: u16, bag: Option<NodeB
         std::process::exit(1);
     });
 
-    // Order: input and service tasks (they hold subscriptions, servers and
-    // senders), then the loop (it holds the publishers), then the node and
+    // Order: service tasks (they hold servers and senders), then the loop (it
+    // holds the publishers and the input subscriptions), then the node and
     // the context.
     for t in &tasks {
         t.abort();

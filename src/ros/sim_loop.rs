@@ -1,7 +1,10 @@
 //! The fixed-rate loop: one OS thread owns the [`Simulation`], applies the
 //! checked inputs and service commands in arrival order between steps,
 //! steps, and publishes. A dedicated thread (not a tokio timer, whose
-//! resolution is 1 ms) keeps the step period; it sleeps in
+//! resolution is 1 ms) keeps the step period. Waiting for a step at most
+//! [`SLEEP_THROUGH_INPUTS`] away it sleeps, and the inputs that arrive
+//! meanwhile wait in the queue for the step boundary: one wakeup per step
+//! however many samples arrive; a longer wait (a slow rate, paused) is a
 //! `recv_timeout`, so an input or a service call wakes it at once.
 //!
 //! Per step (nothing allocated on our side): drop stale wrenches, step,
@@ -12,6 +15,7 @@
 use crate::messages::clock::{Pacer, StepClock};
 use crate::messages::clock_follower::ClockUpdate;
 use crate::messages::diagnostics::{self, LoopReport, Timing};
+use super::input_polling::PolledInput;
 use super::inputs::{Input, InputStats, Source, StaleWrenches};
 use super::logging::Logger;
 use crate::messages::types::{
@@ -29,6 +33,15 @@ use std::collections::VecDeque;
 use std::sync::mpsc::{Receiver, RecvTimeoutError};
 use std::sync::Arc;
 use std::time::{Duration, Instant};
+
+/// A wait for the next step at most this long sleeps through arriving inputs
+/// and service calls (they queue, and are handled in arrival order at the
+/// step boundary, where an input takes effect anyway); a longer one wakes for
+/// each, so a slow loop still answers services at once.
+const SLEEP_THROUGH_INPUTS: Duration = Duration::from_millis(2);
+
+/// Paused or diverged, the loop reads the input topics this often.
+const PAUSED_INPUT_POLL: Duration = Duration::from_millis(5);
 use tokio::sync::oneshot;
 
 /// The loop's writers.
@@ -88,6 +101,11 @@ pub struct SimLoop {
     stop: bool,
     /// `~/plate_marker`: the state goes to the marker thread every so many steps.
     marker: Option<MarkerFeed>,
+    /// The input topics, read at step boundaries (`ros/input_polling.rs`).
+    inputs: Vec<Box<dyn PolledInput>>,
+    /// Inputs taken at a boundary: (reception time ns, order taken, input),
+    /// applied in reception order (reused: no allocation once grown).
+    taken: Vec<(i64, u32, Command)>,
 }
 
 impl SimLoop {
@@ -125,8 +143,16 @@ impl SimLoop {
             dropped_at_last_report: 0,
             stop: false,
             marker: None,
+            inputs: Vec::new(),
+            taken: Vec::new(),
             settings,
         }
+    }
+
+    /// Read these input topics at every step boundary.
+    pub fn with_inputs(mut self, inputs: Vec<Box<dyn PolledInput>>) -> Self {
+        self.inputs = inputs;
+        self
     }
 
     /// The simulation the loop owns (for setting up what it feeds).
@@ -178,8 +204,12 @@ impl SimLoop {
                 self.finish_step_request();
             } else if self.paused || self.diverged.is_some() {
                 self.timing.interrupt();
+                // Not stepping: the input topics are read every
+                // PAUSED_INPUT_POLL, so inputs take hold (and are counted)
+                // before the next ~/step.
                 let wait = self.next_diagnostics.saturating_duration_since(Instant::now());
-                self.wait_command(wait);
+                self.wait_command(wait.min(PAUSED_INPUT_POLL));
+                self.take_inputs();
                 if !self.paused && self.diverged.is_none() {
                     self.pacer.restart(Instant::now());
                 }
@@ -199,8 +229,14 @@ impl SimLoop {
                 let deadline = self.pacer.deadline();
                 let now = Instant::now();
                 if now < deadline {
-                    let until = deadline.min(self.next_diagnostics);
-                    self.wait_command(until - now);
+                    let wait = deadline.min(self.next_diagnostics) - now;
+                    if wait <= SLEEP_THROUGH_INPUTS {
+                        // Inputs take effect at the step anyway: queue them
+                        // and wake once per step, not once per sample.
+                        std::thread::sleep(wait);
+                    } else {
+                        self.wait_command(wait);
+                    }
                     continue;
                 }
                 // Apply everything that arrived before the deadline.
@@ -224,6 +260,8 @@ impl SimLoop {
         }
     }
 
+    /// The queued service calls in arrival order, then the samples waiting
+    /// on the input topics in DDS reception order.
     fn drain_commands(&mut self) {
         while let Ok(cmd) = self.rx.try_recv() {
             self.handle(cmd);
@@ -231,6 +269,24 @@ impl SimLoop {
                 return;
             }
         }
+        self.take_inputs();
+    }
+
+    fn take_inputs(&mut self) {
+        let mut taken = std::mem::take(&mut self.taken);
+        for input in &mut self.inputs {
+            input.drain(&mut |received, cmd| {
+                let order = taken.len() as u32;
+                taken.push((received, order, cmd));
+            });
+        }
+        taken.sort_unstable_by_key(|&(received, order, _)| (received, order));
+        for (_, _, cmd) in taken.drain(..) {
+            if !self.stop {
+                self.handle(cmd);
+            }
+        }
+        self.taken = taken;
     }
 
     /// A resume while steps were requested ends those requests.
