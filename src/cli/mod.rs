@@ -1,5 +1,6 @@
 //! Command-line front ends: `modes` and `simulate` (the node is `ros::run_node`).
 
+pub mod campbell;
 pub mod error;
 pub mod float_text;
 pub mod modes;

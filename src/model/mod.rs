@@ -8,6 +8,7 @@
 //! eq. (11) ([`body`]). Immutable once built; no ROS, no time stepping.
 
 pub mod body;
+pub mod campbell;
 mod build;
 pub mod bspline;
 pub mod eigen;

@@ -43,6 +43,11 @@ impl SpinningSpectrum {
         SpinningSpectrum { k, stiffness, mass, geometric, shift: eigen_shift(plate, rigidity), count }
     }
 
+    /// The nodal-diameter number.
+    pub fn k(&self) -> u32 {
+        self.k
+    }
+
     /// ω² (rad²/s², rotating frame) of l = 0, 1, … at spin speed Ω (rad/s).
     pub fn omega_squared(&self, spin: f64) -> Result<Vec<f64>, ModelError> {
         let s = spin * spin;

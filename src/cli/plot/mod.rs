@@ -24,6 +24,7 @@ use std::str::FromStr;
 
 
 mod animate;
+mod campbell;
 mod csv;
 #[cfg(feature = "ros")]
 mod marker_view;
@@ -32,6 +33,7 @@ mod pareto;
 mod render;
 
 pub use self::animate::*;
+pub use self::campbell::*;
 pub use self::csv::*;
 #[cfg(feature = "ros")]
 pub use self::marker_view::*;
