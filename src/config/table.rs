@@ -108,6 +108,7 @@ pub const SECTIONS: &[Section] = &[
             p("plate.nodal_circles", Ty::IntegerArray, "integer array", "—", Value::Integers(&[0, 1]), "[0, 1]", "non-empty, each 0 ≤ l ≤ 50, distinct", "nodal circle numbers l to include"),
             p("plate.damping", Ty::DoubleArray, "double array", "—", Value::Doubles(&[0.0]), "[0.0]", "each in [0, 1); length 1 (all modes) or n (one per mode, in `modes` order)", "modal damping ratios ζ"),
             p("plate.radial_splines", Ty::Integer, "integer", "—", Value::Integer(32), "32", "≤ 400; at least `min_radial_splines` (below)", "cubic B-splines of the radial discretisation, before boundary conditions"),
+            p("plate.residual_flexibility", Ty::Bool, "bool", "—", Value::Bool(true), "true", "—", "add the truncated modes' static deflection (residual flexibility) of the transverse node forces at the node frames' outputs (docs/residual_flexibility.md)"),
         ],
     },
     Section {

@@ -134,11 +134,18 @@ impl PlateModel {
     /// The residual compliance between radii `a` and `b` of `h`: the static
     /// harmonics less the retained modes' part.
     pub fn residual_kernel(&self, h: &StaticHarmonics, a: usize, b: usize) -> ResidualKernel {
+        self.residual_kernel_of(h, a, b, |_, _| true)
+    }
+
+    /// The residual compliance of the subset of this model's modes with
+    /// `retained(k, l)` (the modes left out count as truncated): for
+    /// comparing mode sets from one large model (`study`).
+    pub fn residual_kernel_of(&self, h: &StaticHarmonics, a: usize, b: usize, retained: impl Fn(u32, u32) -> bool) -> ResidualKernel {
         let (ra, rb) = (h.radii[a], h.radii[b]);
         let mut coefficients: Vec<f64> = (0..=HARMONICS).map(|k| h.get(k, a, b)).collect();
         let stiffness = &self.body().modal_stiffness;
         for (i, m) in self.modes().iter().enumerate() {
-            if m.shape == AngularShape::Sin || h.skipped.contains(&m.k) || m.k > HARMONICS {
+            if m.shape == AngularShape::Sin || h.skipped.contains(&m.k) || m.k > HARMONICS || !retained(m.k, m.l) {
                 continue;
             }
             let shape = &self.radial_shapes()[m.radial];
