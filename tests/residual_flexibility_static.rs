@@ -148,3 +148,46 @@ fn static_harmonics_match_the_exact_ones_per_k() {
         assert!(rel < 1e-9 && rel > -bound, "k = {k}: relative error {rel:e} (bound {bound:e}, never above the exact)");
     }
 }
+
+/// The node outputs carry the correction: a held rim force on an ALE node of
+/// the lathe disc at rest, the modes at their static solution; the ALE node's
+/// and two Lagrangian rim nodes' `uz` (at 90° and 180°, through the angle
+/// tables of mixed pairs, and with the plate turned by χ) against the exact
+/// plate; with `plate.residual_flexibility: false` the modal value.
+#[test]
+fn node_outputs_add_the_residual_deflection() {
+    use annular_plate::config::{Config, NodePosition, WrenchConfig};
+    use annular_plate::dynamics::Simulation;
+    let force = -100.0;
+    let chi = 0.3;
+    let mut base = Config { plate: PlateConfig::lathe_disc(), ..Config::default() };
+    base.joint.initial_position = chi;
+    base.nodes.ale = vec![NodePosition { radial: 1.0, angular: 0.0 }];
+    // material points that sit 90° and 180° from the force at χ
+    let at = |dth: f64| NodePosition { radial: 1.0, angular: ((dth - chi) / std::f64::consts::TAU).rem_euclid(1.0) };
+    base.nodes.lagrange = vec![at(0.5 * PI), at(PI)];
+    base.loads.ale = vec![WrenchConfig { force: [0.0, 0.0, force], moment: [0.0; 3] }];
+    let model = PlateModel::new(&base.plate).expect("model");
+    let r0 = base.plate.outer_radius;
+    // static modal amplitudes, Lagrangian description: the force sits at φ = −χ on the plate
+    base.initial.q = (0..model.n_modes()).map(|i| force * model.mode_shape(i, r0, -chi).w / model.body().modal_stiffness[i]).collect();
+    let d = annular_plate::model::bending_rigidity(base.plate.youngs_modulus, base.plate.thickness, base.plate.poisson_ratio);
+    let a = StaticAnnulus::new(base.plate.inner_radius, r0, base.plate.poisson_ratio, d, Edge::Clamped, Edge::Free);
+    let under = force * exact(&a, r0, r0, 0.0);
+    let expected = [under, force * exact(&a, r0, r0, 0.5 * PI), force * exact(&a, r0, r0, PI)];
+    for residual in [true, false] {
+        let mut c = base.clone();
+        c.plate.residual_flexibility = residual;
+        let sim = Simulation::new(c).expect("simulation");
+        let got = [sim.ale_node(0).uz, sim.lagrange_node(0).uz, sim.lagrange_node(1).uz];
+        let z = [sim.ale_node_pose(0).translation[2], sim.lagrange_node_pose(0).translation[2], sim.lagrange_node_pose(1).translation[2]];
+        let worst = got.iter().zip(&expected).map(|(g, e)| ((g - e) / under).abs()).fold(0.0, f64::max);
+        println!("residual_flexibility {residual}: uz {got:?} exact {expected:?}; worst {:.4} % of w under the load", 100.0 * worst);
+        assert_eq!(got, z, "the pose carries uz");
+        if residual {
+            assert!(worst < 1e-4, "with the residual: {worst:e}");
+        } else {
+            assert!(worst > 0.05, "30 modes alone are 5.3 % off under the load: {worst:e}");
+        }
+    }
+}

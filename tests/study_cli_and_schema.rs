@@ -129,8 +129,8 @@ fn json_schema_is_stable() {
     let b = &v["mode_count"];
     assert_eq!(keys(b), axis(&["load_case", "damping", "notes"]));
     assert_eq!(keys(&b["load_case"]), set(&["point", "ale_node", "loads", "speed_rad_s", "note"]));
-    assert_eq!(keys(&b["reference"]), set(&["k_max", "l_max", "modes", "radial_splines", "response_m", "nested", "uncertainty", "uncertainty_method"]));
-    assert_eq!(keys(&b["rows"][0]), set(&["k_max", "l_max", "modes", "response_m", "relative_error", "step_time_s", "pareto"]));
+    assert_eq!(keys(&b["reference"]), set(&["k_max", "l_max", "modes", "radial_splines", "response_m", "response_with_residual_m", "nested", "uncertainty", "uncertainty_method"]));
+    assert_eq!(keys(&b["rows"][0]), set(&["k_max", "l_max", "modes", "response_m", "relative_error", "response_with_residual_m", "relative_error_with_residual", "step_time_s", "pareto"]));
     assert_eq!(keys(&b["recommendations"][0]), recommendation);
     let picked = b["recommendations"].as_array().unwrap().iter().find(|r| !r["setting"].is_null()).expect("a mode set is recommended");
     assert_eq!(keys(&picked["setting"]), set(&["k_max", "l_max", "modes", "radial_splines"]));

@@ -206,6 +206,10 @@ pub fn table(r: &StudyReport) -> String {
             &(|x: &study::response::ResponseRow| format!("{:.2e}{}", x.relative_error, if x.pareto { "*" } else { " " }))
                 as &dyn Fn(&study::response::ResponseRow) -> String,
         ),
+        (
+            "relative error with residual flexibility (docs/residual_flexibility.md; reference plus its own residual)",
+            &|x: &study::response::ResponseRow| format!("{:.2e} ", x.relative_error_with_residual),
+        ),
         ("wall time per step", &|x: &study::response::ResponseRow| fmt_time(x.step_time_s)),
         ("modes", &|x: &study::response::ResponseRow| x.modes.to_string()),
     ] {

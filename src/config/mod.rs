@@ -89,6 +89,9 @@ pub struct PlateConfig {
     pub damping: Vec<f64>,
     /// Number of cubic B-splines of the radial discretisation (before boundary conditions).
     pub radial_splines: usize,
+    /// Add the truncated modes' static deflection at the node frames
+    /// (`plate.residual_flexibility`, docs/residual_flexibility.md).
+    pub residual_flexibility: bool,
 }
 
 /// Bending rigidity D = E h³ / (12 (1 − ν²)), eq. (2).
@@ -112,6 +115,7 @@ impl PlateConfig {
             nodal_circles: vec![0, 1],
             damping: vec![0.0],
             radial_splines: DEFAULT_RADIAL_SPLINES,
+            residual_flexibility: true,
         }
     }
 

@@ -111,6 +111,7 @@ pub const SECTIONS: &[Section] = &[
             p("plate.radial_splines", Ty::Integer, "integer", "—", Value::Integer(32), "32", "≤ 400; at least `min_radial_splines` (below)", "cubic B-splines of the radial discretisation, before boundary conditions"),
             p("plate.centrifugal_stiffening", Ty::Bool, "bool", "—", Value::Bool(false), "false", "—", "the membrane prestress of the spinning annulus (Lamé, ∝ Ω²) stiffens the plate: geometric stiffness in `campbell`, critical speeds (docs/rotor_dynamics.md)"),
             p("plate.in_plane_inner", Ty::String, "string", "—", Value::Str("auto"), "`auto`", "`auto`, `fixed` or `free`", "in-plane condition at r_i for the prestress: `fixed` u(r_i) = 0 (hub), `free` σ_r(r_i) = 0; `auto`: fixed when `plate.inner_boundary` is clamped or supported, free when free"),
+            p("plate.residual_flexibility", Ty::Bool, "bool", "—", Value::Bool(true), "true", "—", "add the truncated modes' static deflection (residual flexibility) of the transverse node forces at the node frames' outputs (docs/residual_flexibility.md)"),
         ],
     },
     Section {

@@ -178,6 +178,7 @@ fn read_plate(r: &Reader) -> Result<PlateConfig, ConfigError> {
         nodal_circles,
         damping: Vec::new(),
         radial_splines: splines as usize,
+        residual_flexibility: r.bool("plate.residual_flexibility", d.residual_flexibility)?,
     };
 
     check_derived(&plate)?;

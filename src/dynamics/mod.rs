@@ -18,6 +18,7 @@ pub mod layout;
 pub mod load_models;
 pub mod loads;
 pub mod node_frame;
+pub mod residual;
 pub mod scene;
 pub mod simulation;
 pub mod stability;

@@ -9,6 +9,7 @@ pub use super::layout::{ModeLayout, ModePair};
 use super::commands::InputRules;
 use super::load_models::{LoadModels, ModelWrenches, SceneNodes};
 pub use super::node_frame::{NodeFrame, NodeKind, NodeShape};
+pub use super::residual::ResidualCompliance;
 
 /// The effects the reference motion switches on (DESIGN: only what a scene needs).
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
@@ -48,6 +49,9 @@ pub struct Scene {
     pub load_models: LoadModels,
     /// The rules every input passes ([`commands`](super::commands)).
     pub rules: InputRules,
+    /// Residual compliance of the truncated modes between the node frames
+    /// (`plate.residual_flexibility`; None when off or without nodes).
+    pub residual: Option<ResidualCompliance>,
 }
 
 impl Scene {
@@ -78,6 +82,8 @@ impl Scene {
         };
         let polar_inertia = model.body().inertia[2][2];
         let load_models = LoadModels::new(config, &SceneNodes { ale: &ale_nodes, lagrange: &lagrange_nodes, modal_mass: &model.body().modal_mass });
+        let residual = (config.plate.residual_flexibility && !(ale_nodes.is_empty() && lagrange_nodes.is_empty()))
+            .then(|| ResidualCompliance::new(&model, &ale_nodes, &lagrange_nodes));
         let rules = InputRules::new(&config.limits, ale_nodes.len(), lagrange_nodes.len(), &load_models);
         Scene {
             model,
@@ -91,6 +97,7 @@ impl Scene {
             polar_inertia,
             rules,
             load_models,
+            residual,
         }
     }
 

@@ -346,13 +346,34 @@ impl Simulation {
     /// ALE node `j` (0-based), in plate_base.
     pub fn ale_node(&self, j: usize) -> NodeOutput {
         let (q, q_dot) = self.state.ale();
-        NodeOutput::of(&self.scene.ale_nodes[j], q, q_dot, self.state.speed)
+        NodeOutput::of(&self.scene.ale_nodes[j], q, q_dot, self.state.speed, self.residual_deflection(j))
     }
 
     /// Lagrangian node `j` (0-based), in plate_rotor.
     pub fn lagrange_node(&self, j: usize) -> NodeOutput {
         let (q, q_dot) = self.state.lagrange();
-        NodeOutput::of(&self.scene.lagrange_nodes[j], q, q_dot, self.state.speed)
+        NodeOutput::of(&self.scene.lagrange_nodes[j], q, q_dot, self.state.speed, self.residual_deflection(self.scene.ale_nodes.len() + j))
+    }
+
+    /// Transverse force (N) at node `b` (ALE first, then Lagrangian): the held
+    /// wrench plus the load models', z in the node frame.
+    pub fn transverse_node_force(&self, b: usize) -> f64 {
+        let n_ale = self.scene.ale_nodes.len();
+        if b < n_ale {
+            self.inputs.ale.get(b).map_or(0.0, |w| w.force[2]) + self.ale_model_wrench(b).force[2]
+        } else {
+            self.inputs.lagrange.get(b - n_ale).map_or(0.0, |w| w.force[2]) + self.lagrange_model_wrench(b - n_ale).force[2]
+        }
+    }
+
+    /// The truncated modes' static deflection at node `a` (ALE first, then
+    /// Lagrangian) under the current transverse node forces, m (0 with
+    /// `plate.residual_flexibility: false`).
+    pub fn residual_deflection(&self, a: usize) -> f64 {
+        match &self.scene.residual {
+            Some(r) => r.deflection(a, self.state.chi.wrapped(), |b| self.transverse_node_force(b)),
+            None => 0.0,
+        }
     }
 
     /// Pose of ALE node `j` (0-based) in the reference frame (plate_base).
@@ -422,8 +443,11 @@ fn reset_inputs(config: &Config, scene: &Scene, inputs: &mut Inputs) {
 
 impl NodeOutput {
     /// The kinematics of `node` for amplitudes in its own description.
-    fn of(node: &NodeFrame, q: &[f64], q_dot: &[f64], speed: f64) -> NodeOutput {
-        let d = node.deflection(q);
+    /// `residual` (m) is the truncated modes' static deflection added to w
+    /// (the tilt and the rates stay modal).
+    fn of(node: &NodeFrame, q: &[f64], q_dot: &[f64], speed: f64, residual: f64) -> NodeOutput {
+        let mut d = node.deflection(q);
+        d.w += residual;
         let uz_dot: f64 = node.shapes.iter().zip(q_dot).map(|(s, v)| s.w * v).sum();
         let material_uz_dot = match node.kind {
             NodeKind::Lagrange => uz_dot,

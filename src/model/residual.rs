@@ -79,45 +79,71 @@ pub struct ResidualKernel {
 impl ResidualKernel {
     /// C(Δφ) = Σ r_k cos kΔφ + tail, m/N.
     pub fn at(&self, delta: f64) -> f64 {
-        let (s, _) = cosine_sum(&self.coefficients, delta);
-        s + self.tail(delta)
-    }
-
-    /// dC/dΔφ.
-    pub fn derivative(&self, delta: f64) -> f64 {
-        let kk = self.coefficients.len() as u32;
-        let mut d = -(0..kk).map(|k| k as f64 * self.coefficients[k as usize] * (k as f64 * delta).sin()).sum::<f64>();
         if let Some((a, b)) = self.tail_fit {
-            d -= (kk..TAIL_MULTIPLE * kk).map(|k| { let kf = k as f64; (a / (kf * kf) + b / (kf * kf * kf)) * (kf * delta).sin() }).sum::<f64>();
+            if delta.rem_euclid(std::f64::consts::TAU) == 0.0 {
+                let kk = self.coefficients.len() as f64;
+                return self.coefficients.iter().sum::<f64>() + a * hurwitz_zeta(3.0, kk) + b * hurwitz_zeta(4.0, kk);
+            }
         }
-        d
+        let n = self.series_len();
+        cosine_sum(|k| self.term(k), n, delta)
     }
 
-    fn tail(&self, delta: f64) -> f64 {
-        let Some((a, b)) = self.tail_fit else { return 0.0 };
-        let kk = self.coefficients.len() as f64;
-        let wrapped = delta.rem_euclid(std::f64::consts::TAU);
-        if wrapped == 0.0 {
-            a * hurwitz_zeta(3.0, kk) + b * hurwitz_zeta(4.0, kk)
+    /// dC/dΔφ = −Σ k r_k sin kΔφ (the tail's terms included).
+    pub fn derivative(&self, delta: f64) -> f64 {
+        let n = self.series_len();
+        -sine_sum(|k| k as f64 * self.term(k), n, delta)
+    }
+
+    /// Terms summed at Δφ ≠ 0: the direct ones, then the fitted tail up to
+    /// [`TAIL_MULTIPLE`] × [`HARMONICS`] (its remainder is below A/(2 (8K)²)).
+    fn series_len(&self) -> usize {
+        if self.tail_fit.is_some() {
+            TAIL_MULTIPLE as usize * self.coefficients.len()
         } else {
-            let n = self.coefficients.len() as u32;
-            (n..TAIL_MULTIPLE * n).map(|k| { let kf = k as f64; (a / (kf * kf * kf) + b / (kf * kf * kf * kf)) * (kf * delta).cos() }).sum()
+            self.coefficients.len()
+        }
+    }
+
+    /// r_k, or the fitted A k⁻³ + B k⁻⁴ beyond the direct sum.
+    #[inline]
+    fn term(&self, k: usize) -> f64 {
+        match (self.coefficients.get(k), self.tail_fit) {
+            (Some(&c), _) => c,
+            (None, Some((a, b))) => {
+                let kf = k as f64;
+                let k3 = kf * kf * kf;
+                a / k3 + b / (k3 * kf)
+            }
+            (None, None) => 0.0,
         }
     }
 }
 
-/// Σ c_k cos kx by the recurrence cos (k+1)x = 2 cos x cos kx − cos (k−1)x
-/// (Clenshaw), and the number of terms.
-fn cosine_sum(c: &[f64], x: f64) -> (f64, usize) {
+/// Σ_{k<n} c(k) cos kx by the recurrence cos (k+1)x = 2 cos x cos kx − cos (k−1)x
+/// (Clenshaw): one cosine for the whole sum.
+fn cosine_sum(c: impl Fn(usize) -> f64, n: usize, x: f64) -> f64 {
     let cx = x.cos();
     let (mut b1, mut b2) = (0.0, 0.0);
-    for &ck in c.iter().skip(1).rev() {
-        let b0 = ck + 2.0 * cx * b1 - b2;
+    for k in (1..n).rev() {
+        let b0 = c(k) + 2.0 * cx * b1 - b2;
         b2 = b1;
         b1 = b0;
     }
-    let first = c.first().copied().unwrap_or(0.0);
-    (first + b1 * cx - b2, c.len())
+    let first = if n > 0 { c(0) } else { 0.0 };
+    first + b1 * cx - b2
+}
+
+/// Σ_{1≤k<n} d(k) sin kx by the same recurrence.
+fn sine_sum(d: impl Fn(usize) -> f64, n: usize, x: f64) -> f64 {
+    let (sx, cx) = x.sin_cos();
+    let (mut b1, mut b2) = (0.0, 0.0);
+    for k in (1..n).rev() {
+        let b0 = d(k) + 2.0 * cx * b1 - b2;
+        b2 = b1;
+        b1 = b0;
+    }
+    b1 * sx
 }
 
 /// Σ_{k ≥ n} k^{−s} (Euler–Maclaurin; n ≥ 8 gives far below 1e-12 relative).
@@ -134,11 +160,18 @@ impl PlateModel {
     /// The residual compliance between radii `a` and `b` of `h`: the static
     /// harmonics less the retained modes' part.
     pub fn residual_kernel(&self, h: &StaticHarmonics, a: usize, b: usize) -> ResidualKernel {
+        self.residual_kernel_of(h, a, b, |_, _| true)
+    }
+
+    /// The residual compliance of the subset of this model's modes with
+    /// `retained(k, l)` (the modes left out count as truncated): for
+    /// comparing mode sets from one large model (`study`).
+    pub fn residual_kernel_of(&self, h: &StaticHarmonics, a: usize, b: usize, retained: impl Fn(u32, u32) -> bool) -> ResidualKernel {
         let (ra, rb) = (h.radii[a], h.radii[b]);
         let mut coefficients: Vec<f64> = (0..=HARMONICS).map(|k| h.get(k, a, b)).collect();
         let stiffness = &self.body().modal_stiffness;
         for (i, m) in self.modes().iter().enumerate() {
-            if m.shape == AngularShape::Sin || h.skipped.contains(&m.k) || m.k > HARMONICS {
+            if m.shape == AngularShape::Sin || h.skipped.contains(&m.k) || m.k > HARMONICS || !retained(m.k, m.l) {
                 continue;
             }
             let shape = &self.radial_shapes()[m.radial];
@@ -397,11 +430,29 @@ mod tests {
     }
 
     #[test]
-    fn cosine_sum_matches_direct_evaluation() {
+    fn cosine_and_sine_sums_match_direct_evaluation() {
         let c: Vec<f64> = (0..50).map(|k| 1.0 / (1.0 + k as f64).powi(3)).collect();
         for x in [0.0, 0.3, 1.0, 2.5, 3.1] {
             let direct: f64 = c.iter().enumerate().map(|(k, v)| v * (k as f64 * x).cos()).sum();
-            assert!((cosine_sum(&c, x).0 - direct).abs() < 1e-14);
+            assert!((cosine_sum(|k| c[k], c.len(), x) - direct).abs() < 1e-14);
+            let direct: f64 = c.iter().enumerate().skip(1).map(|(k, v)| v * (k as f64 * x).sin()).sum();
+            assert!((sine_sum(|k| c[k], c.len(), x) - direct).abs() < 1e-14);
+        }
+    }
+
+    #[test]
+    fn kernel_tail_is_summed_away_from_zero_and_its_slope_is_the_derivative() {
+        let coefficients: Vec<f64> = (0..=64).map(|k| 1.0 / (1.0 + k as f64).powi(3)).collect();
+        let kernel = ResidualKernel { coefficients, tail_fit: Some((1.0, 0.5)) };
+        // At Δ = 0 the zeta tail, near it the tail summed to 8 × 65 terms: they differ
+        // by the remainder Σ_{k ≥ 520} (k⁻³ + k⁻⁴/2) ≈ 1/(2 · 520²).
+        let (at0, near) = (kernel.at(0.0), kernel.at(1e-9));
+        let remainder = 1.0 / (2.0 * 520.0f64.powi(2));
+        assert!(((at0 - near) - remainder).abs() < 2e-8, "{at0} − {near} vs {remainder}");
+        for x in [0.2, 1.0, 2.9] {
+            let h = 1e-5;
+            let fd = (kernel.at(x + h) - kernel.at(x - h)) / (2.0 * h);
+            assert!((fd - kernel.derivative(x)).abs() < 1e-6, "{fd} vs {}", kernel.derivative(x));
         }
     }
 }

@@ -22,6 +22,12 @@
 //! three-level grid-convergence index (Roache) that is the uncertainty;
 //! otherwise the larger difference is taken. The uncertainty is added to every
 //! error before a setting is recommended.
+//!
+//! **With residual flexibility** (issue 11, docs/residual_flexibility.md):
+//! each set's response plus the static deflection of the modes it leaves out
+//! under the loads' transverse forces (moments stay modal), against the
+//! reference plus its own residual; the recommendations use the plain modal
+//! errors.
 
 use super::timing::min_time_per_unit;
 use super::{mark_pareto, recommend, Recommendation, StudyError, StudyPlan};
@@ -152,6 +158,10 @@ pub struct ResponseRow {
     pub response_m: f64,
     /// |response − reference| / |reference|.
     pub relative_error: f64,
+    /// The response plus the residual flexibility of the modes the set leaves out, m.
+    pub response_with_residual_m: f64,
+    /// Its error against the reference plus the reference's own residual.
+    pub relative_error_with_residual: f64,
     /// Wall time of one `Simulation::step` with this mode set (the scene's
     /// integrator, rate and loads), s: the fastest of repeated batches.
     pub step_time_s: f64,
@@ -165,6 +175,8 @@ pub struct ResponseReference {
     pub modes: usize,
     pub radial_splines: usize,
     pub response_m: f64,
+    /// The response plus the reference set's residual flexibility, m.
+    pub response_with_residual_m: f64,
     /// The nested sets used for the uncertainty: ((k, l), response).
     pub nested: Vec<((u32, u32), f64)>,
     /// Estimated relative truncation error of the reference (see module docs).
@@ -234,6 +246,9 @@ pub fn run(config: &Config, plan: &StudyPlan, tick: &mut dyn FnMut(&str)) -> Res
     if reference == 0.0 || !reference.is_finite() {
         return Err(StudyError::NoResponse { detail: format!("the steady deflection at the load point is {reference:e} m") });
     }
+    let residual_case = case.clone();
+    let residual = residual_of_sets(&model, &residual_case);
+    let reference_with_residual = reference + residual(k_ref, l_ref);
     // Nested sets for the reference's own error.
     let nested: Vec<((u32, u32), f64)> = [4, 2, 1].iter().map(|&d| ((k_ref / d, l_ref / d), partial_sum(&contrib, k_ref / d, l_ref / d))).collect();
     let d1 = nested[1].1 - nested[0].1;
@@ -273,12 +288,15 @@ pub fn run(config: &Config, plan: &StudyPlan, tick: &mut dyn FnMut(&str)) -> Res
                     }
                 }
             });
+            let rc = r + residual(k_max, l_max);
             rows.push(ResponseRow {
                 k_max,
                 l_max,
                 modes: sim.model().n_modes(),
                 response_m: r,
                 relative_error: (r - reference).abs() / reference.abs(),
+                response_with_residual_m: rc,
+                relative_error_with_residual: (rc - reference_with_residual).abs() / reference_with_residual.abs(),
                 step_time_s,
                 pareto: false,
             });
@@ -306,6 +324,7 @@ pub fn run(config: &Config, plan: &StudyPlan, tick: &mut dyn FnMut(&str)) -> Res
             modes: model.n_modes(),
             radial_splines: splines,
             response_m: reference,
+            response_with_residual_m: reference_with_residual,
             nested,
             uncertainty,
             uncertainty_method,
@@ -314,4 +333,25 @@ pub fn run(config: &Config, plan: &StudyPlan, tick: &mut dyn FnMut(&str)) -> Res
         recommendations,
         notes,
     })
+}
+
+/// The residual flexibility at the load point of the set k ≤ k_max, l ≤ l_max
+/// of `model`'s modes under the load case's transverse forces, m.
+fn residual_of_sets<'a>(model: &'a PlateModel, case: &'a LoadCase) -> impl Fn(u32, u32) -> f64 + 'a {
+    let at = |xi: NodePosition| (model.radius_at(xi.radial), xi.angular * TAU);
+    let (rp, tp) = at(case.point);
+    let mut radii = vec![rp];
+    radii.extend(case.loads.iter().map(|&(xi, _)| at(xi).0));
+    let harmonics = model.static_harmonics(&radii);
+    move |k_max, l_max| {
+        case.loads
+            .iter()
+            .enumerate()
+            .filter(|(_, (_, w))| w[2] != 0.0)
+            .map(|(j, &(xi, w))| {
+                let kernel = model.residual_kernel_of(&harmonics, 0, j + 1, |k, l| k <= k_max && l <= l_max);
+                w[2] * kernel.at(tp - at(xi).1)
+            })
+            .sum()
+    }
 }

@@ -77,6 +77,11 @@ pub(super) fn panels(r: &StudyReport) -> [PanelData; 3] {
                 color: PALETTE[i % PALETTE.len()],
                 points: b.rows.iter().filter(|x| x.l_max == l).map(|x| (x.step_time_s, floor(x.relative_error), format!("k ≤ {}", x.k_max))).collect(),
             })
+            .chain(ls.iter().enumerate().map(|(i, &l)| Series {
+                name: format!("l ≤ {l} + residual"),
+                color: PALETTE[(i + ls.len()) % PALETTE.len()],
+                points: b.rows.iter().filter(|x| x.l_max == l).map(|x| (x.step_time_s, floor(x.relative_error_with_residual), format!("k ≤ {}", x.k_max))).collect(),
+            }))
             .collect(),
         front: b.rows.iter().filter(|x| x.pareto).map(|x| (x.step_time_s, floor(x.relative_error))).collect(),
         picks: b
