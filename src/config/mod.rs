@@ -440,6 +440,26 @@ impl Caliper {
     }
 }
 
+/// Where the pads' friction acts (`pads.contact_surface`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum ContactSurface {
+    /// On the faces z = ±h/2, from the sliding velocity of the face point
+    /// (the friction couple and the sliding-direction terms; docs/scenes.md).
+    Faces,
+    /// At the mid-plane node, along −sign Ω e_θ (the paper's model).
+    MidPlane,
+}
+
+impl ContactSurface {
+    pub fn name(self) -> &'static str {
+        match self {
+            ContactSurface::Faces => "faces",
+            ContactSurface::MidPlane => "mid_plane",
+        }
+    }
+}
+
 /// Brake pads (`pads.*`, paper 5.3 and Fig. 18): at every contact point an
 /// axial spring-damper on each face against the pad's backing plate, pressed
 /// with the pad's clamp force, and friction μN along the deformed surface.
@@ -460,6 +480,7 @@ pub struct PadsConfig {
     /// Friction follows the deformed surface (the paper's follower forces).
     pub follower_friction: bool,
     pub caliper: Caliper,
+    pub contact_surface: ContactSurface,
 }
 
 impl PadsConfig {

@@ -215,6 +215,7 @@ pub const SECTIONS: &[Section] = &[
             p("pads.lift_off", Ty::Bool, "bool", "—", Value::Bool(false), "false", "—", "a contact that would pull is released (N ≥ 0)"),
             p("pads.follower_friction", Ty::Bool, "bool", "—", Value::Bool(true), "true", "—", "friction lies in the deformed surface (follower forces, the squeal mechanism)"),
             p("pads.caliper", Ty::String, "string", "—", Value::Str("floating"), "`floating`", "`floating` or `fixed`", "`floating`: each face's pad is a rigid backing plate pressed with the clamp force (a force, as from a hydraulic piston); `fixed`: the caliper stays where the clamp force puts it on an undeformed disc"),
+            p("pads.contact_surface", Ty::String, "string", "—", Value::Str("mid_plane"), "`mid_plane`", "`faces` or `mid_plane`", "`faces`: each pad's friction acts on its face (z = ±h/2) against the sliding velocity of the face point — rotation, the vibration's in-plane −z∇(Dw/Dt) and normal Ω ∂w/∂θ — regularised Coulomb, so the two faces' normal-force difference makes a couple (docs/scenes.md); `mid_plane`: at the mid-plane node along −sign Ω e_θ (the paper's model)"),
         ],
     },
     Section {

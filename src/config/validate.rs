@@ -13,7 +13,7 @@ use std::f64::consts::FRAC_PI_2;
 
 use super::raw::{positive, Reader};
 use super::{
-    Boundary, Caliper, Config, ConfigError, Coordinates, InitialConfig, IntegratorKind, JointConfig, LimitsConfig, LinksConfig,
+    Boundary, Caliper, Config, ContactSurface, ConfigError, Coordinates, InitialConfig, IntegratorKind, JointConfig, LimitsConfig, LinksConfig,
     LoadsConfig, NodePosition, NodesConfig, Surface, PadContact, PadsConfig, Params, PlateConfig, ReferenceConfig,
     SimulationConfig, SpringsConfig, ToolConfig, WrenchConfig, MAX_TOOL_FEED_RATE,
 };
@@ -28,6 +28,7 @@ const INTEGRATORS: &[&str] = &["exponential", "implicit_midpoint", "rk4"];
 const COORDINATES: &[&str] = &["ale", "lagrangian"];
 const CALIPERS: &[&str] = &["floating", "fixed"];
 const SURFACES: &[&str] = &["top", "bottom", "mid"];
+const CONTACT_SURFACES: &[&str] = &["faces", "mid_plane"];
 
 /// Largest nodal-diameter number k accepted.
 const MAX_NODAL_DIAMETER: i64 = 200;
@@ -583,6 +584,11 @@ fn read_pads(r: &Reader, nodes: &NodesConfig, limits: &LimitsConfig) -> Result<O
         caliper: read_choice(r, "pads.caliper", "floating", CALIPERS, |s| match s {
             "floating" => Some(Caliper::Floating),
             "fixed" => Some(Caliper::Fixed),
+            _ => None,
+        })?,
+        contact_surface: read_choice(r, "pads.contact_surface", "mid_plane", CONTACT_SURFACES, |s| match s {
+            "faces" => Some(ContactSurface::Faces),
+            "mid_plane" => Some(ContactSurface::MidPlane),
             _ => None,
         })?,
     }))

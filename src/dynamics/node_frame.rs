@@ -35,6 +35,9 @@ pub struct NodeFrame {
     pub shapes: Vec<NodeShape>,
     /// Per mode ∂w_i/∂φ (for the material velocity under an ALE point).
     pub w_phi: Vec<f64>,
+    /// Per mode ∇(∂w_i/∂φ) in the parent frame's Cartesian axes, 1/m·m (the
+    /// in-plane velocity of a face point under an ALE node, docs/scenes.md).
+    pub w_phi_grad: Vec<[f64; 2]>,
     /// z of the frame through the thickness: +h/2 (top face), −h/2 (bottom
     /// face) or 0 (mid-plane), m (`nodes.*_surface`).
     pub z: f64,
@@ -60,6 +63,7 @@ impl NodeFrame {
             angle,
             shapes: values.iter().map(|s| NodeShape { w: s.w, tilt: s.tilt(radius, angle) }).collect(),
             w_phi: values.iter().map(|s| s.w_phi).collect(),
+            w_phi_grad: (0..model.n_modes()).map(|i| angular_rate_gradient(model, i, radius, angle)).collect(),
             z,
             xy: [radius * angle.cos(), radius * angle.sin()],
         }
@@ -85,6 +89,13 @@ impl NodeFrame {
         [-self.z * force[1], self.z * force[0]]
     }
 
+    /// ∇w_i in the parent frame's Cartesian axes (from the tilt: (−θ_y, θ_x)).
+    #[inline]
+    pub fn gradient(&self, i: usize) -> [f64; 2] {
+        let t = self.shapes[i].tilt;
+        [-t[1], t[0]]
+    }
+
     /// Deflection w and tilt at the node for amplitudes `q` in the node's own description.
     pub fn deflection(&self, q: &[f64]) -> NodeShape {
         let mut out = NodeShape::default();
@@ -95,4 +106,16 @@ impl NodeFrame {
         }
         out
     }
+}
+
+/// ∇(∂w_i/∂φ) at (r, φ): with w_i = R(r) Θ(φ), ∂_r ∂_φ w_i = R′ Θ′ and
+/// (1/r) ∂²_φ w_i = −k² R Θ / r, turned into Cartesian axes.
+fn angular_rate_gradient(model: &PlateModel, i: usize, r: f64, phi: f64) -> [f64; 2] {
+    let m = &model.modes()[i];
+    let rr = model.radial_shapes()[m.radial].eval(r);
+    let (t, dt) = m.shape.eval(m.k, phi);
+    let k2 = (m.k * m.k) as f64;
+    let (radial, tangential) = (rr[1] * dt, -k2 * rr[0] * t / r);
+    let (s, c) = phi.sin_cos();
+    [c * radial - s * tangential, s * radial + c * tangential]
 }

@@ -18,6 +18,18 @@
 //! - K_fric,im = w_i (F_y θ_x,m − F_x θ_y,m): the follower friction's normal
 //!   component, (F_θ/r) ∂w/∂θ — not symmetric, hence flutter.
 //!
+//! With `pads.contact_surface: faces` (docs/scenes.md, "Friction on the
+//! faces") each contact adds, with g = μ tanh(|V|/v_reg), V = Ωr, p the
+//! preload per face, δN = k_c (w − w̄) + c_c (ẇ − ẇ̄) and Ẇ = ∂w/∂t + Ω ∂w/∂θ:
+//!
+//! - the friction couple  f_i += h g sign V (1/r) ∂_θ w_i δN,
+//! - the sliding direction f_i −= (h²/2) p (g/|V|) ∂_r w_i ∂_r Ẇ,
+//! - the speed slope      f_i −= (h²/2) p g′ (1/r²) ∂_θ w_i ∂_θ Ẇ, g′ = dg/d|v|
+//!   (only the regularisation: μ is constant),
+//!
+//! ([`add_face_terms`]); the follower term above is the normal part of the
+//! sliding direction and is the same.
+//!
 //! The friction force's magnitude does not change to first order (the two
 //! faces' spring forces change by ∓k_c w). Lift-off is inactive about a
 //! preloaded state; the tool (a delay) and the held user wrenches are not
@@ -26,9 +38,10 @@
 //! the simulation uses; faer gives its eigenvalues.
 
 use super::integrators::equations::mode_constants;
-use super::load_models::Pads;
+use super::load_models::pad::FRICTION_REGULARISATION_SPEED;
+use super::load_models::{PadContactPoint, Pads};
 use super::scene::Scene;
-use crate::config::Caliper;
+use crate::config::{Caliper, ContactSurface};
 use faer::Mat;
 use nalgebra::Complex;
 
@@ -98,9 +111,49 @@ pub fn linear_system(scene: &Scene, speed: f64, friction_coefficient: f64, clamp
                     a[(n + i, n + m)] -= 2.0 * pads.damping * di * dm / mass[i];
                 }
             }
+            if pads.contact_surface == ContactSurface::Faces {
+                add_face_terms(&mut a, scene, pads, contact, mean, preload, speed, friction_coefficient);
+            }
         }
     }
     a
+}
+
+/// The face friction's first-order terms of one contact (module docs) into
+/// the rows of `a` (ALE amplitudes y = (q̄, q̄̇)).
+#[allow(clippy::too_many_arguments)]
+fn add_face_terms(a: &mut Mat<f64>, scene: &Scene, pads: &Pads, contact: &PadContactPoint, mean: &[f64], preload: f64, speed: f64, mu: f64) {
+    let n = scene.n_modes();
+    let mass = &scene.model.body().modal_mass;
+    let node = &scene.ale_nodes[contact.node];
+    let h = contact.face_z[0] - contact.face_z[1];
+    let r = contact.radius;
+    let (s, c) = contact.sin_cos;
+    let v = speed * r;
+    let x = v.abs() / FRICTION_REGULARISATION_SPEED;
+    let g = mu * x.tanh();
+    let g_over_v = if x < 1e-8 { mu / FRICTION_REGULARISATION_SPEED } else { g / v.abs() };
+    let g_slope = mu / (FRICTION_REGULARISATION_SPEED * x.cosh().powi(2));
+    let couple = h * mu * (v / FRICTION_REGULARISATION_SPEED).tanh();
+    let lever = 0.5 * h * h * preload;
+    // Per mode: ∂_r w, ∂_θ w and of ∂_θ w: ∂_r ∂_θ w, ∂²_θ w.
+    let radial = |g: [f64; 2]| c * g[0] + s * g[1];
+    let angular = |g: [f64; 2]| r * (-s * g[0] + c * g[1]);
+    for i in 0..n {
+        let (dr_i, dt_i) = (radial(node.gradient(i)), angular(node.gradient(i)));
+        for m in 0..n {
+            let (dr_m, dt_m) = (radial(node.gradient(m)), angular(node.gradient(m)));
+            let (drt_m, dtt_m) = (radial(node.w_phi_grad[m]), angular(node.w_phi_grad[m]));
+            let dn = node.shapes[m].w - mean[m];
+            // δN = k_c dn q + c_c dn q̇; ∂_r Ẇ = dr q̇ + Ω drt q; ∂_θ Ẇ = dt q̇ + Ω dtt q.
+            let on_q = couple * dt_i / r * pads.stiffness * dn
+                - lever * g_over_v * dr_i * speed * drt_m
+                - lever * g_slope / (r * r) * dt_i * speed * dtt_m;
+            let on_q_dot = couple * dt_i / r * pads.damping * dn - lever * g_over_v * dr_i * dr_m - lever * g_slope / (r * r) * dt_i * dt_m;
+            a[(n + i, m)] += on_q / mass[i];
+            a[(n + i, n + m)] += on_q_dot / mass[i];
+        }
+    }
 }
 
 /// [`linear_system`] for the balanced state (s q̄, q̄̇), s ≈ the highest

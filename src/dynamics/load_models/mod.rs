@@ -21,6 +21,7 @@
 //! re-evaluated by RK4 at every stage, by the other integrators at the substep
 //! start. After the substep, [`LoadModel::commit_substep`] advances the state.
 
+pub mod face_friction;
 pub mod model;
 pub mod pad;
 pub mod pitch_link;

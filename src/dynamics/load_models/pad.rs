@@ -42,6 +42,13 @@
 //! at the mid-plane node: a Kirchhoff plate has no through-thickness, and the
 //! paper connects its contact submodel to the mid-plane `nodes_ALE` frame.
 //!
+//! With `pads.contact_surface: faces` each face's friction acts on the face
+//! (z = ±h/2) against the sliding velocity of the face point under the pad
+//! (`face_friction.rs`): the two faces' normal-force difference then makes a
+//! couple h/2 (F_t − F_b) through the face kinematics, and the vibration's
+//! in-plane velocity turns the sliding direction (docs/scenes.md). The default
+//! `mid_plane` is the paper's model described above.
+//!
 //! Why the floating caliper is the default: with a fixed caliper and
 //! lift-off, a face that lifts leaves the other one pressed harder —
 //! N_t + N_b = k_c (δ₀ + |w|) once |w| > δ₀ — so friction, and the energy the
@@ -52,8 +59,9 @@
 //! extremes of the wave, where the surface slope and so the follower force
 //! vanish, and the growth saturates — the limit cycles of the paper's Fig. 17.
 
+use super::face_friction::{face_kinematics, friction_force, sliding_velocity, FaceKinematics};
 use super::model::{contact_rate, surface_kinematics, SurfaceKinematics, CommandRule, CommandSpec, Coupling, LoadContext, LoadModel, ModelOut, SceneNodes};
-use crate::config::{Caliper, Config};
+use crate::config::{Caliper, Config, ContactSurface};
 use crate::dynamics::joint::FrictionTorque;
 use crate::dynamics::wrench::Wrench;
 use std::any::Any;
@@ -74,6 +82,9 @@ pub struct PadContactPoint {
     pub angle: f64,
     /// (sin θ, cos θ).
     pub sin_cos: (f64, f64),
+    /// z of the top and bottom face relative to the node frame's own z, m
+    /// (the levers of the faces' friction with `pads.contact_surface: faces`).
+    pub face_z: [f64; 2],
 }
 
 /// The pads of a scene: immutable parameters (commands are in `Inputs`).
@@ -90,6 +101,7 @@ pub struct Pads {
     pub lift_off: bool,
     pub follower_friction: bool,
     pub caliper: Caliper,
+    pub contact_surface: ContactSurface,
     /// Clamp force per pad the configuration starts with, N (the running
     /// commands are in `Inputs`).
     pub initial_clamp_force: Vec<f64>,
@@ -218,11 +230,46 @@ impl Pads {
     }
 }
 
+impl Pads {
+    /// The wrench of both faces' friction and the normal forces at the node
+    /// (`pads.contact_surface: faces`): F = F_t + F_b + (N_b − N_t) e_z,
+    /// M = Σ_f z_f e_z × F_f about the node. Sets `f.tangential` to the
+    /// friction's e_θ component.
+    pub fn face_wrench(&self, contact: &PadContactPoint, f: &mut ContactForces, k: &FaceKinematics, speed: f64) -> Wrench {
+        let mut w = Wrench::default();
+        let (s, c) = contact.sin_cos;
+        f.tangential = 0.0;
+        for (normal, z) in [(f.top, contact.face_z[0]), (f.bottom, contact.face_z[1])] {
+            let v = sliding_velocity(k, z + self.node_z(contact), contact.radius, contact.sin_cos, speed, self.follower_friction);
+            let fr = friction_force(self.friction_coefficient, normal, v, FRICTION_REGULARISATION_SPEED);
+            for a in 0..3 {
+                w.force[a] += fr[a];
+            }
+            w.moment[0] -= z * fr[1];
+            w.moment[1] += z * fr[0];
+            f.tangential += -s * fr[0] + c * fr[1];
+        }
+        w.force[2] += f.axial;
+        w
+    }
+
+    /// z of the contact's node frame (the faces are at node z + face_z).
+    fn node_z(&self, contact: &PadContactPoint) -> f64 {
+        0.5 * (self.thickness_from(contact)) - contact.face_z[0]
+    }
+
+    fn thickness_from(&self, contact: &PadContactPoint) -> f64 {
+        contact.face_z[0] - contact.face_z[1]
+    }
+}
+
 /// The pads' scratch: per contact point its surface kinematics and forces at
 /// the last evaluation (what ~/pad_states reports).
 #[derive(Debug, Clone, PartialEq, Default)]
 pub struct PadScratch {
     pub kinematics: Vec<SurfaceKinematics>,
+    /// The in-plane and normal sliding terms under each contact (faces only).
+    pub faces: Vec<FaceKinematics>,
     pub forces: Vec<ContactForces>,
     closed: Vec<bool>,
 }
@@ -241,7 +288,9 @@ pub fn build(config: &Config, nodes: &SceneNodes) -> Option<Box<dyn LoadModel>> 
         .map(|c| {
             contacts_per_pad[c.pad] += 1;
             let node = &nodes.ale[c.node];
-            PadContactPoint { node: c.node, pad: c.pad, radius: node.radius, angle: node.angle, sin_cos: node.angle.sin_cos() }
+            let h = config.plate.thickness;
+            let face_z = [0.5 * h - node.z, -0.5 * h - node.z];
+            PadContactPoint { node: c.node, pad: c.pad, radius: node.radius, angle: node.angle, sin_cos: node.angle.sin_cos(), face_z }
         })
         .collect();
     Some(Box::new(Pads {
@@ -253,6 +302,7 @@ pub fn build(config: &Config, nodes: &SceneNodes) -> Option<Box<dyn LoadModel>> 
         lift_off: p.lift_off,
         follower_friction: p.follower_friction,
         caliper: p.caliper,
+        contact_surface: p.contact_surface,
         initial_clamp_force: p.clamp_force.clone(),
         coupling: Coupling::default(),
     }
@@ -288,7 +338,7 @@ impl LoadModel for Pads {
     }
     fn new_scratch(&self) -> Box<dyn Any + Send + Sync> {
         let n = self.contacts.len();
-        Box::new(PadScratch { kinematics: vec![SurfaceKinematics::default(); n], forces: vec![ContactForces::default(); n], closed: vec![false; n] })
+        Box::new(PadScratch { kinematics: vec![SurfaceKinematics::default(); n], faces: vec![FaceKinematics::default(); n], forces: vec![ContactForces::default(); n], closed: vec![false; n] })
     }
     fn friction_terms(&self) -> usize {
         self.contacts.len()
@@ -312,6 +362,19 @@ impl LoadModel for Pads {
         }
         self.forces(clamp_force, &s.kinematics, ctx.speed, &mut s.forces, &mut s.closed);
         self.friction_torque_terms(&s.forces, out.friction);
+        if self.contact_surface == ContactSurface::Faces {
+            for ((c, f), k) in self.contacts.iter().zip(s.forces.iter_mut()).zip(s.faces.iter_mut()) {
+                *k = face_kinematics(&ctx.ale_nodes[c.node], ctx.q_ale, ctx.q_dot_ale, ctx.speed);
+                let w = self.face_wrench(c, f, k, ctx.speed);
+                let slot = &mut out.ale[c.node];
+                for a in 0..3 {
+                    slot.force[a] += w.force[a];
+                    slot.moment[a] += w.moment[a];
+                }
+                out.ale_follower[c.node] = false; // the normal part is in the sliding velocity
+            }
+            return;
+        }
         for (c, f) in self.contacts.iter().zip(&s.forces) {
             let w = Pads::wrench(c, f);
             let slot = &mut out.ale[c.node];
@@ -330,8 +393,8 @@ mod tests {
     fn pads(caliper: Caliper, lift_off: bool) -> Pads {
         Pads {
             contacts: vec![
-                PadContactPoint { node: 0, pad: 0, radius: 0.12, angle: 0.3, sin_cos: 0.3f64.sin_cos() },
-                PadContactPoint { node: 1, pad: 0, radius: 0.12, angle: 0.5, sin_cos: 0.5f64.sin_cos() },
+                PadContactPoint { node: 0, pad: 0, radius: 0.12, angle: 0.3, sin_cos: 0.3f64.sin_cos(), face_z: [0.009, -0.009] },
+                PadContactPoint { node: 1, pad: 0, radius: 0.12, angle: 0.5, sin_cos: 0.5f64.sin_cos(), face_z: [0.009, -0.009] },
             ],
             contacts_per_pad: vec![2],
             stiffness: 1.0e6,
@@ -340,6 +403,7 @@ mod tests {
             lift_off,
             follower_friction: true,
             caliper,
+            contact_surface: ContactSurface::MidPlane,
             initial_clamp_force: vec![1000.0],
             coupling: Coupling::default(),
         }
