@@ -21,6 +21,7 @@ pub mod node_frame;
 pub mod scene;
 pub mod simulation;
 pub mod stability;
+pub mod stability_map;
 pub mod state;
 pub mod stepper;
 pub mod wrench;
