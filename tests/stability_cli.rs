@@ -87,3 +87,32 @@ fn bad_stability_input_is_named() {
         assert!(!ok && err.contains(needle), "{args:?}: {err}");
     }
 }
+
+#[test]
+fn the_map_picture_is_red_where_growing_and_blue_where_decaying() {
+    use annular_plate::cli::plot::{stability_map, Size, StabilityGrid};
+    let out = dir().join("map.png");
+    let (ok, json, err) = run(&["stability", SCENE, "--mu", "0:0.6:13", "--speeds", "5:45:5", "--json", "--plot", out.to_str().unwrap()]);
+    assert!(ok, "{err}");
+    let doc: annular_plate::cli::stability::StabilityMap = serde_json::from_str(&json).unwrap();
+    let img = image::open(&out).unwrap().to_rgb8();
+    assert_eq!(img.dimensions(), (1200, 800));
+    let grid = StabilityGrid { speeds: &doc.speeds_rad_s, mu: &doc.mu, growth_rate: &doc.growth_rate, threshold_mu: &doc.threshold_mu };
+    let again = dir().join("map_again.png");
+    let geometry = stability_map(&grid, &again, Size { width: 1200, height: 800 }).unwrap();
+    assert_eq!(std::fs::read(&out).unwrap(), std::fs::read(&again).unwrap(), "CLI and library draw the same picture");
+    assert_eq!(geometry.cells.len(), 5 * 13);
+    let (mut red, mut blue) = (0, 0);
+    for &(x, y, growing) in &geometry.cells {
+        // 6 px below the centre (same cell; clear of the threshold curve and its dots).
+        let p = img.get_pixel(x as u32, (y + 6) as u32).0;
+        if growing {
+            assert!(p[0] > p[2] + 40, "cell at ({x}, {y}) should be red: {p:?}");
+            red += 1;
+        } else {
+            assert!(p[2] > p[0] + 40, "cell at ({x}, {y}) should be blue: {p:?}");
+            blue += 1;
+        }
+    }
+    assert_eq!((red, blue), (5 * 6, 5 * 7));
+}

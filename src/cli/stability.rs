@@ -1,4 +1,4 @@
-//! `annular_plate stability FILE --mu FROM:TO:N --speeds FROM:TO:N [--json] [--shard i/n] [--threads T]`
+//! `annular_plate stability FILE --mu FROM:TO:N --speeds FROM:TO:N [--json] [--plot F] [--shard i/n] [--threads T]`
 //! and `annular_plate stability merge SHARD.json...`: the squeal stability map
 //! (`crate::dynamics::stability_map`, docs/rotor_dynamics.md).
 
@@ -30,6 +30,9 @@ pub struct StabilityArgs {
     /// Compute shard i of n (1-based): a contiguous block of the speed rows; join with `stability merge`.
     #[arg(long, value_name = "i/n")]
     pub shard: Option<String>,
+    /// Also draw the map to this file (.png or .svg).
+    #[arg(long, value_name = "OUT")]
+    pub plot: Option<PathBuf>,
     /// Worker threads (default: the machine's cores).
     #[arg(long)]
     pub threads: Option<usize>,
@@ -105,6 +108,9 @@ pub fn main(args: StabilityArgs) -> CliResult<()> {
     let mu = parse_range("--mu", args.mu.as_deref().expect("clap requires --mu"))?;
     let speeds = parse_range("--speeds", args.speeds.as_deref().expect("clap requires --speeds"))?;
     let config = super::load_config(&file)?;
+    if let Some(p) = &args.plot {
+        super::plot::check_output_path(p)?;
+    }
     if config.pads.is_none() {
         return Err(CliError::Usage(format!("{}: the scene has no pads (pads.*): nothing can squeal", file.display())));
     }
@@ -122,6 +128,10 @@ pub fn main(args: StabilityArgs) -> CliResult<()> {
         None => (stability_map(sim.scene(), &speeds, &mu, threads), None),
     };
     let map = StabilityMap::from_rows(&rows, &mu, shard);
+    if let Some(p) = &args.plot {
+        let grid = super::plot::StabilityGrid { speeds: &map.speeds_rad_s, mu: &map.mu, growth_rate: &map.growth_rate, threshold_mu: &map.threshold_mu };
+        super::plot::stability_map(&grid, p, super::plot::Size { width: 1200, height: 800 })?;
+    }
     let stdout = std::io::stdout();
     let mut out = stdout.lock();
     if args.json || shard.is_some() {
