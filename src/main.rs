@@ -60,6 +60,8 @@ enum Command {
     Study(cli::study::StudyArgs),
     /// The Campbell diagram: frequencies over spin speed, critical speeds (docs/rotor_dynamics.md).
     Campbell(cli::campbell::CampbellArgs),
+    /// The squeal stability map over friction coefficient × speed; `stability merge` joins shards.
+    Stability(cli::stability::StabilityArgs),
     /// Work on a recorded bag: `bag repair DIR` makes a killed recording readable.
     Bag {
         #[command(subcommand)]
@@ -157,6 +159,7 @@ fn run() -> anyhow::Result<()> {
         Some(Command::Plot { what }) => Ok(cli::plot::main(what)?),
         Some(Command::Study(args)) => Ok(cli::study::main(args)?),
         Some(Command::Campbell(args)) => Ok(cli::campbell::main(args)?),
+        Some(Command::Stability(args)) => Ok(cli::stability::main(args)?),
         Some(Command::Simulate { file, duration, csv, bag, output_rate, quiet, overrides }) => {
             anyhow::ensure!(csv.is_some() || bag.is_some(), "simulate writes --csv OUT, --bag DIR or both: give at least one");
             anyhow::ensure!(duration.is_finite() && duration >= 0.0, "--duration must be a finite number ≥ 0 s, got {duration}");

@@ -7,6 +7,7 @@ pub mod modes;
 pub mod plot;
 pub mod record;
 pub mod simulate;
+pub mod stability;
 pub mod study;
 
 use self::error::{CliError, CliResult};

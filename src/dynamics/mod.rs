@@ -22,6 +22,7 @@ pub mod residual;
 pub mod scene;
 pub mod simulation;
 pub mod stability;
+pub mod stability_map;
 pub mod state;
 pub mod stepper;
 pub mod wrench;

@@ -31,6 +31,7 @@ mod marker_view;
 mod modes;
 mod pareto;
 mod render;
+mod stability;
 
 pub use self::animate::*;
 pub use self::campbell::*;
@@ -40,6 +41,7 @@ pub use self::marker_view::*;
 pub use self::modes::*;
 pub use self::pareto::*;
 pub use self::render::*;
+pub use self::stability::*;
 pub use crate::model::nodal_lines::{nodal_angles, nodal_radii};
 
 

@@ -1,0 +1,112 @@
+//! The squeal stability map (issue 12): the linearised system of
+//! [`super::stability`] over friction coefficient × speed — per grid point
+//! the largest growth rate, the unstable mode's ⟨k, l⟩ and frequency — and
+//! the threshold μ_c(Ω) per speed. Grid points run in parallel over the
+//! machine's cores (`std::thread::scope`); a map can be computed in shards
+//! of whole speed rows and merged (docs/rotor_dynamics.md).
+
+use super::load_models::Pads;
+use super::scene::Scene;
+use super::stability::{critical_mode, growth_rate};
+use serde::{Deserialize, Serialize};
+use std::f64::consts::TAU;
+
+/// The least stable eigenvalue at one grid point.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct GridPoint {
+    /// max Re λ, 1/s.
+    pub growth_rate: f64,
+    /// The mode with the largest amplitude in its eigenvector (peak displacement).
+    pub k: u32,
+    pub l: u32,
+    /// |Im λ| / 2π, Hz (space-fixed frame: ALE coordinates).
+    pub frequency_hz: f64,
+}
+
+/// One speed row: a grid point per μ and the threshold.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct SpeedRow {
+    pub speed: f64,
+    pub points: Vec<GridPoint>,
+    /// The smallest μ in [μ_first, μ_last] where max Re λ > 0: the first grid
+    /// μ with a positive rate, bisected against its stable neighbour to 1e-9
+    /// relative (μ_first itself if already unstable there); `None` if none.
+    pub threshold_mu: Option<f64>,
+}
+
+/// The clamp forces the scene starts with (the linearisation's preload).
+fn clamp_forces(scene: &Scene) -> Vec<f64> {
+    scene.load_models.find::<Pads>().map_or(Vec::new(), |(_, p)| p.initial_clamp_force.clone())
+}
+
+fn point(scene: &Scene, speed: f64, mu: f64, clamp: &[f64]) -> GridPoint {
+    let mode = critical_mode(scene, speed, mu, clamp);
+    let n = mode.vector.len() / 2;
+    let dominant = (0..n).max_by(|&a, &b| mode.vector[a].norm().total_cmp(&mode.vector[b].norm())).unwrap_or(0);
+    let m = &scene.model.modes()[dominant];
+    GridPoint { growth_rate: growth_rate(scene, speed, mu, clamp), k: m.k, l: m.l, frequency_hz: mode.eigenvalue.im.abs() / TAU }
+}
+
+fn threshold(scene: &Scene, speed: f64, mus: &[f64], points: &[GridPoint], clamp: &[f64]) -> Option<f64> {
+    let first = points.iter().position(|p| p.growth_rate > 0.0)?;
+    if first == 0 {
+        return Some(mus[0]);
+    }
+    let (mut lo, mut hi) = (mus[first - 1], mus[first]);
+    while hi - lo > 1e-9 * hi {
+        let mid = 0.5 * (lo + hi);
+        if growth_rate(scene, speed, mid, clamp) > 0.0 {
+            hi = mid;
+        } else {
+            lo = mid;
+        }
+    }
+    Some(0.5 * (lo + hi))
+}
+
+/// The rows of `speeds` × `mus`, grid points spread over `threads` threads.
+pub fn stability_map(scene: &Scene, speeds: &[f64], mus: &[f64], threads: usize) -> Vec<SpeedRow> {
+    let clamp = clamp_forces(scene);
+    let n = speeds.len() * mus.len();
+    let threads = threads.clamp(1, n.max(1));
+    let next = std::sync::atomic::AtomicUsize::new(0);
+    let mut results: Vec<Option<GridPoint>> = vec![None; n];
+    std::thread::scope(|s| {
+        let workers: Vec<_> = (0..threads)
+            .map(|_| {
+                s.spawn(|| {
+                    let mut mine = Vec::new();
+                    loop {
+                        let i = next.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+                        if i >= n {
+                            break mine;
+                        }
+                        mine.push((i, point(scene, speeds[i / mus.len()], mus[i % mus.len()], &clamp)));
+                    }
+                })
+            })
+            .collect();
+        for w in workers {
+            for (i, p) in w.join().expect("a stability worker panicked") {
+                results[i] = Some(p);
+            }
+        }
+    });
+    speeds
+        .iter()
+        .enumerate()
+        .map(|(r, &speed)| {
+            let points: Vec<GridPoint> = results[r * mus.len()..(r + 1) * mus.len()].iter().map(|p| p.expect("every point computed")).collect();
+            let threshold_mu = threshold(scene, speed, mus, &points, &clamp);
+            SpeedRow { speed, points, threshold_mu }
+        })
+        .collect()
+}
+
+/// The speed rows of shard `index` (0-based) of `count`: a contiguous block,
+/// the first `len % count` shards one row longer.
+pub fn shard_rows(len: usize, index: usize, count: usize) -> std::ops::Range<usize> {
+    let (base, extra) = (len / count, len % count);
+    let start = index * base + index.min(extra);
+    start..start + base + usize::from(index < extra)
+}
