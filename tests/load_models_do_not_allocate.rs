@@ -47,9 +47,16 @@ fn scene(name: &str) -> Config {
 #[test]
 fn stepping_the_scenes_with_changing_commands_allocates_nothing() {
     WATCHED.with(|w| w.set(true));
-    for name in ["brake_squeal.yaml", "lathe.yaml", "swash_plate.yaml"] {
+    // The squeal scene also with friction on the faces and μ(v) (below its threshold).
+    for (name, faces) in [("brake_squeal.yaml", false), ("brake_squeal.yaml", true), ("lathe.yaml", false), ("swash_plate.yaml", false)] {
         for integrator in [IntegratorKind::Rk4, IntegratorKind::Exponential, IntegratorKind::ImplicitMidpoint] {
             let mut c = scene(name);
+            if faces {
+                let pads = c.pads.as_mut().unwrap();
+                pads.contact_surface = annular_plate::config::ContactSurface::Faces;
+                pads.friction_coefficient = 0.002;
+                pads.static_friction_coefficient = Some(0.004);
+            }
             if c.pads.is_some() && integrator != IntegratorKind::Rk4 {
                 continue; // refused: the pads need RK4 at this rate (Simulation::new says so)
             }

@@ -37,6 +37,8 @@ fn scene(surface: ContactSurface, mu: f64) -> Config {
         follower_friction: true,
         caliper: Caliper::Fixed,
         contact_surface: surface,
+        static_friction_coefficient: None,
+        stribeck_speed: 1.0,
     });
     c.simulation.integrator = IntegratorKind::Rk4;
     c.simulation.rk4_step_limit = 0.05;
@@ -60,7 +62,17 @@ fn scene(surface: ContactSurface, mu: f64) -> Config {
 ///   acting on ∂_θ w_s / r = kR/r;
 /// β = (h²/2) μ p R′²/(V m) the sliding direction: the faces' radial velocity
 ///   ∓(h/2) ∂_r Ẇ, ∂_r Ẇ = R′(q̇_c + kΩ q_s), turns the friction ±μp δv_r/V.
+///
+/// With the speed-dependent μ(v) = μ + Δμ e^(−v/v_S) (`stribeck` = (Δμ, v_S)),
+/// μ in φ, χ, β is μ(V), and the faces' tangential velocity ∓(h/2)(1/r) ∂_θ Ẇ,
+/// ∂_θ Ẇ = kR (q̇_s − kΩ q_c), changes their friction by ∓μ′ p δv_θ at
+/// lever ±h/2 on ∂_θ w_s / r: γ = (h²/2) p μ′(V) k²R²/(r² m) adds
+/// γ q̇_s − γkΩ q_c to the q_s equation.
 fn quartic(mu: f64, face: bool) -> [f64; 4] {
+    quartic_with(mu, face, (0.0, 1.0))
+}
+
+fn quartic_with(mu: f64, face: bool, stribeck: (f64, f64)) -> [f64; 4] {
     let sim = Simulation::new(scene(ContactSurface::Faces, mu)).unwrap();
     let model = sim.model();
     let node = &sim.scene().ale_nodes[0];
@@ -75,14 +87,19 @@ fn quartic(mu: f64, face: bool) -> [f64; 4] {
     let d0 = 2.0 * z * w;
     let s = 2.0 * z * w * k * SPEED;
     let g = 2.0 * k * SPEED;
+    let v = SPEED * r;
+    let (excess, vs) = stribeck;
+    let mu_slope = -excess / vs * (-v / vs).exp();
+    let mu = mu + excess * (-v / vs).exp();
+    let gamma = 0.5 * h * h * p * mu_slope * k * k * rr * rr / (r * r * m);
     let kappa = 2.0 * STIFFNESS * rr * rr / m;
     let phi = 2.0 * mu * p * k * rr * rr / (r * m);
     let (chi, beta) = if face { (mu * h * STIFFNESS * k * rr * rr / (r * m), 0.5 * h * h * mu * p * rr_slope * rr_slope / (SPEED * r * m)) } else { (0.0, 0.0) };
-    let (a, b) = (s + phi + beta * k * SPEED, s + chi);
+    let (a, b) = (s + phi + beta * k * SPEED, s + chi + gamma * k * SPEED);
     [
-        2.0 * d0 + beta,
-        2.0 * k0 + kappa + d0 * (d0 + beta) + g * g,
-        (d0 + beta) * k0 + d0 * (k0 + kappa) + g * (a + b),
+        2.0 * d0 + beta + gamma,
+        2.0 * k0 + kappa + (d0 + beta) * (d0 + gamma) + g * g,
+        (d0 + beta) * k0 + (d0 + gamma) * (k0 + kappa) + g * (a + b),
         (k0 + kappa) * k0 + a * b,
     ]
 }
@@ -93,11 +110,15 @@ fn hurwitz(a: [f64; 4]) -> f64 {
 }
 
 fn closed_form_threshold(face: bool) -> f64 {
+    closed_form_threshold_with(face, (0.0, 1.0))
+}
+
+fn closed_form_threshold_with(face: bool, stribeck: (f64, f64)) -> f64 {
     let (mut lo, mut hi) = (0.0, 2.0);
-    assert!(hurwitz(quartic(lo, face)) > 0.0 && hurwitz(quartic(hi, face)) < 0.0);
+    assert!(hurwitz(quartic_with(lo, face, stribeck)) > 0.0 && hurwitz(quartic_with(hi, face, stribeck)) < 0.0);
     while hi - lo > 1e-12 {
         let mid = 0.5 * (lo + hi);
-        if hurwitz(quartic(mid, face)) > 0.0 {
+        if hurwitz(quartic_with(mid, face, stribeck)) > 0.0 {
             lo = mid;
         } else {
             hi = mid;
@@ -129,7 +150,12 @@ fn one_contact_one_pair_threshold_matches_the_routh_hurwitz_closed_form() {
 /// critical mode's coordinate c(t) = u_Lᵀ y(t) (u_L its left eigenvector) is
 /// ½ (u_Lᵀ v) e^{λt} for the linear system, so ln|c| has slope Re λ.
 fn simulated_growth_rate(mu: f64) -> (f64, f64) {
-    let mut sim = Simulation::new(scene(ContactSurface::Faces, mu)).unwrap();
+    simulated_growth_rate_of(scene(ContactSurface::Faces, mu))
+}
+
+fn simulated_growth_rate_of(c: Config) -> (f64, f64) {
+    let mu = c.pads.as_ref().unwrap().friction_coefficient;
+    let mut sim = Simulation::new(c).unwrap();
     let mode = stability::critical_mode(sim.scene(), SPEED, mu, &[CLAMP]);
     let n = sim.model().n_modes();
     let a = stability::linear_system(sim.scene(), SPEED, mu, &[CLAMP]);
@@ -251,4 +277,61 @@ fn the_ring_of_pads_threshold_with_face_friction_matches_its_closed_form() {
     assert!((eig - closed).abs() < 1e-6 * closed, "{eig} vs {closed}");
     // The faces' couple lowers the paper's 0.300423 about 110-fold.
     assert!(0.300423 / eig > 80.0 && 0.300423 / eig < 120.0 && without_direction < closed);
+}
+
+/// A friction coefficient falling with the sliding speed feeds the vibration
+/// (negative damping through the faces' tangential velocity): with
+/// μ(v) = μ + 0.2 e^(−v/v_S), v_S = 2 m/s, the threshold in μ matches the
+/// quartic with the μ′ terms, and lies below the constant-μ one.
+#[test]
+fn a_falling_friction_coefficient_matches_the_closed_form_and_lowers_the_threshold() {
+    let (excess, vs) = (0.2, 2.0);
+    let mut c = scene(ContactSurface::Faces, 0.0);
+    let pads = c.pads.as_mut().unwrap();
+    pads.static_friction_coefficient = Some(excess);
+    pads.stribeck_speed = vs;
+    let sim = Simulation::new(c).unwrap();
+    // μ_s − μ is kept at Δμ while the threshold scans μ: friction_threshold
+    // scans the scene's μ with the law's excess fixed (static − configured μ = 0.2 − 0).
+    let eig = stability::friction_threshold(sim.scene(), SPEED, 2.0).expect("squeals");
+    let closed = closed_form_threshold_with(true, (excess, vs));
+    let constant = closed_form_threshold(true);
+    println!("μ(v): threshold eigenvalues {eig:.9}, closed form {closed:.9}; constant μ {constant:.9}");
+    assert!((eig - closed).abs() < 1e-6 * closed, "{eig} vs {closed}");
+    assert!(closed < constant);
+    // The μ′ term itself matters (not only μ(V) > μ): without it the quartic's threshold differs.
+    let v = SPEED * sim.scene().ale_nodes[0].radius;
+    let mu_at_v_only = closed_form_threshold(true) - excess * (-v / vs).exp();
+    assert!((closed - mu_at_v_only).abs() > 1e-3 * closed, "{closed} vs {mu_at_v_only}");
+    // The simulation (the nonlinear law at every RK4 stage) grows at the eigenvalue's rate.
+    for factor in [0.7, 1.5] {
+        let mut c = scene(ContactSurface::Faces, factor * eig);
+        let pads = c.pads.as_mut().unwrap();
+        pads.static_friction_coefficient = Some(factor * eig + excess);
+        pads.stribeck_speed = vs;
+        let (rate, slope) = simulated_growth_rate_of(c);
+        println!("μ(v), μ = {factor} μ_c: Re λ = {rate:.6} 1/s, simulated {slope:.6} 1/s");
+        assert_eq!((rate > 0.0, slope > 0.0), (factor > 1.0, factor > 1.0));
+        assert!((slope - rate).abs() < 0.02 * rate.abs(), "simulated {slope} vs eigenvalue {rate}");
+    }
+}
+
+#[test]
+fn face_friction_keys_are_read_and_a_speed_law_without_faces_is_refused_naming_the_keys() {
+    let file = |extra: &str| {
+        format!(
+            "annular_plate:\n  ros__parameters:\n    nodes:\n      ale_radial: [0.6]\n      ale_angular: [0.0]\n    pads:\n      ale_nodes: [1]\n{extra}"
+        )
+    };
+    let c = Config::from_yaml_str(&file("      contact_surface: faces\n      static_friction_coefficient: 0.5\n      stribeck_speed: 2.0\n"), "annular_plate").unwrap();
+    let p = c.pads.unwrap();
+    assert_eq!((p.contact_surface, p.static_friction_coefficient, p.stribeck_speed), (ContactSurface::Faces, Some(0.5), 2.0));
+    let c = Config::from_yaml_str(&file(""), "annular_plate").unwrap();
+    assert_eq!((c.pads.as_ref().unwrap().contact_surface, c.pads.as_ref().unwrap().static_friction_coefficient), (ContactSurface::MidPlane, None));
+    let e = Config::from_yaml_str(&file("      static_friction_coefficient: 0.5\n"), "annular_plate").unwrap_err().to_string();
+    assert!(e.contains("pads.static_friction_coefficient") && e.contains("pads.contact_surface"), "{e}");
+    let e = Config::from_yaml_str(&file("      contact_surface: rim\n"), "annular_plate").unwrap_err().to_string();
+    assert!(e.contains("pads.contact_surface") && e.contains("rim"), "{e}");
+    let e = Config::from_yaml_str(&file("      contact_surface: faces\n      stribeck_speed: 0.0\n"), "annular_plate").unwrap_err().to_string();
+    assert!(e.contains("pads.stribeck_speed"), "{e}");
 }

@@ -158,6 +158,9 @@ pub enum ConfigError {
     #[error("pads.clamp_force has {len} values; give 1 (for every pad) or one per pad ({pads})")]
     ClampForceLength { len: usize, pads: usize },
 
+    #[error("pads.static_friction_coefficient is given but pads.contact_surface is mid_plane: the speed-dependent μ(v) needs the sliding velocity of the faces; set pads.contact_surface: faces or remove it")]
+    StaticFrictionNeedsFaces,
+
     #[error("tool.ale_node = {node} is at ξ_r = {radial} (nodes.ale_radial[{}]); the tool cuts the rim, so its ALE node must be at ξ_r = 1", node - 1)]
     ToolNotOnRim { node: usize, radial: f64 },
 

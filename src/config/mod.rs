@@ -481,6 +481,11 @@ pub struct PadsConfig {
     pub follower_friction: bool,
     pub caliper: Caliper,
     pub contact_surface: ContactSurface,
+    /// μ_s of the speed-dependent friction law μ(v) = μ + (μ_s − μ) e^(−v/v_S)
+    /// (`pads.static_friction_coefficient`; `None`: constant μ; faces only).
+    pub static_friction_coefficient: Option<f64>,
+    /// v_S of that law, m/s (`pads.stribeck_speed`).
+    pub stribeck_speed: f64,
 }
 
 impl PadsConfig {

@@ -216,6 +216,8 @@ pub const SECTIONS: &[Section] = &[
             p("pads.follower_friction", Ty::Bool, "bool", "—", Value::Bool(true), "true", "—", "friction lies in the deformed surface (follower forces, the squeal mechanism)"),
             p("pads.caliper", Ty::String, "string", "—", Value::Str("floating"), "`floating`", "`floating` or `fixed`", "`floating`: each face's pad is a rigid backing plate pressed with the clamp force (a force, as from a hydraulic piston); `fixed`: the caliper stays where the clamp force puts it on an undeformed disc"),
             p("pads.contact_surface", Ty::String, "string", "—", Value::Str("mid_plane"), "`mid_plane`", "`faces` or `mid_plane`", "`faces`: each pad's friction acts on its face (z = ±h/2) against the sliding velocity of the face point — rotation, the vibration's in-plane −z∇(Dw/Dt) and normal Ω ∂w/∂θ — regularised Coulomb, so the two faces' normal-force difference makes a couple (docs/scenes.md); `mid_plane`: at the mid-plane node along −sign Ω e_θ (the paper's model)"),
+            p("pads.static_friction_coefficient", Ty::Double, "double", "—", Value::None, "not given (constant μ)", "≥ 0, ≤ 2; only with `pads.contact_surface: faces`", "μ_s of the speed-dependent friction μ(v) = μ + (μ_s − μ) e^(−v/v_S), v the face's sliding speed (a falling μ(v), μ_s > μ, feeds energy into the vibration; docs/scenes.md)"),
+            p("pads.stribeck_speed", Ty::Double, "double", "m/s", Value::Double(1.0), "1", "> 0", "v_S of that law"),
         ],
     },
     Section {

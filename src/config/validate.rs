@@ -477,6 +477,8 @@ fn read_limits(r: &Reader) -> Result<LimitsConfig, ConfigError> {
 /// Default pad data (the scene files give their own; docs/scenes.md).
 pub const DEFAULT_PAD_CONTACT_STIFFNESS: f64 = 5.0e6;
 pub const DEFAULT_PAD_CONTACT_DAMPING: f64 = 0.0;
+/// Default v_S of the speed-dependent friction law, m/s.
+pub const DEFAULT_STRIBECK_SPEED: f64 = 1.0;
 pub const DEFAULT_FRICTION_COEFFICIENT: f64 = 0.4;
 /// Largest plausible friction coefficient.
 const MAX_FRICTION_COEFFICIENT: f64 = 2.0;
@@ -573,6 +575,16 @@ fn read_pads(r: &Reader, nodes: &NodesConfig, limits: &LimitsConfig) -> Result<O
     let contact_damping = non_negative("pads.contact_damping", r.f64("pads.contact_damping", DEFAULT_PAD_CONTACT_DAMPING)?)?;
     let mu = r.f64("pads.friction_coefficient", DEFAULT_FRICTION_COEFFICIENT)?;
     let friction_coefficient = at_most("pads.friction_coefficient", non_negative("pads.friction_coefficient", mu)?, MAX_FRICTION_COEFFICIENT)?;
+    let contact_surface = read_choice(r, "pads.contact_surface", "mid_plane", CONTACT_SURFACES, |s| match s {
+        "faces" => Some(ContactSurface::Faces),
+        "mid_plane" => Some(ContactSurface::MidPlane),
+        _ => None,
+    })?;
+    let static_friction_coefficient = match r.f64_opt("pads.static_friction_coefficient")? {
+        None => None,
+        Some(_) if contact_surface == ContactSurface::MidPlane => return Err(ConfigError::StaticFrictionNeedsFaces),
+        Some(x) => Some(at_most("pads.static_friction_coefficient", non_negative("pads.static_friction_coefficient", x)?, MAX_FRICTION_COEFFICIENT)?),
+    };
     Ok(Some(PadsConfig {
         contacts,
         clamp_force,
@@ -586,11 +598,9 @@ fn read_pads(r: &Reader, nodes: &NodesConfig, limits: &LimitsConfig) -> Result<O
             "fixed" => Some(Caliper::Fixed),
             _ => None,
         })?,
-        contact_surface: read_choice(r, "pads.contact_surface", "mid_plane", CONTACT_SURFACES, |s| match s {
-            "faces" => Some(ContactSurface::Faces),
-            "mid_plane" => Some(ContactSurface::MidPlane),
-            _ => None,
-        })?,
+        contact_surface,
+        static_friction_coefficient,
+        stribeck_speed: r.positive("pads.stribeck_speed", DEFAULT_STRIBECK_SPEED)?,
     }))
 }
 

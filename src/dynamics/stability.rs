@@ -25,7 +25,7 @@
 //! - the friction couple  f_i += h g sign V (1/r) ∂_θ w_i δN,
 //! - the sliding direction f_i −= (h²/2) p (g/|V|) ∂_r w_i ∂_r Ẇ,
 //! - the speed slope      f_i −= (h²/2) p g′ (1/r²) ∂_θ w_i ∂_θ Ẇ, g′ = dg/d|v|
-//!   (only the regularisation: μ is constant),
+//!   (μ(v) = μ + (μ_s − μ) e^(−v/v_S) and the regularisation),
 //!
 //! ([`add_face_terms`]); the follower term above is the normal part of the
 //! sliding direction and is the same.
@@ -94,7 +94,12 @@ pub fn linear_system(scene: &Scene, speed: f64, friction_coefficient: f64, clamp
             let node = &scene.ale_nodes[contact.node];
             let mean = &mean[contact.pad];
             let preload = clamp / pads.contacts_per_pad[contact.pad] as f64;
-            let f_theta = -friction_coefficient * 2.0 * preload * Pads::sliding_sign(speed, contact.radius);
+            // With face friction μ is μ(V) at the sliding speed V = Ωr (equal to μ without μ_s).
+            let mu = match pads.contact_surface {
+                ContactSurface::Faces => pads.friction_law(friction_coefficient).mu((speed * contact.radius).abs()),
+                ContactSurface::MidPlane => friction_coefficient,
+            };
+            let f_theta = -mu * 2.0 * preload * Pads::sliding_sign(speed, contact.radius);
             let (s, co) = contact.angle.sin_cos();
             let (fx, fy) = (-s * f_theta, co * f_theta);
             for i in 0..n {
@@ -131,10 +136,12 @@ fn add_face_terms(a: &mut Mat<f64>, scene: &Scene, pads: &Pads, contact: &PadCon
     let (s, c) = contact.sin_cos;
     let v = speed * r;
     let x = v.abs() / FRICTION_REGULARISATION_SPEED;
-    let g = mu * x.tanh();
-    let g_over_v = if x < 1e-8 { mu / FRICTION_REGULARISATION_SPEED } else { g / v.abs() };
-    let g_slope = mu / (FRICTION_REGULARISATION_SPEED * x.cosh().powi(2));
-    let couple = h * mu * (v / FRICTION_REGULARISATION_SPEED).tanh();
+    let law = pads.friction_law(mu);
+    let mu_v = law.mu(v.abs());
+    let g = mu_v * x.tanh();
+    let g_over_v = if x < 1e-8 { mu_v / FRICTION_REGULARISATION_SPEED } else { g / v.abs() };
+    let g_slope = mu_v / (FRICTION_REGULARISATION_SPEED * x.cosh().powi(2)) + law.slope(v.abs()) * x.tanh();
+    let couple = h * mu_v * (v / FRICTION_REGULARISATION_SPEED).tanh();
     let lever = 0.5 * h * h * preload;
     // Per mode: ∂_r w, ∂_θ w and of ∂_θ w: ∂_r ∂_θ w, ∂²_θ w.
     let radial = |g: [f64; 2]| c * g[0] + s * g[1];

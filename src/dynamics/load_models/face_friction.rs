@@ -55,14 +55,43 @@ pub fn sliding_velocity(k: &FaceKinematics, z: f64, radius: f64, sin_cos: (f64, 
     [-s * v - z * k.grad_material_rate[0], c * v - z * k.grad_material_rate[1], if follower { k.normal_rate } else { 0.0 }]
 }
 
+/// The friction coefficient as a function of the sliding speed:
+/// μ(v) = μ + (μ_s − μ) e^(−v/v_S) (a Stribeck-type fall from μ_s at rest to
+/// μ; `excess` = μ_s − μ = 0: constant μ).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct FrictionLaw {
+    /// μ, the coefficient at sliding speeds ≫ v_S.
+    pub kinetic: f64,
+    /// μ_s − μ.
+    pub excess: f64,
+    /// v_S, m/s.
+    pub stribeck_speed: f64,
+}
+
+impl FrictionLaw {
+    /// μ(v) at sliding speed `v` ≥ 0.
+    #[inline]
+    pub fn mu(&self, v: f64) -> f64 {
+        if self.excess == 0.0 {
+            return self.kinetic;
+        }
+        self.kinetic + self.excess * (-v / self.stribeck_speed).exp()
+    }
+
+    /// dμ/dv at `v` ≥ 0, s/m.
+    pub fn slope(&self, v: f64) -> f64 {
+        -self.excess / self.stribeck_speed * (-v / self.stribeck_speed).exp()
+    }
+}
+
 /// Regularised Coulomb friction on the disc for normal force `normal` (≥ 0)
-/// and sliding velocity `v`: −μ N tanh(|v|/v_reg) v/|v|, N.
+/// and sliding velocity `v`: −μ(|v|) N tanh(|v|/v_reg) v/|v|, N.
 #[inline]
-pub fn friction_force(mu: f64, normal: f64, v: [f64; 3], regularisation_speed: f64) -> [f64; 3] {
+pub fn friction_force(law: &FrictionLaw, normal: f64, v: [f64; 3], regularisation_speed: f64) -> [f64; 3] {
     let speed = (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt();
     if speed == 0.0 {
         return [0.0; 3];
     }
-    let scale = -mu * normal * (speed / regularisation_speed).tanh() / speed;
+    let scale = -law.mu(speed) * normal * (speed / regularisation_speed).tanh() / speed;
     [scale * v[0], scale * v[1], scale * v[2]]
 }

@@ -59,7 +59,7 @@
 //! extremes of the wave, where the surface slope and so the follower force
 //! vanish, and the growth saturates — the limit cycles of the paper's Fig. 17.
 
-use super::face_friction::{face_kinematics, friction_force, sliding_velocity, FaceKinematics};
+use super::face_friction::{face_kinematics, friction_force, sliding_velocity, FaceKinematics, FrictionLaw};
 use super::model::{contact_rate, surface_kinematics, SurfaceKinematics, CommandRule, CommandSpec, Coupling, LoadContext, LoadModel, ModelOut, SceneNodes};
 use crate::config::{Caliper, Config, ContactSurface};
 use crate::dynamics::joint::FrictionTorque;
@@ -102,6 +102,9 @@ pub struct Pads {
     pub follower_friction: bool,
     pub caliper: Caliper,
     pub contact_surface: ContactSurface,
+    /// μ_s − μ and v_S of the speed-dependent friction (faces only; 0: constant μ).
+    pub friction_excess: f64,
+    pub stribeck_speed: f64,
     /// Clamp force per pad the configuration starts with, N (the running
     /// commands are in `Inputs`).
     pub initial_clamp_force: Vec<f64>,
@@ -241,7 +244,7 @@ impl Pads {
         f.tangential = 0.0;
         for (normal, z) in [(f.top, contact.face_z[0]), (f.bottom, contact.face_z[1])] {
             let v = sliding_velocity(k, z + self.node_z(contact), contact.radius, contact.sin_cos, speed, self.follower_friction);
-            let fr = friction_force(self.friction_coefficient, normal, v, FRICTION_REGULARISATION_SPEED);
+            let fr = friction_force(&self.friction_law(self.friction_coefficient), normal, v, FRICTION_REGULARISATION_SPEED);
             for a in 0..3 {
                 w.force[a] += fr[a];
             }
@@ -251,6 +254,11 @@ impl Pads {
         }
         w.force[2] += f.axial;
         w
+    }
+
+    /// The face friction law with μ = `kinetic` (the configured μ_s − μ kept).
+    pub fn friction_law(&self, kinetic: f64) -> FrictionLaw {
+        FrictionLaw { kinetic, excess: self.friction_excess, stribeck_speed: self.stribeck_speed }
     }
 
     /// z of the contact's node frame (the faces are at node z + face_z).
@@ -303,6 +311,8 @@ pub fn build(config: &Config, nodes: &SceneNodes) -> Option<Box<dyn LoadModel>> 
         follower_friction: p.follower_friction,
         caliper: p.caliper,
         contact_surface: p.contact_surface,
+        friction_excess: p.static_friction_coefficient.map_or(0.0, |s| s - p.friction_coefficient),
+        stribeck_speed: p.stribeck_speed,
         initial_clamp_force: p.clamp_force.clone(),
         coupling: Coupling::default(),
     }
@@ -404,6 +414,8 @@ mod tests {
             follower_friction: true,
             caliper,
             contact_surface: ContactSurface::MidPlane,
+            friction_excess: 0.0,
+            stribeck_speed: 1.0,
             initial_clamp_force: vec![1000.0],
             coupling: Coupling::default(),
         }
