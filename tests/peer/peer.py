@@ -274,7 +274,9 @@ def scenario_services(p, a):
     p.wait_for(modal, lambda s: s.step == 5, keep=seen)
     out["published_steps"] = [s.step for s in seen]
     out["resume"] = todict(p.set_paused(False))
-    time.sleep(0.3)
+    # Running: wait until it has stepped well past the 5 requested steps (on a
+    # loaded machine 0.3 s of wall time may hold fewer than 100 steps).
+    p.wait_for(modal, lambda s: s.step > 110, timeout=30.0)
     out["step_while_running"] = todict(p.step(3))
     out["pause"] = todict(p.set_paused(True))
     paused_at = p.step(0).step
