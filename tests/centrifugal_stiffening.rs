@@ -392,3 +392,17 @@ fn critical_speeds_match_shooting_and_the_issue_estimates() {
         assert!((model - shot).abs() < 1e-6 * shot, "{name}: model {model} vs shooting {shot}");
     }
 }
+
+#[test]
+fn a_stiffened_scene_is_refused_by_the_time_integration_naming_the_key() {
+    // Until the stepper carries Ω(t)² K_g (issue 12), simulate, the node,
+    // study and stability would run the unstiffened plate: refused instead.
+    let mut c = annular_plate::config::Config::from_yaml_str(&std::fs::read_to_string(
+        concat!(env!("CARGO_MANIFEST_DIR"), "/config/lathe.yaml")).unwrap(), "annular_plate").unwrap();
+    c.centrifugal = on();
+    let e = annular_plate::dynamics::Simulation::new(c.clone()).err().expect("refused");
+    let text = e.to_string();
+    assert!(text.contains("plate.centrifugal_stiffening") && text.contains("campbell"), "{text}");
+    c.centrifugal.stiffening = false;
+    assert!(annular_plate::dynamics::Simulation::new(c).is_ok(), "the unstiffened scene runs");
+}
