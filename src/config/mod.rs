@@ -7,6 +7,7 @@
 //! the key (`plate.inner_radius`) and the rule.
 
 mod centrifugal;
+mod load_model_sections;
 mod error;
 mod params_file;
 mod raw;

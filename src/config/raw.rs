@@ -155,3 +155,15 @@ pub(super) fn positive(key: &str, x: f64) -> Result<f64, ConfigError> {
 fn wrong_type(key: &str, expected: &'static str, found: &ParamValue) -> ConfigError {
     ConfigError::WrongType { key: key.to_string(), expected, found: format!("{} {found}", found.type_name()) }
 }
+
+/// A string key that must be one of `allowed`, parsed by `parse`.
+pub(super) fn read_choice<T>(
+    r: &Reader,
+    key: &str,
+    default: &str,
+    allowed: &'static [&'static str],
+    parse: impl Fn(&str) -> Option<T>,
+) -> Result<T, ConfigError> {
+    let name = r.string(key, default)?;
+    parse(name.trim()).ok_or(ConfigError::UnknownChoice { key: key.to_string(), value: name, allowed })
+}

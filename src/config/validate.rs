@@ -3,7 +3,7 @@
 //! Every key this crate accepts is declared once in [`super::table`]; any
 //! other key is rejected (with the nearest known key as a suggestion). Each
 //! section has a `read_<section>` function that reads its keys and checks the
-//! rules the table states.
+//! rules the table states (the load models' sections: `load_model_sections.rs`).
 //!
 //! Adding a section: declare its keys in the table, write `read_<section>`
 //! and call it in [`config_from_params`] (plus the field in [`Config`]);
@@ -11,13 +11,13 @@
 
 use std::f64::consts::FRAC_PI_2;
 
-use super::raw::{positive, Reader};
+use super::raw::{positive, read_choice, Reader};
 use super::{
-    Boundary, Caliper, Config, ContactSurface, ConfigError, Coordinates, InitialConfig, IntegratorKind, JointConfig, LimitsConfig, LinksConfig,
-    LoadsConfig, NodePosition, NodesConfig, Surface, PadContact, PadsConfig, Params, PlateConfig, ReferenceConfig,
-    SimulationConfig, SpringsConfig, ToolConfig, WrenchConfig, MAX_TOOL_FEED_RATE,
+    Boundary, Config, ConfigError, Coordinates, InitialConfig, IntegratorKind, JointConfig, LimitsConfig, LoadsConfig, NodePosition,
+    NodesConfig, Params, PlateConfig, ReferenceConfig, SimulationConfig, Surface, WrenchConfig,
 };
 use super::error::Degeneracy;
+use super::load_model_sections::{at_most, read_links, read_pads, read_springs, read_tool};
 
 /// Every accepted parameter name: the declared table ([`super::table`]).
 pub(super) fn known_keys() -> Vec<&'static str> {
@@ -26,9 +26,7 @@ pub(super) fn known_keys() -> Vec<&'static str> {
 
 const INTEGRATORS: &[&str] = &["exponential", "implicit_midpoint", "rk4"];
 const COORDINATES: &[&str] = &["ale", "lagrangian"];
-const CALIPERS: &[&str] = &["floating", "fixed"];
 const SURFACES: &[&str] = &["top", "bottom", "mid"];
-const CONTACT_SURFACES: &[&str] = &["faces", "mid_plane"];
 
 /// Largest nodal-diameter number k accepted.
 const MAX_NODAL_DIAMETER: i64 = 200;
@@ -451,17 +449,6 @@ fn read_simulation(r: &Reader) -> Result<SimulationConfig, ConfigError> {
     Ok(SimulationConfig { rate_hz, substeps, integrator, coordinates, realtime_factor, publish_divisor, rk4_step_limit, midpoint_step_limit })
 }
 
-fn read_choice<T>(
-    r: &Reader,
-    key: &str,
-    default: &str,
-    allowed: &'static [&'static str],
-    parse: impl Fn(&str) -> Option<T>,
-) -> Result<T, ConfigError> {
-    let name = r.string(key, default)?;
-    parse(name.trim()).ok_or(ConfigError::UnknownChoice { key: key.to_string(), value: name, allowed })
-}
-
 fn read_limits(r: &Reader) -> Result<LimitsConfig, ConfigError> {
     let d = LimitsConfig::default();
     Ok(LimitsConfig {
@@ -473,194 +460,6 @@ fn read_limits(r: &Reader) -> Result<LimitsConfig, ConfigError> {
 }
 
 // ---- load models and initial state (paper section 5; docs/scenes.md) ------------
-
-/// Default pad data (the scene files give their own; docs/scenes.md).
-pub const DEFAULT_PAD_CONTACT_STIFFNESS: f64 = 5.0e6;
-pub const DEFAULT_PAD_CONTACT_DAMPING: f64 = 0.0;
-/// Default v_S of the speed-dependent friction law, m/s.
-pub const DEFAULT_STRIBECK_SPEED: f64 = 1.0;
-pub const DEFAULT_FRICTION_COEFFICIENT: f64 = 0.4;
-/// Largest plausible friction coefficient.
-const MAX_FRICTION_COEFFICIENT: f64 = 2.0;
-/// Default tool data: the paper's feed (120 mm/min) and eq. (21) constants (paper 5.1, docs/scenes.md).
-pub const DEFAULT_TOOL_DEPTH_OF_CUT: f64 = 2.0e-3;
-pub const DEFAULT_TOOL_FEED_RATE: f64 = 0.12 / 60.0;
-pub const DEFAULT_TOOL_STIFFNESS: f64 = 2.0e7;
-pub const DEFAULT_TOOL_DAMPING: f64 = 2.0e3;
-pub const DEFAULT_TOOL_SPECIFIC_FORCE: f64 = 351.0e6;
-pub const DEFAULT_TOOL_FORCE_EXPONENT: f64 = 0.7013;
-
-/// A load model whose enabling key is empty must not be given other keys.
-fn no_other_keys(r: &Reader, table: &[&str], enabling_key: &'static str) -> Result<(), ConfigError> {
-    match table.iter().find(|k| **k != enabling_key && r.has(k)) {
-        Some(key) => Err(ConfigError::KeyWithoutSection { key: key.to_string(), enabling_key }),
-        None => Ok(()),
-    }
-}
-
-/// Node numbers (from 1) of existing, distinct nodes of one kind → 0-based indices.
-fn node_refs(key: &str, values: &[i64], kind: &'static str, count: usize) -> Result<Vec<usize>, ConfigError> {
-    let mut out: Vec<usize> = Vec::with_capacity(values.len());
-    for (index, &v) in values.iter().enumerate() {
-        if v < 1 {
-            return Err(ConfigError::NotPositive { key: format!("{key}[{index}]"), value: v as f64 });
-        }
-        if v as usize > count {
-            return Err(ConfigError::NoSuchNode { key: format!("{key}[{index}]"), node: v, kind, count });
-        }
-        if out.contains(&(v as usize - 1)) {
-            return Err(ConfigError::Duplicate { key: key.to_string(), value: v });
-        }
-        out.push(v as usize - 1);
-    }
-    Ok(out)
-}
-
-fn non_negative(key: &str, x: f64) -> Result<f64, ConfigError> {
-    if x < 0.0 {
-        Err(ConfigError::Negative { key: key.to_string(), value: x })
-    } else {
-        Ok(x)
-    }
-}
-
-fn at_most(key: &str, x: f64, max: f64) -> Result<f64, ConfigError> {
-    if x.abs() > max {
-        Err(ConfigError::AboveMaximum { key: key.to_string(), value: x, max })
-    } else {
-        Ok(x)
-    }
-}
-
-fn read_pads(r: &Reader, nodes: &NodesConfig, limits: &LimitsConfig) -> Result<Option<PadsConfig>, ConfigError> {
-    let numbers = r.i64_array("pads.ale_nodes", &[])?;
-    if numbers.is_empty() {
-        no_other_keys(r, &super::table::keys("pads"), "pads.ale_nodes")?;
-        return Ok(None);
-    }
-    let node_index = node_refs("pads.ale_nodes", &numbers, "ale", nodes.ale.len())?;
-    let pad_numbers = r.i64_array("pads.contact_pad", &[])?;
-    let pad_numbers = if pad_numbers.is_empty() { vec![1; node_index.len()] } else { pad_numbers };
-    if pad_numbers.len() != node_index.len() {
-        return Err(ConfigError::LengthMismatch {
-            key_a: "pads.contact_pad".into(),
-            len_a: pad_numbers.len(),
-            key_b: "pads.ale_nodes".into(),
-            len_b: node_index.len(),
-        });
-    }
-    for (index, &p) in pad_numbers.iter().enumerate() {
-        if p < 1 {
-            return Err(ConfigError::NotPositive { key: format!("pads.contact_pad[{index}]"), value: p as f64 });
-        }
-    }
-    let contacts: Vec<PadContact> =
-        node_index.iter().zip(&pad_numbers).map(|(&node, &p)| PadContact { node, pad: p as usize - 1 }).collect();
-    let pads = pad_numbers.iter().copied().max().unwrap_or(1) as usize;
-    if let Some(pad) = (0..pads).find(|p| !contacts.iter().any(|c| c.pad == *p)) {
-        return Err(ConfigError::PadWithoutContacts { pad: pad + 1, pads });
-    }
-    let clamp = r.f64_array("pads.clamp_force", &[0.0])?;
-    for (index, &f) in clamp.iter().enumerate() {
-        let key = format!("pads.clamp_force[{index}]");
-        non_negative(&key, f)?;
-        at_most(&key, f, limits.max_force)?;
-    }
-    let clamp_force = match clamp.len() {
-        1 => vec![clamp[0]; pads],
-        n if n == pads => clamp,
-        len => return Err(ConfigError::ClampForceLength { len, pads }),
-    };
-    let contact_stiffness = r.positive("pads.contact_stiffness", DEFAULT_PAD_CONTACT_STIFFNESS)?;
-    let contact_damping = non_negative("pads.contact_damping", r.f64("pads.contact_damping", DEFAULT_PAD_CONTACT_DAMPING)?)?;
-    let mu = r.f64("pads.friction_coefficient", DEFAULT_FRICTION_COEFFICIENT)?;
-    let friction_coefficient = at_most("pads.friction_coefficient", non_negative("pads.friction_coefficient", mu)?, MAX_FRICTION_COEFFICIENT)?;
-    let contact_surface = read_choice(r, "pads.contact_surface", "mid_plane", CONTACT_SURFACES, |s| match s {
-        "faces" => Some(ContactSurface::Faces),
-        "mid_plane" => Some(ContactSurface::MidPlane),
-        _ => None,
-    })?;
-    let static_friction_coefficient = match r.f64_opt("pads.static_friction_coefficient")? {
-        None => None,
-        Some(_) if contact_surface == ContactSurface::MidPlane => return Err(ConfigError::StaticFrictionNeedsFaces),
-        Some(x) => Some(at_most("pads.static_friction_coefficient", non_negative("pads.static_friction_coefficient", x)?, MAX_FRICTION_COEFFICIENT)?),
-    };
-    Ok(Some(PadsConfig {
-        contacts,
-        clamp_force,
-        contact_stiffness,
-        contact_damping,
-        friction_coefficient,
-        lift_off: r.bool("pads.lift_off", false)?,
-        follower_friction: r.bool("pads.follower_friction", true)?,
-        caliper: read_choice(r, "pads.caliper", "floating", CALIPERS, |s| match s {
-            "floating" => Some(Caliper::Floating),
-            "fixed" => Some(Caliper::Fixed),
-            _ => None,
-        })?,
-        contact_surface,
-        static_friction_coefficient,
-        stribeck_speed: r.positive("pads.stribeck_speed", DEFAULT_STRIBECK_SPEED)?,
-    }))
-}
-
-fn read_tool(r: &Reader, plate: &PlateConfig, nodes: &NodesConfig) -> Result<Option<ToolConfig>, ConfigError> {
-    let number = r.i64("tool.ale_node", 0)?;
-    if number == 0 {
-        no_other_keys(r, &super::table::keys("tool"), "tool.ale_node")?;
-        return Ok(None);
-    }
-    let node = node_refs("tool.ale_node", &[number], "ale", nodes.ale.len())
-        .map_err(|e| match e {
-            ConfigError::NotPositive { value, .. } => ConfigError::Negative { key: "tool.ale_node".into(), value },
-            ConfigError::NoSuchNode { node, kind, count, .. } => ConfigError::NoSuchNode { key: "tool.ale_node".into(), node, kind, count },
-            other => other,
-        })?[0];
-    let radial = nodes.ale[node].radial;
-    if (radial - 1.0).abs() > 1e-12 {
-        return Err(ConfigError::ToolNotOnRim { node: node + 1, radial });
-    }
-    let depth_of_cut = r.positive("tool.depth_of_cut", DEFAULT_TOOL_DEPTH_OF_CUT)?;
-    let width = plate.outer_radius - plate.inner_radius;
-    if depth_of_cut >= width {
-        return Err(ConfigError::DepthOfCutBeyondPlate { depth: depth_of_cut, width });
-    }
-    let feed_rate = at_most("tool.feed_rate", r.f64("tool.feed_rate", DEFAULT_TOOL_FEED_RATE)?, MAX_TOOL_FEED_RATE)?;
-    let start_clearance = non_negative("tool.start_clearance", r.f64("tool.start_clearance", 0.0)?)?;
-    let stiffness = r.positive("tool.stiffness", DEFAULT_TOOL_STIFFNESS)?;
-    let damping = non_negative("tool.damping", r.f64("tool.damping", DEFAULT_TOOL_DAMPING)?)?;
-    let specific_force = r.positive("tool.specific_force", DEFAULT_TOOL_SPECIFIC_FORCE)?;
-    let force_exponent = non_negative("tool.force_exponent", r.f64("tool.force_exponent", DEFAULT_TOOL_FORCE_EXPONENT)?)?;
-    if force_exponent >= 1.0 {
-        return Err(ConfigError::AboveMaximum { key: "tool.force_exponent".into(), value: force_exponent, max: 1.0 });
-    }
-    Ok(Some(ToolConfig { node, depth_of_cut, feed_rate, start_clearance, stiffness, damping, specific_force, force_exponent }))
-}
-
-fn read_links(r: &Reader, nodes: &NodesConfig, limits: &LimitsConfig) -> Result<Option<LinksConfig>, ConfigError> {
-    let numbers = r.i64_array("links.lagrange_nodes", &[])?;
-    if numbers.is_empty() {
-        no_other_keys(r, &super::table::keys("links"), "links.lagrange_nodes")?;
-        return Ok(None);
-    }
-    let nodes = node_refs("links.lagrange_nodes", &numbers, "lagrange", nodes.lagrange.len())?;
-    let mean_force = at_most("links.mean_force", r.f64("links.mean_force", 0.0)?, limits.max_force)?;
-    let cyclic_force = at_most("links.cyclic_force", r.f64("links.cyclic_force", 0.0)?, limits.max_force)?;
-    let cyclic_phase = r.f64("links.cyclic_phase", 0.0)?;
-    Ok(Some(LinksConfig { nodes, mean_force, cyclic_force, cyclic_phase }))
-}
-
-fn read_springs(r: &Reader, nodes: &NodesConfig) -> Result<Option<SpringsConfig>, ConfigError> {
-    let numbers = r.i64_array("springs.ale_nodes", &[])?;
-    if numbers.is_empty() {
-        no_other_keys(r, &super::table::keys("springs"), "springs.ale_nodes")?;
-        return Ok(None);
-    }
-    let nodes = node_refs("springs.ale_nodes", &numbers, "ale", nodes.ale.len())?;
-    let stiffness = non_negative("springs.stiffness", r.f64("springs.stiffness", 0.0)?)?;
-    let damping = non_negative("springs.damping", r.f64("springs.damping", 0.0)?)?;
-    Ok(Some(SpringsConfig { nodes, stiffness, damping }))
-}
 
 fn read_initial(r: &Reader, plate: &PlateConfig, limits: &LimitsConfig) -> Result<InitialConfig, ConfigError> {
     let n = plate.mode_count();
