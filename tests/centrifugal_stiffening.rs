@@ -17,7 +17,9 @@
 
 mod support;
 
-use annular_plate::config::{Boundary, CentrifugalConfig, InPlaneInner, PlateConfig};
+use annular_plate::config::{Boundary, CentrifugalConfig, Config, Coordinates, InPlaneInner, IntegratorKind, PlateConfig};
+use annular_plate::dynamics::Simulation;
+use annular_plate::model::AngularShape;
 use annular_plate::model::prestress::LamePrestress;
 use annular_plate::model::{ModalGeometricStiffness, PlateModel, SpinningSpectrum};
 use support::exact_plate::{gauss_legendre, Annulus, Edge};
@@ -393,16 +395,126 @@ fn critical_speeds_match_shooting_and_the_issue_estimates() {
     }
 }
 
-#[test]
-fn a_stiffened_scene_is_refused_by_the_time_integration_naming_the_key() {
-    // Until the stepper carries Ω(t)² K_g (issue 12), simulate, the node,
-    // study and stability would run the unstiffened plate: refused instead.
-    let mut c = annular_plate::config::Config::from_yaml_str(&std::fs::read_to_string(
-        concat!(env!("CARGO_MANIFEST_DIR"), "/config/lathe.yaml")).unwrap(), "annular_plate").unwrap();
+/// A stiffened lathe-disc scene with ⟨k, l⟩ for l < `circles`, undamped, turning at `speed`.
+fn stiffened_scene(k: u32, circles: u32, speed: f64) -> Config {
+    let mut c = Config::default();
+    c.plate.nodal_diameters = vec![k];
+    c.plate.nodal_circles = (0..circles).collect();
+    c.plate.damping = vec![0.0];
     c.centrifugal = on();
-    let e = annular_plate::dynamics::Simulation::new(c.clone()).err().expect("refused");
-    let text = e.to_string();
-    assert!(text.contains("plate.centrifugal_stiffening") && text.contains("campbell"), "{text}");
-    c.centrifugal.stiffening = false;
-    assert!(annular_plate::dynamics::Simulation::new(c).is_ok(), "the unstiffened scene runs");
+    c.joint.speed = speed;
+    c.simulation.realtime_factor = 0.0;
+    c
+}
+
+/// The Ritz eigenvector of the retained ⟨k, ·⟩ cos family at speed Ω and its
+/// ω²: (diag(mω²) + Ω²G) v = ω² diag(m) v from the model's G (only to start
+/// the run in one stiffened mode; the frequency is then measured).
+fn ritz_mode(sim: &Simulation, speed: f64) -> (Vec<f64>, f64) {
+    let model = sim.model();
+    let g = ModalGeometricStiffness::new(model, &on());
+    let b = &g.blocks[0];
+    let n = b.ls.len();
+    let modes: Vec<usize> = b.ls.iter().map(|&l| model.modes().iter().position(|m| m.l == l && m.shape == AngularShape::Cos).unwrap()).collect();
+    let m: Vec<f64> = modes.iter().map(|&i| model.modes()[i].modal_mass).collect();
+    let s = nalgebra::DMatrix::from_fn(n, n, |a, c| {
+        let own = if a == c { m[a] * model.modes()[modes[a]].omega.powi(2) } else { 0.0 };
+        (own + speed * speed * b.matrix[a * n + c]) / (m[a] * m[c]).sqrt()
+    });
+    let eig = s.symmetric_eigen();
+    let lowest = (0..n).min_by(|&x, &y| eig.eigenvalues[x].total_cmp(&eig.eigenvalues[y])).unwrap();
+    let mut q = vec![0.0; model.n_modes()];
+    for a in 0..n {
+        q[modes[a]] = 1e-6 * eig.eigenvectors[(a, lowest)] / m[a].sqrt();
+    }
+    (q, eig.eigenvalues[lowest])
+}
+
+/// ω of a sampled free vibration q_j = A cos(ω jτ + φ): least squares of the
+/// three-term recurrence q_{j+1} + q_{j−1} = 2 cos(ωτ) q_j.
+fn recurrence_frequency(q: &[f64], tau: f64) -> f64 {
+    let (num, den) = q.windows(3).fold((0.0, 0.0), |(n, d), w| (n + w[1] * (w[0] + w[2]), d + 2.0 * w[1] * w[1]));
+    (num / den).acos() / tau
+}
+
+#[test]
+fn free_vibration_at_constant_speed_rings_at_the_stiffened_frequency() {
+    // Lathe ⟨3, 0⟩ at 4000 rad/s (ω₀ = 12,912 rad/s, +16 % from the prestress),
+    // integrated in Lagrangian (rotating-frame) coordinates; the retained
+    // ⟨3, l⟩, l < L, are the Ritz basis of the prestressed problem.
+    let (k, speed, rate) = (3u32, 4000.0, 20_000.0);
+    let p = lathe();
+    let spectrum = SpinningSpectrum::new(&p, &on(), k, 1).omega_squared(speed).unwrap()[0];
+    let shot = Shooting::new(&p, k).omega_squared(speed, spectrum);
+    let w_rest = SpinningSpectrum::new(&p, &on(), k, 1).omega_squared(0.0).unwrap()[0].sqrt();
+    println!("⟨3,0⟩ at {speed} rad/s: ω at rest {w_rest:.3}, spectrum {:.6}, shooting {:.6} rad/s", spectrum.sqrt(), shot.sqrt());
+    println!("L | integrator | simulated ω | vs Ritz | vs spectrum | vs shooting");
+    let mut errors = vec![];
+    for circles in [1u32, 2, 4] {
+        for integrator in [IntegratorKind::Exponential, IntegratorKind::Rk4, IntegratorKind::ImplicitMidpoint] {
+            let mut c = stiffened_scene(k, circles, speed);
+            c.simulation.rate_hz = rate;
+            c.simulation.coordinates = Coordinates::Lagrangian;
+            c.simulation.integrator = integrator;
+            let sim = Simulation::new(c.clone()).expect("a stiffened scene runs");
+            let (q0, ritz) = ritz_mode(&sim, speed);
+            c.initial.q = q0;
+            let mut sim = Simulation::new(c).unwrap();
+            let i = sim.model().modes().iter().position(|m| m.l == 0 && m.shape == AngularShape::Cos).unwrap();
+            let mut history = vec![sim.q_lagrange()[i]];
+            for _ in 0..2000 {
+                sim.step().unwrap();
+                history.push(sim.q_lagrange()[i]);
+            }
+            let w = recurrence_frequency(&history, 1.0 / rate);
+            let rel = |x: f64| (w - x.sqrt()) / x.sqrt();
+            println!("{circles} | {integrator:?} | {w:.6} | {:.1e} | {:.1e} | {:.1e}", rel(ritz), rel(spectrum), rel(shot));
+            // Not vacuous: the unstiffened frequency is 14 % lower.
+            assert!(w > 1.1 * w_rest);
+            match integrator {
+                // Exact for the modal part: the Ritz frequency of the retained modes to round-off.
+                IntegratorKind::Exponential => {
+                    assert!(rel(ritz).abs() < 1e-9, "L = {circles}: {w} vs Ritz {}", ritz.sqrt());
+                    errors.push(rel(shot).abs());
+                }
+                // Their own frequency errors at the inner step they choose
+                // (h·λ_max ≤ 0.2 and 0.5 by default, λ_max including the
+                // stiffening): RK4 below (hω)⁴/120 ≤ 1.3e-5, the midpoint
+                // rule below (hω)²/12 ≤ 2.1e-2 (docs/dynamics.md).
+                IntegratorKind::Rk4 => assert!(rel(ritz).abs() < 1.3e-5, "rk4 L = {circles}: {w}"),
+                IntegratorKind::ImplicitMidpoint => assert!(rel(ritz).abs() < 2.1e-2, "midpoint L = {circles}: {w}"),
+            }
+        }
+    }
+    // The Ritz value converges to the prestressed plate's from above as l are added.
+    assert!(errors.windows(2).all(|e| e[1] < e[0]), "{errors:?}");
+    assert!(errors[errors.len() - 1] < 1e-5, "{errors:?}");
+}
+
+#[test]
+fn a_stiffened_scene_runs_and_is_the_unstiffened_one_at_rest() {
+    // At Ω = 0 the prestress vanishes: the stiffened run is the unstiffened
+    // one (to the round-off of the block propagator); spinning, it differs.
+    let run = |stiffening: bool, speed: f64| {
+        // The paper's lathe disc (30 modes) under a space-fixed rim load.
+        let mut c = Config::default();
+        c.plate.damping = vec![0.02];
+        c.nodes.ale.push(annular_plate::config::NodePosition { radial: 1.0, angular: 0.3 });
+        c.loads.ale.push(annular_plate::config::WrenchConfig { force: [0.0, 0.0, -100.0], moment: [0.0; 3] });
+        c.centrifugal.stiffening = stiffening;
+        c.joint.speed = speed;
+        let mut sim = Simulation::new(c).expect("runs");
+        for _ in 0..200 {
+            sim.step().unwrap();
+        }
+        sim.q_lagrange().to_vec()
+    };
+    let scale = |q: &[f64]| q.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+    let diff = |a: &[f64], b: &[f64]| a.iter().zip(b).fold(0.0f64, |m, (x, y)| m.max((x - y).abs())) / scale(b);
+    let (on_rest, off_rest) = (run(true, 0.0), run(false, 0.0));
+    let (on_spin, off_spin) = (run(true, 4000.0), run(false, 4000.0));
+    println!("stiffened vs not: at rest {:.1e}, at 4000 rad/s {:.1e}", diff(&on_rest, &off_rest), diff(&on_spin, &off_spin));
+    assert!(scale(&off_rest) > 0.0);
+    assert!(diff(&on_rest, &off_rest) < 1e-10);
+    assert!(diff(&on_spin, &off_spin) > 1e-2);
 }

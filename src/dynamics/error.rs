@@ -42,10 +42,6 @@ pub enum SimulationError {
     /// A load model with stiff contacts whose forces an integrator would hold over a substep.
     #[error("the {model} ({keys}) couple the modes at rates up to {rate:.0} 1/s, but simulation.integrator = {integrator} holds their forces over a substep of {step:e} s (h × rate = {:.2} > {limit}): use simulation.integrator: rk4, which evaluates the {model} at every stage, or raise simulation.rate_hz / simulation.substeps", step * rate)]
     ModelTooStiffForIntegrator { model: &'static str, keys: &'static str, integrator: &'static str, rate: f64, step: f64, limit: f64 },
-    /// The time integration has no Ω(t)²-dependent geometric stiffness yet
-    /// (issue 12): a stiffened scene is refused rather than run unstiffened.
-    #[error("plate.centrifugal_stiffening = true is used by `campbell` only: the time integration (simulate, the node, study, stability) does not include the geometric stiffness yet; set plate.centrifugal_stiffening: false to simulate the unstiffened plate")]
-    StiffeningNotInTimeIntegration,
 }
 
 /// An input refused before it reached the state. The state and every other

@@ -24,6 +24,7 @@ pub mod simulation;
 pub mod stability;
 pub mod stability_map;
 pub mod state;
+pub mod stiffening;
 pub mod stepper;
 pub mod wrench;
 

@@ -10,6 +10,7 @@ use super::commands::InputRules;
 use super::load_models::{LoadModels, ModelWrenches, SceneNodes};
 pub use super::node_frame::{NodeFrame, NodeKind, NodeShape};
 pub use super::residual::ResidualCompliance;
+pub use super::stiffening::Stiffening;
 
 /// The effects the reference motion switches on (DESIGN: only what a scene needs).
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
@@ -52,6 +53,9 @@ pub struct Scene {
     /// Residual compliance of the truncated modes between the node frames
     /// (`plate.residual_flexibility`; None when off or without nodes).
     pub residual: Option<ResidualCompliance>,
+    /// The geometric stiffness Ω²G_k of the spinning prestress
+    /// (`plate.centrifugal_stiffening`; None when off: no cost).
+    pub stiffening: Option<Stiffening>,
 }
 
 impl Scene {
@@ -84,6 +88,7 @@ impl Scene {
         let load_models = LoadModels::new(config, &SceneNodes { ale: &ale_nodes, lagrange: &lagrange_nodes, modal_mass: &model.body().modal_mass });
         let residual = (config.plate.residual_flexibility && !(ale_nodes.is_empty() && lagrange_nodes.is_empty()))
             .then(|| ResidualCompliance::new(&model, &ale_nodes, &lagrange_nodes));
+        let stiffening = config.centrifugal.stiffening.then(|| Stiffening::new(&model, &config.centrifugal));
         let rules = InputRules::new(&config.limits, ale_nodes.len(), lagrange_nodes.len(), &load_models);
         Scene {
             model,
@@ -98,6 +103,7 @@ impl Scene {
             rules,
             load_models,
             residual,
+            stiffening,
         }
     }
 

@@ -111,9 +111,6 @@ pub struct Simulation {
 
 impl Simulation {
     pub fn new(config: Config) -> Result<Simulation, SimulationError> {
-        if config.centrifugal.stiffening {
-            return Err(SimulationError::StiffeningNotInTimeIntegration);
-        }
         let model = PlateModel::new(&config.plate)?;
         let scene = Scene::new(&config, model);
         let settings = StepperSettings::from_config(&config);

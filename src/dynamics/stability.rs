@@ -73,6 +73,9 @@ pub fn linear_system(scene: &Scene, speed: f64, friction_coefficient: f64, clamp
         a[(is, ic)] = 2.0 * kw;
         a[(is, is)] = -c.damping_rate;
     }
+    if let Some(s) = &scene.stiffening {
+        s.add_to_system(speed * speed, n, |r, c, v| a[(r, c)] += v);
+    }
     if let Some((_, pads)) = scene.load_models.find::<Pads>() {
         let mass = &scene.model.body().modal_mass;
         // Per pad the mean shape over its contacts: a floating caliper's pads

@@ -13,7 +13,8 @@ use super::ale::{harmonics, lagrange_to_ale};
 use super::error::{Divergence, StepError};
 use super::integrators::equations::{accelerations, mode_constants, ModeConstants};
 use super::integrators::exponential::ModePropagator;
-use super::integrators::{implicit_midpoint, rk4, MAX_INNER_SUBSTEPS};
+use super::integrators::{block_exponential, implicit_midpoint, rk4, MAX_INNER_SUBSTEPS};
+use super::integrators::stiffened_midpoint::StiffenedMidpoint;
 use super::joint::drive;
 use super::load_models::{LoadContext, ModelWrenches};
 use super::commands::Inputs;
@@ -110,6 +111,11 @@ pub struct Stepper {
     last_inner_substeps: usize,
     /// Wrenches of the load models at the last evaluation.
     model_wrenches: ModelWrenches,
+    /// Centrifugal stiffening: one exact propagator per k-block (shared by
+    /// its cos and sin families) and the implicit midpoint's block scratch;
+    /// empty when off.
+    stiffened: Vec<block_exponential::BlockPropagator>,
+    stiffened_midpoint: StiffenedMidpoint,
 }
 
 impl Stepper {
@@ -129,6 +135,8 @@ impl Stepper {
             backup: State::new(n, Coordinates::Ale, 0.0, 0.0),
             last_inner_substeps: 1,
             model_wrenches: scene.model_wrenches(),
+            stiffened: scene.stiffening.iter().flat_map(|s| &s.blocks).map(|b| block_exponential::BlockPropagator::new(b.len())).collect(),
+            stiffened_midpoint: StiffenedMidpoint::new(scene.stiffening.as_ref()),
         }
     }
 
@@ -148,12 +156,13 @@ impl Stepper {
     /// coupling included as bounded in [`LoadModels`](super::load_models::LoadModels).
     fn lambda_max(&self, scene: &Scene, speed: f64) -> f64 {
         let c = scene.load_models.coupling();
+        let stiffening = scene.stiffening.as_ref().map_or(0.0, |s| s.rate_bound * speed * speed);
         scene
             .model
             .modes()
             .iter()
             .zip(&self.consts)
-            .map(|(m, mc)| (mc.omega_eff_sq.abs() + c.stiffness_rate_sq).sqrt() + mc.damping_rate + c.damping_rate + m.k as f64 * speed.abs())
+            .map(|(m, mc)| (mc.omega_eff_sq.abs() + stiffening + c.stiffness_rate_sq).sqrt() + mc.damping_rate + c.damping_rate + m.k as f64 * speed.abs())
             .fold(0.0, f64::max)
     }
 
@@ -247,6 +256,15 @@ impl Stepper {
     /// the ALE one derived at χ1: both written into `state`.
     #[allow(clippy::too_many_arguments)]
     fn exponential(&mut self, scene: &Scene, state: &mut State, h: f64, speed_mean: f64, chi0: JointAngle, chi1: JointAngle, speed1: f64) {
+        if let Some(stiffening) = &scene.stiffening {
+            harmonics(&chi0, scene.layout.k_max, &mut self.harm);
+            let (lagrange_q, lagrange_v) = match state.coordinates {
+                Coordinates::Lagrangian => (&mut state.q, &mut state.q_dot),
+                Coordinates::Ale => (&mut state.q_other, &mut state.q_dot_other),
+            };
+            block_exponential::advance(stiffening, &mut self.stiffened, &self.consts, &self.harm, h, speed_mean, speed1, &self.loads, lagrange_q, lagrange_v);
+            return self.derive_ale(scene, state, chi1, speed1);
+        }
         let soft = scene.off_axis_rate_squared();
         for (i, m) in scene.model.modes().iter().enumerate() {
             let nu = m.k as f64 * speed_mean;
@@ -256,9 +274,9 @@ impl Stepper {
             }
         }
         harmonics(&chi0, scene.layout.k_max, &mut self.harm);
-        let (lagrange_q, lagrange_v, ale_q, ale_v) = match state.coordinates {
-            Coordinates::Lagrangian => (&mut state.q, &mut state.q_dot, &mut state.q_other, &mut state.q_dot_other),
-            Coordinates::Ale => (&mut state.q_other, &mut state.q_dot_other, &mut state.q, &mut state.q_dot),
+        let (lagrange_q, lagrange_v) = match state.coordinates {
+            Coordinates::Lagrangian => (&mut state.q, &mut state.q_dot),
+            Coordinates::Ale => (&mut state.q_other, &mut state.q_dot_other),
         };
         let f = &self.loads;
         for &i in &scene.layout.axisymmetric {
@@ -278,7 +296,16 @@ impl Stepper {
                 lagrange_v[idx] = qd;
             }
         }
-        // The result is the Lagrangian description at χ1: derive the ALE one.
+        self.derive_ale(scene, state, chi1, speed1);
+    }
+
+    /// The exponential step's result is the Lagrangian description at χ1:
+    /// derive the ALE one.
+    fn derive_ale(&mut self, scene: &Scene, state: &mut State, chi1: JointAngle, speed1: f64) {
+        let (lagrange_q, lagrange_v, ale_q, ale_v) = match state.coordinates {
+            Coordinates::Lagrangian => (&mut state.q, &mut state.q_dot, &mut state.q_other, &mut state.q_dot_other),
+            Coordinates::Ale => (&mut state.q_other, &mut state.q_dot_other, &mut state.q, &mut state.q_dot),
+        };
         ale_q.copy_from_slice(lagrange_q);
         ale_v.copy_from_slice(lagrange_v);
         harmonics(&chi1, scene.layout.k_max, &mut self.harm);
@@ -298,7 +325,11 @@ impl Stepper {
             harmonics(&chi_mid, scene.layout.k_max, &mut self.harm_end);
             let speed_mid = speed0 + alpha * t_mid;
             let (f_ale, f_plate) = (&self.loads.ale_frame, &self.loads.plate_frame);
-            implicit_midpoint::advance(scene, &self.consts, state.coordinates, hi, &self.harm_end, speed_mid, alpha, f_ale, f_plate, &mut state.q, &mut state.q_dot);
+            if let Some(s) = &scene.stiffening {
+                self.stiffened_midpoint.advance(s, &self.consts, state.coordinates, hi, &self.harm_end, speed_mid, alpha, f_ale, f_plate, &mut state.q, &mut state.q_dot);
+            } else {
+                implicit_midpoint::advance(scene, &self.consts, state.coordinates, hi, &self.harm_end, speed_mid, alpha, f_ale, f_plate, &mut state.q, &mut state.q_dot);
+            }
         }
     }
 

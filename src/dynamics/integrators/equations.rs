@@ -91,4 +91,8 @@ pub fn accelerations(
             }
         }
     }
+    // Centrifugal stiffening: −Ω² M⁻¹ G_k q in either description (it commutes with R(kχ)).
+    if let Some(s) = &scene.stiffening {
+        s.subtract_accelerations(speed * speed, q, acc);
+    }
 }

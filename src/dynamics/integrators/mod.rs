@@ -14,8 +14,10 @@
 /// Beyond this many inner substeps per substep a run is refused.
 pub const MAX_INNER_SUBSTEPS: usize = 100_000;
 
+pub mod block_exponential;
 pub mod equations;
 pub mod exponential;
 pub mod implicit_midpoint;
 pub mod phi;
 pub mod rk4;
+pub mod stiffened_midpoint;

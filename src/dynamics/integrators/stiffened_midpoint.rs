@@ -1,0 +1,155 @@
+//! The implicit midpoint rule with centrifugal stiffening: Ω²G_k couples the
+//! retained l of one k, so the 2×2 (per mode) and 4×4 (per ALE pair) solves
+//! of [`implicit_midpoint`](super::implicit_midpoint) become one solve per k:
+//! (I − h/2 A) y₁ = (I + h/2 A) y₀ + h g with y the amplitudes and rates of
+//! the k's modes (cos and sin families) and A the modal ODE of
+//! [`equations`](super::equations) at the midpoint speed plus −Ω_mid² M⁻¹G_k.
+//! Same method, same order and A-stability as without stiffening. Dense LU
+//! with partial pivoting on scratch sized once.
+
+use super::equations::{pair_force, ModeConstants};
+use crate::config::Coordinates;
+use crate::dynamics::scene::ModePair;
+use crate::dynamics::stiffening::Stiffening;
+
+/// Scratch for the largest block: no allocation per step.
+#[derive(Debug, Clone, Default)]
+pub struct StiffenedMidpoint {
+    a: Vec<f64>,
+    lhs: Vec<f64>,
+    rhs: Vec<f64>,
+    y: Vec<f64>,
+}
+
+impl StiffenedMidpoint {
+    pub fn new(stiffening: Option<&Stiffening>) -> StiffenedMidpoint {
+        let d = stiffening.map_or(0, |s| s.blocks.iter().map(|b| 4 * b.len()).max().unwrap_or(0));
+        StiffenedMidpoint { a: vec![0.0; d * d], lhs: vec![0.0; d * d], rhs: vec![0.0; d], y: vec![0.0; d] }
+    }
+
+    /// Advance (q, v) in place over h; arguments as [`implicit_midpoint::advance`](super::implicit_midpoint::advance).
+    #[allow(clippy::too_many_arguments)]
+    pub fn advance(
+        &mut self,
+        stiffening: &Stiffening,
+        consts: &[ModeConstants],
+        coords: Coordinates,
+        h: f64,
+        harm_mid: &[(f64, f64)],
+        speed_mid: f64,
+        accel: f64,
+        ale_frame: &[f64],
+        plate_frame: &[f64],
+        q: &mut [f64],
+        v: &mut [f64],
+    ) {
+        let speed_sq = speed_mid * speed_mid;
+        for b in &stiffening.blocks {
+            let n = b.len();
+            let families = if b.k == 0 { 1 } else { 2 };
+            let m = families * n; // modes in this block
+            let d = 2 * m;
+            // Local index of mode (family f, l a): f·n + a; rates at m + that.
+            let index = |f: usize, a: usize| if f == 0 { b.cos[a] } else { b.sin[a] };
+            let a = &mut self.a[..d * d];
+            a.fill(0.0);
+            let g = &mut self.rhs[..d];
+            g.fill(0.0);
+            for f in 0..families {
+                for r in 0..n {
+                    let row = m + f * n + r;
+                    let c = consts[index(f, r)];
+                    a[(f * n + r) * d + row] = 1.0;
+                    a[row * d + f * n + r] -= c.omega_eff_sq;
+                    a[row * d + row] -= c.damping_rate;
+                    for col in 0..n {
+                        a[row * d + f * n + col] -= speed_sq * b.g_over_m[r * n + col];
+                    }
+                }
+            }
+            if b.k == 0 {
+                for r in 0..n {
+                    g[m + r] = ale_frame[b.cos[r]] / consts[b.cos[r]].mass;
+                }
+            } else {
+                for r in 0..n {
+                    let p = ModePair { k: b.k, cos: b.cos[r], sin: b.sin[r] };
+                    let c = consts[p.cos];
+                    let (fc, fs) = pair_force(coords, harm_mid[p.k as usize], &p, ale_frame, plate_frame);
+                    let (rc, rs) = (m + r, m + n + r);
+                    g[rc] = fc / c.mass;
+                    g[rs] = fs / c.mass;
+                    if coords == Coordinates::Ale {
+                        // The pair's ALE terms (equations.rs): acc_c += 2kΩ(−v_s) + skew(−q_s) + k²Ω² q_c, acc_s likewise.
+                        let kw = p.k as f64 * speed_mid;
+                        let skew = p.k as f64 * accel + c.damping_rate * kw;
+                        let (qc, qs) = (r, n + r);
+                        a[rc * d + qc] += kw * kw;
+                        a[rs * d + qs] += kw * kw;
+                        a[rc * d + rs] -= 2.0 * kw;
+                        a[rs * d + rc] += 2.0 * kw;
+                        a[rc * d + qs] -= skew;
+                        a[rs * d + qc] += skew;
+                    }
+                }
+            }
+            let hh = 0.5 * h;
+            for f in 0..families {
+                for r in 0..n {
+                    let i = index(f, r);
+                    self.y[f * n + r] = q[i];
+                    self.y[m + f * n + r] = v[i];
+                }
+            }
+            let lhs = &mut self.lhs[..d * d];
+            for i in 0..d {
+                let ay: f64 = (0..d).map(|j| a[i * d + j] * self.y[j]).sum();
+                g[i] = self.y[i] + hh * ay + h * g[i];
+                for j in 0..d {
+                    lhs[i * d + j] = if i == j { 1.0 } else { 0.0 } - hh * a[i * d + j];
+                }
+            }
+            solve(d, lhs, g);
+            for f in 0..families {
+                for r in 0..n {
+                    let i = index(f, r);
+                    q[i] = g[f * n + r];
+                    v[i] = g[m + f * n + r];
+                }
+            }
+        }
+    }
+}
+
+/// Solve lhs x = rhs in place (x into rhs) by Gaussian elimination with
+/// partial pivoting; a singular matrix gives NaN (caught by the step check).
+fn solve(d: usize, lhs: &mut [f64], rhs: &mut [f64]) {
+    for col in 0..d {
+        let pivot = (col..d).max_by(|&x, &y| lhs[x * d + col].abs().total_cmp(&lhs[y * d + col].abs())).unwrap_or(col);
+        if lhs[pivot * d + col] == 0.0 {
+            rhs.fill(f64::NAN);
+            return;
+        }
+        if pivot != col {
+            for j in 0..d {
+                lhs.swap(col * d + j, pivot * d + j);
+            }
+            rhs.swap(col, pivot);
+        }
+        let diag = lhs[col * d + col];
+        for row in col + 1..d {
+            let factor = lhs[row * d + col] / diag;
+            if factor == 0.0 {
+                continue;
+            }
+            for j in col..d {
+                lhs[row * d + j] -= factor * lhs[col * d + j];
+            }
+            rhs[row] -= factor * rhs[col];
+        }
+    }
+    for row in (0..d).rev() {
+        let s: f64 = (row + 1..d).map(|j| lhs[row * d + j] * rhs[j]).sum();
+        rhs[row] = (rhs[row] - s) / lhs[row * d + row];
+    }
+}
