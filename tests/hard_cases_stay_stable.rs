@@ -4,6 +4,7 @@ mod support;
 
 use annular_plate::config::{Boundary, Config, Coordinates, IntegratorKind};
 use annular_plate::dynamics::{InputError, JointAngle, NodeKind, Simulation, StepError, Wrench};
+use annular_plate::dynamics::load_models::tool::SURFACE;
 use support::scenes::*;
 
 /// Lathe disc at its cutting speed with a rim load: the 18.8 kHz ⟨7, 1⟩ mode
@@ -279,3 +280,39 @@ fn divergence_is_detected_reported_and_leaves_the_last_finite_state() {
     assert_eq!(sim.state(), &before);
 }
 
+
+#[test]
+fn a_diverged_lathe_step_is_undone_with_every_surface_bin_it_cut() {
+    // The lathe scene with 4 substeps per step: a step cuts several bins of
+    // the tool's 4096-bin surface, which the stepper logs instead of copying.
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("config/lathe.yaml");
+    let mut c = Config::from_params_file(&path, "annular_plate").unwrap();
+    c.simulation.substeps = 4;
+    let thickness = c.plate.thickness;
+    let max_q = |state: &annular_plate::dynamics::State| state.q.iter().fold(0.0f64, |m, q| m.max(q.abs()));
+    // Reference run: a step after the tool reaches the face (0.25 s) that
+    // grows the largest |q| and lowers surface bins.
+    let mut reference = Simulation::new(c.clone()).unwrap();
+    let (before, limit) = loop {
+        let before = reference.state().clone();
+        reference.step().unwrap();
+        let (q0, q1) = (max_q(&before), max_q(reference.state()));
+        let cut = reference.state().load_models.slots[0][SURFACE..] != before.load_models.slots[0][SURFACE..];
+        if before.time > 0.3 && q1 > q0 && cut {
+            break (before, 0.5 * (q0 + q1) / thickness);
+        }
+        assert!(reference.time() < 2.0, "no growing cut found");
+    };
+    let bins_cut = reference.state().load_models.slots[0][SURFACE..].iter().zip(&before.load_models.slots[0][SURFACE..]).filter(|(a, b)| a != b).count();
+    assert!(bins_cut > 0);
+    // From the same state with the amplitude limit between: the step is
+    // refused and every value, surface bins included, is as before it — bit for bit.
+    c.limits.max_deflection_thicknesses = limit;
+    let mut guarded = Simulation::new(c).unwrap();
+    guarded.restore(before.clone());
+    let e = guarded.step().unwrap_err();
+    assert!(matches!(e, StepError::Diverged { .. }), "{e}");
+    assert!(guarded.state() == &before, "the refused step left changes ({bins_cut} bins were cut in it)");
+    assert!(guarded.step().is_err());
+    assert!(guarded.state() == &before);
+}

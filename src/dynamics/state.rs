@@ -97,6 +97,13 @@ impl State {
     /// Copy `other` into `self`, reusing the amplitude buffers (the derived
     /// `clone_from` would allocate).
     pub fn copy_from(&mut self, other: &State) {
+        self.copy_from_except_load_models(other);
+        self.load_models.copy_from(&other.load_models);
+    }
+
+    /// [`State::copy_from`] without the load models' slots (the stepper
+    /// undoes those by its log, [`crate::dynamics::load_models::undo`]).
+    pub fn copy_from_except_load_models(&mut self, other: &State) {
         self.steps = other.steps;
         self.time = other.time;
         self.chi = other.chi;
@@ -108,7 +115,6 @@ impl State {
             a.clear();
             a.extend_from_slice(b);
         }
-        self.load_models.copy_from(&other.load_models);
     }
 
     /// Every value finite, load-model slots included.

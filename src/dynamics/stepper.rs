@@ -16,7 +16,7 @@ use super::integrators::exponential::ModePropagator;
 use super::integrators::{block_exponential, implicit_midpoint, rk4, MAX_INNER_SUBSTEPS};
 use super::integrators::stiffened_midpoint::StiffenedMidpoint;
 use super::joint::drive;
-use super::load_models::{LoadContext, ModelWrenches};
+use super::load_models::{LoadContext, LoadModelUndo, ModelWrenches};
 use super::commands::Inputs;
 use super::loads::{add_reference_motion, compute as node_loads, StepLoads};
 use super::scene::Scene;
@@ -106,7 +106,10 @@ pub struct Stepper {
     propagators: Vec<ModePropagator>,
     y: Vec<f64>,
     rk: [Vec<f64>; 5],
+    /// The state before the step (the load models' slots apart) and the log
+    /// of what the step changed in those slots: a diverged step is undone.
     backup: State,
+    undo: LoadModelUndo,
     /// Inner substeps used in the last step (1 for the exponential integrator).
     last_inner_substeps: usize,
     /// Wrenches of the load models at the last evaluation.
@@ -133,6 +136,7 @@ impl Stepper {
             y: vec![0.0; 2 * n],
             rk: std::array::from_fn(|_| vec![0.0; 2 * n]),
             backup: State::new(n, Coordinates::Ale, 0.0, 0.0),
+            undo: LoadModelUndo::new(&scene.load_models),
             last_inner_substeps: 1,
             model_wrenches: scene.model_wrenches(),
             stiffened: scene.stiffening.iter().flat_map(|s| &s.blocks).map(|b| block_exponential::BlockPropagator::new(b.len())).collect(),
@@ -179,7 +183,8 @@ impl Stepper {
     /// Advance `state` by one output step (dt) under `inputs`. On error the
     /// state is as before the call.
     pub fn step(&mut self, scene: &Scene, settings: &StepperSettings, state: &mut State, inputs: &Inputs) -> Result<(), StepError> {
-        self.backup.copy_from(state);
+        self.backup.copy_from_except_load_models(state);
+        self.undo.begin(&scene.load_models, &state.load_models);
         let h = settings.h();
         self.last_inner_substeps = 1;
         let mut result = Ok(());
@@ -196,7 +201,8 @@ impl Stepper {
             result = check(scene, state);
         }
         if result.is_err() {
-            state.copy_from(&self.backup);
+            state.copy_from_except_load_models(&self.backup);
+            self.undo.restore(&mut state.load_models);
         }
         result
     }
@@ -240,6 +246,7 @@ impl Stepper {
             }
             IntegratorKind::Rk4 => self.rk4(scene, settings, state, inputs, h, chi0, speed0, alpha)?,
         }
+        models.save_changes(&state.load_models, &mut self.undo);
         models.commit_substep(&mut state.load_models, &inputs.commands, h);
         state.chi = chi1;
         state.speed = speed1;

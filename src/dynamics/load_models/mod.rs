@@ -19,7 +19,9 @@
 //! computation adds on top of the user's held wrenches, each with its own
 //! follower choice. Memoryless models ([`LoadModel::stage_dependent`]) are
 //! re-evaluated by RK4 at every stage, by the other integrators at the substep
-//! start. After the substep, [`LoadModel::commit_substep`] advances the state.
+//! start. After the substep, [`LoadModel::commit_substep`] advances the state
+//! (what it changes beyond a model's [`LoadModel::undo_head`] logged first, so
+//! that a diverged step is undone without copying the slots: [`undo`]).
 
 pub mod face_friction;
 pub mod model;
@@ -27,6 +29,7 @@ pub mod pad;
 pub mod pitch_link;
 pub mod point_spring;
 pub mod tool;
+pub mod undo;
 
 pub use model::{contact_rate, surface_kinematics, Builder, SurfaceKinematics, CommandRule, CommandSpec, Coupling, LoadContext, LoadModel, ModelOut, SceneNodes};
 
@@ -34,6 +37,7 @@ pub use pad::{ContactForces, PadContactPoint, PadScratch, Pads};
 pub use pitch_link::PitchLinks;
 pub use point_spring::PointSprings;
 pub use tool::{Tool, ToolStep};
+pub use undo::{LoadModelUndo, SlotUndo};
 
 use crate::config::{Config, IntegratorKind};
 use crate::dynamics::error::SimulationError;
@@ -243,6 +247,13 @@ impl LoadModels {
     pub fn begin_substep(&self, ctx: &LoadContext, state: &mut LoadModelState, h: f64) {
         for (m, slot) in self.models.iter().zip(state.slots.iter_mut()) {
             m.begin_substep(ctx, slot, h);
+        }
+    }
+
+    /// Just before [`LoadModels::commit_substep`]: log what it will change beyond the models' undo heads.
+    pub fn save_changes(&self, state: &LoadModelState, undo: &mut LoadModelUndo) {
+        for (i, (m, slot)) in self.models.iter().zip(&state.slots).enumerate() {
+            m.save_changes(slot, undo.slot(i));
         }
     }
 

@@ -7,6 +7,7 @@ use crate::dynamics::error::InputError;
 use crate::dynamics::joint::FrictionTorque;
 use crate::dynamics::node_frame::{NodeFrame, NodeShape};
 use crate::dynamics::wrench::Wrench;
+use super::undo::SlotUndo;
 use std::any::Any;
 use std::fmt::Debug;
 
@@ -171,6 +172,19 @@ pub trait LoadModel: Debug + Send + Sync {
 
     /// After the substep of length `h`: advance its state.
     fn commit_substep(&self, _slot: &mut [f64], _commands: &[f64], _h: f64) {}
+
+    /// The part of its slot (`..n` of `slot_len` entries) the stepper copies
+    /// before a step so that it can undo it (see [`super::undo`]); the entries
+    /// beyond it change only in [`LoadModel::commit_substep`] and only where
+    /// [`LoadModel::save_changes`] saved them. Default: the whole slot.
+    fn undo_head(&self, slot_len: usize) -> usize {
+        slot_len
+    }
+
+    /// Just before [`LoadModel::commit_substep`]: save every entry beyond
+    /// [`LoadModel::undo_head`] the commit will change. Default: none (the
+    /// whole slot is the head).
+    fn save_changes(&self, _slot: &[f64], _undo: &mut SlotUndo) {}
 
     /// Whether its slot is finite, for the divergence guard after every step
     /// (a model whose slot holds values derived from others may check only

@@ -28,6 +28,7 @@
 //! force), z_tip = z_holder + e. The plate gets −f_f along z at the node.
 
 use super::model::{surface_kinematics, CommandRule, CommandSpec, LoadContext, LoadModel, ModelOut, SceneNodes};
+use super::undo::SlotUndo;
 use crate::config::Config;
 use std::any::Any;
 
@@ -94,6 +95,12 @@ pub struct ToolStep {
 }
 
 impl ToolStep {
+    /// Slot indices of the surface bins the substep sweeps, in the order swept.
+    fn swept_entries(&self) -> impl Iterator<Item = usize> + '_ {
+        let n = SURFACE_BINS as i64;
+        (0..self.bins).map(move |j| SURFACE + if self.downwards { self.first_bin - j } else { self.first_bin + j }.rem_euclid(n) as usize)
+    }
+
     fn store(&self, slot: &mut [f64]) {
         let held = [self.force, self.chip, self.level, self.first_bin as f64, self.bins as f64, if self.downwards { 1.0 } else { 0.0 }];
         slot[HELD..HELD + 6].copy_from_slice(&held);
@@ -168,6 +175,21 @@ impl LoadModel for Tool {
         self.commit(slot, &step, commands[0], h);
     }
 
+    /// The holder, tip, held cut and last outputs; the surface bins are logged per cut.
+    fn undo_head(&self, _slot_len: usize) -> usize {
+        SURFACE
+    }
+
+    /// The surface bins the held cut will lower.
+    fn save_changes(&self, slot: &[f64], undo: &mut SlotUndo) {
+        let step = ToolStep::load(slot);
+        for i in step.swept_entries() {
+            if !(slot[i] <= step.level) {
+                undo.save(slot, i);
+            }
+        }
+    }
+
     /// The surface bins are minima of cut levels made from the tip and the
     /// deflection (checked with the elastic state): the values before them decide.
     fn slot_is_finite(&self, slot: &[f64]) -> bool {
@@ -220,10 +242,8 @@ impl Tool {
 
     /// Cut the swept bins, move the holder by −v_f h and relax the tip under the held force.
     pub fn commit(&self, slot: &mut [f64], step: &ToolStep, feed_rate: f64, h: f64) {
-        let n = SURFACE_BINS as i64;
-        for j in 0..step.bins {
-            let b = if step.downwards { step.first_bin - j } else { step.first_bin + j }.rem_euclid(n) as usize;
-            slot[SURFACE + b] = slot[SURFACE + b].min(step.level);
+        for i in step.swept_entries() {
+            slot[i] = slot[i].min(step.level);
         }
         let e_static = step.force / self.stiffness;
         slot[DEFLECTION] = if self.damping > 0.0 {
