@@ -319,6 +319,7 @@ fn check_msg<T: DeserializeOwned + RosType>(defs: &Definitions) -> String {
 fn own_messages_match_msg_files() {
     let defs = Definitions::load();
     let checked = [
+        check_msg::<m::CriticalSpeeds>(&defs),
         check_msg::<m::ModalAmplitudes>(&defs),
         check_msg::<m::NodeWrench>(&defs),
         check_msg::<m::NodeWrenchArray>(&defs),

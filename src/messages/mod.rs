@@ -9,6 +9,7 @@
 
 pub mod clock;
 pub mod clock_follower;
+pub mod critical_speeds;
 pub mod diagnostics;
 pub mod input_stats;
 pub mod marker;

@@ -27,6 +27,10 @@ pub const TF: QosProfile = reliable(100, Durability::Volatile);
 /// transforms travel in one message that late joiners still receive.
 pub const TF_STATIC: QosProfile = reliable(1, Durability::TransientLocal);
 
+/// `~/critical_speeds`: reliable, transient-local, keep last 1, like
+/// `/tf_static`: published once, late joiners still receive it.
+pub const CRITICAL_SPEEDS: QosProfile = reliable(1, Durability::TransientLocal);
+
 /// `~/plate_marker`: reliable, volatile, keep last 1 (RViz's marker
 /// display subscribes reliable; only the newest picture matters).
 pub const MARKER: QosProfile = reliable(1, Durability::Volatile);

@@ -15,6 +15,8 @@ pub const JOINT_STATES: &str = "joint_states";
 pub const TF: &str = "/tf";
 pub const TF_STATIC: &str = "/tf_static";
 pub const MODAL_AMPLITUDES: &str = "~/modal_amplitudes";
+/// The critical speeds, once at start (latched).
+pub const CRITICAL_SPEEDS: &str = "~/critical_speeds";
 /// The deformed plate for RViz / Foxglove (visualization_msgs/MarkerArray).
 pub const PLATE_MARKER: &str = "~/plate_marker";
 pub const CLOCK: &str = "/clock";

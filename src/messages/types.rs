@@ -275,6 +275,16 @@ impl ModalAmplitudes {
     pub const SHAPE_SIN: u8 = 2;
 }
 
+/// annular_plate/msg/CriticalSpeeds (`msg/CriticalSpeeds.msg`).
+#[derive(Debug, Clone, PartialEq, Default, Serialize, Deserialize)]
+pub struct CriticalSpeeds {
+    pub centrifugal_stiffening: bool,
+    pub k: Vec<u32>,
+    pub l: Vec<u32>,
+    pub rad_s: Vec<f64>,
+}
+ros_message!(CriticalSpeeds, "annular_plate", "CriticalSpeeds");
+
 /// annular_plate/msg/NodeWrench (`msg/NodeWrench.msg`).
 #[derive(Debug, Clone, Copy, PartialEq, Default, Serialize, Deserialize)]
 pub struct NodeWrench {

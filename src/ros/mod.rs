@@ -19,6 +19,7 @@
 //! - [`diagnostics`]: the `/diagnostics` statuses (shared with `simulate --bag`);
 //! - [`sim_loop`]: the fixed-rate simulation thread;
 //! - [`marker_thread`]: `~/plate_marker`, built and published off the loop;
+//! - [`critical_speeds`]: `~/critical_speeds`, once at start (latched);
 //! - [`logging`]: `/rosout` and stderr;
 //! - [`heap`]: handing freed heap back to the OS after peer churn;
 //! - [`node`]: wiring and shutdown.
@@ -26,6 +27,7 @@
 //! The physics (`model`, `dynamics`) never imports anything from here.
 
 pub mod clock_input;
+pub mod critical_speeds;
 pub mod error;
 pub mod heap;
 pub mod input_polling;

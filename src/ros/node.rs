@@ -7,6 +7,7 @@ use super::input_polling::{polled, InputContext, PolledInput};
 use super::inputs::{InputStats, InputValidator, Source};
 use super::logging::{parse_level, Logger};
 use crate::messages::types::{
+    CriticalSpeeds,
     Clock, DiagnosticArray, Float64, JointState, ModalAmplitudes, NodeWrenchArray, PadClampForces, PadStates, RosType,
     TFMessage, Time, ToolState, WrenchStamped,
 };
@@ -395,6 +396,8 @@ async fn serve(setup: NodeSetup, sim: Simulation, domain: u16, bag: Option<NodeB
     if let Err(e) = tf_static.publish(static_msg) {
         logger.warn(&format!("could not publish /tf_static: {e:?}"));
     }
+    let critical_pub = publisher::<CriticalSpeeds, CriticalSpeeds>(&mut node, names, topics::CRITICAL_SPEEDS, &qos::CRITICAL_SPEEDS)?;
+    let critical = super::critical_speeds::publish(&critical_pub, &sim, &setup.config, &logger);
 
     // The loop's queue, shared by inputs and services.
     let (tx, rx) = sync_channel::<Command>(COMMAND_QUEUE);
@@ -414,7 +417,7 @@ async fn serve(setup: NodeSetup, sim: Simulation, domain: u16, bag: Option<NodeB
     let line = startup_line(&setup, &sim, domain);
     let outputs = OutputMessages::new(&sim, &frames);
     let mut sim_loop =
-        SimLoop::new(sim, outputs, pubs, rx, Arc::clone(&stats), Arc::clone(&logger), loop_settings(&setup)).with_inputs(inputs);
+        SimLoop::new(sim, outputs, pubs, rx, Arc::clone(&stats), Arc::clone(&logger), loop_settings(&setup)).with_inputs(inputs).with_critical_speeds(critical);
     let (recorder, record_thread) = recording.unzip();
     let marker_thread = match start_marker(&mut node, &setup, sim_loop.simulation(), &frames, recorder.clone())? {
         Some((feed, join)) => {
@@ -474,6 +477,7 @@ async fn serve(setup: NodeSetup, sim: Simulation, domain: u16, bag: Option<NodeB
         Ok(())
     };
     drop(tf_static);
+    drop(critical_pub);
     drop(logger);
     drop(node);
     drop(context);

@@ -106,6 +106,8 @@ pub struct SimLoop {
     /// Inputs taken at a boundary: (reception time ns, order taken, input),
     /// applied in reception order (reused: no allocation once grown).
     taken: Vec<(i64, u32, Command)>,
+    /// The critical speeds (`~/critical_speeds`) for the near-critical status.
+    critical_speeds: Vec<crate::model::campbell::CriticalSpeed>,
 }
 
 impl SimLoop {
@@ -145,6 +147,7 @@ impl SimLoop {
             marker: None,
             inputs: Vec::new(),
             taken: Vec::new(),
+            critical_speeds: Vec::new(),
             settings,
         }
     }
@@ -152,6 +155,12 @@ impl SimLoop {
     /// Read these input topics at every step boundary.
     pub fn with_inputs(mut self, inputs: Vec<Box<dyn PolledInput>>) -> Self {
         self.inputs = inputs;
+        self
+    }
+
+    /// Report `<node>: critical speeds` against these (`ros/critical_speeds.rs`).
+    pub fn with_critical_speeds(mut self, speeds: Vec<crate::model::campbell::CriticalSpeed>) -> Self {
+        self.critical_speeds = speeds;
         self
     }
 
@@ -532,6 +541,7 @@ impl SimLoop {
         self.rejected_at_last_report = rejected;
         let mut status =
             vec![diagnostics::simulation_status(name, &report), diagnostics::inputs_status(name, &self.stats, new_rejected)];
+        status.push(crate::messages::critical_speeds::status(name, &self.critical_speeds, self.sim.joint().velocity));
         if let Some(r) = &self.recorder {
             let rec = r.report(self.dropped_at_last_report);
             self.dropped_at_last_report = rec.dropped;

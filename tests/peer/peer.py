@@ -245,6 +245,20 @@ def scenario_tf_static(p, a):
     return {"tf_static": todict(msg), "more": len(more)}
 
 
+def scenario_critical_speeds(p, a):
+    """A late joiner's transient-local reader gets the one ~/critical_speeds
+    message; then the `<node>: critical speeds` status of /diagnostics."""
+    r = p.reader(p.private("critical_speeds"), T.CriticalSpeeds, depth=1, transient_local=True)
+    msg = p.wait_for(r, timeout=30.0)
+    time.sleep(0.3)
+    more = p.take(r)
+    d = p.reader("/diagnostics", T.DiagnosticArray, depth=10)
+    name = p.node + ": critical speeds"
+    diag = p.wait_for(d, lambda s: any(st.name == name for st in s.status), timeout=30.0)
+    status = next(st for st in diag.status if st.name == name)
+    return {"critical_speeds": todict(msg), "more": len(more), "status": todict(status)}
+
+
 def scenario_clock(p, a):
     """/clock samples across a reset; the types seen on rt/clock."""
     r = p.reader("/clock", T.Clock, depth=100000)

@@ -163,6 +163,14 @@ class ModalAmplitudes(IdlStruct, typename="annular_plate::msg::dds_::ModalAmplit
 
 
 @dataclass
+class CriticalSpeeds(IdlStruct, typename="annular_plate::msg::dds_::CriticalSpeeds_"):
+    centrifugal_stiffening: bool = False
+    k: sequence[uint32] = field(default_factory=list)
+    l: sequence[uint32] = field(default_factory=list)
+    rad_s: sequence[float64] = field(default_factory=list)
+
+
+@dataclass
 class NodeWrench(IdlStruct, typename="annular_plate::msg::dds_::NodeWrench_"):
     kind: uint8 = 0
     index: uint32 = 0
