@@ -26,9 +26,8 @@ struct AngleTable {
 
 impl AngleTable {
     fn new(kernel: &ResidualKernel) -> Self {
-        let h = PI / TABLE_INTERVALS as f64;
-        let grid = (0..=TABLE_INTERVALS).map(|i| i as f64 * h);
-        AngleTable { values: grid.clone().map(|x| kernel.at(x)).collect(), slopes: grid.map(|x| kernel.derivative(x)).collect() }
+        let (values, slopes) = kernel.on_grid(TABLE_INTERVALS);
+        AngleTable { values, slopes }
     }
 
     fn at(&self, delta: f64) -> f64 {
