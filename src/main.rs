@@ -44,6 +44,9 @@ enum Command {
         /// Rows and bag messages at this rate, Hz (it must divide simulation.rate_hz); default: every step.
         #[arg(long, value_name = "HZ", allow_negative_numbers = true)]
         output_rate: Option<f64>,
+        /// Let --output-rate go below twice the squeal frequency of a scene with pads (refused otherwise: the rows would alias it).
+        #[arg(long)]
+        allow_aliasing: bool,
         /// No progress bar.
         #[arg(long)]
         quiet: bool,
@@ -160,7 +163,7 @@ fn run() -> anyhow::Result<()> {
         Some(Command::Study(args)) => Ok(cli::study::main(args)?),
         Some(Command::Campbell(args)) => Ok(cli::campbell::main(args)?),
         Some(Command::Stability(args)) => Ok(cli::stability::main(args)?),
-        Some(Command::Simulate { file, duration, csv, bag, output_rate, quiet, overrides }) => {
+        Some(Command::Simulate { file, duration, csv, bag, output_rate, allow_aliasing, quiet, overrides }) => {
             anyhow::ensure!(csv.is_some() || bag.is_some(), "simulate writes --csv OUT, --bag DIR or both: give at least one");
             anyhow::ensure!(duration.is_finite() && duration >= 0.0, "--duration must be a finite number ≥ 0 s, got {duration}");
             let config = cli::load_config_with(&file, &overrides)?;
@@ -170,7 +173,11 @@ fn run() -> anyhow::Result<()> {
                 "--duration {duration} s is shorter than one step (1/simulation.rate_hz = {dt} s): give 0 (the initial state only) or at least {dt} s"
             );
             let every = output_every(output_rate, config.simulation.rate_hz)?;
+            let rate_hz = config.simulation.rate_hz;
             let mut sim = Simulation::new(config).with_context(|| format!("{}", file.display()))?;
+            if output_rate.is_some() {
+                cli::simulate::check_output_rate(&sim, rate_hz / every as f64, allow_aliasing).with_context(|| format!("{}", file.display()))?;
+            }
             let show = !quiet && std::io::stderr().is_terminal();
             let bar = indicatif::ProgressBar::new(1000);
             if !show {

@@ -48,7 +48,7 @@ fn scene(name: &str) -> Config {
 fn stepping_the_scenes_with_changing_commands_allocates_nothing() {
     WATCHED.with(|w| w.set(true));
     // The squeal scene also with friction on the faces and μ(v) (below its threshold).
-    for (name, faces) in [("brake_squeal.yaml", false), ("brake_squeal.yaml", true), ("lathe.yaml", false), ("swash_plate.yaml", false)] {
+    for (name, faces) in [("brake_squeal_paper.yaml", false), ("brake_squeal.yaml", true), ("lathe.yaml", false), ("swash_plate.yaml", false)] {
         for integrator in [IntegratorKind::Rk4, IntegratorKind::Exponential, IntegratorKind::ImplicitMidpoint] {
             let mut c = scene(name);
             if faces {

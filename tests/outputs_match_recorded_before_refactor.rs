@@ -19,6 +19,7 @@ use std::process::Command;
 const SCENES: &[(&str, f64)] = &[
     ("brake_bench.yaml", 2.0),
     ("brake_squeal.yaml", 1.0),
+    ("brake_squeal_paper.yaml", 1.0),
     ("design_example.yaml", 1.0),
     ("lathe.yaml", 5.5),
     ("swash_plate.yaml", 5.0),

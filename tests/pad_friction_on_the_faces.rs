@@ -240,9 +240,9 @@ fn ale_and_lagrangian_descriptions_converge_to_one_motion_with_face_friction() {
     assert!(previous.unwrap() < 5e-7);
 }
 
-/// The shipped squeal scene (18 contacts on a ring, floating caliper) with the
+/// The paper's squeal scene, config/brake_squeal_paper.yaml (18 contacts on a ring, floating caliper) with the
 /// friction on the faces. Per ⟨k, l⟩ pair in the complex amplitude, as for the
-/// mid-plane ring (tests/scene_brake_squeal.rs) with N₀ the clamp force, n the
+/// mid-plane ring (tests/scene_brake_squeal_paper.rs) with N₀ the clamp force, n the
 /// contacts, R, R′ the radial shape and slope at r, V = Ωr: the follower and
 /// the faces' couple are both circulatory, σ = μ k R² (N₀ + h k_c n/2)/r; the
 /// sliding direction adds the damping D = μ (h²/4) N₀ R′²/V on the material
@@ -251,7 +251,7 @@ fn ale_and_lagrangian_descriptions_converge_to_one_motion_with_face_friction() {
 ///   μ_c = 2ζω m ω_p / (k R² (N₀ + h k_c n/2)/r − (h²/4) N₀ R′² ω_p / V).
 #[test]
 fn the_ring_of_pads_threshold_with_face_friction_matches_its_closed_form() {
-    let mut c = support::scene_files::load("brake_squeal.yaml");
+    let mut c = support::scene_files::load("brake_squeal_paper.yaml");
     c.pads.as_mut().unwrap().contact_surface = ContactSurface::Faces;
     let sim = Simulation::new(c.clone()).unwrap();
     let model = sim.model();
@@ -327,8 +327,9 @@ fn face_friction_keys_are_read_and_a_speed_law_without_faces_is_refused_naming_t
     let p = c.pads.unwrap();
     assert_eq!((p.contact_surface, p.static_friction_coefficient, p.stribeck_speed), (ContactSurface::Faces, Some(0.5), 2.0));
     let c = Config::from_yaml_str(&file(""), "annular_plate").unwrap();
-    assert_eq!((c.pads.as_ref().unwrap().contact_surface, c.pads.as_ref().unwrap().static_friction_coefficient), (ContactSurface::MidPlane, None));
-    let e = Config::from_yaml_str(&file("      static_friction_coefficient: 0.5\n"), "annular_plate").unwrap_err().to_string();
+    // `faces` is the default (issue 15); `mid_plane` reproduces the paper.
+    assert_eq!((c.pads.as_ref().unwrap().contact_surface, c.pads.as_ref().unwrap().static_friction_coefficient), (ContactSurface::Faces, None));
+    let e = Config::from_yaml_str(&file("      contact_surface: mid_plane\n      static_friction_coefficient: 0.5\n"), "annular_plate").unwrap_err().to_string();
     assert!(e.contains("pads.static_friction_coefficient") && e.contains("pads.contact_surface"), "{e}");
     let e = Config::from_yaml_str(&file("      contact_surface: rim\n"), "annular_plate").unwrap_err().to_string();
     assert!(e.contains("pads.contact_surface") && e.contains("rim"), "{e}");

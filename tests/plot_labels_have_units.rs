@@ -15,7 +15,7 @@ fn names(list: &[&str]) -> Vec<String> {
 
 #[test]
 fn every_column_of_every_shipped_scene_has_a_unit() {
-    for file in ["brake_bench.yaml", "brake_squeal.yaml", "design_example.yaml", "lathe.yaml", "swash_plate.yaml"] {
+    for file in ["brake_bench.yaml", "brake_squeal.yaml", "brake_squeal_paper.yaml", "design_example.yaml", "lathe.yaml", "swash_plate.yaml"] {
         let out = Command::new(env!("CARGO_BIN_EXE_annular_plate"))
             .arg("simulate")
             .arg(scene_files::path(file))

@@ -17,7 +17,7 @@ fn args(list: &[&str]) -> Vec<String> {
 
 #[test]
 fn every_shipped_scene_through_params_file_alone_is_the_scene_run_file_gives() {
-    for file in ["brake_bench.yaml", "brake_squeal.yaml", "design_example.yaml", "lathe.yaml", "swash_plate.yaml"] {
+    for file in ["brake_bench.yaml", "brake_squeal.yaml", "brake_squeal_paper.yaml", "design_example.yaml", "lathe.yaml", "swash_plate.yaml"] {
         let path = scene_files::path(file);
         let by_params = NodeSetup::load(None, &args(&["--params-file", path.to_str().unwrap()])).unwrap_or_else(|e| panic!("{file}: {e}"));
         let by_run = NodeSetup::load(Some(&path), &args(&[])).unwrap();
@@ -57,7 +57,7 @@ fn later_params_files_and_p_override_the_scene_and_node_only_files_keep_the_buil
 
 #[test]
 fn the_wildcard_keyed_scenes_apply_to_any_node_name_and_namespace() {
-    for file in ["brake_bench.yaml", "brake_squeal.yaml", "lathe.yaml", "swash_plate.yaml"] {
+    for file in ["brake_bench.yaml", "brake_squeal.yaml", "brake_squeal_paper.yaml", "lathe.yaml", "swash_plate.yaml"] {
         let path = scene_files::path(file);
         assert!(scene_files::text(file).lines().any(|l| l.starts_with("/**:")), "{file} is keyed /**");
         let expected = Config::from_params_file(&path, scene_files::NODE).unwrap();
@@ -82,7 +82,7 @@ fn model_summary(setup: NodeSetup) -> (usize, Vec<u64>, usize, usize, usize, boo
 
 #[test]
 fn each_shipped_scene_builds_the_same_model_through_params_file_launch_args_and_run_file() {
-    for file in ["brake_bench.yaml", "brake_squeal.yaml", "design_example.yaml", "lathe.yaml", "swash_plate.yaml"] {
+    for file in ["brake_bench.yaml", "brake_squeal.yaml", "brake_squeal_paper.yaml", "design_example.yaml", "lathe.yaml", "swash_plate.yaml"] {
         let path = scene_files::path(file);
         let p = path.to_str().unwrap();
         // What a launch file with node_name:= and namespace:= passes (design_example's

@@ -1,5 +1,5 @@
 //! `annular_plate stability`: the squeal scene's documented threshold
-//! (0.300423 for config/brake_squeal.yaml at 25 rad/s, docs/scenes.md) from
+//! (0.300423 for config/brake_squeal_paper.yaml at 25 rad/s, docs/scenes.md) from
 //! the map, the JSON layout, and shards merged equal to the single run.
 
 use serde_json::Value;
@@ -7,7 +7,7 @@ use std::path::PathBuf;
 use std::process::Command;
 
 const BIN: &str = env!("CARGO_BIN_EXE_annular_plate");
-const SCENE: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/config/brake_squeal.yaml");
+const SCENE: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/config/brake_squeal_paper.yaml");
 
 fn run(args: &[&str]) -> (bool, String, String) {
     let out = Command::new(BIN).args(args).output().unwrap();

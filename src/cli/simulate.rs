@@ -9,9 +9,9 @@
 //! link{j}_force (N).
 
 use std::sync::atomic::{AtomicBool, Ordering};
-use super::error::CliResult;
+use super::error::{CliError, CliResult};
 use super::float_text::{push_display, push_exp};
-use crate::dynamics::Simulation;
+use crate::dynamics::{stability, Simulation};
 use std::io::Write;
 
 /// The CSV header for a simulation.
@@ -118,6 +118,32 @@ impl RowWriter {
         }
         self.line.push(b'\n');
         &self.line
+    }
+}
+
+/// The highest frequency a scene's outputs must resolve, Hz: for a scene with
+/// pads the least stable mode of the linear stability analysis at the scene's
+/// speed, friction coefficient and clamp forces (`dynamics::stability`) — the
+/// squeal — at the space-fixed nodes (|Im λ|/2π of the ALE system). `None`
+/// for scenes without pads.
+pub fn relevant_frequency(sim: &Simulation) -> Option<f64> {
+    let pads = sim.config().pads.as_ref()?;
+    let mode = stability::critical_mode(sim.scene(), sim.config().joint.speed, pads.friction_coefficient, &pads.clamp_force);
+    Some(mode.eigenvalue.im.abs() / std::f64::consts::TAU)
+}
+
+/// Refuses `--output-rate` `rate` Hz when its Nyquist frequency rate/2 is
+/// below [`relevant_frequency`] (the rows would alias the squeal), naming
+/// both, unless `allow_aliasing` (`--allow-aliasing`).
+pub fn check_output_rate(sim: &Simulation, rate: f64, allow_aliasing: bool) -> CliResult<()> {
+    match relevant_frequency(sim) {
+        Some(f) if !allow_aliasing && 0.5 * rate < f => Err(CliError::Usage(format!(
+            "--output-rate {rate} Hz would alias: its Nyquist frequency {} Hz is below the {f:.1} Hz of the scene's least stable mode \
+             (the squeal frequency of the linear stability analysis); give an output rate above {:.1} Hz that divides simulation.rate_hz, or --allow-aliasing",
+            0.5 * rate,
+            2.0 * f
+        ))),
+        _ => Ok(()),
     }
 }
 

@@ -113,7 +113,7 @@ pub(super) fn read_pads(r: &Reader, nodes: &NodesConfig, limits: &LimitsConfig) 
     let contact_damping = non_negative("pads.contact_damping", r.f64("pads.contact_damping", DEFAULT_PAD_CONTACT_DAMPING)?)?;
     let mu = r.f64("pads.friction_coefficient", DEFAULT_FRICTION_COEFFICIENT)?;
     let friction_coefficient = at_most("pads.friction_coefficient", non_negative("pads.friction_coefficient", mu)?, MAX_FRICTION_COEFFICIENT)?;
-    let contact_surface = read_choice(r, "pads.contact_surface", "mid_plane", CONTACT_SURFACES, |s| match s {
+    let contact_surface = read_choice(r, "pads.contact_surface", "faces", CONTACT_SURFACES, |s| match s {
         "faces" => Some(ContactSurface::Faces),
         "mid_plane" => Some(ContactSurface::MidPlane),
         _ => None,
