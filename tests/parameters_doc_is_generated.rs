@@ -62,6 +62,10 @@ fn base_for(section: &str) -> Params {
     };
     match (file, section) {
         (Some(f), _) => Params::from_file(&scene_files::path(f), scene_files::NODE).unwrap(),
+        (None, "calipers") => {
+            let text = "annular_plate:\n  ros__parameters:\n    calipers: {angles_deg: [0.0], inner_radius: 0.09, outer_radius: 0.14}\n";
+            Params::from_yaml_str(text, scene_files::NODE).unwrap()
+        }
         (None, "springs") => {
             let text = "annular_plate:\n  ros__parameters:\n    nodes: {ale_radial: [1.0], ale_angular: [0.0]}\n    springs: {ale_nodes: [1]}\n";
             Params::from_yaml_str(text, scene_files::NODE).unwrap()

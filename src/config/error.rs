@@ -93,6 +93,11 @@ pub enum ConfigError {
 
     #[error("{key} must not be empty")]
     Empty { key: String },
+    /// A caliper key against its geometric rule (`calipers.*`, docs/scenes.md).
+    #[error("{key} = {} breaks its rule: {rule}", num(*value))]
+    CaliperRule { key: String, value: f64, rule: String },
+    #[error("{key} is required with calipers.angles_deg (the pads' radial extent, m)")]
+    CaliperKeyMissing { key: &'static str },
 
     #[error("{key} lists {value} more than once; each entry must be distinct")]
     Duplicate { key: String, value: i64 },

@@ -29,7 +29,7 @@ pub const DEFAULT_TOOL_SPECIFIC_FORCE: f64 = 351.0e6;
 pub const DEFAULT_TOOL_FORCE_EXPONENT: f64 = 0.7013;
 
 /// A load model whose enabling key is empty must not be given other keys.
-fn no_other_keys(r: &Reader, table: &[&str], enabling_key: &'static str) -> Result<(), ConfigError> {
+pub(super) fn no_other_keys(r: &Reader, table: &[&str], enabling_key: &'static str) -> Result<(), ConfigError> {
     match table.iter().find(|k| **k != enabling_key && r.has(k)) {
         Some(key) => Err(ConfigError::KeyWithoutSection { key: key.to_string(), enabling_key }),
         None => Ok(()),
@@ -70,7 +70,23 @@ pub(super) fn at_most(key: &str, x: f64, max: f64) -> Result<f64, ConfigError> {
     }
 }
 
-pub(super) fn read_pads(r: &Reader, nodes: &NodesConfig, limits: &LimitsConfig) -> Result<Option<PadsConfig>, ConfigError> {
+/// `from_calipers`: the contacts the `calipers.*` keys made, which
+/// enable the pads in place of `pads.ale_nodes`.
+pub(super) fn read_pads(r: &Reader, nodes: &NodesConfig, limits: &LimitsConfig, from_calipers: Option<Vec<PadContact>>) -> Result<Option<PadsConfig>, ConfigError> {
+    let contacts = match from_calipers {
+        Some(contacts) => contacts,
+        None => match read_pad_contacts(r, nodes)? {
+            Some(contacts) => contacts,
+            None => return Ok(None),
+        },
+    };
+    let pads = contacts.iter().map(|c| c.pad + 1).max().unwrap_or(1);
+    read_pad_data(r, limits, contacts, pads)
+}
+
+/// The contacts of `pads.ale_nodes` and `pads.contact_pad`; `None` (and no
+/// other `pads.*` key) when not given.
+fn read_pad_contacts(r: &Reader, nodes: &NodesConfig) -> Result<Option<Vec<PadContact>>, ConfigError> {
     let numbers = r.i64_array("pads.ale_nodes", &[])?;
     if numbers.is_empty() {
         no_other_keys(r, &super::table::keys("pads"), "pads.ale_nodes")?;
@@ -98,6 +114,11 @@ pub(super) fn read_pads(r: &Reader, nodes: &NodesConfig, limits: &LimitsConfig) 
     if let Some(pad) = (0..pads).find(|p| !contacts.iter().any(|c| c.pad == *p)) {
         return Err(ConfigError::PadWithoutContacts { pad: pad + 1, pads });
     }
+    Ok(Some(contacts))
+}
+
+/// The pads' data keys for `contacts` in `pads` pads.
+fn read_pad_data(r: &Reader, limits: &LimitsConfig, contacts: Vec<PadContact>, pads: usize) -> Result<Option<PadsConfig>, ConfigError> {
     let clamp = r.f64_array("pads.clamp_force", &[0.0])?;
     for (index, &f) in clamp.iter().enumerate() {
         let key = format!("pads.clamp_force[{index}]");

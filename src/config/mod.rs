@@ -6,6 +6,7 @@
 //! flat arrays only), rejects unknown keys and checks every rule; errors name
 //! the key (`plate.inner_radius`) and the rule.
 
+pub mod calipers;
 mod centrifugal;
 mod load_model_sections;
 mod error;

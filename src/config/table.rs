@@ -203,7 +203,7 @@ pub const SECTIONS: &[Section] = &[
     Section {
         name: "pads",
         title: "`pads` — brake pads (paper 5.3, Fig. 18; docs/scenes.md)",
-        before: "Off unless `pads.ale_nodes` is given; the other `pads.*` keys are refused without it.",
+        before: "Off unless `pads.ale_nodes` (or `calipers.angles_deg`) is given; the other `pads.*` keys are refused without it.",
         after: "",
         params: &[
             p("pads.ale_nodes", Ty::IntegerArray, "integer array", "—", Value::Integers(&[]), "[]", "each an existing ALE node (from 1), distinct", "contact points: at each a pad presses on each face of the disc"),
@@ -218,6 +218,20 @@ pub const SECTIONS: &[Section] = &[
             p("pads.contact_surface", Ty::String, "string", "—", Value::Str("faces"), "`faces`", "`faces` or `mid_plane`", "`faces`: each pad's friction acts on its face (z = ±h/2) against the sliding velocity of the face point — rotation, the vibration's in-plane −z∇(Dw/Dt) and normal Ω ∂w/∂θ — regularised Coulomb, so the two faces' normal-force difference makes a couple (docs/scenes.md); `mid_plane`: at the mid-plane node along −sign Ω e_θ (the paper's model)"),
             p("pads.static_friction_coefficient", Ty::Double, "double", "—", Value::None, "not given (constant μ)", "≥ 0, ≤ 2; only with `pads.contact_surface: faces`", "μ_s of the speed-dependent friction μ(v) = μ + (μ_s − μ) e^(−v/v_S), v the face's sliding speed (a falling μ(v), μ_s > μ, feeds energy into the vibration; docs/scenes.md)"),
             p("pads.stribeck_speed", Ty::Double, "double", "m/s", Value::Double(1.0), "1", "> 0", "v_S of that law"),
+        ],
+    },
+    Section {
+        name: "calipers",
+        title: "`calipers` — pads as annular sectors (docs/scenes.md, \"Calipers\")",
+        before: "Off unless `calipers.angles_deg` is given; then the calipers make the pads' contact points (ALE nodes appended after `nodes.ale_*`, pad p = caliper p) in place of `pads.ale_nodes`, and the `pads.*` data keys apply to them.",
+        after: "",
+        params: &[
+            p("calipers.angles_deg", Ty::DoubleArray, "double array", "deg", Value::Doubles(&[]), "[]", "each in [−360, 360]", "centre angle θ of each caliper in the space-fixed frame (one pad per face each; e.g. [0] or [0, 180])"),
+            p("calipers.arc_deg", Ty::Double, "double", "deg", Value::Double(60.0), "60", "> 0; calipers × arc ≤ 360", "angular extent of each pad"),
+            p("calipers.inner_radius", Ty::Double, "double", "m", Value::None, "required", "plate.inner_radius ≤ r < plate.outer_radius", "inner radius of the pads"),
+            p("calipers.outer_radius", Ty::Double, "double", "m", Value::None, "required", "> calipers.inner_radius, ≤ plate.outer_radius", "outer radius of the pads"),
+            p("calipers.points_radial", Ty::Integer, "integer", "—", Value::Integer(1), "1", "≥ 1", "contact points across the radius: rings of equal area, each point at its ring's mean friction radius (uniform pressure)"),
+            p("calipers.points_circumferential", Ty::Integer, "integer", "—", Value::Integer(6), "6", "≥ 1; all points together ≤ 400", "contact points along the arc, at the centres of equal sub-arcs"),
         ],
     },
     Section {
@@ -316,7 +330,7 @@ pub fn keys(name: &str) -> Vec<&'static str> {
 /// their other keys have no effect, and no default, without it.
 pub fn enabled_by(section_name: &str) -> Option<&'static str> {
     match section_name {
-        "pads" | "tool" | "links" | "springs" => section(section_name).map(|s| s.params[0].key),
+        "pads" | "calipers" | "tool" | "links" | "springs" => section(section_name).map(|s| s.params[0].key),
         _ => None,
     }
 }

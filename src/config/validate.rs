@@ -46,14 +46,15 @@ pub(super) fn config_from_params(params: &Params) -> Result<Config, ConfigError>
 
     let plate = read_plate(&r)?;
     let limits = read_limits(&r)?;
-    let nodes = read_nodes(&r)?;
+    let mut nodes = read_nodes(&r)?;
+    let caliper_contacts = super::calipers::read_calipers(&r, &plate, &mut nodes)?;
     let loads = read_loads(&r, &nodes, &limits)?;
     let joint = read_joint(&r, &limits)?;
     let reference = read_reference(&r)?;
     let gravity = r.vec3("gravity", [0.0; 3])?;
     let simulation = read_simulation(&r)?;
     let _use_sim_time = r.bool("use_sim_time", false)?;
-    let pads = read_pads(&r, &nodes, &limits)?;
+    let pads = read_pads(&r, &nodes, &limits, caliper_contacts)?;
     let tool = read_tool(&r, &plate, &nodes)?;
     let links = read_links(&r, &nodes, &limits)?;
     let springs = read_springs(&r, &nodes)?;
