@@ -111,9 +111,9 @@ pub struct Stepper {
     last_inner_substeps: usize,
     /// Wrenches of the load models at the last evaluation.
     model_wrenches: ModelWrenches,
-    /// Centrifugal stiffening: one exact propagator per k-block (shared by
-    /// its cos and sin families) and the implicit midpoint's block scratch;
-    /// empty when off.
+    /// Centrifugal stiffening: one exact propagator per family of each
+    /// k-block (cos, sin) and the implicit midpoint's block scratch; empty
+    /// when off.
     stiffened: Vec<block_exponential::BlockPropagator>,
     stiffened_midpoint: StiffenedMidpoint,
 }
@@ -135,7 +135,7 @@ impl Stepper {
             backup: State::new(n, Coordinates::Ale, 0.0, 0.0),
             last_inner_substeps: 1,
             model_wrenches: scene.model_wrenches(),
-            stiffened: scene.stiffening.iter().flat_map(|s| &s.blocks).map(|b| block_exponential::BlockPropagator::new(b.len())).collect(),
+            stiffened: scene.stiffening.iter().flat_map(|s| &s.blocks).flat_map(|b| b.families().map(|f| block_exponential::BlockPropagator::new(f.len()))).collect(),
             stiffened_midpoint: StiffenedMidpoint::new(scene.stiffening.as_ref()),
         }
     }
