@@ -549,3 +549,64 @@ fn the_linearised_system_carries_the_stiffening_its_eigenvalues_are_the_ritz_fre
     // Not vacuous: without stiffening ω₀ ± kΩ, 16 % apart.
     assert!((ritz[0] - w[0]).abs() > 0.1 * w[0]);
 }
+
+#[test]
+fn cos_and_sin_partners_with_their_own_damping_ring_down_each_at_its_own_rate_with_stiffening() {
+    // plate.damping per mode: the cos and sin modes of one ⟨k, l⟩ may differ.
+    // The exponential step propagates each family (the cos, the sin modes of
+    // k = 3 over l = 0, 1) with its own constants. Reference written here: a
+    // fine RK4 on each family's ODE m_a(q̈_a + 2ζ_aω_a q̇_a + ω_a² q_a) + Ω² Σ G_ab q_b = 0.
+    let speed = 4000.0;
+    let mut c = stiffened_scene(3, 2, speed);
+    let n = Simulation::new(c.clone()).unwrap().model().n_modes();
+    c.plate.damping = (0..n).map(|i| 0.01 + 0.03 * i as f64).collect();
+    c.initial.q = (0..n).map(|i| 1e-6 * (1.0 + i as f64)).collect();
+    c.simulation.coordinates = Coordinates::Lagrangian;
+    c.simulation.rate_hz = 20_000.0;
+    let mut sim = Simulation::new(c).unwrap();
+    let steps = 400;
+    for _ in 0..steps {
+        sim.step().unwrap();
+    }
+    let model = sim.model();
+    let g = ModalGeometricStiffness::new(model, &on());
+    let b = &g.blocks[0];
+    let mut worst = 0.0f64;
+    for shape in [AngularShape::Cos, AngularShape::Sin] {
+        let idx: Vec<usize> = b.ls.iter().map(|&l| model.modes().iter().position(|m| m.l == l && m.shape == shape).unwrap()).collect();
+        let modes: Vec<_> = idx.iter().map(|&i| model.modes()[i].clone()).collect();
+        let (mut q, mut v) = (idx.iter().map(|&i| 1e-6 * (1.0 + i as f64)).collect::<Vec<f64>>(), vec![0.0; 2]);
+        let acc = |q: &[f64], v: &[f64]| -> Vec<f64> {
+            (0..2)
+                .map(|a| {
+                    let m = &modes[a];
+                    let gq: f64 = (0..2).map(|x| b.matrix[a * 2 + x] * q[x]).sum();
+                    -2.0 * m.damping * m.omega * v[a] - m.omega * m.omega * q[a] - speed * speed * gq / m.modal_mass
+                })
+                .collect()
+        };
+        let per_step = 2000;
+        let dt = 1.0 / 20_000.0 / per_step as f64;
+        for _ in 0..steps * per_step {
+            let add = |x: &[f64], d: &[f64], s: f64| vec![x[0] + s * d[0], x[1] + s * d[1]];
+            let a1 = acc(&q, &v);
+            let (q2, v2) = (add(&q, &v, 0.5 * dt), add(&v, &a1, 0.5 * dt));
+            let a2 = acc(&q2, &v2);
+            let (q3, v3) = (add(&q, &v2, 0.5 * dt), add(&v, &a2, 0.5 * dt));
+            let a3 = acc(&q3, &v3);
+            let (q4, v4) = (add(&q, &v3, dt), add(&v, &a3, dt));
+            let a4 = acc(&q4, &v4);
+            for x in 0..2 {
+                q[x] += dt / 6.0 * (v[x] + 2.0 * v2[x] + 2.0 * v3[x] + v4[x]);
+                v[x] += dt / 6.0 * (a1[x] + 2.0 * a2[x] + 2.0 * a3[x] + a4[x]);
+            }
+        }
+        let scale = q.iter().fold(0.0f64, |m, y| m.max(y.abs()));
+        for (a, &i) in idx.iter().enumerate() {
+            let d = (sim.q_lagrange()[i] - q[a]).abs() / scale;
+            println!("{shape:?} ⟨3,{a}⟩ ζ = {:.2}: simulated {:.6e}, reference {:.6e}, difference {d:.1e}", modes[a].damping, sim.q_lagrange()[i], q[a]);
+            worst = worst.max(d);
+        }
+    }
+    assert!(worst < 1e-10, "{worst:e}");
+}

@@ -114,9 +114,9 @@ pub struct Stepper {
     last_inner_substeps: usize,
     /// Wrenches of the load models at the last evaluation.
     model_wrenches: ModelWrenches,
-    /// Centrifugal stiffening: one exact propagator per k-block (shared by
-    /// its cos and sin families) and the implicit midpoint's block scratch;
-    /// empty when off.
+    /// Centrifugal stiffening: one exact propagator per family of each
+    /// k-block (cos, sin) and the implicit midpoint's block scratch; empty
+    /// when off.
     stiffened: Vec<block_exponential::BlockPropagator>,
     stiffened_midpoint: StiffenedMidpoint,
 }
@@ -139,7 +139,7 @@ impl Stepper {
             undo: LoadModelUndo::new(&scene.load_models),
             last_inner_substeps: 1,
             model_wrenches: scene.model_wrenches(),
-            stiffened: scene.stiffening.iter().flat_map(|s| &s.blocks).map(|b| block_exponential::BlockPropagator::new(b.len())).collect(),
+            stiffened: scene.stiffening.iter().flat_map(|s| &s.blocks).flat_map(|b| b.families().map(|f| block_exponential::BlockPropagator::new(f.len()))).collect(),
             stiffened_midpoint: StiffenedMidpoint::new(scene.stiffening.as_ref()),
         }
     }

@@ -65,15 +65,16 @@ impl BlockPropagator {
         }
     }
 
-    /// Recompute e^{Âh} for the family `modes` of `block` if (h, Ω̄², ν) changed.
-    pub fn update(&mut self, block: &StiffeningBlock, consts: &[ModeConstants], h: f64, speed_sq: f64, nu: f64) {
+    /// Recompute e^{Âh} for the family `modes` (mode indices over l) of
+    /// `block` if (h, Ω̄², ν) changed.
+    pub fn update(&mut self, block: &StiffeningBlock, modes: &[usize], consts: &[ModeConstants], h: f64, speed_sq: f64, nu: f64) {
         if self.h == h && self.speed_sq == speed_sq && self.nu == nu {
             return;
         }
         let n = self.n;
         let d = 5 * n;
         let stiffness = |a: usize, b: usize| {
-            let own = if a == b { consts[block.cos[a]].omega_eff_sq } else { 0.0 };
+            let own = if a == b { consts[modes[a]].omega_eff_sq } else { 0.0 };
             own + speed_sq * block.g_over_m[a * n + b]
         };
         let top = (0..n).map(|a| stiffness(a, a).abs()).fold(0.0f64, f64::max).sqrt();
@@ -86,7 +87,7 @@ impl BlockPropagator {
             for b in 0..n {
                 a_hat[u * d + b] = -stiffness(a, b) / sigma * h;
             }
-            a_hat[u * d + u] = -consts[block.cos[a]].damping_rate * h;
+            a_hat[u * d + u] = -consts[modes[a]].damping_rate * h;
             a_hat[u * d + f] = h;
             a_hat[u * d + c] = h;
             a_hat[c * d + s] = -nu * h;
@@ -97,6 +98,12 @@ impl BlockPropagator {
         self.h = h;
         self.speed_sq = speed_sq;
         self.nu = nu;
+    }
+
+    /// Take over `other`'s exponential (same constants): no allocation.
+    pub fn copy_from(&mut self, other: &BlockPropagator) {
+        self.exp.copy_from_slice(&other.exp);
+        (self.sigma, self.h, self.speed_sq, self.nu) = (other.sigma, other.h, other.speed_sq, other.nu);
     }
 
     /// Advance the family `modes` (mode indices over l) in place under the
@@ -126,7 +133,10 @@ impl BlockPropagator {
 /// Advance the Lagrangian amplitudes `q`, rates `v` of every mode over a
 /// substep h of mean speed Ω̄ ending at Ω₁, the loads held: plate-frame ones
 /// constant, ALE-frame ones turning at ν = kΩ̄ from (cos kχ₀, sin kχ₀) = `harm[k]`
-/// (as the scalar exponential step). `props` holds one propagator per block.
+/// (as the scalar exponential step). `props` holds one propagator per family
+/// (cos, then sin, of each block); the sin family takes over the cos
+/// family's exponential when their modal constants are the same (per-mode
+/// damping ratios may differ).
 #[allow(clippy::too_many_arguments)]
 pub fn advance(
     stiffening: &Stiffening,
@@ -144,9 +154,11 @@ pub fn advance(
     let alpha_h = 2.0 * (speed1 - speed_mean);
     let speed_sq = speed_mean * speed_mean + alpha_h * alpha_h / 12.0;
     let (ale, plate) = (&loads.ale_frame, &loads.plate_frame);
-    for (b, p) in stiffening.blocks.iter().zip(props.iter_mut()) {
+    let mut props = props.iter_mut();
+    for b in &stiffening.blocks {
         let nu = b.k as f64 * speed_mean;
-        p.update(b, consts, h, speed_sq, nu);
+        let Some(p) = props.next() else { return };
+        p.update(b, &b.cos, consts, h, speed_sq, nu);
         if b.k == 0 {
             p.advance(consts, &b.cos, q, v, |a| (ale[b.cos[a]], Complex::new(0.0, 0.0)));
             continue;
@@ -155,7 +167,15 @@ pub fn advance(
         let e0 = Complex::new(co, si);
         // As the scalar step: cos mode (f_c − i f_s) e^{ikχ₀}, sin mode (f_s + i f_c) e^{ikχ₀}.
         p.advance(consts, &b.cos, q, v, |a| (plate[b.cos[a]], Complex::new(ale[b.cos[a]], -ale[b.sin[a]]) * e0));
-        p.advance(consts, &b.sin, q, v, |a| (plate[b.sin[a]], Complex::new(ale[b.sin[a]], ale[b.cos[a]]) * e0));
+        let Some(p_sin) = props.next() else { return };
+        if b.cos.iter().zip(&b.sin).all(|(&c, &s)| consts[c] == consts[s]) {
+            if (p_sin.h, p_sin.speed_sq, p_sin.nu) != (h, speed_sq, nu) {
+                p_sin.copy_from(p);
+            }
+        } else {
+            p_sin.update(b, &b.sin, consts, h, speed_sq, nu);
+        }
+        p_sin.advance(consts, &b.sin, q, v, |a| (plate[b.sin[a]], Complex::new(ale[b.sin[a]], ale[b.cos[a]]) * e0));
     }
 }
 
@@ -230,7 +250,7 @@ mod tests {
             // Diagonal G only: uncoupled, each mode's ω² raised by Ω² G_aa/m_a.
             let b = block(2, vec![0.3, 0.0, 0.0, 1.7]);
             let spin2 = spin2 + 400.0;
-            p.update(&b, &c, h, spin2, nu);
+            p.update(&b, &[0, 1], &c, h, spin2, nu);
             let (mut q, mut v) = (vec![1e-3, -2e-3], vec![-0.02, 0.05]);
             let f = [(0.5, C::new(0.7, -0.4)), (-0.2, C::new(0.1, 0.3))];
             let (q0, v0) = (q.clone(), v.clone());
@@ -253,7 +273,7 @@ mod tests {
         let b = block(3, g);
         let (h, nu, spin2) = (0.08, 37.0, 1.0e5);
         let mut p = BlockPropagator::new(3);
-        p.update(&b, &c, h, spin2, nu);
+        p.update(&b, &[0, 1, 2], &c, h, spin2, nu);
         let f = [(0.5, C::new(0.7, -0.4)), (-0.2, C::new(0.1, 0.3)), (0.0, C::new(-1.0, 0.2))];
         let (mut q, mut v) = (vec![1e-3, -2e-3, 5e-4], vec![-0.02, 0.05, 0.0]);
         let (mut qr, mut vr) = (q.clone(), v.clone());
