@@ -54,6 +54,21 @@ fn steps(c: &mut Criterion) {
         c.bench_function(&format!("effects/{name}"), |b| b.iter(|| sim.step().unwrap()));
     }
 
+    // Centrifugal stiffening (issue 12): at constant speed the per-k block
+    // propagators are cached; in a spin-up (a slow ramp at 1 rad/s², so the
+    // speed changes every substep for the whole run) they are rebuilt every substep.
+    let stiff = |c: &mut Config| c.centrifugal.stiffening = true;
+    let mut sim = lathe_with(IntegratorKind::Exponential, Coordinates::Ale, 7, 1, 10_000.0, stiff);
+    c.bench_function("effects/centrifugal_stiffening", |b| b.iter(|| sim.step().unwrap()));
+    for (name, stiffening) in [("effects/spin_up", false), ("effects/spin_up_centrifugal_stiffening", true)] {
+        let mut sim = lathe_with(IntegratorKind::Exponential, Coordinates::Ale, 7, 1, 10_000.0, |c| {
+            c.centrifugal.stiffening = stiffening;
+            c.joint.max_acceleration = 1.0;
+        });
+        sim.set_speed_command(5000.0).unwrap();
+        c.bench_function(name, |b| b.iter(|| sim.step().unwrap()));
+    }
+
     let mut group = c.benchmark_group("scenario");
     group.sample_size(10);
     group.bench_function("lathe_30_modes_5.5s_at_10kHz_exponential", |b| {

@@ -58,7 +58,8 @@ impl StiffenedMidpoint {
             for f in 0..families {
                 for r in 0..n {
                     let row = m + f * n + r;
-                    let c = consts[index(f, r)];
+                    // In ALE coordinates a pair takes its cos mode's constants, as in implicit_midpoint.rs.
+                    let c = if coords == Coordinates::Ale { consts[b.cos[r]] } else { consts[index(f, r)] };
                     a[(f * n + r) * d + row] = 1.0;
                     a[row * d + f * n + r] -= c.omega_eff_sq;
                     a[row * d + row] -= c.damping_rate;
