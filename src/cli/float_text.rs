@@ -136,7 +136,9 @@ pub fn push_exp(out: &mut Vec<u8>, v: f64, ryu: &mut ryu::Buffer) {
     let text = ryu.format_finite(abs).as_bytes();
     // Ryū's scientific notation is already Rust's: digits without trailing
     // zeros, lowercase `e`, an unpadded exponent without `+`.
-    if text.contains(&b'e') {
+    // (Its exponent is `e`, an optional `-` and at most three digits: the
+    // `e` is within the last five bytes.)
+    if text[text.len().saturating_sub(5)..].contains(&b'e') {
         out.extend_from_slice(text);
         return;
     }

@@ -21,19 +21,16 @@ pub enum RejectReason {
     MalformedBatch,
     /// The sample could not be decoded (wrong type or truncated data).
     Undecodable,
-    /// The simulation's input queue was full (inputs faster than it steps).
-    QueueFull,
 }
 
 impl RejectReason {
-    pub const ALL: [RejectReason; 7] = [
+    pub const ALL: [RejectReason; 6] = [
         RejectReason::NonFinite,
         RejectReason::Absurd,
         RejectReason::UnknownFrame,
         RejectReason::NoSuchNode,
         RejectReason::MalformedBatch,
         RejectReason::Undecodable,
-        RejectReason::QueueFull,
     ];
 
     pub fn name(self) -> &'static str {
@@ -44,7 +41,6 @@ impl RejectReason {
             RejectReason::NoSuchNode => "no_such_node",
             RejectReason::MalformedBatch => "malformed_batch",
             RejectReason::Undecodable => "undecodable",
-            RejectReason::QueueFull => "queue_full",
         }
     }
 
