@@ -13,9 +13,11 @@
 //! - The squeal threshold of config/brake_squeal.yaml with and without, the
 //!   ring-of-pads closed form with the series stiffness, and the simulated
 //!   growth rate against the eigenvalue with the correction on.
-//! - A contact stiff enough that the held (explicit) pad forces are refused
-//!   without the correction stays bounded with it, and its coupling rate is
-//!   bounded however stiff the contact.
+//! - The lathe tool pressed into the disc at rest against the exact plate.
+//! - A nearly rigid contact (k_c = 1e12 N/m): in series with the residual its
+//!   coupling rate is bounded by G⁻¹ however stiff the contact (the explicit
+//!   step checks then need far fewer substeps) and the clamp settles on the
+//!   exact solution.
 //!
 //! Run with `-- --nocapture` for the numbers.
 
@@ -286,4 +288,57 @@ fn a_stiff_contact_in_series_with_the_residual_has_a_bounded_coupling_and_settle
     for e in errors {
         assert!(e < 1e-3, "{errors:?}");
     }
+}
+
+#[test]
+fn the_lathe_tool_pressed_into_a_disc_at_rest_matches_the_exact_plate() {
+    // The lathe disc at rest (no cutting: Ω = 0 sweeps no bins), the tool fed
+    // 0.1 mm into the +z face and held: the feed force of eq. (21) on the
+    // chip h/2 − z_holder − f/k_t − C f (tip pushed back by f/k_t, the rim
+    // pushed down by C f, C the exact plate's compliance under the tool).
+    let mut c = scenes::load("lathe.yaml");
+    c.joint.speed = 0.0;
+    c.gravity = [0.0; 3];
+    let t = c.tool.as_mut().unwrap();
+    t.start_clearance = 0.0;
+    t.feed_rate = 0.002;
+    let feed_time = 0.05;
+    let tool = c.tool.clone().unwrap();
+    let pl = c.plate.clone();
+    let holder = 0.5 * pl.thickness - tool.feed_rate * feed_time;
+    let d = annular_plate::model::bending_rigidity(pl.youngs_modulus, pl.thickness, pl.poisson_ratio);
+    let plate = StaticAnnulus::new(pl.inner_radius, pl.outer_radius, pl.poisson_ratio, d, Edge::Clamped, Edge::Free);
+    let compliance = plate.series(pl.outer_radius, 1.0, pl.outer_radius, 0.0, K_EXACT).value();
+    let law = |chip: f64| if chip > 0.0 { tool.specific_force * tool.depth_of_cut * chip.powf(1.0 - tool.force_exponent) * 1e-3f64.powf(tool.force_exponent) } else { 0.0 };
+    let (mut lo, mut hi) = (0.0, law(0.5 * pl.thickness - holder));
+    for _ in 0..200 {
+        let f = 0.5 * (lo + hi);
+        if f - law(0.5 * pl.thickness - holder - f / tool.stiffness - compliance * f) > 0.0 {
+            hi = f;
+        } else {
+            lo = f;
+        }
+    }
+    let f_exact = 0.5 * (lo + hi);
+    let w_exact = -compliance * f_exact;
+    let run = |residual: bool| {
+        let mut c = c.clone();
+        c.plate.residual_flexibility = residual;
+        let mut sim = Simulation::new(c).unwrap();
+        for _ in 0..(feed_time / sim.dt()).round() as usize {
+            sim.step().unwrap();
+        }
+        sim.set_tool_feed(0.0).unwrap();
+        for _ in 0..(1.0 / sim.dt()).round() as usize {
+            sim.step().unwrap();
+        }
+        (sim.tool_output().unwrap().feed_force, sim.ale_node(0).uz)
+    };
+    let ((f, w), (f0, w0)) = (run(true), run(false));
+    println!("tool 0.1 mm into the disc at rest: exact f = {f_exact:.6} N, w = {w_exact:.6e} m (C = {compliance:.6e} m/N)");
+    println!("  with the residual: f = {f:.6} N ({:.1e}), w = {w:.6e} m ({:.1e})", (f - f_exact) / f_exact, (w - w_exact) / w_exact);
+    println!("  modal only:        f = {f0:.6} N ({:.1e}), w = {w0:.6e} m ({:.1e})", (f0 - f_exact) / f_exact, (w0 - w_exact) / w_exact);
+    assert!(((f - f_exact) / f_exact).abs() < 1e-4 && ((w - w_exact) / w_exact).abs() < 1e-3);
+    assert!(((w0 - w_exact) / w_exact).abs() > 0.01, "the 30 modes alone are stiffer under the rim load");
+    assert!((f0 - f_exact).abs() > 10.0 * (f - f_exact).abs());
 }
