@@ -184,19 +184,23 @@ impl ContactCompliance {
     /// G: K_eff = (I + K G)⁻¹ K (row-major, n × n), N/m.
     pub fn series_stiffness(&self, k: &[f64]) -> Vec<f64> {
         let n = self.n;
+        let mut a: Vec<f64> = (0..n * n)
+            .map(|i| {
+                let (c, e) = (i / n, i % n);
+                (c == e) as u8 as f64 + (0..n).map(|x| k[c * n + x] * self.g[x * n + e]).sum::<f64>()
+            })
+            .collect();
+        let mut perm = vec![0; n];
+        if !lu_factor(&mut a, &mut perm, n) {
+            return vec![f64::NAN; n * n];
+        }
+        let (mut col, mut buf) = (vec![0.0; n], vec![0.0; n]);
         let mut out = vec![0.0; n * n];
-        let mut a = vec![0.0; n * n];
-        let mut col = vec![0.0; n];
         for d in 0..n {
             for c in 0..n {
-                for e in 0..n {
-                    a[c * n + e] = (c == e) as u8 as f64 + (0..n).map(|x| k[c * n + x] * self.g[x * n + e]).sum::<f64>();
-                }
                 col[c] = k[c * n + d];
             }
-            if !solve_in_place(&mut a, &mut col, n) {
-                col.iter_mut().for_each(|v| *v = f64::NAN);
-            }
+            lu_solve(&a, &perm, &mut col, &mut buf, n);
             for c in 0..n {
                 out[c * n + d] = col[c];
             }
@@ -281,41 +285,6 @@ pub fn lu_solve(lu: &[f64], perm: &[usize], b: &mut [f64], buf: &mut [f64], n: u
         buf[i] = v / lu[i * n + i];
     }
     b[..n].copy_from_slice(&buf[..n]);
-}
-
-/// Solve A x = b in place by Gaussian elimination with partial pivoting
-/// (A row-major n × n, overwritten; b becomes x). False if A is singular.
-pub fn solve_in_place(a: &mut [f64], b: &mut [f64], n: usize) -> bool {
-    for col in 0..n {
-        let pivot = (col..n).max_by(|&i, &j| a[i * n + col].abs().total_cmp(&a[j * n + col].abs())).unwrap_or(col);
-        if a[pivot * n + col] == 0.0 || !a[pivot * n + col].is_finite() {
-            return false;
-        }
-        if pivot != col {
-            for j in 0..n {
-                a.swap(col * n + j, pivot * n + j);
-            }
-            b.swap(col, pivot);
-        }
-        let p = a[col * n + col];
-        for i in col + 1..n {
-            let factor = a[i * n + col] / p;
-            if factor != 0.0 {
-                for j in col..n {
-                    a[i * n + j] -= factor * a[col * n + j];
-                }
-                b[i] -= factor * b[col];
-            }
-        }
-    }
-    for col in (0..n).rev() {
-        let mut v = b[col];
-        for j in col + 1..n {
-            v -= a[col * n + j] * b[j];
-        }
-        b[col] = v / a[col * n + col];
-    }
-    true
 }
 
 /// The root f in [0, f_max] of f = 𝓕(f), for a force 𝓕 that does not grow
