@@ -16,8 +16,13 @@ use annular_plate::model::AngularShape;
 use std::f64::consts::TAU;
 use support::scene_files as scenes;
 
+/// The scene with the modal pads (`plate.residual_flexibility: false`): the
+/// closed forms here are the paper's model. With the contacts in series with
+/// the residual flexibility (the default): tests/contacts_in_series_with_residual.rs.
 fn scene() -> Config {
-    scenes::load("brake_squeal.yaml")
+    let mut c = scenes::load("brake_squeal.yaml");
+    c.plate.residual_flexibility = false;
+    c
 }
 
 fn with_friction(mu: f64) -> Config {
@@ -46,18 +51,29 @@ fn threshold() -> f64 {
 /// ν = i y: the imaginary part gives y = c/a, the real part −y² + b y + K = 0
 /// (a = 2ζω + (d + D)/m, c = (σ − d kΩ)/m, K = ω_p² + b kΩ): solved for μ by
 /// bisection.
-fn ring_closed_form() -> f64 {
-    let c = scene();
+///
+/// With the contacts in series with the residual flexibility a ⟨k⟩ wave is an
+/// eigenvector of the circulant compliance G among the contacts, eigenvalue
+/// γ_k = Σ_d G(0, d) cos kθ_d, so each face's spring and damper act as
+/// k_c/(1 + 2k_c γ_k) and c_c/(1 + 2k_c γ_k) (docs/residual_flexibility.md).
+fn ring_closed_form(c: &Config) -> f64 {
     let sim = Simulation::new(c.clone()).unwrap();
     let model = sim.model();
     let pads = c.pads.as_ref().unwrap();
-    let (n, clamp, kc, cc, h) = (pads.contacts.len() as f64, pads.clamp_force[0], pads.contact_stiffness, pads.contact_damping, c.plate.thickness);
+    let (n, clamp, h) = (pads.contacts.len() as f64, pads.clamp_force[0], c.plate.thickness);
+    let nodes: Vec<usize> = pads.contacts.iter().map(|k| k.node).collect();
     let r = sim.scene().ale_nodes[0].radius;
     let speed = c.joint.speed;
     let mut best = f64::INFINITY;
     for m in model.modes().iter().filter(|m| m.shape == AngularShape::Cos) {
         let [rr, slope, ..] = model.radial_shapes()[m.radial].eval(r);
         let (k, mass) = (m.k as f64, m.modal_mass);
+        let series = sim.scene().residual.as_ref().map_or(1.0, |g| {
+            let at = |d: usize| sim.scene().ale_nodes[d].angle;
+            let gamma: f64 = nodes.iter().map(|&d| g.between(nodes[0], d, 0.0) * (k * (at(d) - at(nodes[0]))).cos()).sum();
+            1.0 / (1.0 + 2.0 * pads.contact_stiffness * gamma)
+        });
+        let (kc, cc) = (series * pads.contact_stiffness, series * pads.contact_damping);
         let omega_p2 = m.omega * m.omega + kc * n * rr * rr / mass;
         let d = cc * n * rr * rr;
         // Boundary function: > 0 unstable.
@@ -96,10 +112,19 @@ fn ring_closed_form() -> f64 {
 #[test]
 fn the_threshold_is_in_the_brake_range_and_matches_the_ring_closed_form_with_face_friction() {
     let eig = threshold();
-    let closed = ring_closed_form();
+    let closed = ring_closed_form(&scene());
     println!("threshold μ_c: eigenvalues {eig:.9}, closed form {closed:.9}");
     assert!((eig - closed).abs() < 1e-6 * closed, "{eig} vs {closed}");
     assert!((0.3..=0.5).contains(&eig), "squeal where brake engineers see it: μ_c = {eig}");
+    // The shipped file: the pads in series with the residual flexibility.
+    let shipped = scenes::load("brake_squeal.yaml");
+    assert!(shipped.plate.residual_flexibility);
+    let sim = Simulation::new(shipped.clone()).unwrap();
+    let eig_series = stability::friction_threshold(sim.scene(), 3.0, 2.0).expect("the shipped scene squeals below μ = 2");
+    let closed_series = ring_closed_form(&shipped);
+    println!("in series with the residual: eigenvalues {eig_series:.9}, closed form {closed_series:.9}");
+    assert!((eig_series - closed_series).abs() < 1e-6 * closed_series, "{eig_series} vs {closed_series}");
+    assert!((0.3..=0.5).contains(&eig_series) && eig_series > eig, "μ_c = {eig_series}");
     // The paper's mid-plane model with the same data never squeals.
     let mut c = scene();
     c.pads.as_mut().unwrap().contact_surface = annular_plate::config::ContactSurface::MidPlane;

@@ -11,6 +11,7 @@
 pub mod ale;
 pub mod angle;
 pub mod commands;
+pub mod contact_compliance;
 pub mod error;
 pub mod integrators;
 pub mod joint;

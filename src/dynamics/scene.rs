@@ -85,10 +85,11 @@ impl Scene {
             follower_loads: config.loads.follower,
         };
         let polar_inertia = model.body().inertia[2][2];
-        let load_models = LoadModels::new(config, &SceneNodes { ale: &ale_nodes, lagrange: &lagrange_nodes, modal_mass: &model.body().modal_mass });
         let residual = (config.plate.residual_flexibility && !(ale_nodes.is_empty() && lagrange_nodes.is_empty()))
             .then(|| ResidualCompliance::new(&model, &ale_nodes, &lagrange_nodes));
         let stiffening = config.centrifugal.stiffening.then(|| Stiffening::new(&model, &config.centrifugal));
+        let nodes = SceneNodes { ale: &ale_nodes, lagrange: &lagrange_nodes, modal_mass: &model.body().modal_mass, residual: residual.as_ref() };
+        let load_models = LoadModels::new(config, &nodes);
         let rules = InputRules::new(&config.limits, ale_nodes.len(), lagrange_nodes.len(), &load_models);
         Scene {
             model,
@@ -108,6 +109,12 @@ impl Scene {
     }
 
     /// Scratch for the load models' wrenches at this scene's node frames.
+    /// The residual deflection of the held wrenches `inputs`, for the load
+    /// models' contacts (None with `plate.residual_flexibility: false`).
+    pub fn held_deflection<'a>(&'a self, inputs: &'a super::commands::Inputs) -> Option<super::contact_compliance::HeldDeflection<'a>> {
+        self.residual.as_ref().map(|compliance| super::contact_compliance::HeldDeflection { compliance, ale: &inputs.ale, lagrange: &inputs.lagrange })
+    }
+
     pub fn model_wrenches(&self) -> ModelWrenches {
         ModelWrenches::new(self.ale_nodes.len(), self.lagrange_nodes.len(), &self.load_models)
     }

@@ -180,7 +180,7 @@ impl Simulation {
             return;
         }
         let (q_ale, q_dot_ale) = self.state.ale();
-        let ctx = LoadContext { ale_nodes: &self.scene.ale_nodes, lagrange_nodes: &self.scene.lagrange_nodes, q_ale, q_dot_ale, chi: self.state.chi.angle, speed: self.state.speed };
+        let ctx = LoadContext { ale_nodes: &self.scene.ale_nodes, lagrange_nodes: &self.scene.lagrange_nodes, q_ale, q_dot_ale, chi: self.state.chi.angle, speed: self.state.speed, held: self.scene.held_deflection(&self.inputs) };
         lm.evaluate(&ctx, &self.state.load_models, &self.inputs.commands, &mut self.model_outputs);
     }
 

@@ -30,6 +30,14 @@
 //! ([`add_face_terms`]); the follower term above is the normal part of the
 //! sliding direction and is the same.
 //!
+//! With `plate.residual_flexibility` the contacts act in series with the
+//! residual compliance G among them (`dynamics::contact_compliance`, the same
+//! law the simulation steps): the net axial forces are
+//! F = −(I + K G)⁻¹ (K W q̄ + C W q̄̇), K = −∂F/∂w of the closed contacts
+//! (2k_c (I − P), P the pad means of a floating caliper) and C = (c_c/k_c) K,
+//! W the shapes at the contacts; they replace −K_pad q̄ − C_pad q̄̇ (f_i = w_i F)
+//! and, as δN = −F/2, the face terms' δN ([`Pads::linear_series_forces`]).
+//!
 //! The friction force's magnitude does not change to first order (the two
 //! faces' spring forces change by ∓k_c w). Lift-off is inactive about a
 //! preloaded state; the tool (a delay) and the held user wrenches are not
@@ -89,7 +97,10 @@ pub fn linear_system(scene: &Scene, speed: f64, friction_coefficient: f64, clamp
                 }
             }
         }
-        for contact in &pads.contacts {
+        // In series with G: the contact forces per unit q̄ and q̄̇ (n_c × n).
+        let active: Vec<bool> = pads.contacts.iter().map(|c| !(pads.lift_off && clamp_force[c.pad] <= 0.0)).collect();
+        let series = pads.series.as_ref().map(|g| pads.linear_series_forces(g, &scene.ale_nodes, &active));
+        for (ci, contact) in pads.contacts.iter().enumerate() {
             let clamp = clamp_force[contact.pad];
             if pads.lift_off && clamp <= 0.0 {
                 continue; // touching without preload: not in contact to first order
@@ -111,16 +122,24 @@ pub fn linear_system(scene: &Scene, speed: f64, friction_coefficient: f64, clamp
                 for m in 0..n {
                     let sm = node.shapes[m];
                     let dm = sm.w - mean[m];
-                    let mut k = -2.0 * pads.stiffness * di * dm;
+                    let mut k = match &series {
+                        None => -2.0 * pads.stiffness * di * dm,
+                        Some((fq, _)) => wi * fq[ci * n + m],
+                    };
                     if pads.follower_friction {
                         k += wi * (fy * sm.tilt[0] - fx * sm.tilt[1]);
                     }
                     a[(n + i, m)] += k / mass[i];
-                    a[(n + i, n + m)] -= 2.0 * pads.damping * di * dm / mass[i];
+                    let c = match &series {
+                        None => 2.0 * pads.damping * di * dm,
+                        Some((_, fqd)) => -wi * fqd[ci * n + m],
+                    };
+                    a[(n + i, n + m)] -= c / mass[i];
                 }
             }
             if pads.contact_surface == ContactSurface::Faces {
-                add_face_terms(&mut a, scene, pads, contact, mean, preload, speed, friction_coefficient);
+                let rows = series.as_ref().map(|(fq, fqd)| (&fq[ci * n..(ci + 1) * n], &fqd[ci * n..(ci + 1) * n]));
+                add_face_terms(&mut a, scene, pads, contact, mean, preload, speed, friction_coefficient, rows);
             }
         }
     }
@@ -130,7 +149,9 @@ pub fn linear_system(scene: &Scene, speed: f64, friction_coefficient: f64, clamp
 /// The face friction's first-order terms of one contact (module docs) into
 /// the rows of `a` (ALE amplitudes y = (q̄, q̄̇)).
 #[allow(clippy::too_many_arguments)]
-fn add_face_terms(a: &mut Mat<f64>, scene: &Scene, pads: &Pads, contact: &PadContactPoint, mean: &[f64], preload: f64, speed: f64, mu: f64) {
+/// `series`: the contact's net axial force per unit q̄ and q̄̇ in series with
+/// the residual compliance (δN = −F/2), or None (δN = k_c dn q̄ + c_c dn q̄̇).
+fn add_face_terms(a: &mut Mat<f64>, scene: &Scene, pads: &Pads, contact: &PadContactPoint, mean: &[f64], preload: f64, speed: f64, mu: f64, series: Option<(&[f64], &[f64])>) {
     let n = scene.n_modes();
     let mass = &scene.model.body().modal_mass;
     let node = &scene.ale_nodes[contact.node];
@@ -155,11 +176,15 @@ fn add_face_terms(a: &mut Mat<f64>, scene: &Scene, pads: &Pads, contact: &PadCon
             let (dr_m, dt_m) = (radial(node.gradient(m)), angular(node.gradient(m)));
             let (drt_m, dtt_m) = (radial(node.w_phi_grad[m]), angular(node.w_phi_grad[m]));
             let dn = node.shapes[m].w - mean[m];
+            let dn_times = |coef: f64, stiff: f64, row: Option<&[f64]>| match row {
+                None => coef * stiff * dn,
+                Some(r) => coef * (-0.5 * r[m]),
+            };
             // δN = k_c dn q + c_c dn q̇; ∂_r Ẇ = dr q̇ + Ω drt q; ∂_θ Ẇ = dt q̇ + Ω dtt q.
-            let on_q = couple * dt_i / r * pads.stiffness * dn
+            let on_q = dn_times(couple * dt_i / r, pads.stiffness, series.map(|s| s.0))
                 - lever * g_over_v * dr_i * speed * drt_m
                 - lever * g_slope / (r * r) * dt_i * speed * dtt_m;
-            let on_q_dot = couple * dt_i / r * pads.damping * dn - lever * g_over_v * dr_i * dr_m - lever * g_slope / (r * r) * dt_i * dt_m;
+            let on_q_dot = dn_times(couple * dt_i / r, pads.damping, series.map(|s| s.1)) - lever * g_over_v * dr_i * dr_m - lever * g_slope / (r * r) * dt_i * dt_m;
             a[(n + i, m)] += on_q / mass[i];
             a[(n + i, n + m)] += on_q_dot / mass[i];
         }

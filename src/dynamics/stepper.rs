@@ -215,7 +215,7 @@ impl Stepper {
         if !models.is_empty() {
             let mut slots = std::mem::take(&mut state.load_models);
             let (q_ale, q_dot_ale) = state.ale();
-            let mut ctx = LoadContext { ale_nodes: &scene.ale_nodes, lagrange_nodes: &scene.lagrange_nodes, q_ale, q_dot_ale, chi: state.chi.angle, speed: state.speed };
+            let mut ctx = LoadContext { ale_nodes: &scene.ale_nodes, lagrange_nodes: &scene.lagrange_nodes, q_ale, q_dot_ale, chi: state.chi.angle, speed: state.speed, held: scene.held_deflection(inputs) };
             models.begin_substep(&ctx, &mut slots, h);
             // Prescribed forces at the substep's mid-angle (held by the non-RK4 integrators).
             ctx.chi = state.chi.angle + 0.5 * state.speed * h;
@@ -371,6 +371,7 @@ impl Stepper {
                         q_dot_ale: &views.q_dot_ale,
                         chi: chi.angle,
                         speed,
+                        held: scene.held_deflection(inputs),
                     };
                     scene.load_models.evaluate(&ctx, slots, &inputs.commands, model_wrenches);
                 }

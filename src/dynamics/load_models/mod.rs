@@ -26,6 +26,7 @@
 pub mod face_friction;
 pub mod model;
 pub mod pad;
+pub mod pad_series;
 pub mod pitch_link;
 pub mod point_spring;
 pub mod tool;

@@ -3,9 +3,11 @@
 //! [`Coupling`]) and where it writes ([`ModelOut`]).
 
 use crate::config::{Config, LimitsConfig};
+use crate::dynamics::contact_compliance::HeldDeflection;
 use crate::dynamics::error::InputError;
 use crate::dynamics::joint::FrictionTorque;
 use crate::dynamics::node_frame::{NodeFrame, NodeShape};
+use crate::dynamics::residual::ResidualCompliance;
 use crate::dynamics::wrench::Wrench;
 use super::undo::SlotUndo;
 use std::any::Any;
@@ -19,6 +21,9 @@ pub struct SceneNodes<'a> {
     pub ale: &'a [NodeFrame],
     pub lagrange: &'a [NodeFrame],
     pub modal_mass: &'a [f64],
+    /// The residual compliance among the node frames (`plate.residual_flexibility`),
+    /// for contacts in series with it (`dynamics::contact_compliance`).
+    pub residual: Option<&'a ResidualCompliance>,
 }
 
 /// The kinematics a model is evaluated at (substep start or an RK4 stage).
@@ -32,6 +37,10 @@ pub struct LoadContext<'a> {
     /// Joint angle χ (wrapped to [0, 2π), rad) and speed Ω (rad/s).
     pub chi: f64,
     pub speed: f64,
+    /// The residual deflection of the held wrenches (None with
+    /// `plate.residual_flexibility: false`): contacts add it to the modal
+    /// deflection they act on (`dynamics::contact_compliance`).
+    pub held: Option<HeldDeflection<'a>>,
 }
 
 /// The rule a command value must meet.

@@ -62,6 +62,7 @@
 use super::face_friction::{face_kinematics, friction_force, sliding_velocity, FaceKinematics, FrictionLaw};
 use super::model::{contact_rate, surface_kinematics, SurfaceKinematics, CommandRule, CommandSpec, Coupling, LoadContext, LoadModel, ModelOut, SceneNodes};
 use crate::config::{Caliper, Config, ContactSurface};
+use crate::dynamics::contact_compliance::{ContactCompliance, SeriesScratch};
 use crate::dynamics::joint::FrictionTorque;
 use crate::dynamics::wrench::Wrench;
 use std::any::Any;
@@ -110,6 +111,10 @@ pub struct Pads {
     pub initial_clamp_force: Vec<f64>,
     /// The coupling bound of the contact springs and dampers ([`LoadModel::coupling`]).
     pub coupling: Coupling,
+    /// The residual compliance G among the contact points
+    /// (`plate.residual_flexibility`): the contacts act in series with it
+    /// ([`Pads::series_forces`]); None: on the modal deflection.
+    pub series: Option<ContactCompliance>,
 }
 
 /// Forces at one contact point.
@@ -279,7 +284,12 @@ pub struct PadScratch {
     /// The in-plane and normal sliding terms under each contact (faces only).
     pub faces: Vec<FaceKinematics>,
     pub forces: Vec<ContactForces>,
-    closed: Vec<bool>,
+    pub(super) closed: Vec<bool>,
+    /// The series solve's scratch (`pad_series.rs`): net axial forces, deflections without them, kinematics tried.
+    pub(super) series: SeriesScratch,
+    pub(super) axial: Vec<f64>,
+    pub(super) w_free: Vec<f64>,
+    pub(super) tried: Vec<SurfaceKinematics>,
 }
 
 /// The pads' one command: a clamp force per pad.
@@ -315,6 +325,7 @@ pub fn build(config: &Config, nodes: &SceneNodes) -> Option<Box<dyn LoadModel>> 
         stribeck_speed: p.stribeck_speed,
         initial_clamp_force: p.clamp_force.clone(),
         coupling: Coupling::default(),
+        series: nodes.residual.map(|r| ContactCompliance::among(r, &p.contacts.iter().map(|c| c.node).collect::<Vec<_>>())),
     }
     .with_coupling(nodes)))
 }
@@ -324,6 +335,10 @@ impl Pads {
     /// (opening contacts or letting the pads float only removes stiffness).
     fn with_coupling(mut self, nodes: &SceneNodes) -> Pads {
         let shapes: Vec<&[crate::dynamics::node_frame::NodeShape]> = self.contacts.iter().map(|c| nodes.ale[c.node].shapes.as_slice()).collect();
+        if let Some(g) = &self.series {
+            self.coupling = self.series_coupling(g, &shapes, nodes.modal_mass);
+            return self;
+        }
         let lam = contact_rate(&shapes, nodes.modal_mass);
         self.coupling = Coupling { stiffness_rate_sq: 2.0 * self.stiffness * lam, damping_rate: 2.0 * self.damping * lam };
         self
@@ -348,7 +363,16 @@ impl LoadModel for Pads {
     }
     fn new_scratch(&self) -> Box<dyn Any + Send + Sync> {
         let n = self.contacts.len();
-        Box::new(PadScratch { kinematics: vec![SurfaceKinematics::default(); n], faces: vec![FaceKinematics::default(); n], forces: vec![ContactForces::default(); n], closed: vec![false; n] })
+        Box::new(PadScratch {
+            kinematics: vec![SurfaceKinematics::default(); n],
+            faces: vec![FaceKinematics::default(); n],
+            forces: vec![ContactForces::default(); n],
+            closed: vec![false; n],
+            series: if self.series.is_some() { SeriesScratch::new(n, 2 * n) } else { SeriesScratch::default() },
+            axial: vec![0.0; n],
+            w_free: vec![0.0; n],
+            tried: vec![SurfaceKinematics::default(); n],
+        })
     }
     fn friction_terms(&self) -> usize {
         self.contacts.len()
@@ -370,7 +394,10 @@ impl LoadModel for Pads {
         for (k, c) in s.kinematics.iter_mut().zip(&self.contacts) {
             *k = surface_kinematics(&ctx.ale_nodes[c.node], ctx.q_ale, ctx.q_dot_ale);
         }
-        self.forces(clamp_force, &s.kinematics, ctx.speed, &mut s.forces, &mut s.closed);
+        match &self.series {
+            Some(g) => self.series_forces(g, ctx, clamp_force, s),
+            None => self.forces(clamp_force, &s.kinematics, ctx.speed, &mut s.forces, &mut s.closed),
+        }
         self.friction_torque_terms(&s.forces, out.friction);
         if self.contact_surface == ContactSurface::Faces {
             for ((c, f), k) in self.contacts.iter().zip(s.forces.iter_mut()).zip(s.faces.iter_mut()) {
@@ -418,6 +445,7 @@ mod tests {
             stribeck_speed: 1.0,
             initial_clamp_force: vec![1000.0],
             coupling: Coupling::default(),
+            series: None,
         }
     }
 

@@ -26,10 +26,19 @@
 //! damper c_t (no mass): the holder moves at −v_f, the feed force pushes the
 //! tip back by e, c_t ė + k_t e = f_f (exact over a substep for the held
 //! force), z_tip = z_holder + e. The plate gets −f_f along z at the node.
+//!
+//! **Residual flexibility.** With `plate.residual_flexibility` the chip is cut
+//! at the deflection w = w_m + w_e − g f_f: the truncated modes' static
+//! deflection under the tool (g, its own residual compliance) and of the held
+//! wrenches (w_e) added to the modal one. The force thins its own chip, so
+//! f_f = 𝓕(chip(w_m + w_e − g f_f)) is solved within the substep
+//! (`dynamics::contact_compliance::solve_monotone`): the residual is a spring
+//! in series with the cut.
 
 use super::model::{surface_kinematics, CommandRule, CommandSpec, LoadContext, LoadModel, ModelOut, SceneNodes};
 use super::undo::SlotUndo;
 use crate::config::Config;
+use crate::dynamics::contact_compliance::solve_monotone;
 use std::any::Any;
 
 /// Bins of the machined-shoulder height S(φ) over one revolution.
@@ -61,6 +70,9 @@ pub struct Tool {
     pub start_height: f64,
     /// Feed rate the configuration starts with, m/s (the running command is in `Inputs`).
     pub initial_feed_rate: f64,
+    /// g, the residual compliance at the tool's node (m/N): the cut in series
+    /// with it (`plate.residual_flexibility`; None: on the modal deflection).
+    pub series: Option<f64>,
 }
 
 /// The tool's slot in the [`State`](crate::dynamics::State) (so reset and
@@ -136,6 +148,7 @@ pub fn build(config: &Config, nodes: &SceneNodes) -> Option<Box<dyn LoadModel>> 
         thickness: config.plate.thickness,
         start_height: 0.5 * config.plate.thickness + t.start_clearance,
         initial_feed_rate: t.feed_rate,
+        series: nodes.residual.map(|r| r.between(t.node, t.node, 0.0)),
     }))
 }
 
@@ -162,7 +175,17 @@ impl LoadModel for Tool {
     /// The cut of the substep, from the deflection under the tool at its start.
     fn begin_substep(&self, ctx: &LoadContext, slot: &mut [f64], h: f64) {
         let w = surface_kinematics(&ctx.ale_nodes[self.node], ctx.q_ale, ctx.q_dot_ale).w;
-        self.begin(slot, w, ctx.chi, ctx.speed, h).store(slot);
+        let step = match self.series {
+            None => self.begin(slot, w, ctx.chi, ctx.speed, h),
+            Some(g) => {
+                // w_free: without the tool's own force; its force pushes −z.
+                let w_free = w + ctx.held.map_or(0.0, |d| d.at(self.node, ctx.chi));
+                let free = self.begin(slot, w_free, ctx.chi, ctx.speed, h).force;
+                let f = solve_monotone(free, |f| self.begin(slot, w_free - g * f, ctx.chi, ctx.speed, h).force);
+                self.begin(slot, w_free - g * f, ctx.chi, ctx.speed, h)
+            }
+        };
+        step.store(slot);
     }
 
     /// The held feed force, along −z at the tool's node.
@@ -274,6 +297,7 @@ mod tests {
             thickness: 0.01,
             start_height: 0.005,
             initial_feed_rate: 0.0,
+            series: None,
         }
     }
 
