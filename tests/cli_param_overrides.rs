@@ -1,5 +1,5 @@
-//! `-p NAME:=VALUE` for `modes`, `simulate` and `study` (issue 16: only
-//! `plot` and `run` took it): an override gives exactly what the same value
+//! `-p NAME:=VALUE` for `modes`, `simulate`, `study`, `campbell` and
+//! `stability` (issue 16: only `plot` and `run` took it): an override gives exactly what the same value
 //! written into the file gives, and a bad one is refused naming the key.
 
 mod support;
@@ -62,6 +62,25 @@ fn simulate_with_an_override_equals_simulate_of_the_edited_file() {
     let (by_p, by_file) = (ok(&a), ok(&b));
     assert_eq!(by_p, by_file);
     assert!(by_p.lines().count() > 10, "{by_p}");
+}
+
+#[test]
+fn campbell_and_stability_with_an_override_equal_the_edited_file() {
+    let bench = scene_files::path("brake_bench.yaml");
+    let file = edited("stiffened.yaml", "    plate:\n", "    plate:\n      centrifugal_stiffening: true\n");
+    let by_p = ok(&["campbell", bench.to_str().unwrap(), "--speeds", "0:8000:5", "--json", "-p", "plate.centrifugal_stiffening:=true"]);
+    let by_file = ok(&["campbell", file.to_str().unwrap(), "--speeds", "0:8000:5", "--json"]);
+    let plain = ok(&["campbell", bench.to_str().unwrap(), "--speeds", "0:8000:5", "--json"]);
+    assert_eq!(by_p, by_file);
+    assert_ne!(by_p, plain, "the override stiffened the plate");
+    let squeal = scene_files::path("brake_squeal.yaml");
+    let map = |extra: &[&str]| {
+        let mut a = vec!["stability", squeal.to_str().unwrap(), "--mu", "0.3:0.6:4", "--speeds", "3:3:1", "--json", "--threads", "1"];
+        a.extend(extra);
+        ok(&a)
+    };
+    let (series, modal) = (map(&[]), map(&["-p", "plate.residual_flexibility:=false"]));
+    assert!(series.contains("0.41897969") && modal.contains("0.41744161"), "thresholds: {series}\n{modal}");
 }
 
 #[test]

@@ -24,6 +24,9 @@ pub struct CampbellArgs {
     /// Also draw the diagram to this file (.png or .svg).
     #[arg(long, value_name = "OUT")]
     pub plot: Option<PathBuf>,
+    /// Parameter overrides `-p NAME:=VALUE` (as after --ros-args), e.g. -p plate.centrifugal_stiffening:=true.
+    #[arg(short = 'p', long = "param", value_name = "NAME:=VALUE")]
+    pub overrides: Vec<String>,
 }
 
 /// `FROM:TO:N` → N speeds from FROM to TO inclusive (N = 1: FROM, which must equal TO).
@@ -57,7 +60,7 @@ fn linspace(from: f64, to: f64, n: usize) -> Vec<f64> {
 }
 
 pub fn main(args: CampbellArgs) -> CliResult<()> {
-    let config = super::load_config(&args.file)?;
+    let config = super::load_config_with(&args.file, &args.overrides)?;
     if let Some(p) = &args.plot {
         super::plot::check_output_path(p)?;
     }

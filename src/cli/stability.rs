@@ -36,6 +36,9 @@ pub struct StabilityArgs {
     /// Worker threads (default: the machine's cores).
     #[arg(long)]
     pub threads: Option<usize>,
+    /// Parameter overrides `-p NAME:=VALUE` (as after --ros-args), e.g. -p plate.residual_flexibility:=false.
+    #[arg(short = 'p', long = "param", value_name = "NAME:=VALUE")]
+    pub overrides: Vec<String>,
 }
 
 #[derive(clap::Subcommand, Debug, Clone)]
@@ -107,7 +110,7 @@ pub fn main(args: StabilityArgs) -> CliResult<()> {
     let file = args.file.expect("clap requires FILE");
     let mu = parse_range("--mu", args.mu.as_deref().expect("clap requires --mu"))?;
     let speeds = parse_range("--speeds", args.speeds.as_deref().expect("clap requires --speeds"))?;
-    let config = super::load_config(&file)?;
+    let config = super::load_config_with(&file, &args.overrides)?;
     if let Some(p) = &args.plot {
         super::plot::check_output_path(p)?;
     }
