@@ -158,7 +158,7 @@ pub fn lowest_modes_lanczos(k: &Mat<f64>, m: &Mat<f64>, sigma: f64, count: usize
     let (mut alpha, mut beta): (Vec<f64>, Vec<f64>) = (Vec::new(), Vec::new());
     let mut w = vec![0.0; n];
     let mut tmp = vec![0.0; n];
-    let mut next_check = (count + 16).min(n);
+    let mut next_check = (count + 10).min(n);
     loop {
         let j = basis.len() - 1;
         apply(&basis[j], &mut w, &mut tmp);
@@ -192,7 +192,7 @@ pub fn lowest_modes_lanczos(k: &Mat<f64>, m: &Mat<f64>, sigma: f64, count: usize
             if steps == n || b <= 1e-13 * a.abs() {
                 return Ok(None);
             }
-            next_check = (steps + 4).min(n);
+            next_check = (steps + 3).min(n);
         }
         beta.push(b);
         basis.push(w.iter().map(|x| x / b).collect());
