@@ -9,8 +9,8 @@
 //!
 //! e(n_f) ≈ (ω_{n_c} − ω_{n_f}) · ρ / (1 − ρ),   ρ = ((n_c − 3)/(n_f − 3))⁴,
 //!
-//! relative to ω_{n_f}. The search starts at the count of the previous k (the
-//! first k at [`first_guess`]), with n_c ≈ 0.75 n_f, and grows n_f by the
+//! relative to ω_{n_f}. The search starts at the count predicted from the previous k's estimate (the
+//! first k of a chain at [`first_guess`]), with n_c − 3 ≈ 0.6 (n_f − 3), and grows n_f by the
 //! predicted factor (e/tol)^{1/4} (× [`GROWTH_MARGIN`], between 1.2 and
 //! [`MAX_GROWTH`]; the previous fine solve becomes the coarse one) until the
 //! estimate is within the tolerance. Above [`DENSE_LIMIT`] free coefficients
@@ -29,7 +29,7 @@ pub const MAX_AUTO_SPLINES: usize = 400;
 /// Convergence order of the frequencies in h assumed by the estimate.
 pub const ORDER: f64 = 4.0;
 /// Spans of the coarse solve relative to the fine one.
-pub const COARSE_RATIO: f64 = 0.75;
+pub const COARSE_RATIO: f64 = 0.6;
 /// Margin on the predicted growth of the spline count.
 pub const GROWTH_MARGIN: f64 = 1.1;
 /// Largest growth of the span count per step of the search.
