@@ -363,7 +363,7 @@ fn frequencies_at_high_speed_converge_to_the_prestressed_plate_equation() {
             .iter()
             .map(|&n| {
                 let mut q = p.clone();
-                q.radial_splines = n;
+                q.radial_splines = annular_plate::config::RadialSplines::Fixed(n);
                 let w2 = SpinningSpectrum::new(&q, &on(), k, l + 1).omega_squared(spin).unwrap()[l];
                 ((w2.sqrt() - shooting.sqrt()) / shooting.sqrt()).abs()
             })

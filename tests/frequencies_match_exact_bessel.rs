@@ -242,7 +242,7 @@ fn first_20_modes_match_exact_bessel_for_all_edge_pairs_and_radius_ratios() {
                     let mut line = format!("{name}: worst error with more radial splines:");
                     for n in [32usize, 48] {
                         let mut fine = cfg.clone();
-                        fine.radial_splines = n;
+                        fine.radial_splines = annular_plate::config::RadialSplines::Fixed(n);
                         match PlateModel::new(&fine) {
                             Ok(m) => {
                                 let c =
@@ -426,7 +426,7 @@ fn error_decreases_at_the_cubic_b_spline_rate() {
         let mut errs = Vec::new();
         for &n in &splines {
             let mut cfg = plate_config(ratio, inner, outer, ks, ls, material);
-            cfg.radial_splines = n;
+            cfg.radial_splines = annular_plate::config::RadialSplines::Fixed(n);
             let model = PlateModel::new(&cfg)
                 .unwrap_or_else(|e| panic!("{}: {n} splines: {e}", case_name(ratio, inner, outer)));
             let cmp = compare(&model, &annulus, material, &exact, f64::INFINITY, false);

@@ -116,7 +116,7 @@ fn one_case(text: &str) -> Result<(), String> {
         e.to_string()
     })?;
     // Bounded work: large mode sets are what the model tests are for.
-    if config.plate.mode_count() * config.plate.radial_splines <= 20_000 {
+    if config.plate.mode_count() * config.plate.radial_splines.fixed().unwrap_or(200) <= 20_000 {
         PlateModel::new(&config.plate).map_err(|e| {
             let t = e.to_string();
             assert!(t.contains("plate."), "model refusal names no key: {t}");

@@ -40,7 +40,7 @@ fn plate(ri: f64, inner: Boundary, outer: Boundary, ks: Vec<u32>, ls: Vec<u32>, 
     c.outer_boundary = outer;
     c.nodal_diameters = ks;
     c.nodal_circles = ls;
-    c.radial_splines = splines;
+    c.radial_splines = annular_plate::config::RadialSplines::Fixed(splines);
     c
 }
 
@@ -784,6 +784,8 @@ fn frequencies_scale_as_thickness_times_sqrt_of_e_over_rho_to_1e_10() {
                     c.nodal_diameters = base.nodal_diameters.clone();
                     c.nodal_circles = base.nodal_circles.clone();
                     c.damping = vec![0.0];
+                    // The same fixed count as the reference (the parameter's default is `auto`).
+                    c.radial_splines = base.radial_splines;
                     let m = PlateModel::new(&c).unwrap();
                     check_structure(&c, &m, 500);
                     let s = h * (e / rho).sqrt() / scale0;

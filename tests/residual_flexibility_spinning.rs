@@ -46,7 +46,7 @@ fn plate(k_max: u32, l_max: u32, splines: usize) -> PlateConfig {
     let mut p = PlateConfig::lathe_disc();
     p.nodal_diameters = (0..=k_max).collect();
     p.nodal_circles = (0..=l_max).collect();
-    p.radial_splines = splines;
+    p.radial_splines = annular_plate::config::RadialSplines::Fixed(splines);
     p
 }
 

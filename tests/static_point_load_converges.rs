@@ -80,7 +80,7 @@ fn plate(case: Case, k_max: u32, l_max: u32, splines: usize) -> PlateConfig {
     cfg.outer_boundary = case.outer;
     cfg.nodal_diameters = (0..=k_max).collect();
     cfg.nodal_circles = (0..=l_max).collect();
-    cfg.radial_splines = splines;
+    cfg.radial_splines = annular_plate::config::RadialSplines::Fixed(splines);
     cfg
 }
 

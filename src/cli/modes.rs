@@ -14,10 +14,23 @@ struct JsonMode {
     damping: f64,
 }
 
+/// The radial spline count used for one k (`plate.radial_splines`; with
+/// `auto` also the estimated relative frequency error of the requested l).
+#[derive(Serialize)]
+struct JsonRadialResolution {
+    k: u32,
+    radial_splines: usize,
+    estimated_relative_error: Option<f64>,
+}
+
 #[derive(Serialize)]
 struct JsonModes {
     modes: Vec<JsonMode>,
     skipped_rigid_body_modes: Vec<(u32, u32)>,
+    /// `"auto"` or the fixed count, as configured.
+    radial_splines: crate::config::RadialSplines,
+    frequency_tolerance: f64,
+    radial_splines_per_k: Vec<JsonRadialResolution>,
 }
 
 /// Write the table (or JSON) for `model` to `out`.
@@ -30,6 +43,13 @@ pub fn write(model: &PlateModel, json: bool, out: &mut impl Write) -> std::io::R
                 .map(|m| JsonMode { k: m.k, l: m.l, shape: m.shape.name(), frequency_hz: m.frequency_hz, modal_mass_kg: m.modal_mass, damping: m.damping })
                 .collect(),
             skipped_rigid_body_modes: model.skipped_rigid_body_modes().to_vec(),
+            radial_splines: model.plate().radial_splines,
+            frequency_tolerance: model.plate().frequency_tolerance,
+            radial_splines_per_k: model
+                .radial_resolution()
+                .iter()
+                .map(|r| JsonRadialResolution { k: r.k, radial_splines: r.splines, estimated_relative_error: r.estimated_error })
+                .collect(),
         };
         serde_json::to_writer_pretty(&mut *out, &doc)?;
         writeln!(out)?;
@@ -38,13 +58,13 @@ pub fn write(model: &PlateModel, json: bool, out: &mut impl Write) -> std::io::R
     let p = model.plate();
     writeln!(
         out,
-        "annular plate r_i = {} m, r_a = {} m, h = {} m, {}–{}, {} radial B-splines, D = {:.6e} N·m",
+        "annular plate r_i = {} m, r_a = {} m, h = {} m, {}–{}, radial B-splines {}, D = {:.6e} N·m",
         p.inner_radius,
         p.outer_radius,
         p.thickness,
         p.inner_boundary.name(),
         p.outer_boundary.name(),
-        p.radial_splines,
+        splines_text(model),
         model.rigidity()
     )?;
     writeln!(out, "{:>5} {:>4} {:>4} {:>13} {:>14} {:>15} {:>8}", "index", "k", "l", "shape", "frequency_Hz", "modal_mass_kg", "damping")?;
@@ -55,4 +75,17 @@ pub fn write(model: &PlateModel, json: bool, out: &mut impl Write) -> std::io::R
         writeln!(out, "  ⟨k = {k}, l = {l}⟩ is a rigid-body motion of the free–free plate: carried by the floating frame and joint, not a mode")?;
     }
     Ok(())
+}
+
+/// `32`, or for `auto` the range of counts over k with the tolerance
+/// (`auto (26–58 over k, tolerance 1e-6)`).
+fn splines_text(model: &PlateModel) -> String {
+    let p = model.plate();
+    if let Some(n) = p.radial_splines.fixed() {
+        return n.to_string();
+    }
+    let counts = model.radial_resolution().iter().map(|r| r.splines);
+    let (lo, hi) = (counts.clone().min().unwrap_or(0), counts.max().unwrap_or(0));
+    let range = if lo == hi { lo.to_string() } else { format!("{lo}–{hi}") };
+    format!("auto ({range} over k, tolerance {:e})", p.frequency_tolerance)
 }

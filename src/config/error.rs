@@ -121,6 +121,12 @@ pub enum ConfigError {
     #[error("plate.radial_splines = {splines}: the {inner}–{outer} boundaries remove {removed} B-splines, leaving {free} free coefficients, but nodal circles up to l = {max_l} need at least {} (use plate.radial_splines ≥ {needed})", max_l + 4)]
     TooFewRadialSplines { splines: usize, needed: usize, free: usize, removed: usize, max_l: u32, inner: &'static str, outer: &'static str },
 
+    #[error("plate.radial_splines = {found}: give `auto` (the count per nodal-diameter number that reaches plate.frequency_tolerance) or an integer count ≤ 400")]
+    RadialSplinesNotAutoOrCount { found: String },
+
+    #[error("plate.frequency_tolerance = {} must lie in [{}, {}] (a relative frequency error; below ~1e-8 double precision limits the radial discretisation, docs/convergence.md)", num(*value), num(*low), num(*high))]
+    FrequencyToleranceOutOfRange { value: f64, low: f64, high: f64 },
+
     #[error("plate.damping[{index}] = {value} must lie in [0, 1) (a modal damping ratio)")]
     DampingOutOfRange { index: usize, value: f64 },
 

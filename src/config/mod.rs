@@ -93,8 +93,13 @@ pub struct PlateConfig {
     pub nodal_circles: Vec<u32>,
     /// Modal damping ratios ζ: one for all modes, or one per mode in `modes` order.
     pub damping: Vec<f64>,
-    /// Number of cubic B-splines of the radial discretisation (before boundary conditions).
-    pub radial_splines: usize,
+    /// Cubic B-splines of the radial discretisation (before boundary
+    /// conditions): a fixed count, or chosen per nodal-diameter number k
+    /// (`auto`, docs/convergence.md "Radial resolution that follows the request").
+    pub radial_splines: RadialSplines,
+    /// Relative frequency error the `auto` spline count aims at, for every
+    /// requested ⟨k, l⟩ (`plate.frequency_tolerance`).
+    pub frequency_tolerance: f64,
     /// Add the truncated modes' static deflection at the node frames
     /// (`plate.residual_flexibility`, docs/residual_flexibility.md).
     pub residual_flexibility: bool,
@@ -120,7 +125,8 @@ impl PlateConfig {
             nodal_diameters: (0..=7).collect(),
             nodal_circles: vec![0, 1],
             damping: vec![0.0],
-            radial_splines: DEFAULT_RADIAL_SPLINES,
+            radial_splines: RadialSplines::Auto,
+            frequency_tolerance: DEFAULT_FREQUENCY_TOLERANCE,
             residual_flexibility: true,
         }
     }
@@ -194,8 +200,61 @@ impl PlateConfig {
     }
 }
 
-/// Default of `plate.radial_splines`.
+/// The spline count of `auto` before 2026-11-25, and the count the
+/// `auto` search starts from for the first k (`plate.radial_splines`).
 pub const DEFAULT_RADIAL_SPLINES: usize = 32;
+
+/// Default of `plate.frequency_tolerance`.
+pub const DEFAULT_FREQUENCY_TOLERANCE: f64 = 1e-6;
+
+/// `plate.radial_splines`: `auto` (the default) or a fixed count.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum RadialSplines {
+    /// Per nodal-diameter number k, the count whose estimated relative
+    /// frequency error of the requested l is at most `plate.frequency_tolerance`.
+    Auto,
+    /// The same count for every k.
+    Fixed(usize),
+}
+
+impl RadialSplines {
+    /// The fixed count, or `None` for `auto`.
+    pub fn fixed(self) -> Option<usize> {
+        match self {
+            RadialSplines::Auto => None,
+            RadialSplines::Fixed(n) => Some(n),
+        }
+    }
+}
+
+impl RadialSplines {
+    /// A fixed count raised to at least `min`; `auto` unchanged (it starts at the minimum).
+    pub fn at_least(self, min: usize) -> Self {
+        match self {
+            RadialSplines::Auto => RadialSplines::Auto,
+            RadialSplines::Fixed(n) => RadialSplines::Fixed(n.max(min)),
+        }
+    }
+}
+
+/// Serialised as the parameter is written: `"auto"` or the count.
+impl Serialize for RadialSplines {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        match self {
+            RadialSplines::Auto => s.serialize_str("auto"),
+            RadialSplines::Fixed(n) => s.serialize_u64(*n as u64),
+        }
+    }
+}
+
+impl std::fmt::Display for RadialSplines {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            RadialSplines::Auto => write!(f, "auto"),
+            RadialSplines::Fixed(n) => write!(f, "{n}"),
+        }
+    }
+}
 
 /// A point on the mid-plane in the paper's ξ coordinates (section 4.1):
 /// radial ξ_r ∈ [0, 1] from r_i to r_a, angular ξ_φ ∈ [0, 1] for 0..2π.

@@ -14,7 +14,7 @@ use std::f64::consts::FRAC_PI_2;
 use super::raw::{positive, read_choice, Reader};
 use super::{
     Boundary, Config, ConfigError, Coordinates, InitialConfig, IntegratorKind, JointConfig, LimitsConfig, LoadsConfig, NodePosition,
-    NodesConfig, Params, PlateConfig, ReferenceConfig, SimulationConfig, Surface, WrenchConfig,
+    NodesConfig, Params, PlateConfig, RadialSplines, ReferenceConfig, SimulationConfig, Surface, WrenchConfig,
 };
 use super::error::Degeneracy;
 use super::load_model_sections::{at_most, read_links, read_pads, read_springs, read_tool};
@@ -34,6 +34,9 @@ const MAX_NODAL_DIAMETER: i64 = 200;
 const MAX_NODAL_CIRCLE: i64 = 50;
 /// Largest `plate.radial_splines`.
 const MAX_RADIAL_SPLINES: i64 = 400;
+/// Range of `plate.frequency_tolerance`.
+const MIN_FREQUENCY_TOLERANCE: f64 = 1e-9;
+const MAX_FREQUENCY_TOLERANCE: f64 = 1e-2;
 /// Smallest r_i / r_a (paper 4.2: no solid circular plate).
 const MIN_RADIUS_RATIO: f64 = 1e-6;
 /// Smallest (r_a − r_i) / r_a (paper 4.2: frequencies of a narrow ring go to infinity).
@@ -153,15 +156,13 @@ fn read_plate(r: &Reader) -> Result<PlateConfig, ConfigError> {
     let nodal_diameters = read_index_list(r, "plate.nodal_diameters", &default_k, MAX_NODAL_DIAMETER)?;
     let nodal_circles = read_index_list(r, "plate.nodal_circles", &default_l, MAX_NODAL_CIRCLE)?;
 
-    let splines = r.i64("plate.radial_splines", d.radial_splines as i64)?;
-    if splines < 0 {
-        return Err(ConfigError::Negative { key: "plate.radial_splines".into(), value: splines as f64 });
-    }
-    if splines > MAX_RADIAL_SPLINES {
-        return Err(ConfigError::AboveMaximum {
-            key: "plate.radial_splines".into(),
-            value: splines as f64,
-            max: MAX_RADIAL_SPLINES as f64,
+    let radial_splines = read_radial_splines(r)?;
+    let frequency_tolerance = r.positive("plate.frequency_tolerance", d.frequency_tolerance)?;
+    if !(MIN_FREQUENCY_TOLERANCE..=MAX_FREQUENCY_TOLERANCE).contains(&frequency_tolerance) {
+        return Err(ConfigError::FrequencyToleranceOutOfRange {
+            value: frequency_tolerance,
+            low: MIN_FREQUENCY_TOLERANCE,
+            high: MAX_FREQUENCY_TOLERANCE,
         });
     }
 
@@ -177,23 +178,26 @@ fn read_plate(r: &Reader) -> Result<PlateConfig, ConfigError> {
         nodal_diameters,
         nodal_circles,
         damping: Vec::new(),
-        radial_splines: splines as usize,
+        radial_splines,
+        frequency_tolerance,
         residual_flexibility: r.bool("plate.residual_flexibility", d.residual_flexibility)?,
     };
 
     check_derived(&plate)?;
     let needed = plate.min_radial_splines();
-    if plate.radial_splines < needed {
-        let removed = inner_boundary.essential_conditions() + outer_boundary.essential_conditions();
-        return Err(ConfigError::TooFewRadialSplines {
-            splines: plate.radial_splines,
-            needed,
-            free: plate.radial_splines.saturating_sub(removed),
-            removed,
-            max_l: plate.nodal_circles.iter().copied().max().unwrap_or(0),
-            inner: inner_boundary.name(),
-            outer: outer_boundary.name(),
-        });
+    if let RadialSplines::Fixed(splines) = plate.radial_splines {
+        if splines < needed {
+            let removed = inner_boundary.essential_conditions() + outer_boundary.essential_conditions();
+            return Err(ConfigError::TooFewRadialSplines {
+                splines,
+                needed,
+                free: splines.saturating_sub(removed),
+                removed,
+                max_l: plate.nodal_circles.iter().copied().max().unwrap_or(0),
+                inner: inner_boundary.name(),
+                outer: outer_boundary.name(),
+            });
+        }
     }
 
     let n_modes = plate.mode_count();
@@ -211,6 +215,32 @@ fn read_plate(r: &Reader) -> Result<PlateConfig, ConfigError> {
     }
     plate.damping = damping;
     Ok(plate)
+}
+
+/// `plate.radial_splines`: `auto` or an integer count in 0..=400 (the
+/// minimum for the requested l is checked with the plate).
+fn read_radial_splines(r: &Reader) -> Result<RadialSplines, ConfigError> {
+    const KEY: &str = "plate.radial_splines";
+    if !r.has(KEY) {
+        return Ok(RadialSplines::Auto);
+    }
+    if let Ok(name) = r.string(KEY, "auto") {
+        return match name.trim() {
+            "auto" => Ok(RadialSplines::Auto),
+            _ => Err(ConfigError::RadialSplinesNotAutoOrCount { found: format!("\"{name}\"") }),
+        };
+    }
+    let splines = r.i64(KEY, 0).map_err(|e| match e {
+        ConfigError::WrongType { key, found, .. } => ConfigError::WrongType { key, expected: "`auto` or an integer", found },
+        other => other,
+    })?;
+    if splines < 0 {
+        return Err(ConfigError::Negative { key: KEY.into(), value: splines as f64 });
+    }
+    if splines > MAX_RADIAL_SPLINES {
+        return Err(ConfigError::AboveMaximum { key: KEY.into(), value: splines as f64, max: MAX_RADIAL_SPLINES as f64 });
+    }
+    Ok(RadialSplines::Fixed(splines as usize))
 }
 
 /// The quantities the model is built from must be representable with room

@@ -3,27 +3,29 @@
 //! frequency, and the body data of eq. (11).
 
 use super::body::BodyData;
-use super::eigen::{lowest_modes, EigenFailure};
+use super::eigen::{lowest_modes, EigenFailure, EigenPairs};
 use super::modes::{is_rigid_body, radial_moment, AngularShape, Mode, RadialShape};
 use super::radial::{angular_norm, RadialDiscretisation};
+use super::resolution::{self, KResolution, Resolved};
 use super::{bending_rigidity, ModelError, PlateModel};
-use crate::config::PlateConfig;
+use crate::config::{PlateConfig, RadialSplines};
 
 /// Build the plate model (called by [`PlateModel::new`]).
 pub(super) fn build(plate: &PlateConfig) -> Result<PlateModel, ModelError> {
     let nu = plate.poisson_ratio;
     let rigidity = bending_rigidity(plate.youngs_modulus, plate.thickness, nu);
     let rho_h = plate.density * plate.thickness;
-    let disc = RadialDiscretisation::new(plate, rigidity);
     let max_l = plate.nodal_circles.iter().copied().max().unwrap_or(0);
-    if plate.radial_splines < plate.min_radial_splines() {
-        return Err(ModelError::TooFewRadialSplines {
-            splines: plate.radial_splines,
-            bc_inner: plate.inner_boundary.name(),
-            bc_outer: plate.outer_boundary.name(),
-            max_l,
-            min_splines: plate.min_radial_splines(),
-        });
+    if let RadialSplines::Fixed(splines) = plate.radial_splines {
+        if splines < plate.min_radial_splines() {
+            return Err(ModelError::TooFewRadialSplines {
+                splines,
+                bc_inner: plate.inner_boundary.name(),
+                bc_outer: plate.outer_boundary.name(),
+                max_l,
+                min_splines: plate.min_radial_splines(),
+            });
+        }
     }
     let sigma = eigen_shift(plate, rigidity);
 
@@ -34,17 +36,37 @@ pub(super) fn build(plate: &PlateConfig) -> Result<PlateModel, ModelError> {
 
     let mut radial_shapes = Vec::new();
     let mut skipped = Vec::new();
+    let mut radial_resolution = Vec::new();
     struct Entry {
         radial: usize,
         modal_mass: f64,
     }
     let mut entries: Vec<(u32, u32, f64, Entry)> = Vec::new();
+    let count = max_l as usize + 1;
+    // `auto`: every k's count and eigenpairs first (resolution.rs); fixed: one basis for all k.
+    let fixed_disc = plate.radial_splines.fixed().map(|n| RadialDiscretisation::new(plate, rigidity, n));
+    let (mut chosen, mut discs) = match fixed_disc {
+        Some(_) => (Vec::new(), resolution::Discretisations::new(plate, rigidity)),
+        None => resolution::choose_all(plate, rigidity, sigma, &ks, count)?,
+    };
+    chosen.reverse();
     for &k in &ks {
-        let (kk, mm) = disc.assemble(k);
-        let pairs = lowest_modes(&kk, &mm, sigma, max_l as usize + 1).map_err(|e| match e {
-            EigenFailure::MassNotPositiveDefinite(reason) => ModelError::MassNotPositiveDefinite { k, reason },
-            EigenFailure::ShiftedNotPositiveDefinite(reason) | EigenFailure::Decomposition(reason) => ModelError::Eigenproblem { k, reason },
-        })?;
+        let (splines, pairs) = match &fixed_disc {
+            Some(disc) => {
+                radial_resolution.push(KResolution { k, splines: plate.radial_splines.fixed().unwrap_or(0), estimated_error: None });
+                (None, fixed(disc, k, sigma, count)?)
+            }
+            None => {
+                let Some(Resolved { pairs, resolution }) = chosen.pop() else { unreachable!("one resolution per k") };
+                radial_resolution.push(resolution);
+                (Some(resolution.splines), pairs)
+            }
+        };
+        let disc = match (splines, &fixed_disc) {
+            (Some(splines), _) => discs.get(splines),
+            (None, Some(disc)) => disc,
+            (None, None) => unreachable!("a fixed count has its discretisation"),
+        };
         for &l in &ls {
             if is_rigid_body(plate.inner_boundary, plate.outer_boundary, k, l) {
                 skipped.push((k, l));
@@ -98,7 +120,16 @@ pub(super) fn build(plate: &PlateConfig) -> Result<PlateModel, ModelError> {
         }
     }
     let body = BodyData::new(plate, &modes, &radial_shapes);
-    Ok(PlateModel { plate: plate.clone(), rigidity, modes, radial_shapes, skipped_rigid_body_modes: skipped, body })
+    Ok(PlateModel { plate: plate.clone(), rigidity, modes, radial_shapes, skipped_rigid_body_modes: skipped, body, radial_resolution })
+}
+
+/// A fixed spline count: the dense eigenproblem of k on the shared basis.
+fn fixed(disc: &RadialDiscretisation, k: u32, sigma: f64, count: usize) -> Result<EigenPairs, ModelError> {
+    let (kk, mm) = disc.assemble(k);
+    lowest_modes(&kk, &mm, sigma, count).map_err(|e| match e {
+        EigenFailure::MassNotPositiveDefinite(reason) => ModelError::MassNotPositiveDefinite { k, reason },
+        EigenFailure::ShiftedNotPositiveDefinite(reason) | EigenFailure::Decomposition(reason) => ModelError::Eigenproblem { k, reason },
+    })
 }
 
 /// The shift σ of the eigenproblem (ω² scale): a stiffness scale between

@@ -11,6 +11,8 @@ pub enum ModelError {
     Eigenproblem { k: u32, reason: String },
     #[error("mode ⟨k = {k}, l = {l}⟩ came out non-finite or negative (ω² = {omega_squared:e}): the geometry or material (plate.inner_radius, plate.outer_radius, plate.thickness, plate.youngs_modulus, plate.density) is outside what double precision can resolve ({hint})")]
     NonFiniteMode { k: u32, l: u32, omega_squared: f64, hint: String },
+    #[error("plate.frequency_tolerance = {tolerance:e} is not reached for k = {k} with plate.radial_splines: auto: {splines} B-splines (the most auto uses) reach an estimated {reached:.2e}; raise plate.frequency_tolerance above {reached:.1e} or fix plate.radial_splines (docs/convergence.md)")]
+    FrequencyToleranceNotReached { k: u32, tolerance: f64, reached: f64, splines: usize },
     #[error("the selected nodal diameters × nodal circles leave no elastic mode (only rigid-body modes {skipped:?} of the free–free plate)")]
     NoElasticModes { skipped: Vec<(u32, u32)> },
 }

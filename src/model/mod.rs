@@ -12,6 +12,7 @@ pub mod campbell;
 mod build;
 pub mod bspline;
 pub mod eigen;
+pub mod lanczos;
 mod error;
 pub mod modes;
 pub mod nodal_lines;
@@ -19,6 +20,7 @@ pub mod prestress;
 pub mod quadrature;
 pub mod radial;
 pub mod residual;
+pub mod resolution;
 pub mod shape;
 pub mod spinning;
 
@@ -26,6 +28,7 @@ pub use body::BodyData;
 pub use error::ModelError;
 pub use modes::{AngularShape, Mode, RadialShape};
 pub use residual::{ResidualKernel, StaticHarmonics};
+pub use resolution::KResolution;
 pub use shape::ShapeValue;
 pub use spinning::{ModalGeometricStiffness, SpinningSpectrum};
 
@@ -44,6 +47,7 @@ pub struct PlateModel {
     radial_shapes: Vec<RadialShape>,
     skipped_rigid_body_modes: Vec<(u32, u32)>,
     body: BodyData,
+    radial_resolution: Vec<KResolution>,
 }
 
 impl PlateModel {
@@ -85,6 +89,12 @@ impl PlateModel {
     /// and the joint carry instead.
     pub fn skipped_rigid_body_modes(&self) -> &[(u32, u32)] {
         &self.skipped_rigid_body_modes
+    }
+
+    /// The radial spline count used per requested k, ascending in k (with
+    /// `plate.radial_splines: auto` also its estimated frequency error).
+    pub fn radial_resolution(&self) -> &[KResolution] {
+        &self.radial_resolution
     }
 
     /// Body data of eq. (11).

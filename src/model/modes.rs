@@ -107,16 +107,24 @@ impl RadialShape {
     /// Location and value of max |R| (the spline's critical points per span).
     pub(super) fn peak(&self) -> (f64, f64) {
         let mut best = (self.basis.interval().0, 0.0f64);
-        let mut consider = |r: f64| {
+        let consider = |best: &mut (f64, f64), r: f64| {
             let v = self.value(r);
             if v.abs() > best.1.abs() {
-                best = (r, v);
+                *best = (r, v);
             }
         };
-        for s in 0..self.basis.spans() {
+        // |R| ≤ max |c_j| of the span's four B-splines (convex hull): spans
+        // that cannot beat the best value so far are skipped, largest first.
+        let bound = |s: usize| self.coefficients[s..s + 4].iter().fold(0.0f64, |m, c| m.max(c.abs()));
+        let mut spans: Vec<usize> = (0..self.basis.spans()).collect();
+        spans.sort_by(|&a, &b| bound(b).total_cmp(&bound(a)).then(a.cmp(&b)));
+        for s in spans {
+            if bound(s) < best.1.abs() {
+                break;
+            }
             let (lo, hi) = self.basis.span_bounds(s);
-            consider(lo);
-            consider(hi);
+            consider(&mut best, lo);
+            consider(&mut best, hi);
             // R' is a quadratic on the span: fit it from three points, take its roots.
             let d = |t: f64| self.eval(lo + t * (hi - lo))[1];
             let (d0, d1, d2) = (d(0.0), d(0.5), d(1.0));
@@ -134,7 +142,7 @@ impl RadialShape {
                 roots[0] = -qc / qb;
             }
             for t in roots.into_iter().filter(|t| (0.0..=1.0).contains(t)) {
-                consider(lo + t * (hi - lo));
+                consider(&mut best, lo + t * (hi - lo));
             }
         }
         best

@@ -68,13 +68,15 @@ pub struct RadialDiscretisation {
 }
 
 impl RadialDiscretisation {
-    pub fn new(plate: &PlateConfig, rigidity: f64) -> Self {
+    /// The basis of `splines` uniform cubic B-splines (plus the graded knots
+    /// of a small pinned hole) with the plate's edge conditions.
+    pub fn new(plate: &PlateConfig, rigidity: f64, splines: usize) -> Self {
         let (ri, ra) = (plate.inner_radius, plate.outer_radius);
         let pinned_small_hole = plate.inner_boundary != Boundary::Free && ri / ra < SMALL_HOLE_RATIO;
         let basis = if pinned_small_hole {
-            BSplineBasis::graded(ri, ra, plate.radial_splines, GRADED_KNOTS, 0.25 * ri)
+            BSplineBasis::graded(ri, ra, splines, GRADED_KNOTS, 0.25 * ri)
         } else {
-            BSplineBasis::new(ri, ra, plate.radial_splines)
+            BSplineBasis::new(ri, ra, splines)
         };
         let n = basis.len();
         let drop_inner = plate.inner_boundary.essential_conditions();

@@ -18,6 +18,7 @@ use super::eigen::lowest_modes;
 use super::prestress::LamePrestress;
 use super::quadrature::radial_points;
 use super::radial::{angular_norm, RadialDiscretisation};
+use super::resolution;
 use super::{ModelError, PlateModel};
 use crate::config::{CentrifugalConfig, PlateConfig};
 use faer::Mat;
@@ -36,7 +37,8 @@ impl SpinningSpectrum {
     /// The spectrum of nodal-diameter number k with the `count` lowest l.
     pub fn new(plate: &PlateConfig, centrifugal: &CentrifugalConfig, k: u32, count: usize) -> SpinningSpectrum {
         let rigidity = super::bending_rigidity(plate.youngs_modulus, plate.thickness, plate.poisson_ratio);
-        let disc = RadialDiscretisation::new(plate, rigidity);
+        let splines = spectrum_splines(plate, rigidity, k, count);
+        let disc = RadialDiscretisation::new(plate, rigidity, splines);
         let (stiffness, mass) = disc.assemble(k);
         let prestress = LamePrestress::new(plate, centrifugal);
         let geometric = disc.assemble_geometric(k, plate.thickness, |r| prestress.stresses(r));
@@ -89,6 +91,20 @@ impl SpinningSpectrum {
     }
 }
 
+/// The spline count of the spectrum of k: the fixed `plate.radial_splines`,
+/// or with `auto` the count the model build chooses for k and `count` l at
+/// rest (the largest `auto` uses if the tolerance is not reached there: the
+/// model build itself refuses that plate, naming `plate.frequency_tolerance`).
+fn spectrum_splines(plate: &PlateConfig, rigidity: f64, k: u32, count: usize) -> usize {
+    if let Some(n) = plate.radial_splines.fixed() {
+        return n;
+    }
+    let ls: Vec<u32> = (0..count as u32).filter(|&l| !super::modes::is_rigid_body(plate.inner_boundary, plate.outer_boundary, k, l)).collect();
+    let sigma = eigen_shift(plate, rigidity);
+    let mut discs = resolution::Discretisations::new(plate, rigidity);
+    resolution::choose(&mut discs, sigma, k, &ls, count, resolution::first_guess(plate)).map_or(resolution::MAX_AUTO_SPLINES, |r| r.resolution.splines)
+}
+
 /// K̄_g projected on the retained modes, per k (per unit Ω²).
 #[derive(Debug, Clone, PartialEq)]
 pub struct ModalGeometricStiffness {
@@ -117,18 +133,19 @@ impl ModalGeometricStiffness {
         let mut ks: Vec<u32> = shapes.iter().map(|s| s.k).collect();
         ks.sort_unstable();
         ks.dedup();
-        let basis = shapes[0].basis();
-        let mut points = Vec::new();
-        for s in 0..basis.spans() {
-            let (lo, hi) = basis.span_bounds(s);
-            radial_points(lo, hi, &mut points);
-        }
         let blocks = ks
             .into_iter()
             .map(|k| {
                 let mut radial: Vec<usize> = (0..shapes.len()).filter(|&i| shapes[i].k == k).collect();
                 radial.sort_by_key(|&i| shapes[i].l);
                 let ls: Vec<u32> = radial.iter().map(|&i| shapes[i].l).collect();
+                // The radial basis of this k (with `auto` each k has its own).
+                let basis = shapes[radial[0]].basis();
+                let mut points = Vec::new();
+                for s in 0..basis.spans() {
+                    let (lo, hi) = basis.span_bounds(s);
+                    radial_points(lo, hi, &mut points);
+                }
                 let n = radial.len();
                 let k2 = (k as f64).powi(2);
                 let scale = angular_norm(k) * plate.thickness;

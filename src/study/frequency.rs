@@ -11,7 +11,7 @@
 
 use super::timing::min_time;
 use super::{mark_pareto, recommend, Recommendation, StudyError, StudyPlan};
-use crate::config::PlateConfig;
+use crate::config::{PlateConfig, RadialSplines};
 use crate::model::PlateModel;
 use serde::Serialize;
 use std::collections::BTreeMap;
@@ -71,7 +71,7 @@ fn omegas(model: &PlateModel) -> BTreeMap<(u32, u32), f64> {
 
 fn with_splines(plate: &PlateConfig, n: usize) -> PlateConfig {
     let mut p = plate.clone();
-    p.radial_splines = n;
+    p.radial_splines = RadialSplines::Fixed(n);
     p
 }
 

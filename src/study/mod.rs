@@ -185,7 +185,7 @@ pub struct SceneSummary {
     pub outer_boundary: &'static str,
     pub nodal_diameters: Vec<u32>,
     pub nodal_circles: Vec<u32>,
-    pub radial_splines: usize,
+    pub radial_splines: crate::config::RadialSplines,
     pub modes: usize,
     pub speed_rad_s: f64,
     pub integrator: &'static str,

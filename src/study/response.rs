@@ -31,7 +31,7 @@
 
 use super::timing::min_time_per_unit;
 use super::{mark_pareto, recommend, Recommendation, StudyError, StudyPlan};
-use crate::config::{Config, IntegratorKind, NodePosition, WrenchConfig};
+use crate::config::{Config, IntegratorKind, NodePosition, RadialSplines, WrenchConfig};
 use crate::dynamics::{Simulation, SimulationError};
 use crate::model::{AngularShape, PlateModel};
 use serde::Serialize;
@@ -220,7 +220,7 @@ pub fn scene_with_set(config: &Config, k_max: u32, l_max: u32, damping: f64) -> 
     c.plate.nodal_diameters = (0..=k_max).collect();
     c.plate.nodal_circles = (0..=l_max).collect();
     c.plate.damping = vec![damping];
-    c.plate.radial_splines = c.plate.radial_splines.max(c.plate.min_radial_splines());
+    c.plate.radial_splines = c.plate.radial_splines.at_least(c.plate.min_radial_splines());
     c
 }
 
@@ -236,8 +236,9 @@ pub fn run(config: &Config, plan: &StudyPlan, tick: &mut dyn FnMut(&str)) -> Res
     big.nodal_diameters = (0..=k_ref).collect();
     big.nodal_circles = (0..=l_ref).collect();
     big.damping = vec![damping];
-    big.radial_splines = plan.response_splines.max(big.min_radial_splines());
-    tick(&format!("reference model k ≤ {k_ref}, l ≤ {l_ref}, {} radial splines", big.radial_splines));
+    let splines = plan.response_splines.max(big.min_radial_splines());
+    big.radial_splines = RadialSplines::Fixed(splines);
+    tick(&format!("reference model k ≤ {k_ref}, l ≤ {l_ref}, {splines} radial splines"));
     let model = PlateModel::new(&big)?;
     let w = scene.reference.angular_velocity;
     let soft = w[0] * w[0] + w[1] * w[1];
@@ -306,7 +307,6 @@ pub fn run(config: &Config, plan: &StudyPlan, tick: &mut dyn FnMut(&str)) -> Res
     for (r, p) in rows.iter_mut().zip(mark_pareto(&points)) {
         r.pareto = p;
     }
-    let splines = big.radial_splines;
     let recommendations = recommend(
         &plan.targets,
         uncertainty,

@@ -124,7 +124,7 @@ pub(super) fn model_for(config: &Config, ks: &[u32], ls: &[u32]) -> CliResult<Pl
     plate.nodal_diameters = ks.to_vec();
     plate.nodal_circles = ls.to_vec();
     plate.damping = vec![0.0];
-    plate.radial_splines = plate.radial_splines.max(plate.min_radial_splines());
+    plate.radial_splines = plate.radial_splines.at_least(plate.min_radial_splines());
     if ks.iter().any(|&k| k > 200) || ls.iter().any(|&l| l > 50) {
         return Err(CliError::Usage("nodal diameters must be ≤ 200 and nodal circles ≤ 50".to_string()));
     }
