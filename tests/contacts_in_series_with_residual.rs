@@ -222,30 +222,9 @@ fn with_the_correction_the_simulated_squeal_grows_at_the_eigenvalue_rate() {
         p.friction_coefficient = mu;
         p.lift_off = false;
         let mut sim = Simulation::new(c).unwrap();
-        let speed = sim.config().joint.speed;
-        let clamp = sim.config().pads.as_ref().unwrap().clamp_force.clone();
-        let mode = stability::critical_mode(sim.scene(), speed, mu, &clamp);
-        let n = sim.model().n_modes();
-        let peak = mode.vector[..n].iter().map(|v| v.norm()).fold(0.0, f64::max);
-        let mut state = sim.state().clone();
-        for i in 0..n {
-            state.q[i] = 1e-5 * mode.vector[i].re / peak;
-            state.q_dot[i] = 1e-5 * mode.vector[n + i].re / peak;
-        }
-        state.rederive(sim.scene());
-        sim.restore(state);
-        let pair = sim.scene().layout.pairs.iter().copied().max_by(|a, b| mode.vector[a.cos].norm().total_cmp(&mode.vector[b.cos].norm())).unwrap();
-        let (mut ts, mut logs) = (Vec::new(), Vec::new());
-        for _ in 0..3000 {
-            sim.step().unwrap();
-            ts.push(sim.time());
-            logs.push(sim.q_ale()[pair.cos].hypot(sim.q_ale()[pair.sin]).ln());
-        }
-        let k = ts.len() as f64;
-        let (mt, ml) = (ts.iter().sum::<f64>() / k, logs.iter().sum::<f64>() / k);
-        let slope = ts.iter().zip(&logs).map(|(t, l)| (t - mt) * (l - ml)).sum::<f64>() / ts.iter().map(|t| (t - mt).powi(2)).sum::<f64>();
-        let rate = mode.eigenvalue.re;
-        println!("with the residual, μ = {factor} μ_c = {mu:.5}: ⟨k = {}⟩ at {:.2} Hz, eigenvalue Re λ = {rate:.6} 1/s, simulated {slope:.6} 1/s", pair.k, mode.eigenvalue.im / TAU);
+        let g = support::squeal::simulated_growth(&mut sim, 1e-5, 3000);
+        let (rate, slope) = (g.rate, g.simulated);
+        println!("with the residual, μ = {factor} μ_c = {mu:.5}: ⟨k = {}⟩ at {:.2} Hz, eigenvalue Re λ = {rate:.6} 1/s, simulated {slope:.6} 1/s", g.k, g.omega / TAU);
         assert_eq!(rate > 0.0, factor > 1.0);
         assert_eq!(slope > 0.0, factor > 1.0, "the simulation disagrees with the eigenvalues about stability");
         assert!((slope - rate).abs() < 2e-2 * rate.abs(), "growth rate: simulated {slope} vs eigenvalue {rate}");

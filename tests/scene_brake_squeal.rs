@@ -136,28 +136,8 @@ fn the_threshold_is_in_the_brake_range_and_matches_the_ring_closed_form_with_fac
 /// least-squares growth rate of the critical pair's |z̄|, 1/s.
 fn simulated_growth_rate(mu: f64, peak: f64, steps: usize) -> (f64, f64) {
     let mut sim = Simulation::new(with_friction(mu)).unwrap();
-    let clamp = sim.config().pads.as_ref().unwrap().clamp_force.clone();
-    let mode = stability::critical_mode(sim.scene(), 3.0, mu, &clamp);
-    let n = sim.model().n_modes();
-    let top = mode.vector[..n].iter().map(|v| v.norm()).fold(0.0, f64::max);
-    let mut state = sim.state().clone();
-    for i in 0..n {
-        state.q[i] = peak * mode.vector[i].re / top;
-        state.q_dot[i] = peak * mode.vector[n + i].re / top;
-    }
-    state.rederive(sim.scene());
-    sim.restore(state);
-    let pair = sim.scene().layout.pairs.iter().copied().max_by(|a, b| mode.vector[a.cos].norm().total_cmp(&mode.vector[b.cos].norm())).unwrap();
-    let (mut ts, mut logs) = (Vec::new(), Vec::new());
-    for _ in 0..steps {
-        sim.step().unwrap();
-        ts.push(sim.time());
-        logs.push(sim.q_ale()[pair.cos].hypot(sim.q_ale()[pair.sin]).ln());
-    }
-    let k = ts.len() as f64;
-    let (mt, ml) = (ts.iter().sum::<f64>() / k, logs.iter().sum::<f64>() / k);
-    let slope = ts.iter().zip(&logs).map(|(t, l)| (t - mt) * (l - ml)).sum::<f64>() / ts.iter().map(|t| (t - mt).powi(2)).sum::<f64>();
-    (mode.eigenvalue.re, slope)
+    let g = support::squeal::simulated_growth(&mut sim, peak, steps);
+    (g.rate, g.simulated)
 }
 
 #[test]

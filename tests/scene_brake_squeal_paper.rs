@@ -99,33 +99,10 @@ fn simulation_decays_below_and_grows_above_the_threshold_at_the_eigenvalue_rate(
     for factor in [0.9, 1.1] {
         let mu = factor * mu_c;
         let mut sim = Simulation::new(with_friction(mu, false)).unwrap();
-        let speed = sim.config().joint.speed;
-        let clamp = sim.config().pads.as_ref().unwrap().clamp_force.clone();
-        let mode = stability::critical_mode(sim.scene(), speed, mu, &clamp);
-        // Start on the critical eigenvector (ALE coordinates, real part, peak 10 µm):
-        // the pair's |z| then evolves exactly as e^{Re λ t}.
-        let n = sim.model().n_modes();
-        let peak = mode.vector[..n].iter().map(|v| v.norm()).fold(0.0, f64::max);
-        let mut state = sim.state().clone();
-        for i in 0..n {
-            state.q[i] = 1e-5 * mode.vector[i].re / peak;
-            state.q_dot[i] = 1e-5 * mode.vector[n + i].re / peak;
-        }
-        state.rederive(sim.scene());
-        sim.restore(state);
-        let pair = sim.scene().layout.pairs.iter().copied().max_by(|a, b| mode.vector[a.cos].norm().total_cmp(&mode.vector[b.cos].norm())).unwrap();
-        let (mut ts, mut logs) = (Vec::new(), Vec::new());
-        for _ in 0..3000 {
-            sim.step().unwrap();
-            ts.push(sim.time());
-            logs.push(sim.q_ale()[pair.cos].hypot(sim.q_ale()[pair.sin]).ln());
-        }
-        // Least-squares slope of ln|z|.
-        let k = ts.len() as f64;
-        let (mt, ml) = (ts.iter().sum::<f64>() / k, logs.iter().sum::<f64>() / k);
-        let slope = ts.iter().zip(&logs).map(|(t, l)| (t - mt) * (l - ml)).sum::<f64>() / ts.iter().map(|t| (t - mt).powi(2)).sum::<f64>();
-        let rate = mode.eigenvalue.re;
-        println!("μ = {factor} μ_c = {mu:.5}: ⟨k = {}⟩ at {:.1} Hz, eigenvalue Re λ = {rate:.6} 1/s, simulated {slope:.6} 1/s", pair.k, mode.eigenvalue.im / std::f64::consts::TAU);
+        // Started on the critical eigenvector (peak 10 µm), the pair's |z| evolves as e^{Re λ t}.
+        let g = support::squeal::simulated_growth(&mut sim, 1e-5, 3000);
+        let (rate, slope) = (g.rate, g.simulated);
+        println!("μ = {factor} μ_c = {mu:.5}: ⟨k = {}⟩ at {:.1} Hz, eigenvalue Re λ = {rate:.6} 1/s, simulated {slope:.6} 1/s", g.k, g.omega / std::f64::consts::TAU);
         assert_eq!(rate > 0.0, factor > 1.0, "the eigenvalues put μ on the wrong side of μ_c");
         assert_eq!(slope > 0.0, factor > 1.0, "the simulation disagrees with the eigenvalues about stability");
         // RK4 (simulation.rk4_step_limit 0.1) damps the 1.7 kHz mode by ≈ 3e-4 1/s.

@@ -4,3 +4,4 @@ pub mod exact_plate;
 pub mod scenes;
 pub mod static_plate;
 pub mod scene_files;
+pub mod squeal;
