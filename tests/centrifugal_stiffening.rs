@@ -26,15 +26,8 @@ use annular_plate::dynamics::Simulation;
 use annular_plate::model::AngularShape;
 use annular_plate::model::prestress::LamePrestress;
 use annular_plate::model::{ModalGeometricStiffness, PlateModel, SpinningSpectrum};
-use support::exact_plate::{gauss_legendre, Annulus, Edge};
-
-fn edge(b: Boundary) -> Edge {
-    match b {
-        Boundary::Free => Edge::Free,
-        Boundary::Supported => Edge::Supported,
-        Boundary::Clamped => Edge::Clamped,
-    }
-}
+use support::exact_plate::{gauss_legendre, Annulus};
+use support::library_plate::edge;
 
 fn lathe() -> PlateConfig {
     PlateConfig::lathe_disc()

@@ -16,6 +16,7 @@ mod support;
 use annular_plate::config::{Boundary, PlateConfig};
 use annular_plate::model::{AngularShape, PlateModel};
 use support::exact_plate::{count_sign_changes, Annulus, Edge, ExactMode, Material};
+use support::library_plate::{self, edge};
 
 const OUTER_RADIUS: f64 = 0.15;
 const THICKNESS: f64 = 0.01;
@@ -23,14 +24,6 @@ const RATIOS: [f64; 3] = [0.1, 0.5, 0.9];
 /// What the B-spline model with the default 24 radial splines must meet.
 const REL_TOL: f64 = 1e-4;
 const N_MODES: usize = 20;
-
-fn edge(b: Boundary) -> Edge {
-    match b {
-        Boundary::Free => Edge::Free,
-        Boundary::Supported => Edge::Supported,
-        Boundary::Clamped => Edge::Clamped,
-    }
-}
 
 fn steel() -> Material {
     Material::steel(THICKNESS)
@@ -44,19 +37,7 @@ fn plate_config(
     ls: &[u32],
     material: Material,
 ) -> PlateConfig {
-    let mut cfg = PlateConfig::lathe_disc();
-    cfg.inner_radius = ratio * OUTER_RADIUS;
-    cfg.outer_radius = OUTER_RADIUS;
-    cfg.thickness = material.thickness;
-    cfg.density = material.density;
-    cfg.youngs_modulus = material.youngs_modulus;
-    cfg.poisson_ratio = material.poisson_ratio;
-    cfg.inner_boundary = inner;
-    cfg.outer_boundary = outer;
-    cfg.nodal_diameters = ks.to_vec();
-    cfg.nodal_circles = ls.to_vec();
-    cfg.damping = vec![0.0];
-    cfg
+    library_plate::annulus_config((ratio * OUTER_RADIUS, OUTER_RADIUS), (inner, outer), ks, ls, material)
 }
 
 fn distinct_sorted(v: impl Iterator<Item = u32>) -> Vec<u32> {

@@ -13,9 +13,10 @@
 
 mod support;
 
-use annular_plate::config::{Boundary, PlateConfig};
+use annular_plate::config::Boundary;
 use annular_plate::model::PlateModel;
 use support::exact_plate::{Annulus, CircularPlate, Edge, Material};
+use support::library_plate;
 
 const OUTER_RADIUS: f64 = 0.15;
 const LIBRARY_REL_TOL: f64 = 1e-4;
@@ -55,25 +56,14 @@ fn library_model(
     entries: &[Entry],
     nu: f64,
 ) -> PlateModel {
-    let m = material();
-    let mut cfg = PlateConfig::lathe_disc();
-    cfg.inner_radius = ratio * OUTER_RADIUS;
-    cfg.outer_radius = OUTER_RADIUS;
-    cfg.thickness = m.thickness;
-    cfg.density = m.density;
-    cfg.youngs_modulus = m.youngs_modulus;
-    cfg.poisson_ratio = nu;
-    cfg.inner_boundary = inner;
-    cfg.outer_boundary = outer;
+    let m = Material { poisson_ratio: nu, ..material() };
     let mut ks: Vec<u32> = entries.iter().map(|e| e.0).collect();
     ks.sort_unstable();
     ks.dedup();
     let mut ls: Vec<u32> = entries.iter().map(|e| e.1).collect();
     ls.sort_unstable();
     ls.dedup();
-    cfg.nodal_diameters = ks;
-    cfg.nodal_circles = ls;
-    cfg.damping = vec![0.0];
+    let cfg = library_plate::annulus_config((ratio * OUTER_RADIUS, OUTER_RADIUS), (inner, outer), &ks, &ls, m);
     PlateModel::new(&cfg).expect("library model")
 }
 

@@ -21,16 +21,9 @@ use annular_plate::config::{Boundary, Config, PlateConfig};
 use annular_plate::model::{AngularShape, PlateModel};
 use support::bessel;
 use support::exact_plate::{Annulus, CircularPlate, Edge, Material};
+use support::library_plate::edge;
 
 const RA: f64 = 0.15;
-
-fn edge(b: Boundary) -> Edge {
-    match b {
-        Boundary::Free => Edge::Free,
-        Boundary::Supported => Edge::Supported,
-        Boundary::Clamped => Edge::Clamped,
-    }
-}
 
 fn plate(ri: f64, inner: Boundary, outer: Boundary, ks: Vec<u32>, ls: Vec<u32>, splines: usize) -> PlateConfig {
     let mut c = PlateConfig::lathe_disc();

@@ -21,7 +21,8 @@ mod support;
 
 use annular_plate::config::{Boundary, PlateConfig, RadialSplines};
 use annular_plate::model::{ModelError, PlateModel};
-use support::exact_plate::{Annulus, Edge, Material};
+use support::exact_plate::{Annulus, Material};
+use support::library_plate::{self, edge};
 
 const OUTER_RADIUS: f64 = 0.15;
 const THICKNESS: f64 = 0.01;
@@ -33,28 +34,8 @@ const SAMPLED_K: [u32; 8] = [0, 1, 2, 5, 15, 30, 45, 60];
 /// The requirement at the default tolerance (1e-6).
 const REQUIRED: f64 = 1e-5;
 
-fn edge(b: Boundary) -> Edge {
-    match b {
-        Boundary::Free => Edge::Free,
-        Boundary::Supported => Edge::Supported,
-        Boundary::Clamped => Edge::Clamped,
-    }
-}
-
 fn plate(ratio: f64, inner: Boundary, outer: Boundary, ks: Vec<u32>, ls: Vec<u32>) -> PlateConfig {
-    let m = Material::steel(THICKNESS);
-    let mut p = PlateConfig::lathe_disc();
-    p.inner_radius = ratio * OUTER_RADIUS;
-    p.outer_radius = OUTER_RADIUS;
-    p.thickness = m.thickness;
-    p.density = m.density;
-    p.youngs_modulus = m.youngs_modulus;
-    p.poisson_ratio = m.poisson_ratio;
-    p.inner_boundary = inner;
-    p.outer_boundary = outer;
-    p.nodal_diameters = ks;
-    p.nodal_circles = ls;
-    p
+    library_plate::annulus_config((ratio * OUTER_RADIUS, OUTER_RADIUS), (inner, outer), &ks, &ls, Material::steel(THICKNESS))
 }
 
 /// Exact λ of l = 0..=L_MAX for k (rigid-body λ = 0 included), scanning up

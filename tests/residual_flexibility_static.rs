@@ -17,6 +17,7 @@ use annular_plate::config::{Boundary, PlateConfig};
 use annular_plate::model::PlateModel;
 use std::f64::consts::PI;
 use support::exact_plate::Edge;
+use support::library_plate::edge;
 use support::static_plate::StaticAnnulus;
 
 /// Harmonics of the exact series.
@@ -33,14 +34,6 @@ struct Case {
 }
 
 const AROUND: &[(f64, f64)] = &[(1.0, 0.0), (1.0, 0.5 * PI), (1.0, PI)];
-
-fn edge(b: Boundary) -> Edge {
-    match b {
-        Boundary::Free => Edge::Free,
-        Boundary::Supported => Edge::Supported,
-        Boundary::Clamped => Edge::Clamped,
-    }
-}
 
 fn radius(cfg: &PlateConfig, xi: f64) -> f64 {
     cfg.inner_radius + xi * (cfg.outer_radius - cfg.inner_radius)

@@ -33,6 +33,7 @@ use annular_plate::dynamics::Simulation;
 use annular_plate::model::PlateModel;
 use std::collections::BTreeMap;
 use support::exact_plate::Edge;
+use support::library_plate::edge;
 use support::static_plate::StaticAnnulus;
 
 /// Harmonics summed directly in the exact series (a fitted k⁻³ tail follows).
@@ -65,14 +66,6 @@ const SUPPORTED: Case = Case {
     outer: Boundary::Free,
     xi: 0.5,
 };
-
-fn edge(b: Boundary) -> Edge {
-    match b {
-        Boundary::Free => Edge::Free,
-        Boundary::Supported => Edge::Supported,
-        Boundary::Clamped => Edge::Clamped,
-    }
-}
 
 fn plate(case: Case, k_max: u32, l_max: u32, splines: usize) -> PlateConfig {
     let mut cfg = PlateConfig::lathe_disc();

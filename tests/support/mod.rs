@@ -5,3 +5,4 @@ pub mod scenes;
 pub mod static_plate;
 pub mod scene_files;
 pub mod squeal;
+pub mod library_plate;
