@@ -108,13 +108,13 @@ impl Scene {
         }
     }
 
-    /// Scratch for the load models' wrenches at this scene's node frames.
     /// The residual deflection of the held wrenches `inputs`, for the load
     /// models' contacts (None with `plate.residual_flexibility: false`).
     pub fn held_deflection<'a>(&'a self, inputs: &'a super::commands::Inputs) -> Option<super::contact_compliance::HeldDeflection<'a>> {
         self.residual.as_ref().map(|compliance| super::contact_compliance::HeldDeflection { compliance, ale: &inputs.ale, lagrange: &inputs.lagrange })
     }
 
+    /// Scratch for the load models' wrenches at this scene's node frames.
     pub fn model_wrenches(&self) -> ModelWrenches {
         ModelWrenches::new(self.ale_nodes.len(), self.lagrange_nodes.len(), &self.load_models)
     }
