@@ -31,6 +31,7 @@
 //! taken once when the scene is built; the held wrenches' part is read per
 //! evaluation from [`ResidualCompliance`] (mixed pairs turn with χ).
 
+use super::dense::{lu_factor, lu_solve};
 use super::node_frame::NodeShape;
 use super::residual::ResidualCompliance;
 use super::wrench::Wrench;
@@ -232,59 +233,6 @@ pub fn stiffness_rate(shapes: &[&[NodeShape]], k: &[f64], modal_mass: &[f64]) ->
     // Symmetrise against round-off (K_eff is symmetric).
     let a = faer::Mat::<f64>::from_fn(n, n, |i, m| 0.5 * (a[(i, m)] + a[(m, i)]));
     a.self_adjoint_eigenvalues(faer::Side::Lower).ok().and_then(|ev| ev.last().copied()).unwrap_or(0.0).max(0.0)
-}
-
-/// LU factors of A (row-major n × n, in place) with partial pivoting:
-/// P A = L U, `perm[i]` the row of A in row i. False if A is singular.
-pub fn lu_factor(a: &mut [f64], perm: &mut [usize], n: usize) -> bool {
-    for (i, p) in perm.iter_mut().enumerate() {
-        *p = i;
-    }
-    for col in 0..n {
-        let pivot = (col..n).max_by(|&i, &j| a[i * n + col].abs().total_cmp(&a[j * n + col].abs())).unwrap_or(col);
-        if a[pivot * n + col] == 0.0 || !a[pivot * n + col].is_finite() {
-            return false;
-        }
-        if pivot != col {
-            for j in 0..n {
-                a.swap(col * n + j, pivot * n + j);
-            }
-            perm.swap(col, pivot);
-        }
-        let p = a[col * n + col];
-        for i in col + 1..n {
-            let factor = a[i * n + col] / p;
-            a[i * n + col] = factor;
-            if factor != 0.0 {
-                for j in col + 1..n {
-                    a[i * n + j] -= factor * a[col * n + j];
-                }
-            }
-        }
-    }
-    true
-}
-
-/// Solve A x = b with the factors of [`lu_factor`]; b becomes x (`buf`: n values of scratch).
-pub fn lu_solve(lu: &[f64], perm: &[usize], b: &mut [f64], buf: &mut [f64], n: usize) {
-    for i in 0..n {
-        buf[i] = b[perm[i]];
-    }
-    for i in 0..n {
-        let mut v = buf[i];
-        for j in 0..i {
-            v -= lu[i * n + j] * buf[j];
-        }
-        buf[i] = v;
-    }
-    for i in (0..n).rev() {
-        let mut v = buf[i];
-        for j in i + 1..n {
-            v -= lu[i * n + j] * buf[j];
-        }
-        buf[i] = v / lu[i * n + i];
-    }
-    b[..n].copy_from_slice(&buf[..n]);
 }
 
 /// The root f in [0, f_max] of f = 𝓕(f), for a force 𝓕 that does not grow

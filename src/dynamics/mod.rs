@@ -12,6 +12,7 @@ pub mod ale;
 pub mod angle;
 pub mod commands;
 pub mod contact_compliance;
+pub mod dense;
 pub mod error;
 pub mod integrators;
 pub mod joint;

@@ -5,10 +5,11 @@
 //! the k's modes (cos and sin families) and A the modal ODE of
 //! [`equations`](super::equations) at the midpoint speed plus −Ω_mid² M⁻¹G_k.
 //! Same method, same order and A-stability as without stiffening. Dense LU
-//! with partial pivoting on scratch sized once.
+//! with partial pivoting ([`dense`](crate::dynamics::dense)) on scratch sized once.
 
 use super::equations::{pair_force, ModeConstants};
 use crate::config::Coordinates;
+use crate::dynamics::dense::{lu_factor, lu_solve};
 use crate::dynamics::scene::ModePair;
 use crate::dynamics::stiffening::Stiffening;
 
@@ -19,12 +20,15 @@ pub struct StiffenedMidpoint {
     lhs: Vec<f64>,
     rhs: Vec<f64>,
     y: Vec<f64>,
+    /// Row permutation and substitution scratch of the LU solve.
+    perm: Vec<usize>,
+    buf: Vec<f64>,
 }
 
 impl StiffenedMidpoint {
     pub fn new(stiffening: Option<&Stiffening>) -> StiffenedMidpoint {
         let d = stiffening.map_or(0, |s| s.blocks.iter().map(|b| 4 * b.len()).max().unwrap_or(0));
-        StiffenedMidpoint { a: vec![0.0; d * d], lhs: vec![0.0; d * d], rhs: vec![0.0; d], y: vec![0.0; d] }
+        StiffenedMidpoint { a: vec![0.0; d * d], lhs: vec![0.0; d * d], rhs: vec![0.0; d], y: vec![0.0; d], perm: vec![0; d], buf: vec![0.0; d] }
     }
 
     /// Advance (q, v) in place over h; arguments as [`implicit_midpoint::advance`](super::implicit_midpoint::advance).
@@ -110,7 +114,12 @@ impl StiffenedMidpoint {
                     lhs[i * d + j] = if i == j { 1.0 } else { 0.0 } - hh * a[i * d + j];
                 }
             }
-            solve(d, lhs, g);
+            // A singular matrix gives NaN (caught by the step check).
+            if lu_factor(lhs, &mut self.perm[..d], d) {
+                lu_solve(lhs, &self.perm[..d], g, &mut self.buf[..d], d);
+            } else {
+                g.fill(f64::NAN);
+            }
             for f in 0..families {
                 for r in 0..n {
                     let i = index(f, r);
@@ -119,38 +128,5 @@ impl StiffenedMidpoint {
                 }
             }
         }
-    }
-}
-
-/// Solve lhs x = rhs in place (x into rhs) by Gaussian elimination with
-/// partial pivoting; a singular matrix gives NaN (caught by the step check).
-fn solve(d: usize, lhs: &mut [f64], rhs: &mut [f64]) {
-    for col in 0..d {
-        let pivot = (col..d).max_by(|&x, &y| lhs[x * d + col].abs().total_cmp(&lhs[y * d + col].abs())).unwrap_or(col);
-        if lhs[pivot * d + col] == 0.0 {
-            rhs.fill(f64::NAN);
-            return;
-        }
-        if pivot != col {
-            for j in 0..d {
-                lhs.swap(col * d + j, pivot * d + j);
-            }
-            rhs.swap(col, pivot);
-        }
-        let diag = lhs[col * d + col];
-        for row in col + 1..d {
-            let factor = lhs[row * d + col] / diag;
-            if factor == 0.0 {
-                continue;
-            }
-            for j in col..d {
-                lhs[row * d + j] -= factor * lhs[col * d + j];
-            }
-            rhs[row] -= factor * rhs[col];
-        }
-    }
-    for row in (0..d).rev() {
-        let s: f64 = (row + 1..d).map(|j| lhs[row * d + j] * rhs[j]).sum();
-        rhs[row] = (rhs[row] - s) / lhs[row * d + row];
     }
 }
