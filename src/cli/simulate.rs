@@ -62,23 +62,23 @@ pub fn column_unit(name: &str) -> Option<&'static str> {
 /// allocation per row.
 pub struct RowWriter {
     line: Vec<u8>,
-    ryu: ryu::Buffer,
+    digits: zmij::Buffer,
 }
 
 impl Default for RowWriter {
     fn default() -> RowWriter {
-        RowWriter { line: Vec::with_capacity(4096), ryu: ryu::Buffer::new() }
+        RowWriter { line: Vec::with_capacity(4096), digits: zmij::Buffer::new() }
     }
 }
 
 impl RowWriter {
     fn display(&mut self, v: f64) {
-        push_display(&mut self.line, v, &mut self.ryu);
+        push_display(&mut self.line, v, &mut self.digits);
     }
 
     fn exp(&mut self, v: f64) {
         self.line.push(b',');
-        push_exp(&mut self.line, v, &mut self.ryu);
+        push_exp(&mut self.line, v, &mut self.digits);
     }
 
     /// The row of the current state, newline included.

@@ -20,7 +20,7 @@
 //!   solve, two evaluations. For linear springs K this is
 //!   F = −(I + K G)⁻¹ K (w_m + w_e − u₀).
 //! - A scalar law that falls with the force (the tool's chip):
-//!   [`solve_monotone`], a bracketed root.
+//!   [`solve_monotone`], a safeguarded Newton root.
 //!
 //! Only the stiffness is in series: a contact damper acts on the modal rate
 //! ẇ_m; the rate of the residual deflection, G Ḟ, is left out (it would make
@@ -237,46 +237,37 @@ pub fn stiffness_rate(shapes: &[&[NodeShape]], k: &[f64], modal_mass: &[f64]) ->
 
 /// The root f in [0, f_max] of f = 𝓕(f), for a force 𝓕 that does not grow
 /// with f and 𝓕(0) = f_max ≥ 0 (the tool: its force pushes the plate away
-/// and so thins its own chip). Illinois false position, bracketed, to
-/// 1e-13 of f_max.
-pub fn solve_monotone(f_max: f64, law: impl Fn(f64) -> f64) -> f64 {
+/// and so thins its own chip). `law(f)` gives 𝓕(f) and its slope 𝓕′(f) ≤ 0.
+/// Newton's method on φ(f) = f − 𝓕(f) (φ′ = 1 − 𝓕′ ≥ 1) from f_max down,
+/// kept inside the bracket [lo, hi] of the root (bisection when a step leaves
+/// it), to 1e-13 of f_max: about four evaluations where the chip law is
+/// smooth, instead of a dozen by false position.
+pub fn solve_monotone(f_max: f64, law: impl Fn(f64) -> (f64, f64)) -> f64 {
     if f_max <= 0.0 || !f_max.is_finite() {
         return f_max.max(0.0);
     }
-    let phi = |f: f64| f - law(f);
+    let tolerance = 1e-13 * f_max;
     let (mut lo, mut hi) = (0.0, f_max);
-    let (mut phi_lo, mut phi_hi) = (-f_max, phi(f_max));
-    if phi_hi <= 0.0 {
-        return f_max;
-    }
-    let mut side = 0i8;
+    let mut f = f_max;
     for _ in 0..200 {
-        if hi - lo <= 1e-13 * f_max {
-            break;
+        let (force, slope) = law(f);
+        let phi = f - force;
+        if phi == 0.0 {
+            return f;
         }
-        let x = (lo * phi_hi - hi * phi_lo) / (phi_hi - phi_lo);
-        let x = if x > lo && x < hi { x } else { 0.5 * (lo + hi) };
-        let p = phi(x);
-        if p == 0.0 {
-            return x;
-        }
-        if p < 0.0 {
-            lo = x;
-            phi_lo = p;
-            if side == -1 {
-                phi_hi *= 0.5;
-            }
-            side = -1;
+        if phi < 0.0 {
+            lo = f;
         } else {
-            hi = x;
-            phi_hi = p;
-            if side == 1 {
-                phi_lo *= 0.5;
-            }
-            side = 1;
+            hi = f;
         }
+        let newton = f - phi / (1.0 - slope.min(0.0));
+        let next = if newton > lo && newton < hi { newton } else { 0.5 * (lo + hi) };
+        if (next - f).abs() <= tolerance || hi - lo <= tolerance {
+            return next;
+        }
+        f = next;
     }
-    0.5 * (lo + hi)
+    f
 }
 
 /// The residual deflection of the held (user) wrenches at a node frame.
@@ -361,8 +352,15 @@ mod tests {
         // 𝓕(f) = a (c − g f)^0.3, the tool's law: f = 𝓕(f).
         let (a, c, g) = (2.0e3, 1e-4, 1e-8);
         let law = |f: f64| if c - g * f > 0.0 { a * (c - g * f).powf(0.3) } else { 0.0 };
-        let f = solve_monotone(law(0.0), law);
-        assert!((f - law(f)).abs() < 1e-10 * f, "{f} vs {}", law(f));
+        let with_slope = |f: f64| {
+            let chip = c - g * f;
+            if chip > 0.0 { (law(f), -0.3 * law(f) / chip * g) } else { (0.0, 0.0) }
+        };
+        let f = solve_monotone(law(0.0), with_slope);
+        assert!((f - law(f)).abs() < 1e-12 * f, "{f} vs {}", law(f));
         assert!(f < law(0.0));
+        // A wrong (zero) slope still converges, by bisection: the bracket holds.
+        let f0 = solve_monotone(law(0.0), |f| (law(f), 0.0));
+        assert!((f0 - f).abs() < 1e-12 * f, "{f0} vs {f}");
     }
 }

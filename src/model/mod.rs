@@ -12,6 +12,7 @@ pub mod campbell;
 mod build;
 pub mod bspline;
 pub mod eigen;
+pub mod fft;
 pub mod lanczos;
 mod error;
 pub mod modes;

@@ -100,9 +100,10 @@ impl ResidualKernel {
     /// Δφ = 0 the value is `at(0)`, the zeta tail), for the whole grid at
     /// once. On the grid cos kΔφ_j and sin kΔφ_j depend on k only modulo 2M
     /// (cos (2M − m)Δφ_j = cos mΔφ_j, sin (2M − m)Δφ_j = −sin mΔφ_j), so the
-    /// terms fold onto m = 0..=M first and each grid value is a sum of M + 1
-    /// products with tabulated cosines and sines: O(M²) rather than O(M · N)
-    /// for the N = 8 (K + 1) terms of the tail.
+    /// terms fold onto m = 0..=M first; the folded cosine and sine series on
+    /// the grid are a DCT-I and a DST-I, by FFT for M a power of two
+    /// (`model::fft`, O(M log M)), else summed directly (O(M²)) — rather
+    /// than O(M · N) for the N = 8 (K + 1) terms of the tail.
     pub fn on_grid(&self, intervals: usize) -> (Vec<f64>, Vec<f64>) {
         let m_max = intervals;
         let period = 2 * m_max;
@@ -117,23 +118,13 @@ impl ResidualKernel {
                 sin_fold[period - r] -= k as f64 * t;
             }
         }
-        let step = std::f64::consts::PI / m_max as f64;
-        let (cos_table, sin_table): (Vec<f64>, Vec<f64>) = (0..period).map(|i| (i as f64 * step).sin_cos()).map(|(s, c)| (c, s)).unzip();
-        let mut values = Vec::with_capacity(m_max + 1);
-        let mut slopes = Vec::with_capacity(m_max + 1);
-        for j in 0..=m_max {
-            let (mut c, mut d, mut index) = (0.0, 0.0, 0);
-            for (a, b) in cos_fold.iter().zip(&sin_fold) {
-                c += a * cos_table[index];
-                d += b * sin_table[index];
-                index += j;
-                if index >= period {
-                    index -= period;
-                }
-            }
-            values.push(if j == 0 { self.at(0.0) } else { c });
-            slopes.push(-d);
-        }
+        let (mut values, slopes) = if m_max.is_power_of_two() {
+            super::fft::cosine_sine_on_grid(&cos_fold, &sin_fold)
+        } else {
+            folded_sums(&cos_fold, &sin_fold)
+        };
+        values[0] = self.at(0.0);
+        let slopes = slopes.into_iter().map(|d| -d).collect();
         (values, slopes)
     }
 
@@ -160,6 +151,30 @@ impl ResidualKernel {
             (None, None) => 0.0,
         }
     }
+}
+
+/// Σ_m a_m cos(π m j/M) and Σ_m b_m sin(π m j/M), j = 0..=M, summed
+/// directly (M not a power of two: no FFT), O(M²).
+fn folded_sums(a: &[f64], b: &[f64]) -> (Vec<f64>, Vec<f64>) {
+    let m_max = a.len() - 1;
+    let period = 2 * m_max;
+    let step = std::f64::consts::PI / m_max as f64;
+    let (cos_table, sin_table): (Vec<f64>, Vec<f64>) = (0..period).map(|i| (i as f64 * step).sin_cos()).map(|(s, c)| (c, s)).unzip();
+    let (mut values, mut slopes) = (Vec::with_capacity(m_max + 1), Vec::with_capacity(m_max + 1));
+    for j in 0..=m_max {
+        let (mut c, mut d, mut index) = (0.0, 0.0, 0);
+        for (x, y) in a.iter().zip(b) {
+            c += x * cos_table[index];
+            d += y * sin_table[index];
+            index += j;
+            if index >= period {
+                index -= period;
+            }
+        }
+        values.push(c);
+        slopes.push(d);
+    }
+    (values, slopes)
 }
 
 /// Σ_{k<n} c(k) cos kx by the recurrence cos (k+1)x = 2 cos x cos kx − cos (k−1)x
@@ -485,10 +500,10 @@ mod tests {
     #[test]
     fn the_grid_evaluation_equals_the_clenshaw_sums_at_every_grid_point() {
         // Both ways sum the same 8 × 65 terms: they differ by round-off only.
+        // M = 128 by FFT, M = 96 summed directly.
         let coefficients: Vec<f64> = (0..=64).map(|k| 1.0 / (1.0 + k as f64).powi(3)).collect();
-        for tail_fit in [Some((1.0, 0.5)), None] {
+        for (tail_fit, m) in [(Some((1.0, 0.5)), 96), (None, 96), (Some((1.0, 0.5)), 128), (None, 128)] {
             let kernel = ResidualKernel { coefficients: coefficients.clone(), tail_fit };
-            let m = 96;
             let (values, slopes) = kernel.on_grid(m);
             assert_eq!((values.len(), slopes.len()), (m + 1, m + 1));
             assert_eq!(values[0], kernel.at(0.0));

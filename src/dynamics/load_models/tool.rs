@@ -73,6 +73,8 @@ pub struct Tool {
     /// g, the residual compliance at the tool's node (m/N): the cut in series
     /// with it (`plate.residual_flexibility`; None: on the modal deflection).
     pub series: Option<f64>,
+    /// (1 mm)^m_f of eq. (21), computed once ([`Tool::reference_factor`]).
+    pub reference_factor: f64,
 }
 
 /// The tool's slot in the [`State`](crate::dynamics::State) (so reset and
@@ -90,6 +92,14 @@ pub const FORCE: usize = 3;
 const HELD: usize = 4;
 /// Shoulder height S of bin b at `SURFACE + b`, m.
 pub const SURFACE: usize = 10;
+
+/// The surface bins one substep sweeps: the first, how many, and the direction.
+#[derive(Debug, Clone, Copy)]
+struct Sweep {
+    first_bin: i64,
+    bins: i64,
+    downwards: bool,
+}
 
 /// What one substep cuts, computed at its start.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -149,6 +159,7 @@ pub fn build(config: &Config, nodes: &SceneNodes) -> Option<Box<dyn LoadModel>> 
         start_height: 0.5 * config.plate.thickness + t.start_clearance,
         initial_feed_rate: t.feed_rate,
         series: nodes.residual.map(|r| r.between(t.node, t.node, 0.0)),
+        reference_factor: Tool::reference_factor(t.force_exponent),
     }))
 }
 
@@ -180,9 +191,7 @@ impl LoadModel for Tool {
             Some(g) => {
                 // w_free: without the tool's own force; its force pushes −z.
                 let w_free = w + ctx.held.map_or(0.0, |d| d.at(self.node, ctx.chi));
-                let free = self.begin(slot, w_free, ctx.chi, ctx.speed, h).force;
-                let f = solve_monotone(free, |f| self.begin(slot, w_free - g * f, ctx.chi, ctx.speed, h).force);
-                self.begin(slot, w_free - g * f, ctx.chi, ctx.speed, h)
+                self.cut_in_series(slot, &self.sweep(ctx.chi, ctx.speed, h), w_free, g)
             }
         };
         step.store(slot);
@@ -226,7 +235,12 @@ impl Tool {
         if chip <= 0.0 {
             return 0.0;
         }
-        self.specific_force * self.depth_of_cut * chip.powf(1.0 - self.force_exponent) * REFERENCE_CHIP.powf(self.force_exponent)
+        self.specific_force * self.depth_of_cut * chip.powf(1.0 - self.force_exponent) * self.reference_factor
+    }
+
+    /// (1 mm)^m_f, eq. (21)'s unit conversion, m^m_f.
+    pub fn reference_factor(force_exponent: f64) -> f64 {
+        REFERENCE_CHIP.powf(force_exponent)
     }
 
     /// z of the tool tip, m.
@@ -237,6 +251,12 @@ impl Tool {
     /// The cut of a substep of length h starting at joint angle χ (wrapped, rad)
     /// and speed Ω, with deflection w under the tool.
     pub fn begin(&self, slot: &[f64], w: f64, chi: f64, speed: f64, h: f64) -> ToolStep {
+        self.cut(slot, &self.sweep(chi, speed, h), w)
+    }
+
+    /// The bins a substep of length h starting at χ with speed Ω sweeps
+    /// (whatever the deflection).
+    fn sweep(&self, chi: f64, speed: f64, h: f64) -> Sweep {
         let n = SURFACE_BINS as i64;
         let width = std::f64::consts::TAU / SURFACE_BINS as f64;
         let phi0 = (self.angle - chi).rem_euclid(std::f64::consts::TAU);
@@ -251,16 +271,49 @@ impl Tool {
             let hi = ((phi0 - sweep) / width - 0.5).ceil() as i64 - 1;
             (lo, (hi - lo + 1).min(n), false)
         };
+        Sweep { first_bin, bins, downwards }
+    }
+
+    /// Slot indices of the bins the chip is read from: those swept, or the
+    /// bin ahead when no centre is passed (a step shorter than a bin).
+    fn read_entries(sweep: &Sweep) -> impl Iterator<Item = usize> + '_ {
+        let n = SURFACE_BINS as i64;
+        let b = move |j: i64| SURFACE + if sweep.downwards { sweep.first_bin - j } else { sweep.first_bin + j }.rem_euclid(n) as usize;
+        (0..sweep.bins.max(1)).map(b)
+    }
+
+    /// The cut of `sweep` with deflection w under the tool.
+    fn cut(&self, slot: &[f64], sweep: &Sweep, w: f64) -> ToolStep {
         let level = (Self::tip(slot) - w).max(-0.5 * self.thickness);
-        // No centre passed (a step shorter than a bin): read the bin ahead.
-        let read = bins.max(1);
-        let mut chip = 0.0;
-        for j in 0..read {
-            let b = if downwards { first_bin - j } else { first_bin + j }.rem_euclid(n) as usize;
-            chip += (slot[SURFACE + b] - level).max(0.0);
-        }
-        chip /= read as f64;
+        let read = sweep.bins.max(1);
+        let chip = Self::read_entries(sweep).map(|i| (slot[i] - level).max(0.0)).sum::<f64>() / read as f64;
+        let Sweep { first_bin, bins, downwards } = *sweep;
         ToolStep { force: self.feed_force(chip), chip, level, first_bin, bins: bins.max(0), downwards }
+    }
+
+    /// The cut of `sweep` in series with the residual compliance g: the force
+    /// f = 𝓕(chip(w_free − g f)) ([`solve_monotone`]). The root itself is
+    /// the force held: 𝓕 re-evaluated there can differ by far more than the
+    /// tolerance where the chip vanishes (𝓕 ∝ h^(1−m_f) is vertical at h = 0).
+    fn cut_in_series(&self, slot: &[f64], sweep: &Sweep, w_free: f64, g: f64) -> ToolStep {
+        let free = self.cut(slot, sweep, w_free).force;
+        let f = solve_monotone(free, |f| {
+            let step = self.cut(slot, sweep, w_free - g * f);
+            (step.force, -g * self.force_slope(slot, sweep, &step))
+        });
+        ToolStep { force: f, ..self.cut(slot, sweep, w_free - g * f) }
+    }
+
+    /// d f_f / d w of `step` (the cut of `sweep`), N/m: raising the plate
+    /// under the tool lowers the cut level and so thickens the chip where the
+    /// shoulder is above it — f_f = A h^(1−m_f), dh/dw = (bins above the
+    /// level)/(bins read); zero where the level is held at the −z face.
+    fn force_slope(&self, slot: &[f64], sweep: &Sweep, step: &ToolStep) -> f64 {
+        if step.chip <= 0.0 || step.level <= -0.5 * self.thickness {
+            return 0.0;
+        }
+        let above = Self::read_entries(sweep).filter(|&i| slot[i] > step.level).count();
+        (1.0 - self.force_exponent) * step.force / step.chip * above as f64 / sweep.bins.max(1) as f64
     }
 
     /// Cut the swept bins, move the holder by −v_f h and relax the tip under the held force.
@@ -298,6 +351,7 @@ mod tests {
             start_height: 0.005,
             initial_feed_rate: 0.0,
             series: None,
+            reference_factor: Tool::reference_factor(0.7013),
         }
     }
 
@@ -308,6 +362,30 @@ mod tests {
         let expected = 2.0 * 1.131f64.powf(1.0 - 0.7013) * 351.0;
         assert!((f - expected).abs() < 1e-9 * expected, "{f} vs {expected}");
         assert_eq!(tool().feed_force(0.0), 0.0);
+    }
+
+    #[test]
+    fn the_cut_in_series_holds_the_fixed_point_of_eq_21() {
+        // Shoulder S = h/2 everywhere, tip 20 µm into it: chip(f) = 2e-5 − g f.
+        let t = tool();
+        let mut slot = t.initial_state();
+        slot[HOLDER] = 0.005 - 2e-5;
+        let sweep = t.sweep(0.0, 10.0, 1e-3);
+        let g = 1e-9;
+        let step = t.cut_in_series(&slot, &sweep, 0.0, g);
+        // The root by bisection, written out here.
+        let (mut lo, mut hi) = (0.0, t.feed_force(2e-5));
+        for _ in 0..200 {
+            let mid = 0.5 * (lo + hi);
+            if mid < t.feed_force(2e-5 - g * mid) { lo = mid } else { hi = mid }
+        }
+        assert!((step.force - lo).abs() < 1e-12 * lo, "{} vs {lo}", step.force);
+        assert!((step.chip - (2e-5 - g * step.force)).abs() < 1e-18);
+        // The chip a hair above the surface (the cut's first touch): the
+        // force cannot exceed the one that closes the chip, 1e-19/g.
+        slot[HOLDER] = 0.005 - 1e-19;
+        let touch = t.cut_in_series(&slot, &sweep, 0.0, g);
+        assert!(touch.force <= 1e-19 / g * (1.0 + 1e-9) && touch.force >= 0.0, "{}", touch.force);
     }
 
     #[test]
