@@ -43,14 +43,20 @@ pub fn rotate_pairs(layout: &ModeLayout, harm: &[(f64, f64)], x: &mut [f64], to_
 }
 
 /// Lagrangian (q, q̇) → ALE (q̄, q̄̇) at angle χ and speed Ω, in place.
+/// One pass over the pairs (the same operations, in the same order, as
+/// rotating q, then q̇, then adding kΩ J q̄).
 pub fn lagrange_to_ale(layout: &ModeLayout, harm: &[(f64, f64)], speed: f64, q: &mut [f64], q_dot: &mut [f64]) {
-    rotate_pairs(layout, harm, q, true);
-    rotate_pairs(layout, harm, q_dot, true);
     for p in &layout.pairs {
+        let (c, s) = harm[p.k as usize];
+        let (qc, qs) = (q[p.cos], q[p.sin]);
+        let (bar_c, bar_s) = (c * qc - s * qs, s * qc + c * qs);
+        let (vc, vs) = (q_dot[p.cos], q_dot[p.sin]);
         let w = p.k as f64 * speed;
-        // q̄̇ += kΩ J q̄
-        q_dot[p.cos] -= w * q[p.sin];
-        q_dot[p.sin] += w * q[p.cos];
+        // q̄̇ = R q̇ + kΩ J q̄
+        q_dot[p.cos] = (c * vc - s * vs) - w * bar_s;
+        q_dot[p.sin] = (s * vc + c * vs) + w * bar_c;
+        q[p.cos] = bar_c;
+        q[p.sin] = bar_s;
     }
 }
 
