@@ -396,5 +396,38 @@ fn the_shipped_squeal_scene_thresholds_with_pad_mass() {
             let mu = mu.unwrap();
             assert!((mu - target).abs() < 1e-3 * target, "{mu} vs massless {target}");
         }
+        // The 18 points round the whole disc: Σ_c w_c = 0 for every k ≥ 1 mode,
+        // so a rigid pad's axial motion is not excited and the mass has no effect.
+        assert!((mu.unwrap() - target).abs() < 1e-9 * target, "{mu:?} vs massless {target}");
+    }
+    // The same pad data on a 60° arc (the 18 points at the centres of equal
+    // sub-arcs about θ = 0): there the pad's axial motion couples.
+    for (caliper, backing) in [(Caliper::Floating, None), (Caliper::Fixed, Some(2.0e8))] {
+        let mut arc = c.clone();
+        for (i, node) in arc.nodes.ale.iter_mut().enumerate() {
+            node.angular = ((i as f64 + 0.5) / 18.0 - 0.5) * 60.0 / 360.0;
+        }
+        arc.pads.as_mut().unwrap().caliper = caliper;
+        let clamp = arc.pads.as_ref().unwrap().clamp_force.clone();
+        let mut massless_mu = None;
+        for mass in [0.0, 1e-4, 0.1, 0.2, 0.3, 0.5, 1.0] {
+            let mut m = arc.clone();
+            m.pads.as_mut().unwrap().mass = mass;
+            m.pads.as_mut().unwrap().backing_stiffness = if mass > 0.0 { backing } else { None };
+            let sim = Simulation::new(m).unwrap();
+            let mu = stability::friction_threshold(sim.scene(), speed, 5.0);
+            let f = mu.map(|mu| stability::critical_mode(sim.scene(), speed, mu, &clamp).eigenvalue.im / std::f64::consts::TAU);
+            println!("60° arc, {caliper:?} (k_b {backing:?}), m_p = {mass} kg: μ_c = {mu:?}, {f:?} Hz");
+            if mass == 0.0 {
+                massless_mu = mu;
+            }
+            if mass == 1e-4 && caliper == Caliper::Floating {
+                match (mu, massless_mu) {
+                    (Some(mu), Some(target)) => assert!((mu - target).abs() < 1e-3 * target, "{mu} vs massless {target}"),
+                    (None, None) => {}
+                    other => panic!("m_p → 0 does not give the massless floating caliper: {other:?}"),
+                }
+            }
+        }
     }
 }

@@ -49,6 +49,10 @@
 //! in-plane velocity turns the sliding direction (docs/scenes.md). The default
 //! `mid_plane` is the paper's model described above.
 //!
+//! With `pads.mass` > 0 each face's pad is a rigid mass whose compression of
+//! its springs is state (`pad_mass.rs`): u then comes from the pad's motion,
+//! not from the balance above.
+//!
 //! Why the floating caliper is the default: with a fixed caliper and
 //! lift-off, a face that lifts leaves the other one pressed harder —
 //! N_t + N_b = k_c (δ₀ + |w|) once |w| > δ₀ — so friction, and the energy the
