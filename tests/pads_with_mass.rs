@@ -431,3 +431,31 @@ fn the_shipped_squeal_scene_thresholds_with_pad_mass() {
         }
     }
 }
+
+/// `simulate` writes the massive pads' compressions (m), x₀ = N₀/(n k_c) at
+/// rest, and no such columns for massless pads.
+#[test]
+fn simulate_writes_the_massive_pads_compressions() {
+    let run = |extra: &[&str]| {
+        let out = std::process::Command::new(env!("CARGO_BIN_EXE_annular_plate"))
+            .arg("simulate")
+            .arg(support::scene_files::path("brake_squeal.yaml"))
+            .args(["--duration", "0", "--csv", "-", "--quiet", "-p", "plate.residual_flexibility:=false"])
+            .args(extra)
+            .output()
+            .unwrap();
+        assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+        String::from_utf8(out.stdout).unwrap()
+    };
+    let text = run(&["-p", "pads.mass:=0.3"]);
+    let mut lines = text.lines();
+    let header: Vec<&str> = lines.next().unwrap().split(',').collect();
+    let row: Vec<f64> = lines.next().unwrap().split(',').map(|v| v.parse().unwrap()).collect();
+    let x0 = 5000.0 / (18.0 * 2.78e6);
+    for name in ["pad1_top_compression", "pad1_bottom_compression"] {
+        let i = header.iter().position(|h| *h == name).unwrap_or_else(|| panic!("no {name} in {header:?}"));
+        assert_eq!(annular_plate::cli::simulate::column_unit(name), Some("m"));
+        assert!((row[i] - x0).abs() < 1e-15, "{name} = {} vs x₀ = {x0}", row[i]);
+    }
+    assert!(!run(&[]).lines().next().unwrap().contains("compression"));
+}
