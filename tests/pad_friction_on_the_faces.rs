@@ -42,6 +42,8 @@ fn scene(surface: ContactSurface, mu: f64) -> Config {
         contact_surface: surface,
         static_friction_coefficient: None,
         stribeck_speed: 1.0,
+        mass: 0.0,
+        backing_stiffness: None,
     });
     c.simulation.integrator = IntegratorKind::Rk4;
     c.simulation.rk4_step_limit = 0.05;

@@ -69,3 +69,48 @@ fn stepping_with_changing_inputs_allocates_nothing() {
         }
     }
 }
+
+/// Massive pads (`pads.mass`): their states ride in RK4's state vector and the
+/// stage slots are scratch, so stepping still allocates nothing.
+#[test]
+fn stepping_with_massive_pads_allocates_nothing() {
+    use annular_plate::config::{Caliper, PadContact, PadsConfig, ContactSurface};
+    for (caliper, backing) in [(Caliper::Floating, None), (Caliper::Fixed, Some(3.0e7))] {
+        for coords in [Coordinates::Ale, Coordinates::Lagrangian] {
+            let mut c = Config::default();
+            c.plate.damping = vec![0.02];
+            c.plate.residual_flexibility = false;
+            c.joint.speed = 20.0;
+            c.simulation.integrator = IntegratorKind::Rk4;
+            c.simulation.coordinates = coords;
+            c.simulation.rate_hz = 10_000.0;
+            c.nodes.ale.push(NodePosition { radial: 0.6, angular: 0.0 });
+            c.nodes.ale.push(NodePosition { radial: 0.6, angular: 0.2 });
+            c.pads = Some(PadsConfig {
+                contacts: vec![PadContact { node: 0, pad: 0 }, PadContact { node: 1, pad: 0 }],
+                clamp_force: vec![1000.0],
+                contact_stiffness: 2.0e7,
+                contact_damping: 50.0,
+                friction_coefficient: 0.4,
+                lift_off: true,
+                follower_friction: true,
+                caliper,
+                contact_surface: ContactSurface::Faces,
+                static_friction_coefficient: None,
+                stribeck_speed: 1.0,
+                mass: 0.3,
+                backing_stiffness: backing,
+            });
+            let mut sim = Simulation::new(c).unwrap();
+            sim.step().unwrap();
+            let before = allocations();
+            for _ in 0..200 {
+                sim.step().unwrap();
+                std::hint::black_box((sim.q_ale()[0], sim.joint()));
+            }
+            let after = allocations();
+            assert_eq!(after - before, 0, "{caliper:?}/{coords:?}: allocated {} times in 200 steps", after - before);
+            assert!(sim.state().load_models.slots[0].iter().any(|&v| v != 0.0), "the pads' states are in the state");
+        }
+    }
+}

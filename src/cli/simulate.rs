@@ -4,7 +4,8 @@
 //! Columns: time, joint_position, joint_velocity, q1..qN (Lagrangian, mode
 //! order of `modes`), qale1..qaleN, ale{j}_uz, lagrange{j}_uz (m); then, only
 //! for scenes with load models (docs/scenes.md): joint_effort (N·m) and
-//! pad{p}_clamp_force, pad{p}_normal_force, pad{p}_friction_torque (N, N, N·m);
+//! pad{p}_clamp_force, pad{p}_normal_force, pad{p}_friction_torque (N, N, N·m)
+//! and with `pads.mass` pad{p}_top_compression, pad{p}_bottom_compression (m);
 //! tool_tip_z, tool_chip_thickness (m), tool_feed_force (N);
 //! link{j}_force (N).
 
@@ -27,6 +28,9 @@ pub fn header(sim: &Simulation) -> String {
     }
     for p in 1..=sim.pad_count() {
         cols.extend([format!("pad{p}_clamp_force"), format!("pad{p}_normal_force"), format!("pad{p}_friction_torque")]);
+        if sim.pad_compression(p - 1).is_some() {
+            cols.extend([format!("pad{p}_top_compression"), format!("pad{p}_bottom_compression")]);
+        }
     }
     if sim.has_tool() {
         cols.extend(["tool_tip_z".into(), "tool_chip_thickness".into(), "tool_feed_force".into()]);
@@ -53,6 +57,7 @@ pub fn column_unit(name: &str) -> Option<&'static str> {
         _ if numbered("q", "") || numbered("qale", "") || numbered("ale", "_uz") || numbered("lagrange", "_uz") => "m",
         _ if numbered("pad", "_clamp_force") || numbered("pad", "_normal_force") || numbered("link", "_force") => "N",
         _ if numbered("pad", "_friction_torque") => "N·m",
+        _ if numbered("pad", "_top_compression") || numbered("pad", "_bottom_compression") => "m",
         _ => return None,
     })
 }
@@ -105,6 +110,9 @@ impl RowWriter {
         for p in 0..sim.pad_count() {
             let o = sim.pad_output(p);
             for v in [o.clamp_force, o.normal_force, o.friction_torque] {
+                self.exp(v);
+            }
+            for v in sim.pad_compression(p).into_iter().flatten() {
                 self.exp(v);
             }
         }

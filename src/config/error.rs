@@ -172,6 +172,9 @@ pub enum ConfigError {
     #[error("pads.static_friction_coefficient is given but pads.contact_surface is mid_plane: the speed-dependent μ(v) needs the sliding velocity of the faces; set pads.contact_surface: faces or remove it")]
     StaticFrictionNeedsFaces,
 
+    #[error("{rule}")]
+    PadMass { rule: &'static str },
+
     #[error("tool.ale_node = {node} is at ξ_r = {radial} (nodes.ale_radial[{}]); the tool cuts the rim, so its ALE node must be at ξ_r = 1", node - 1)]
     ToolNotOnRim { node: usize, radial: f64 },
 

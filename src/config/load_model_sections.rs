@@ -144,6 +144,12 @@ fn read_pad_data(r: &Reader, limits: &LimitsConfig, contacts: Vec<PadContact>, p
         Some(_) if contact_surface == ContactSurface::MidPlane => return Err(ConfigError::StaticFrictionNeedsFaces),
         Some(x) => Some(at_most("pads.static_friction_coefficient", non_negative("pads.static_friction_coefficient", x)?, MAX_FRICTION_COEFFICIENT)?),
     };
+    let caliper = read_choice(r, "pads.caliper", "floating", CALIPERS, |s| match s {
+        "floating" => Some(Caliper::Floating),
+        "fixed" => Some(Caliper::Fixed),
+        _ => None,
+    })?;
+    let (mass, backing_stiffness) = read_pad_mass(r, caliper)?;
     Ok(Some(PadsConfig {
         contacts,
         clamp_force,
@@ -152,15 +158,29 @@ fn read_pad_data(r: &Reader, limits: &LimitsConfig, contacts: Vec<PadContact>, p
         friction_coefficient,
         lift_off: r.bool("pads.lift_off", false)?,
         follower_friction: r.bool("pads.follower_friction", true)?,
-        caliper: read_choice(r, "pads.caliper", "floating", CALIPERS, |s| match s {
-            "floating" => Some(Caliper::Floating),
-            "fixed" => Some(Caliper::Fixed),
-            _ => None,
-        })?,
+        caliper,
         contact_surface,
         static_friction_coefficient,
         stribeck_speed: r.positive("pads.stribeck_speed", DEFAULT_STRIBECK_SPEED)?,
+        mass,
+        backing_stiffness,
     }))
+}
+
+/// `pads.mass` (≥ 0) and `pads.backing_stiffness` (> 0; given exactly when
+/// the pads have mass and the caliper is fixed).
+fn read_pad_mass(r: &Reader, caliper: Caliper) -> Result<(f64, Option<f64>), ConfigError> {
+    let mass = non_negative("pads.mass", r.f64("pads.mass", 0.0)?)?;
+    let backing = match r.f64_opt("pads.backing_stiffness")? {
+        Some(k) => Some(super::raw::positive("pads.backing_stiffness", k)?),
+        None => None,
+    };
+    match (mass > 0.0, caliper, backing) {
+        (true, Caliper::Fixed, None) => Err(ConfigError::PadMass { rule: "pads.backing_stiffness must be given with pads.mass > 0 and pads.caliper: fixed (the stiffness that holds each pad to the caliper)" }),
+        (true, Caliper::Floating, Some(_)) => Err(ConfigError::PadMass { rule: "pads.backing_stiffness applies to pads.caliper: fixed only (a floating caliper presses each pad with the clamp force)" }),
+        (false, _, Some(_)) => Err(ConfigError::PadMass { rule: "pads.backing_stiffness needs pads.mass > 0 (massless pads have no backing spring)" }),
+        _ => Ok((mass, backing)),
+    }
 }
 
 pub(super) fn read_tool(r: &Reader, plate: &PlateConfig, nodes: &NodesConfig) -> Result<Option<ToolConfig>, ConfigError> {

@@ -79,6 +79,10 @@ pub struct PadsConfig {
     pub static_friction_coefficient: Option<f64>,
     /// v_S of that law, m/s (`pads.stribeck_speed`).
     pub stribeck_speed: f64,
+    /// Mass of each face's pad, kg (`pads.mass`; 0: massless pads).
+    pub mass: f64,
+    /// k_b behind a fixed caliper's massive pad, N/m (`pads.backing_stiffness`).
+    pub backing_stiffness: Option<f64>,
 }
 
 impl PadsConfig {

@@ -42,6 +42,9 @@ pub enum SimulationError {
     /// A load model with stiff contacts whose forces an integrator would hold over a substep.
     #[error("the {model} ({keys}) couple the modes at rates up to {rate:.0} 1/s, but simulation.integrator = {integrator} holds their forces over a substep of {step:e} s (h × rate = {:.2} > {limit}): use simulation.integrator: rk4, which evaluates the {model} at every stage, or raise simulation.rate_hz / simulation.substeps", step * rate)]
     ModelTooStiffForIntegrator { model: &'static str, keys: &'static str, integrator: &'static str, rate: f64, step: f64, limit: f64 },
+    /// A load model with state of its own that evolves with the modes (massive pads).
+    #[error("the {model} have state of their own ({keys}) that only simulation.integrator: rk4 integrates with the modes; simulation.integrator = {integrator} is refused")]
+    ContinuousStateNeedsRk4 { model: &'static str, keys: &'static str, integrator: &'static str },
 }
 
 /// An input refused before it reached the state. The state and every other

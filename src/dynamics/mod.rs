@@ -25,6 +25,7 @@ pub mod scene;
 pub mod simulation;
 pub mod stability;
 pub mod stability_map;
+pub mod stability_pads;
 pub mod state;
 pub mod stiffening;
 pub mod stepper;

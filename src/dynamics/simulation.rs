@@ -299,6 +299,15 @@ impl Simulation {
         out
     }
 
+    /// With massive pads (`pads.mass`): the compressions x of pad `pad`'s
+    /// contact springs by its top and bottom face's pad, m (x₀ = N₀/(n k_c)
+    /// at rest); `None` for massless pads.
+    pub fn pad_compression(&self, pad: usize) -> Option<[f64; 2]> {
+        let (model, p) = self.pads()?;
+        let slot = &self.state.load_models.slots[model];
+        (p.is_massive() && pad < p.pad_count()).then(|| [slot[2 * pad], slot[2 * pad + 1]])
+    }
+
     /// Forces at every pad contact point (order of `pads.ale_nodes`) at the current state.
     pub fn pad_contact_forces(&self) -> &[ContactForces] {
         self.pads().and_then(|(i, _)| self.model_outputs.scratch::<PadScratch>(i)).map_or(&[], |s| &s.forces)

@@ -54,10 +54,13 @@ use faer::Mat;
 use nalgebra::Complex;
 
 /// The matrix A of ẏ = A y, y = (q̄, q̄̇), at speed Ω with friction
-/// coefficient μ and pad clamp forces `clamp_force` (one per pad).
+/// coefficient μ and pad clamp forces `clamp_force` (one per pad). With
+/// massive pads (`pads.mass`) y = (q̄, q̄̇, ξ, ξ̇): ξ the pads' compressions
+/// from rest, per pad (top, bottom) as in their slot ([`pad_dofs`]).
 pub fn linear_system(scene: &Scene, speed: f64, friction_coefficient: f64, clamp_force: &[f64]) -> Mat<f64> {
     let n = scene.n_modes();
-    let mut a = Mat::<f64>::zeros(2 * n, 2 * n);
+    let extra = pad_dofs(scene);
+    let mut a = Mat::<f64>::zeros(2 * n + 2 * extra, 2 * n + 2 * extra);
     for i in 0..n {
         a[(i, n + i)] = 1.0;
     }
@@ -89,7 +92,7 @@ pub fn linear_system(scene: &Scene, speed: f64, friction_coefficient: f64, clamp
         // Per pad the mean shape over its contacts: a floating caliper's pads
         // follow it, so its springs see w − w̄ (docs/scenes.md).
         let mut mean = vec![vec![0.0; n]; pads.pad_count()];
-        if pads.caliper == Caliper::Floating {
+        if pads.caliper == Caliper::Floating && !pads.is_massive() {
             for c in &pads.contacts {
                 let share = 1.0 / pads.contacts_per_pad[c.pad] as f64;
                 for (m, s) in mean[c.pad].iter_mut().zip(&scene.ale_nodes[c.node].shapes) {
@@ -141,9 +144,31 @@ pub fn linear_system(scene: &Scene, speed: f64, friction_coefficient: f64, clamp
                 let rows = series.as_ref().map(|(fq, fqd)| (&fq[ci * n..(ci + 1) * n], &fqd[ci * n..(ci + 1) * n]));
                 add_face_terms(&mut a, scene, pads, contact, mean, preload, speed, friction_coefficient, rows);
             }
+            if pads.is_massive() {
+                let couple = match pads.contact_surface {
+                    ContactSurface::Faces => face_couple(pads, contact, speed, friction_coefficient),
+                    ContactSurface::MidPlane => 0.0,
+                };
+                super::stability_pads::add_pad_terms(&mut a, scene, pads, contact, couple);
+            }
+        }
+        if pads.is_massive() {
+            super::stability_pads::add_pad_identity(&mut a, n, pads);
         }
     }
     a
+}
+
+/// Generalised coordinates the massive pads add (2 per pad: top, bottom); 0 for massless pads.
+pub fn pad_dofs(scene: &Scene) -> usize {
+    scene.load_models.find::<Pads>().map_or(0, |(_, p)| p.pad_states() / 2)
+}
+
+/// h μ(V) tanh(V/v_reg): the faces' couple per unit (δN_t − δN_b)/2 (see [`add_face_terms`]).
+fn face_couple(pads: &Pads, contact: &PadContactPoint, speed: f64, mu: f64) -> f64 {
+    let v = speed * contact.radius;
+    let h = contact.face_z[0] - contact.face_z[1];
+    h * pads.friction_law(mu).mu(v.abs()) * (v / FRICTION_REGULARISATION_SPEED).tanh()
 }
 
 /// The face friction's first-order terms of one contact (module docs) into
@@ -199,13 +224,23 @@ fn balanced_system(scene: &Scene, speed: f64, friction_coefficient: f64, clamp_f
     let mut a = linear_system(scene, speed, friction_coefficient, clamp_force);
     let n = scene.n_modes();
     let s = (0..n).map(|i| a[(n + i, i)].abs()).fold(1.0, f64::max).sqrt();
-    for r in 0..n {
-        for c in 0..n {
-            a[(r, n + c)] *= s;
-            a[(n + r, c)] /= s;
+    let len = a.nrows();
+    let position = |r: usize| is_position(r, n, len);
+    for r in 0..len {
+        for c in 0..len {
+            match (position(r), position(c)) {
+                (true, false) => a[(r, c)] *= s,
+                (false, true) => a[(r, c)] /= s,
+                _ => {}
+            }
         }
     }
     (a, s)
+}
+
+/// Whether entry `r` of y = (q̄, q̄̇, ξ, ξ̇) (length `len`, n modes) is a position.
+fn is_position(r: usize, n: usize, len: usize) -> bool {
+    r < n || (r >= 2 * n && r < n + len / 2)
 }
 
 /// Eigenvalues of [`linear_system`], largest real part first.
@@ -268,7 +303,8 @@ pub fn friction_threshold(scene: &Scene, speed: f64, mu_max: f64) -> Option<f64>
 }
 
 /// The least stable eigenvalue of [`linear_system`] and its eigenvector
-/// y = (q̄, q̄̇) (complex; a real motion is Re(v e^{λt})).
+/// y = (q̄, q̄̇) — with massive pads (q̄, q̄̇, ξ, ξ̇) — (complex; a real
+/// motion is Re(v e^{λt})).
 #[derive(Debug, Clone, PartialEq)]
 pub struct CriticalMode {
     pub eigenvalue: Complex<f64>,
@@ -291,7 +327,7 @@ pub fn critical_mode(scene: &Scene, speed: f64, friction_coefficient: f64, clamp
         .expect("a non-empty system");
     CriticalMode {
         eigenvalue: Complex::new(s[best].re, s[best].im),
-        vector: (0..n).map(|r| Complex::new(u[(r, best)].re, u[(r, best)].im) / if r < n / 2 { scale } else { 1.0 }).collect(),
+        vector: (0..n).map(|r| Complex::new(u[(r, best)].re, u[(r, best)].im) / if is_position(r, scene.n_modes(), n) { scale } else { 1.0 }).collect(),
     }
 }
 

@@ -41,7 +41,7 @@ fn clamp_forces(scene: &Scene) -> Vec<f64> {
 
 fn point(scene: &Scene, speed: f64, mu: f64, clamp: &[f64]) -> GridPoint {
     let mode = critical_mode(scene, speed, mu, clamp);
-    let n = mode.vector.len() / 2;
+    let n = scene.n_modes();
     let dominant = (0..n).max_by(|&a, &b| mode.vector[a].norm().total_cmp(&mode.vector[b].norm())).unwrap_or(0);
     let m = &scene.model.modes()[dominant];
     GridPoint { growth_rate: growth_rate(scene, speed, mu, clamp), k: m.k, l: m.l, frequency_hz: mode.eigenvalue.im.abs() / TAU }

@@ -16,7 +16,7 @@ use super::integrators::exponential::ModePropagator;
 use super::integrators::{block_exponential, implicit_midpoint, rk4, MAX_INNER_SUBSTEPS};
 use super::integrators::stiffened_midpoint::StiffenedMidpoint;
 use super::joint::drive;
-use super::load_models::{LoadContext, LoadModelUndo, ModelWrenches};
+use super::load_models::{LoadContext, LoadModelState, LoadModelUndo, ModelWrenches};
 use super::commands::Inputs;
 use super::loads::{add_reference_motion, compute as node_loads, StepLoads};
 use super::scene::Scene;
@@ -104,8 +104,11 @@ pub struct Stepper {
     views: Views,
     /// Per-mode exact propagators, keyed by (h, kΩ): recomputed when either changes.
     propagators: Vec<ModePropagator>,
+    /// RK4's state (q, q̇, the load models' continuous states) and stages.
     y: Vec<f64>,
     rk: [Vec<f64>; 5],
+    /// The load models' slots at an RK4 stage (models with continuous states).
+    stage_slots: LoadModelState,
     /// The state before the step (the load models' slots apart) and the log
     /// of what the step changed in those slots: a diverged step is undone.
     backup: State,
@@ -133,8 +136,9 @@ impl Stepper {
             harm_end: Vec::with_capacity(k),
             views: Views::new(n),
             propagators: vec![ModePropagator::UNSET; n],
-            y: vec![0.0; 2 * n],
-            rk: std::array::from_fn(|_| vec![0.0; 2 * n]),
+            y: vec![0.0; 2 * n + scene.load_models.continuous_states()],
+            rk: std::array::from_fn(|_| vec![0.0; 2 * n + scene.load_models.continuous_states()]),
+            stage_slots: scene.load_models.initial_state(),
             backup: State::new(n, Coordinates::Ale, 0.0, 0.0),
             undo: LoadModelUndo::new(&scene.load_models),
             last_inner_substeps: 1,
@@ -347,9 +351,14 @@ impl Stepper {
         let n = scene.n_modes();
         let coords = state.coordinates;
         self.y[..n].copy_from_slice(&state.q);
-        self.y[n..].copy_from_slice(&state.q_dot);
+        self.y[n..2 * n].copy_from_slice(&state.q_dot);
+        let continuous = scene.load_models.continuous_states() > 0;
+        if continuous {
+            scene.load_models.gather_continuous(&state.load_models, &mut self.y[2 * n..]);
+            self.stage_slots.copy_from(&state.load_models);
+        }
         self.base_ale_frame.copy_from_slice(&self.loads.ale_frame);
-        let Stepper { consts, loads, base_ale_frame, harm, views, y, rk, model_wrenches, .. } = self;
+        let Stepper { consts, loads, base_ale_frame, harm, views, y, rk, model_wrenches, stage_slots, .. } = self;
         let follower = scene.effects.follower_loads;
         let stage_models = scene.load_models.stage_dependent();
         let slots = &state.load_models;
@@ -359,7 +368,8 @@ impl Stepper {
             chi.advance(speed0 * t + 0.5 * alpha * t * t);
             let speed = speed0 + alpha * t;
             harmonics(&chi, scene.layout.k_max, harm);
-            let (q, v) = yy.split_at(n);
+            let (q, rest) = yy.split_at(n);
+            let (v, s) = rest.split_at(n);
             if follower || stage_models {
                 let st = StateView { q, v, coords, speed };
                 st.fill(scene, harm, views);
@@ -373,6 +383,12 @@ impl Stepper {
                         speed,
                         held: scene.held_deflection(inputs),
                     };
+                    let slots = if continuous {
+                        scene.load_models.scatter_continuous(s, stage_slots);
+                        &*stage_slots
+                    } else {
+                        slots
+                    };
                     scene.load_models.evaluate(&ctx, slots, &inputs.commands, model_wrenches);
                 }
                 node_loads(scene, inputs, model_wrenches, &views.q_ale, &views.q_lagrange, loads);
@@ -380,15 +396,20 @@ impl Stepper {
                 loads.ale_frame.copy_from_slice(base_ale_frame);
             }
             add_reference_motion(scene, speed, &mut loads.ale_frame);
-            let (dq, dv) = dy.split_at_mut(n);
+            let (dq, rest) = dy.split_at_mut(n);
+            let (dv, ds) = rest.split_at_mut(n);
             dq.copy_from_slice(v);
             accelerations(scene, consts, coords, harm, speed, alpha, q, v, &loads.ale_frame, &loads.plate_frame, dv);
+            ds.copy_from_slice(&model_wrenches.rates);
         };
         for j in 0..inner {
             rk4::step(j as f64 * dt, dt, y, rk, &mut rhs);
         }
         state.q.copy_from_slice(&y[..n]);
-        state.q_dot.copy_from_slice(&y[n..]);
+        state.q_dot.copy_from_slice(&y[n..2 * n]);
+        if continuous {
+            scene.load_models.scatter_continuous(&y[2 * n..], &mut state.load_models);
+        }
         Ok(())
     }
 }

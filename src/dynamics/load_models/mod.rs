@@ -26,6 +26,7 @@
 pub mod face_friction;
 pub mod model;
 pub mod pad;
+pub mod pad_mass;
 pub mod pad_series;
 pub mod pitch_link;
 pub mod point_spring;
@@ -57,6 +58,8 @@ pub struct LoadModels {
     /// Per model, per command: the range of its instances in the model's command values.
     command_ranges: Vec<Vec<Range<usize>>>,
     friction_ranges: Vec<Range<usize>>,
+    /// Per model, the range of its continuous states among all models'.
+    state_ranges: Vec<Range<usize>>,
     /// The sum of the models' couplings (a bound for any set of closed contacts).
     coupling: Coupling,
 }
@@ -102,6 +105,8 @@ pub struct ModelWrenches {
     /// τ_f(Ω) = −Σ capacity · tanh(Ω · slope) of all models, so the joint can
     /// solve its step with the friction at the step's end.
     pub friction: Vec<FrictionTorque>,
+    /// The rates of the models' continuous states ([`LoadModels::continuous_states`]).
+    pub rates: Vec<f64>,
     scratch: Vec<Box<dyn Any + Send + Sync>>,
 }
 
@@ -114,6 +119,7 @@ impl ModelWrenches {
             ale_follower: vec![false; n_ale],
             lagrange_follower: vec![false; n_lagrange],
             friction: vec![FrictionTorque::default(); lm.friction_ranges.last().map_or(0, |r| r.end)],
+            rates: vec![0.0; lm.continuous_states()],
             scratch: lm.models.iter().map(|m| m.new_scratch()).collect(),
         }
     }
@@ -143,6 +149,12 @@ impl LoadModels {
             friction_ranges.push(end..end + m.friction_terms());
             end += m.friction_terms();
         }
+        let mut state_ranges = Vec::with_capacity(models.len());
+        let mut end = 0;
+        for m in &models {
+            state_ranges.push(end..end + m.continuous_states());
+            end += m.continuous_states();
+        }
         let command_ranges = models
             .iter()
             .map(|m| {
@@ -160,7 +172,7 @@ impl LoadModels {
             stiffness_rate_sq: a.stiffness_rate_sq + c.stiffness_rate_sq,
             damping_rate: a.damping_rate + c.damping_rate,
         });
-        LoadModels { models, command_ranges, friction_ranges, coupling }
+        LoadModels { models, command_ranges, friction_ranges, state_ranges, coupling }
     }
 
     pub fn is_empty(&self) -> bool {
@@ -198,10 +210,33 @@ impl LoadModels {
         self.coupling
     }
 
-    /// Refuse integrators that hold a stiff model's forces over a substep of `h`.
+    /// Continuous states of all models (RK4 integrates them with the modes).
+    pub fn continuous_states(&self) -> usize {
+        self.state_ranges.last().map_or(0, |r| r.end)
+    }
+
+    /// Copy the models' continuous states out of `state` into `y`.
+    pub fn gather_continuous(&self, state: &LoadModelState, y: &mut [f64]) {
+        for (r, slot) in self.state_ranges.iter().zip(&state.slots) {
+            y[r.clone()].copy_from_slice(&slot[..r.len()]);
+        }
+    }
+
+    /// Copy `y` into the models' continuous states in `state`.
+    pub fn scatter_continuous(&self, y: &[f64], state: &mut LoadModelState) {
+        for (r, slot) in self.state_ranges.iter().zip(state.slots.iter_mut()) {
+            slot[..r.len()].copy_from_slice(&y[r.clone()]);
+        }
+    }
+
+    /// Refuse integrators that hold a stiff model's forces over a substep of
+    /// `h`, and any but RK4 for models with continuous states.
     pub fn check_integrator(&self, integrator: IntegratorKind, h: f64) -> Result<(), SimulationError> {
         if integrator == IntegratorKind::Rk4 {
             return Ok(());
+        }
+        if let Some(m) = self.models.iter().find(|m| m.continuous_states() > 0) {
+            return Err(SimulationError::ContinuousStateNeedsRk4 { model: m.name(), keys: m.coupling_keys(), integrator: integrator.name() });
         }
         for m in &self.models {
             let c = m.coupling();
@@ -268,7 +303,7 @@ impl LoadModels {
     /// Fill `out` with the wrenches of all models at one instant.
     pub fn evaluate(&self, ctx: &LoadContext, state: &LoadModelState, commands: &LoadCommands, out: &mut ModelWrenches) {
         out.clear();
-        let ModelWrenches { ale, lagrange, ale_follower, lagrange_follower, friction, scratch } = out;
+        let ModelWrenches { ale, lagrange, ale_follower, lagrange_follower, friction, rates, scratch } = out;
         for (i, m) in self.models.iter().enumerate() {
             let slot_out = ModelOut {
                 ale: ale.as_mut_slice(),
@@ -277,6 +312,7 @@ impl LoadModels {
                 lagrange_follower: lagrange_follower.as_mut_slice(),
                 friction: &mut friction[self.friction_ranges[i].clone()],
                 scratch: scratch[i].as_mut(),
+                rates: &mut rates[self.state_ranges[i].clone()],
             };
             m.evaluate(ctx, &state.slots[i], &commands.values[i], slot_out);
         }

@@ -117,6 +117,8 @@ pub struct ModelOut<'a> {
     pub friction: &'a mut [FrictionTorque],
     /// This model's scratch ([`LoadModel::new_scratch`]).
     pub scratch: &'a mut dyn Any,
+    /// The rates of its continuous states ([`LoadModel::continuous_states`] of them).
+    pub rates: &'a mut [f64],
 }
 
 /// A load model (see the module docs). Only [`LoadModel::name`],
@@ -161,6 +163,14 @@ pub trait LoadModel: Debug + Send + Sync {
     /// Memoryless and dependent on the elastic state: RK4 re-evaluates it at every stage.
     fn stage_dependent(&self) -> bool {
         false
+    }
+
+    /// Entries at the start of its slot that are continuous state — an ODE
+    /// ẋ = f(x, elastic state) RK4 integrates with the modes at every stage
+    /// ([`LoadModel::evaluate`] writes f into `out.rates`; the other
+    /// integrators refuse such a model). Default: none.
+    fn continuous_states(&self) -> usize {
+        0
     }
 
     /// Its coupling rates (stiff contacts); zero for prescribed forces.

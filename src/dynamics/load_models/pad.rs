@@ -49,6 +49,10 @@
 //! in-plane velocity turns the sliding direction (docs/scenes.md). The default
 //! `mid_plane` is the paper's model described above.
 //!
+//! With `pads.mass` > 0 each face's pad is a rigid mass whose compression of
+//! its springs is state (`pad_mass.rs`): u then comes from the pad's motion,
+//! not from the balance above.
+//!
 //! Why the floating caliper is the default: with a fixed caliper and
 //! lift-off, a face that lifts leaves the other one pressed harder —
 //! N_t + N_b = k_c (δ₀ + |w|) once |w| > δ₀ — so friction, and the energy the
@@ -115,6 +119,10 @@ pub struct Pads {
     /// (`plate.residual_flexibility`): the contacts act in series with it
     /// ([`Pads::series_forces`]); None: on the modal deflection.
     pub series: Option<ContactCompliance>,
+    /// m_p of each face's pad, kg (0: massless; `pad_mass.rs`).
+    pub mass: f64,
+    /// k_b behind a fixed caliper's massive pad, N/m (0 otherwise).
+    pub backing_stiffness: f64,
 }
 
 /// Forces at one contact point.
@@ -182,7 +190,13 @@ impl Pads {
                 }
             }
         }
-        for ((contact, f), _) in self.contacts.iter().zip(out.iter_mut()).zip(kin) {
+        self.net_and_friction(speed, out);
+    }
+
+    /// Lift-off (N ≥ 0 with `pads.lift_off`), the net axial force and the
+    /// friction of the normal forces in `out`.
+    pub(super) fn net_and_friction(&self, speed: f64, out: &mut [ContactForces]) {
+        for (contact, f) in self.contacts.iter().zip(out.iter_mut()) {
             if self.lift_off {
                 f.top = f.top.max(0.0);
                 f.bottom = f.bottom.max(0.0);
@@ -326,6 +340,8 @@ pub fn build(config: &Config, nodes: &SceneNodes) -> Option<Box<dyn LoadModel>> 
         initial_clamp_force: p.clamp_force.clone(),
         coupling: Coupling::default(),
         series: nodes.residual.map(|r| ContactCompliance::among(r, &p.contacts.iter().map(|c| c.node).collect::<Vec<_>>())),
+        mass: p.mass,
+        backing_stiffness: p.backing_stiffness.unwrap_or(0.0),
     }
     .with_coupling(nodes)))
 }
@@ -341,6 +357,9 @@ impl Pads {
         }
         let lam = contact_rate(&shapes, nodes.modal_mass);
         self.coupling = Coupling { stiffness_rate_sq: 2.0 * self.stiffness * lam, damping_rate: 2.0 * self.damping * lam };
+        if self.is_massive() {
+            self.coupling = self.massive_coupling(lam);
+        }
         self
     }
 }
@@ -360,6 +379,12 @@ impl LoadModel for Pads {
     }
     fn initial_commands(&self) -> Vec<f64> {
         self.initial_clamp_force.clone()
+    }
+    fn initial_state(&self) -> Vec<f64> {
+        self.initial_pad_state()
+    }
+    fn continuous_states(&self) -> usize {
+        self.pad_states()
     }
     fn new_scratch(&self) -> Box<dyn Any + Send + Sync> {
         let n = self.contacts.len();
@@ -384,19 +409,26 @@ impl LoadModel for Pads {
         self.coupling
     }
     fn coupling_keys(&self) -> &'static str {
+        if self.is_massive() {
+            return "pads.mass, pads.contact_stiffness, pads.contact_damping, pads.backing_stiffness";
+        }
         "pads.contact_stiffness, pads.contact_damping"
     }
 
     /// Contact forces from the deflection and its rate under each contact
     /// point (ALE amplitudes), their friction, and the wrenches at the nodes.
-    fn evaluate(&self, ctx: &LoadContext, _slot: &[f64], clamp_force: &[f64], out: ModelOut) {
+    fn evaluate(&self, ctx: &LoadContext, slot: &[f64], clamp_force: &[f64], out: ModelOut) {
         let s = out.scratch.downcast_mut::<PadScratch>().expect("the pads' scratch");
         for (k, c) in s.kinematics.iter_mut().zip(&self.contacts) {
             *k = surface_kinematics(&ctx.ale_nodes[c.node], ctx.q_ale, ctx.q_dot_ale);
         }
         match &self.series {
             Some(g) => self.series_forces(g, ctx, clamp_force, s),
+            None if self.is_massive() => self.massive_forces(slot, &s.kinematics, ctx.speed, &mut s.forces),
             None => self.forces(clamp_force, &s.kinematics, ctx.speed, &mut s.forces, &mut s.closed),
+        }
+        if self.is_massive() {
+            self.pad_rates(slot, clamp_force, &s.forces, out.rates);
         }
         self.friction_torque_terms(&s.forces, out.friction);
         if self.contact_surface == ContactSurface::Faces {
@@ -446,6 +478,8 @@ mod tests {
             initial_clamp_force: vec![1000.0],
             coupling: Coupling::default(),
             series: None,
+            mass: 0.0,
+            backing_stiffness: 0.0,
         }
     }
 
