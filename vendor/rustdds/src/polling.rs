@@ -2,15 +2,19 @@
 //
 // Sockets are registered with mio 1.2. Everything that is not a socket — command
 // queues, writer doorbells, reader commands, discovery sample readiness — shares
-// one `Waker` per poll. `wake()` is coalesced, so the token only means "drain
-// the queues": the sender enqueues the payload (or entity id) and then wakes.
+// one `Waker` per poll. `wake()` is coalesced (at most one eventfd write per
+// loop iteration, see `LoopWaker`), so the token only means "drain the queues":
+// the sender enqueues the payload (or entity id) and then wakes.
 // Timers are an in-loop deadline map. The poll timeout is the sooner of the next
 // deadline and the loop's idle cap. Nothing here is registered as a mio 0.6
 // `Evented` source; user-visible sample and status channels stay mio-extras.
 
 use std::{
   collections::BTreeMap,
-  sync::{mpsc, Arc, OnceLock},
+  sync::{
+    atomic::{AtomicBool, Ordering},
+    mpsc, Arc, OnceLock,
+  },
   time::{Duration, Instant},
 };
 
@@ -21,15 +25,24 @@ use crate::structure::guid::EntityId;
 /// One waker for one `Poll`. Share clones freely. `wake` before [`install`](Self::install)
 /// is a no-op; the event loop drains its queues once after installing so anything
 /// enqueued earlier is still observed.
+///
+/// Wakes are coalesced before the system call: `wake` writes the poll's eventfd
+/// only when no earlier wake is still pending, i.e. not yet taken by the loop
+/// with [`rearm`](Self::rearm). A thread publishing N samples between two
+/// iterations of the loop therefore costs one `eventfd` write, not N. The loop
+/// must call `rearm` after `poll` returns and before it drains its queues, so a
+/// value enqueued after the drain looked is always followed by a real wake.
 #[derive(Clone)]
 pub(crate) struct LoopWaker {
   slot: Arc<OnceLock<Waker>>,
+  pending: Arc<AtomicBool>,
 }
 
 impl LoopWaker {
   pub(crate) fn new() -> Self {
     Self {
       slot: Arc::new(OnceLock::new()),
+      pending: Arc::new(AtomicBool::new(false)),
     }
   }
 
@@ -43,12 +56,26 @@ impl LoopWaker {
     Ok(())
   }
 
+  /// Wake the poll unless a wake is already pending. Call after enqueuing: the
+  /// `AcqRel` swap publishes the enqueue to the loop's `rearm`.
   pub(crate) fn wake(&self) {
     if let Some(waker) = self.slot.get() {
+      if self.pending.swap(true, Ordering::AcqRel) {
+        return; // the loop has not yet rearmed: it will drain what we enqueued
+      }
       if let Err(e) = waker.wake() {
+        self.pending.store(false, Ordering::Release);
         log::debug!("LoopWaker::wake: {e}");
       }
     }
+  }
+
+  /// Take the pending wake: called by the loop once per iteration, after `poll`
+  /// returns and before it drains its queues. Anything enqueued before a wake
+  /// that this swap observes is visible to the drain that follows; anything
+  /// enqueued later wakes the poll again.
+  pub(crate) fn rearm(&self) {
+    self.pending.swap(false, Ordering::AcqRel);
   }
 }
 

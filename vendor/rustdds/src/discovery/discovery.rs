@@ -738,6 +738,8 @@ impl Discovery {
           return;
         }
       }
+      // Before any queue is drained: a wake from now on writes the eventfd again.
+      self.waker.rearm();
       if events.is_empty() {
         debug!("Discovery event loop idling.");
       }

@@ -310,6 +310,8 @@ impl DPEventLoop {
           break;
         }
       }
+      // Before any queue is drained: a wake from now on writes the eventfd again.
+      ev_wrapper.waker.rearm();
 
       // liveness watchdog
       let now = Instant::now();

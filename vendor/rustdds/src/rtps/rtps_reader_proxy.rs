@@ -503,12 +503,17 @@ impl RtpsReaderProxy {
     self.pending_gap.insert(seq_num);
   }
 
-  pub fn set_pending_gap_up_to(&mut self, last_gap_sn: SequenceNumber) {
-    // form SN range from 1 to last_gap_sn (inclusive)
-    let gap_sn_range = SequenceNumberRange::new(SequenceNumber::new(1), last_gap_sn);
-    // Convert to a set and insert the SNs to pending_gap
-    let gap_sn_set = BTreeSet::from_iter(gap_sn_range);
-    self.pending_gap.extend(gap_sn_set);
+  /// Mark the SNs `first_gap_sn ..= last_gap_sn` as pending GAP for this
+  /// reader. The caller passes as `first_gap_sn` the writer's first retained
+  /// SN: anything older is no longer available and is announced by the
+  /// HEARTBEAT's firstSN (and by `gap_msg_before` on request), so it need not
+  /// be held here. Starting at 1 instead made the set -- one BTreeSet entry
+  /// per SN -- grow with the writer's lifetime: a reader matched after 10^6
+  /// samples cost ~16 MB and a clone of that set per repair round.
+  pub fn set_pending_gap_up_to(&mut self, first_gap_sn: SequenceNumber, last_gap_sn: SequenceNumber) {
+    let first_gap_sn = max(first_gap_sn, SequenceNumber::new(1));
+    let gap_sn_range = SequenceNumberRange::new(first_gap_sn, last_gap_sn);
+    self.pending_gap.extend(gap_sn_range);
   }
 
   pub fn get_pending_gap(&self) -> &BTreeSet<SequenceNumber> {
