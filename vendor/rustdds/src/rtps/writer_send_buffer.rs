@@ -70,16 +70,6 @@ struct Inner {
   // send window / unsent-backlog and must retain samples for repair.
   max_retain: usize,
 
-  // KEEP_LAST for a reliable writer (set with `set_keep_last_replaces_unacked`):
-  // the `max_retain` bound also applies with matched reliable readers, and the
-  // acknowledgement window no longer blocks admission -- a new sample replaces
-  // the oldest, acknowledged or not (DDS v1.4 2.2.3.18 HISTORY: KEEP_LAST keeps
-  // the most recent `depth` samples; max_blocking_time only applies to
-  // KEEP_ALL). Without it a reliable reader that stops acknowledging (a killed
-  // peer, until its lease expires) makes the writer retain up to
-  // `window_limit` samples. Off by default.
-  keep_last_replaces_unacked: bool,
-
   // Wakers of async producers / ack-waiters parked because the window was full
   // or acknowledgements were still pending. Drained (woken) on any advance.
   wakers: Vec<Waker>,
@@ -140,7 +130,6 @@ impl WriterSendBuffer {
           backlog_limit: backlog_limit.max(1),
           sent_frontier: SequenceNumber::new(0),
           max_retain: max_retain.max(1),
-          keep_last_replaces_unacked: false,
           wakers: Vec::new(),
         }),
         progress: Condvar::new(),
@@ -182,13 +171,9 @@ impl WriterSendBuffer {
       return false;
     }
 
-    if !shared.reliable_writer
-      || !inner.reliable_readers_present
-      || inner.keep_last_replaces_unacked
-    {
+    if !shared.reliable_writer || !inner.reliable_readers_present {
       // Best-effort and "no reliable reader yet" writers have no acknowledgement
-      // window to wait on; the backlog limit above is their only throttle. Nor
-      // has a KEEP_LAST reliable writer: the insert replaces its oldest sample.
+      // window to wait on; the backlog limit above is their only throttle.
       return true;
     }
     // Number of unacknowledged samples in [acked_before, last_seq].
@@ -303,12 +288,9 @@ impl WriterSendBuffer {
     //    durability); once a reliable reader matches, `reliable_readers_present`
     //    flips true and we retain everything again for repair.
     // Built-in (discovery) writers are always exempt to never lose discovery data.
-    //  - reliable writers with `keep_last_replaces_unacked` (KEEP_LAST honoured
-    //    also while readers are matched; see the field).
     let trim_keep_last = !shared.is_builtin
       && (!may_block
-        || (shared.reliable_writer && shared.volatile && !inner.reliable_readers_present)
-        || (shared.reliable_writer && inner.keep_last_replaces_unacked));
+        || (shared.reliable_writer && shared.volatile && !inner.reliable_readers_present));
     if trim_keep_last {
       while inner.changes.len() > inner.max_retain {
         // BTreeMap keeps keys sorted, so the first entry is the oldest SN.
@@ -321,15 +303,6 @@ impl WriterSendBuffer {
       }
     }
     seq
-  }
-
-  /// Honour KEEP_LAST for this reliable writer while readers are matched: keep
-  /// at most `max_retain` samples (the History depth), replacing the oldest
-  /// even if unacknowledged, and never block admission on the acknowledgement
-  /// window. For writers whose History is KEEP_LAST and whose samples all
-  /// belong to one instance (keyless topics): the depth is per instance.
-  pub fn set_keep_last_replaces_unacked(&self, on: bool) {
-    self.shared.inner.lock().unwrap().keep_last_replaces_unacked = on;
   }
 
   // --- consumer side (Writer / event loop) ---
