@@ -1,12 +1,14 @@
 //! Peers joining and leaving do not grow the node for good (issue 14, item 5;
-//! issue 10 measured 22.7 → 52 MB over 8 rounds of 20 Cyclone peers, half of
-//! them killed, never released).
+//! issue 10).
 //!
 //! A killed reliable subscriber stays matched until its lease expires
-//! (Cyclone DDS: 10 s); RustDDS keeps what it has not acknowledged (≤ 8,192
-//! samples per writer) and frees it at the expiry, and the node hands the
-//! freed heap back to the OS (src/ros/heap.rs). Measured: the node's resident
-//! memory once the leases have expired, against the same after a warm-up.
+//! (Cyclone DDS: 10 s); RustDDS keeps what it has not acknowledged (up to
+//! 8,192 samples per writer) until then. With the RustDDS patch
+//! (vendor/rustdds/PATCH.md) a newly matched reader no longer costs one
+//! pending-GAP entry per sample the writer ever wrote — before, the node
+//! swung by tens of MB during the rounds, more the longer it had run. The node hands freed heap back to the OS
+//! (src/ros/heap.rs). Measured: the node's resident memory after every round
+//! and once the leases have expired, against the same after a warm-up.
 
 #![cfg(feature = "ros")]
 
@@ -37,23 +39,39 @@ fn churn_round(ns: &Netns, node: &NodeProcess, peers: usize) {
 /// heap trim (5 s), with room for a loaded machine.
 const EXPIRY: Duration = Duration::from_secs(20);
 
+/// Rounds after the warm-up: each adds 8 killed peers whose leases overlap
+/// the next rounds, so the node holds what up to ~3 rounds of killed peers cost.
+const ROUNDS: usize = 6;
+
 #[test]
 fn killed_and_departed_peers_leave_no_lasting_memory_behind() {
     let ns = Netns::new();
     let node = start_node(&ns, 41, &[]);
-    // Warm-up: the first peers create what every later one reuses.
-    churn_round(&ns, &node, 8);
+    // Warm-up: the first peers create what every later one reuses (discovery
+    // tables, allocator arenas of the RustDDS threads).
+    for _ in 0..2 {
+        churn_round(&ns, &node, 8);
+    }
     std::thread::sleep(EXPIRY);
     let warm = rss_kb(&node);
     let mut during = vec![];
-    for _ in 0..4 {
+    for _ in 0..ROUNDS {
         churn_round(&ns, &node, 8);
         during.push(rss_kb(&node));
     }
     std::thread::sleep(EXPIRY);
     let after = rss_kb(&node);
-    println!("node RSS: after warm-up {warm} kB; during 4 rounds of 8 + 8 killed peers {during:?} kB; leases expired {after} kB");
-    // Measured here: 17.3 → 17.1 MB (during the rounds up to 25.6 MB); with the
-    // trim thread disabled the same run went 30.2 → 36.6 MB and stayed.
-    assert!(after < warm + 3_000, "{warm} → {after} kB");
+    println!("node RSS: after warm-up {warm} kB; during {ROUNDS} rounds of 8 + 8 killed peers {during:?} kB; leases expired {after} kB");
+    // Measured: before the RustDDS patch (4 rounds) 17.3 → up to 25.6 MB during
+    // the rounds (+48 %), 17.1 MB after; with it (6 rounds, two runs) 19.4 →
+    // up to 26.5 MB (+37 %) and 29.1 MB (+50 %), 18.8 and 19.3 MB after. While killed peers' leases run RustDDS
+    // still keeps up to 8,192 unacknowledged samples per writer for each, so
+    // the rounds themselves are bounded, not flat: the bound below catches
+    // growth without limit (a pending-GAP set per sample ever written grew
+    // with the node's uptime), not the patch's difference at this short
+    // uptime — benches/peer_churn.py's 100 rounds show that. Once the leases
+    // have expired the node must be back within 5 %.
+    let largest = *during.iter().max().unwrap();
+    assert!(largest * 4 <= warm * 7, "during the rounds: {warm} → {largest} kB (more than +75 %): {during:?}");
+    assert!(after * 20 <= warm * 21, "leases expired: {warm} → {after} kB (more than +5 %)");
 }
