@@ -9,6 +9,7 @@ use annular_plate::dynamics::{stability, Simulation};
 use annular_plate::model::AngularShape;
 
 mod support;
+use support::fourth_order::assert_fourth_order;
 
 const SPEED: f64 = 25.0;
 const CLAMP: f64 = 1000.0;
@@ -230,19 +231,13 @@ fn ale_and_lagrangian_descriptions_converge_to_one_motion_with_face_friction() {
         }
         out
     };
-    let mut previous: Option<f64> = None;
     // Measured: 1.06e-3, 6.9e-5, 4.3e-6, 2.7e-7 (ratio ≈ 16).
-    for rate in [20_000.0, 40_000.0, 80_000.0, 160_000.0] {
+    let last = assert_fourth_order("face friction, rk4 ALE vs Lagrangian", &[20_000.0, 40_000.0, 80_000.0, 160_000.0], |rate| {
         let (ale, lagrange) = (run(Coordinates::Ale, rate), run(Coordinates::Lagrangian, rate));
         let scale = ale.iter().fold(0.0f64, |m, v| m.max(v.abs()));
-        let d = ale.iter().zip(&lagrange).fold(0.0f64, |m, (a, b)| m.max((a - b).abs())) / scale;
-        println!("face friction, rk4 ALE vs Lagrangian at {rate} Hz: {d:e}");
-        if let Some(p) = previous {
-            assert!(p / d > 12.0 && p / d < 20.0, "not converging at fourth order: {p:e} → {d:e}");
-        }
-        previous = Some(d);
-    }
-    assert!(previous.unwrap() < 5e-7);
+        ale.iter().zip(&lagrange).fold(0.0f64, |m, (a, b)| m.max((a - b).abs())) / scale
+    });
+    assert!(last < 5e-7);
 }
 
 /// The paper's squeal scene, config/brake_squeal_paper.yaml (18 contacts on a ring, floating caliper) with the

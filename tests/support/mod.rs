@@ -6,3 +6,4 @@ pub mod static_plate;
 pub mod scene_files;
 pub mod squeal;
 pub mod library_plate;
+pub mod fourth_order;
