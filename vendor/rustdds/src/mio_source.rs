@@ -10,7 +10,10 @@ macro_rules! socketpair_bridge {
       use std::{
         io,
         io::{Read, Write},
-        sync::{Arc, Mutex},
+        sync::{
+          atomic::{AtomicBool, Ordering},
+          Arc, Mutex,
+        },
       };
       #[cfg(not(target_os = "windows"))]
       use std::os::fd::OwnedFd;
@@ -24,11 +27,16 @@ macro_rules! socketpair_bridge {
 
       pub struct Source {
         rec: Mutex<$mio::net::TcpStream>,
+        // Set by every send before its byte is written, cleared by drain:
+        // false means nothing was sent since the last drain, so drain need
+        // not read the socket (a system call per take on an idle reader).
+        pending: Arc<AtomicBool>,
       }
 
       #[derive(Clone)]
       pub struct Sender {
         send: Arc<Mutex<$mio::net::TcpStream>>,
+        pending: Arc<AtomicBool>,
       }
 
       #[cfg(not(target_os = "windows"))]
@@ -47,12 +55,15 @@ macro_rules! socketpair_bridge {
         let rec = $mio::net::TcpStream::from_std(std::net::TcpStream::from(OwnedFd::from(rec_sps)));
         let send =
           $mio::net::TcpStream::from_std(std::net::TcpStream::from(OwnedFd::from(send_sps)));
+        let pending = Arc::new(AtomicBool::new(false));
         Ok((
           Source {
             rec: Mutex::new(rec),
+            pending: pending.clone(),
           },
           Sender {
             send: Arc::new(Mutex::new(send)),
+            pending,
           },
         ))
       }
@@ -69,18 +80,24 @@ macro_rules! socketpair_bridge {
         }
         let (send, _addr_send) = accepted?;
         debug!("IPC socket: {addr:#?} <-> {_addr_send:#?}");
+        let pending = Arc::new(AtomicBool::new(false));
         Ok((
           Source {
             rec: Mutex::new(rec),
+            pending: pending.clone(),
           },
           Sender {
             send: Arc::new(Mutex::new(send)),
+            pending,
           },
         ))
       }
 
       impl Sender {
         pub fn send(&self) {
+          // Release: what was done before the send (the sample's insertion
+          // in the cache) is seen by a drain that finds the flag set.
+          self.pending.store(true, Ordering::Release);
           match self.send.lock().unwrap().write(&[0xcc]) {
             Ok(_b) => {}
             Err(e) => info!("PollEventSender.send: {e}"),
@@ -90,13 +107,27 @@ macro_rules! socketpair_bridge {
 
       impl Source {
         pub fn drain(&self) {
-          let mut buf = Vec::with_capacity(16);
-          match self.rec.lock().unwrap().read_to_end(&mut buf) {
-            Ok(_) => (),
-            Err(err) => match err.kind() {
-              io::ErrorKind::WouldBlock => {}
-              other_kind => info!("PollEventSource.drain(): {other_kind}"),
-            },
+          // Nothing sent since the last drain: no byte to read (one that a
+          // send wrote after an earlier drain found the socket empty stays
+          // there and is read with the next send's).
+          if !self.pending.swap(false, Ordering::AcqRel) {
+            return;
+          }
+          let mut buf = [0u8; 64];
+          let mut rec = self.rec.lock().unwrap();
+          loop {
+            match rec.read(&mut buf) {
+              Ok(0) => break,
+              Ok(_) => continue,
+              Err(err) => match err.kind() {
+                io::ErrorKind::WouldBlock => break,
+                io::ErrorKind::Interrupted => continue,
+                other_kind => {
+                  info!("PollEventSource.drain(): {other_kind}");
+                  break;
+                }
+              },
+            }
           }
         }
       }
