@@ -101,6 +101,13 @@ struct Sweep {
     downwards: bool,
 }
 
+/// Slot indices of `count` surface bins from `first_bin` on, downwards or
+/// upwards in φ (wrapping round the revolution), in the order swept.
+fn bin_entries(first_bin: i64, downwards: bool, count: i64) -> impl Iterator<Item = usize> {
+    let n = SURFACE_BINS as i64;
+    (0..count).map(move |j| SURFACE + if downwards { first_bin - j } else { first_bin + j }.rem_euclid(n) as usize)
+}
+
 /// What one substep cuts, computed at its start.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct ToolStep {
@@ -118,9 +125,8 @@ pub struct ToolStep {
 
 impl ToolStep {
     /// Slot indices of the surface bins the substep sweeps, in the order swept.
-    fn swept_entries(&self) -> impl Iterator<Item = usize> + '_ {
-        let n = SURFACE_BINS as i64;
-        (0..self.bins).map(move |j| SURFACE + if self.downwards { self.first_bin - j } else { self.first_bin + j }.rem_euclid(n) as usize)
+    fn swept_entries(&self) -> impl Iterator<Item = usize> {
+        bin_entries(self.first_bin, self.downwards, self.bins)
     }
 
     fn store(&self, slot: &mut [f64]) {
@@ -276,10 +282,8 @@ impl Tool {
 
     /// Slot indices of the bins the chip is read from: those swept, or the
     /// bin ahead when no centre is passed (a step shorter than a bin).
-    fn read_entries(sweep: &Sweep) -> impl Iterator<Item = usize> + '_ {
-        let n = SURFACE_BINS as i64;
-        let b = move |j: i64| SURFACE + if sweep.downwards { sweep.first_bin - j } else { sweep.first_bin + j }.rem_euclid(n) as usize;
-        (0..sweep.bins.max(1)).map(b)
+    fn read_entries(sweep: &Sweep) -> impl Iterator<Item = usize> {
+        bin_entries(sweep.first_bin, sweep.downwards, sweep.bins.max(1))
     }
 
     /// The cut of `sweep` with deflection w under the tool.
