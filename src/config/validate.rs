@@ -63,13 +63,8 @@ pub(super) fn config_from_params(params: &Params) -> Result<Config, ConfigError>
     let springs = read_springs(&r, &nodes)?;
     let initial = read_initial(&r, &plate, &limits)?;
     let centrifugal = super::centrifugal::read_centrifugal(&r)?;
-    if pads.as_ref().is_some_and(|p| p.mass > 0.0) {
-        if simulation.integrator != IntegratorKind::Rk4 {
-            return Err(ConfigError::PadMass { rule: "pads.mass > 0 needs simulation.integrator: rk4 (the pads' axial motion is integrated at every stage)" });
-        }
-        if plate.residual_flexibility {
-            return Err(ConfigError::PadMass { rule: "pads.mass > 0 needs plate.residual_flexibility: false (massive pads in series with the residual flexibility are not modelled)" });
-        }
+    if pads.as_ref().is_some_and(|p| p.mass > 0.0) && simulation.integrator != IntegratorKind::Rk4 {
+        return Err(ConfigError::PadMass { rule: "pads.mass > 0 needs simulation.integrator: rk4 (the pads' axial motion is integrated at every stage)" });
     }
 
     Ok(Config { plate, nodes, loads, joint, reference, gravity, simulation, limits, pads, tool, links, springs, initial, centrifugal })

@@ -48,6 +48,7 @@
 use super::integrators::equations::mode_constants;
 use super::load_models::pad::FRICTION_REGULARISATION_SPEED;
 use super::load_models::{PadContactPoint, Pads};
+use super::stability_pads::NetForce;
 use super::scene::Scene;
 use crate::config::{Caliper, ContactSurface};
 use faer::Mat;
@@ -127,7 +128,7 @@ pub fn linear_system(scene: &Scene, speed: f64, friction_coefficient: f64, clamp
                     let dm = sm.w - mean[m];
                     let mut k = match &series {
                         None => -2.0 * pads.stiffness * di * dm,
-                        Some((fq, _)) => wi * fq[ci * n + m],
+                        Some(l) => wi * l.q[ci * n + m],
                     };
                     if pads.follower_friction {
                         k += wi * (fy * sm.tilt[0] - fx * sm.tilt[1]);
@@ -135,13 +136,13 @@ pub fn linear_system(scene: &Scene, speed: f64, friction_coefficient: f64, clamp
                     a[(n + i, m)] += k / mass[i];
                     let c = match &series {
                         None => 2.0 * pads.damping * di * dm,
-                        Some((_, fqd)) => -wi * fqd[ci * n + m],
+                        Some(l) => -wi * l.q_dot[ci * n + m],
                     };
                     a[(n + i, n + m)] -= c / mass[i];
                 }
             }
             if pads.contact_surface == ContactSurface::Faces {
-                let rows = series.as_ref().map(|(fq, fqd)| (&fq[ci * n..(ci + 1) * n], &fqd[ci * n..(ci + 1) * n]));
+                let rows = series.as_ref().map(|l| (&l.q[ci * n..(ci + 1) * n], &l.q_dot[ci * n..(ci + 1) * n]));
                 add_face_terms(&mut a, scene, pads, contact, mean, preload, speed, friction_coefficient, rows);
             }
             if pads.is_massive() {
@@ -149,7 +150,11 @@ pub fn linear_system(scene: &Scene, speed: f64, friction_coefficient: f64, clamp
                     ContactSurface::Faces => face_couple(pads, contact, speed, friction_coefficient),
                     ContactSurface::MidPlane => 0.0,
                 };
-                super::stability_pads::add_pad_terms(&mut a, scene, pads, contact, couple);
+                let net = match &series {
+                    Some(l) => NetForce::in_series(l, ci, n, pads),
+                    None => NetForce::direct(pads, contact, node),
+                };
+                super::stability_pads::add_pad_terms(&mut a, scene, pads, contact, couple, &net);
             }
         }
         if pads.is_massive() {

@@ -423,7 +423,7 @@ impl LoadModel for Pads {
             *k = surface_kinematics(&ctx.ale_nodes[c.node], ctx.q_ale, ctx.q_dot_ale);
         }
         match &self.series {
-            Some(g) => self.series_forces(g, ctx, clamp_force, s),
+            Some(g) => self.series_forces(g, ctx, clamp_force, slot, s),
             None if self.is_massive() => self.massive_forces(slot, &s.kinematics, ctx.speed, &mut s.forces),
             None => self.forces(clamp_force, &s.kinematics, ctx.speed, &mut s.forces, &mut s.closed),
         }

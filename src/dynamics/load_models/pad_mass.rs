@@ -98,13 +98,22 @@ impl Pads {
 
     /// The coupling bound with massive pads: k_c (x + w)² ≤ 2 k_c x² + 2 k_c w²
     /// per face, so twice the disc's contact rate (`lam` the largest
-    /// eigenvalue of M^(−½) Σ w wᵀ M^(−½)) plus the pads' own
-    /// (2 n k_c + k_b)/m_p; the dampers' likewise.
+    /// eigenvalue of M^(−½) Σ w wᵀ M^(−½)) plus the pads' own.
     pub(super) fn massive_coupling(&self, lam: f64) -> Coupling {
+        let own = self.pad_own_coupling();
+        Coupling {
+            stiffness_rate_sq: 4.0 * self.stiffness * lam + own.stiffness_rate_sq,
+            damping_rate: 4.0 * self.damping * lam + own.damping_rate,
+        }
+    }
+
+    /// The pads' own rates: (2 n k_c + k_b)/m_p and 2 n c_c/m_p (n the most
+    /// contacts of any pad).
+    pub(super) fn pad_own_coupling(&self) -> Coupling {
         let n = self.contacts_per_pad.iter().copied().max().unwrap_or(0) as f64;
         Coupling {
-            stiffness_rate_sq: 4.0 * self.stiffness * lam + (2.0 * n * self.stiffness + self.backing_stiffness) / self.mass,
-            damping_rate: 4.0 * self.damping * lam + 2.0 * n * self.damping / self.mass,
+            stiffness_rate_sq: (2.0 * n * self.stiffness + self.backing_stiffness) / self.mass,
+            damping_rate: 2.0 * n * self.damping / self.mass,
         }
     }
 }
