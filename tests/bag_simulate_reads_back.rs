@@ -340,3 +340,41 @@ fn a_simulate_bag_of_a_scene_with_load_models_holds_their_states() {
         assert!(moving > 10.0, "{name}: the load model acts ({moving})");
     }
 }
+
+/// Massive pads (`pads.mass`): ~/pad_states carries each pad's compressions,
+/// equal to the CSV's `pad{p}_top_compression` / `pad{p}_bottom_compression`
+/// at every step; massless pads leave those arrays empty.
+#[test]
+fn a_simulate_bag_of_massive_pads_holds_their_compressions() {
+    let text = std::fs::read_to_string(repo().join("config/brake_bench.yaml")).unwrap();
+    let bench = repo().join("target/bag-tests/brake_bench_massive.yaml");
+    write_atomically(&bench, &text.replace("clamp_force: [0.0]", "clamp_force: [5000.0]"));
+    let topic = "/annular_plate/pad_states";
+    for mass in ["0.3", "0.0"] {
+        let bag = fresh_dir(&format!("simulate_massive_pads_{mass}"));
+        let csv = repo().join(format!("target/bag-tests/simulate_massive_pads_{mass}.csv"));
+        let p = format!("pads.mass:={mass}");
+        let out = simulate(&bench, &["--csv".as_ref(), csv.as_os_str(), "--bag".as_ref(), bag.as_os_str(), "-p".as_ref(), p.as_ref()]);
+        assert!(out.status.success(), "m_p = {mass}: {}", String::from_utf8_lossy(&out.stderr));
+        let d = read_bag(&bag, "rosbags", &[topic]);
+        assert_eq!(d["undecodable"], serde_json::json!([]));
+        let msgs = d["topics"][topic]["messages"].as_array().unwrap();
+        let csv = Csv::read(&csv);
+        assert_eq!(msgs.len(), csv.rows.len());
+        for (k, m) in msgs.iter().enumerate() {
+            let (top, bottom) = (floats(&m["pad_compression_top"]), floats(&m["pad_compression_bottom"]));
+            if mass == "0.0" {
+                assert!(top.is_empty() && bottom.is_empty(), "massless pads: no compressions ({top:?})");
+                continue;
+            }
+            same(top[0], csv.col(k, "pad1_top_compression"), &format!("step {k}: top compression"));
+            same(bottom[0], csv.col(k, "pad1_bottom_compression"), &format!("step {k}: bottom compression"));
+        }
+        if mass == "0.3" {
+            // At rest x₀ = N₀/(n k_c) with the bench's 3 contacts at 2e7 N/m.
+            let x0 = 5000.0 / (3.0 * 2.0e7);
+            let first = floats(&msgs[0]["pad_compression_top"])[0];
+            assert!((first - x0).abs() < 1e-15, "{first} vs x₀ = {x0}");
+        }
+    }
+}

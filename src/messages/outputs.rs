@@ -175,6 +175,8 @@ impl OutputMessages {
                 contact_normal_top: vec![0.0; n_contacts],
                 contact_normal_bottom: vec![0.0; n_contacts],
                 contact_friction: vec![0.0; n_contacts],
+                pad_compression_top: vec![0.0; if pads.is_massive() { n_pads } else { 0 }],
+                pad_compression_bottom: vec![0.0; if pads.is_massive() { n_pads } else { 0 }],
             })
         });
         let tool_state = sim.has_tool().then(|| Shared::new(ToolState { header: header(&names.base), ..ToolState::default() }));
@@ -237,6 +239,11 @@ impl OutputMessages {
                 p.contact_normal_top[c] = f.top;
                 p.contact_normal_bottom[c] = f.bottom;
                 p.contact_friction[c] = f.tangential;
+            }
+            for j in 0..p.pad_compression_top.len() {
+                if let Some([top, bottom]) = sim.pad_compression(j) {
+                    (p.pad_compression_top[j], p.pad_compression_bottom[j]) = (top, bottom);
+                }
             }
         }
         if let (Some(tool), Some(o)) = (&mut self.tool_state, sim.tool_output()) {

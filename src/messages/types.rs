@@ -331,6 +331,8 @@ pub struct PadStates {
     pub contact_normal_top: Vec<f64>,
     pub contact_normal_bottom: Vec<f64>,
     pub contact_friction: Vec<f64>,
+    pub pad_compression_top: Vec<f64>,
+    pub pad_compression_bottom: Vec<f64>,
 }
 ros_message!(PadStates, "annular_plate", "PadStates");
 

@@ -208,6 +208,8 @@ class PadStates(IdlStruct, typename="annular_plate::msg::dds_::PadStates_"):
     contact_normal_top: sequence[float64] = field(default_factory=list)
     contact_normal_bottom: sequence[float64] = field(default_factory=list)
     contact_friction: sequence[float64] = field(default_factory=list)
+    pad_compression_top: sequence[float64] = field(default_factory=list)
+    pad_compression_bottom: sequence[float64] = field(default_factory=list)
 
 
 @dataclass
