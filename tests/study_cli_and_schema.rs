@@ -238,3 +238,29 @@ fn a_params_file_is_studied_as_given() {
     assert!(v["integrator"]["notes"].as_array().unwrap().iter().any(|n| n.as_str().unwrap().contains("at rest")));
     assert!(v["integrator"]["reference"]["peak_amplitude_m"].as_f64().unwrap() > 0.0);
 }
+
+/// Massive pads (`pads.mass`) have state only rk4 integrates: the trajectory
+/// axis takes rk4 as its reference, checks it against rk4 at half its inner
+/// step, and lists the other integrators as refused, naming the key.
+#[test]
+fn a_scene_with_massive_pads_is_studied_with_an_rk4_reference() {
+    let bench = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("config/brake_bench.yaml");
+    let v = json(&[bench.to_str().unwrap(), "-p", "pads.mass:=0.3", "-p", "pads.clamp_force:=[5000.0]"]);
+    let t = &v["integrator"];
+    assert_eq!(t["reference"]["integrator"], "rk4");
+    let checks = t["reference"]["checks"].as_array().unwrap();
+    assert_eq!(checks.len(), 1);
+    assert_eq!(checks[0]["integrator"], "rk4, half the inner step");
+    let d = checks[0]["difference"].as_f64().unwrap();
+    assert!(d > 0.0 && d < 1e-4, "the reference converged: half the step differs by {d}");
+    assert!(t["notes"].as_array().unwrap().iter().any(|n| n.as_str().unwrap().contains("pads.mass")));
+    for row in t["rows"].as_array().unwrap() {
+        if row["integrator"] == "rk4" {
+            assert_eq!(row["status"], "ok", "{row}");
+            assert!(row["relative_error"].as_f64().unwrap() < 1e-3, "{row}");
+        } else {
+            assert_eq!(row["status"], "refused", "{row}");
+            assert!(row["detail"].as_str().unwrap().contains("pads.mass"), "{row}");
+        }
+    }
+}

@@ -60,7 +60,9 @@ fn steps_per_sample(rate_hz: f64, sample_rate_hz: f64) -> Result<u64, StudyError
 pub fn record(config: &Config, every: u64, samples: usize) -> Result<(Samples, Simulation), (RunStatus, String)> {
     let mut sim = match Simulation::new(config.clone()) {
         Ok(s) => s,
-        Err(e @ SimulationError::TooManySubsteps { .. }) => return Err((RunStatus::Refused, e.to_string())),
+        Err(e @ (SimulationError::TooManySubsteps { .. } | SimulationError::ModelTooStiffForIntegrator { .. } | SimulationError::ContinuousStateNeedsRk4 { .. })) => {
+            return Err((RunStatus::Refused, e.to_string()))
+        }
         Err(e) => return Err((RunStatus::Diverged, e.to_string())),
     };
     let mut out = Vec::with_capacity(samples + 1);
@@ -145,10 +147,11 @@ pub fn run(config: &Config, plan: &StudyPlan, tick: &mut dyn FnMut(&str)) -> Res
     let ref_rate = plan.trajectory_reference_rate_hz;
     let mut notes = Vec::new();
     let mut scene = config.clone();
-    tick(&format!("reference: exponential at {ref_rate} Hz"));
+    let ref_integrator = reference_integrator(&scene, ref_rate);
+    tick(&format!("reference: {} at {ref_rate} Hz", ref_integrator.name()));
     let reference_run = |scene: &Config| -> Result<Samples, StudyError> {
         let every = steps_per_sample(ref_rate, plan.sample_rate_hz)?;
-        record(&scene_at(scene, IntegratorKind::Exponential, ref_rate), every, samples)
+        record(&scene_at(scene, ref_integrator, ref_rate), every, samples)
             .map(|(s, _)| s)
             .map_err(|(_, detail)| StudyError::NoResponse { detail: format!("the reference run failed: {detail}") })
     };
@@ -160,25 +163,12 @@ pub fn run(config: &Config, plan: &StudyPlan, tick: &mut dyn FnMut(&str)) -> Res
         notes.push(format!("the scene stays at rest without a load; {}", case.note.unwrap_or_default()));
         reference = reference_run(&scene)?;
     }
-    // Two independent checks of the reference: another method at the same step
-    // (rk4 shares no integration code with it), and the same method at twice
-    // the step (catches step errors both methods share, e.g. a load model
-    // updated once per step). Their larger difference is the uncertainty.
-    let run_check = |integrator: IntegratorKind, rate: f64| -> Result<Result<Samples, String>, StudyError> {
-        Ok(record(&scene_at(&scene, integrator, rate), steps_per_sample(rate, plan.sample_rate_hz)?, samples).map(|(s, _)| s).map_err(|(_, d)| d))
+    let checks = if ref_integrator == IntegratorKind::Exponential {
+        exponential_checks(&scene, plan, samples, &reference, &mut notes, tick)?
+    } else {
+        notes.push("the scene's load models have state only rk4 integrates (pads.mass): the reference is rk4, checked against rk4 at half its inner step".into());
+        vec![rk4_half_step_check(&scene, plan, samples, &reference, tick)?]
     };
-    let mut checks = Vec::new();
-    tick(&format!("check: rk4 at {ref_rate} Hz"));
-    match run_check(IntegratorKind::Rk4, ref_rate)? {
-        Ok(s) => checks.push(Check { integrator: IntegratorKind::Rk4.name(), rate_hz: ref_rate, difference: relative_error(&s, &reference) }),
-        Err(detail) => notes.push(format!("rk4 could not run as a check of the reference ({detail})")),
-    }
-    let half = ref_rate / 2.0;
-    tick(&format!("check: exponential at {half} Hz"));
-    match run_check(IntegratorKind::Exponential, half)? {
-        Ok(s) => checks.push(Check { integrator: IntegratorKind::Exponential.name(), rate_hz: half, difference: relative_error(&s, &reference) }),
-        Err(detail) => return Err(StudyError::NoResponse { detail: format!("the check run at {half} Hz failed: {detail}") }),
-    }
     let uncertainty = checks.iter().map(|c| c.difference).fold(0.0, f64::max);
     let modes = reference.first().map_or(0, |v| v.len());
 
@@ -243,7 +233,7 @@ pub fn run(config: &Config, plan: &StudyPlan, tick: &mut dyn FnMut(&str)) -> Res
         sample_rate_hz: plan.sample_rate_hz,
         modes,
         reference: TrajectoryReference {
-            integrator: IntegratorKind::Exponential.name(),
+            integrator: ref_integrator.name(),
             rate_hz: ref_rate,
             checks,
             uncertainty,
@@ -253,4 +243,51 @@ pub fn run(config: &Config, plan: &StudyPlan, tick: &mut dyn FnMut(&str)) -> Res
         recommendations,
         notes,
     })
+}
+
+/// `exponential`, or `rk4` when the scene's load models have state of their
+/// own that only rk4 integrates (massive pads).
+fn reference_integrator(scene: &Config, rate_hz: f64) -> IntegratorKind {
+    match Simulation::new(scene_at(scene, IntegratorKind::Exponential, rate_hz)) {
+        Err(SimulationError::ContinuousStateNeedsRk4 { .. }) => IntegratorKind::Rk4,
+        _ => IntegratorKind::Exponential,
+    }
+}
+
+/// Two independent checks of an exponential reference: another method at the
+/// same step (rk4 shares no integration code with it), and the same method
+/// at twice the step (catches step errors both methods share, e.g. a load
+/// model updated once per step). Their larger difference is the uncertainty.
+fn exponential_checks(scene: &Config, plan: &StudyPlan, samples: usize, reference: &Samples, notes: &mut Vec<String>, tick: &mut dyn FnMut(&str)) -> Result<Vec<Check>, StudyError> {
+    let ref_rate = plan.trajectory_reference_rate_hz;
+    let run_check = |integrator: IntegratorKind, rate: f64| -> Result<Result<Samples, String>, StudyError> {
+        Ok(record(&scene_at(scene, integrator, rate), steps_per_sample(rate, plan.sample_rate_hz)?, samples).map(|(s, _)| s).map_err(|(_, d)| d))
+    };
+    let mut checks = Vec::new();
+    tick(&format!("check: rk4 at {ref_rate} Hz"));
+    match run_check(IntegratorKind::Rk4, ref_rate)? {
+        Ok(s) => checks.push(Check { integrator: IntegratorKind::Rk4.name(), rate_hz: ref_rate, difference: relative_error(&s, reference) }),
+        Err(detail) => notes.push(format!("rk4 could not run as a check of the reference ({detail})")),
+    }
+    let half = ref_rate / 2.0;
+    tick(&format!("check: exponential at {half} Hz"));
+    match run_check(IntegratorKind::Exponential, half)? {
+        Ok(s) => checks.push(Check { integrator: IntegratorKind::Exponential.name(), rate_hz: half, difference: relative_error(&s, reference) }),
+        Err(detail) => return Err(StudyError::NoResponse { detail: format!("the check run at {half} Hz failed: {detail}") }),
+    }
+    Ok(checks)
+}
+
+/// The check of an rk4 reference: rk4 at the same rate with half its inner
+/// step (`simulation.rk4_step_limit` halved, so the step halves also where
+/// the stability bound, not the rate, sets it); for order 4 the difference
+/// is 15/16 of the reference's own error.
+fn rk4_half_step_check(scene: &Config, plan: &StudyPlan, samples: usize, reference: &Samples, tick: &mut dyn FnMut(&str)) -> Result<Check, StudyError> {
+    let ref_rate = plan.trajectory_reference_rate_hz;
+    tick(&format!("check: rk4 at {ref_rate} Hz, half the inner step"));
+    let mut finer = scene_at(scene, IntegratorKind::Rk4, ref_rate);
+    finer.simulation.rk4_step_limit *= 0.5;
+    let s = record(&finer, steps_per_sample(ref_rate, plan.sample_rate_hz)?, samples)
+        .map_err(|(_, detail)| StudyError::NoResponse { detail: format!("the check run at half the inner step failed: {detail}") })?;
+    Ok(Check { integrator: "rk4, half the inner step", rate_hz: ref_rate, difference: relative_error(&s.0, reference) })
 }
