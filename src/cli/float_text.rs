@@ -216,6 +216,12 @@ pub fn push_display(out: &mut Vec<u8>, v: f64, digits: &mut zmij::Buffer) {
         let _ = write!(out, "{abs}");
         return;
     }
+    if (1e-5..1e16).contains(&abs) {
+        // Żmij's decimal notation is Rust's but for the `.0` of an integer.
+        let text = digits.format_finite(abs).as_bytes();
+        out.extend_from_slice(text.strip_suffix(b".0").unwrap_or(text));
+        return;
+    }
     let Some(d) = decimal(abs, digits) else {
         out.push(b'0');
         return;
