@@ -87,24 +87,6 @@ fn decimal(abs: f64, digits: &mut zmij::Buffer) -> Option<Decimal> {
     })
 }
 
-fn push_int(out: &mut Vec<u8>, v: i32) {
-    let mut buf = [0u8; 12];
-    let mut n = v.unsigned_abs();
-    let mut at = buf.len();
-    loop {
-        at -= 1;
-        buf[at] = b'0' + (n % 10) as u8;
-        n /= 10;
-        if n == 0 {
-            break;
-        }
-    }
-    if v < 0 {
-        out.push(b'-');
-    }
-    out.extend_from_slice(&buf[at..]);
-}
-
 /// Non-finite values as Rust prints them (`NaN`, `inf`, `-inf`); `false` for finite ones.
 fn push_non_finite(out: &mut Vec<u8>, v: f64) -> bool {
     if v.is_nan() {
@@ -117,43 +99,106 @@ fn push_non_finite(out: &mut Vec<u8>, v: f64) -> bool {
     true
 }
 
-/// Append `v` as `format!("{v:e}")` would: `0e0`, `-1e0`, `1.5e-7`, `1.2345e2`.
-pub fn push_exp(out: &mut Vec<u8>, v: f64, digits: &mut zmij::Buffer) {
-    if push_non_finite(out, v) {
-        return;
+/// Bytes [`write_exp`] needs: a sign, 17 digits, the point, `e`, the
+/// exponent's sign and three digits (24), rounded up.
+pub const EXP_SLOT: usize = 32;
+
+/// Copy `src` (at most `dst.len()` bytes) to the start of `dst` by two
+/// overlapping fixed-size copies (no call to `memcpy` for a 20-byte value).
+#[inline]
+fn copy_short(dst: &mut [u8], src: &[u8]) {
+    let n = src.len();
+    if n >= 16 {
+        dst[..16].copy_from_slice(&src[..16]);
+        dst[n - 16..n].copy_from_slice(&src[n - 16..]);
+    } else if n >= 8 {
+        dst[..8].copy_from_slice(&src[..8]);
+        dst[n - 8..n].copy_from_slice(&src[n - 8..]);
+    } else {
+        dst[..n].copy_from_slice(src);
     }
-    if v.is_sign_negative() {
-        out.push(b'-');
+}
+
+/// Write `v` as `format!("{v:e}")` would (`0e0`, `-1e0`, `1.5e-7`,
+/// `1.2345e2`) at the start of `out`; the length written.
+///
+/// |v| < 1e-5 or ≥ 1e16 (Żmij's scientific notation, the magnitudes of
+/// most amplitudes) is Żmij's text as it is, but for the `+` of a positive
+/// exponent: digits without trailing zeros, lowercase `e`, an unpadded
+/// exponent. In between, Żmij prints decimal notation, read back into digits
+/// and exponent. (Żmij's text is scientific exactly when the shortest
+/// decimal's exponent is outside −5..=15; for an `f64` the shortest decimal of
+/// a value below the `f64` 1e-5 is below 1e-5, so comparing the `f64` decides.)
+pub fn write_exp(out: &mut [u8; EXP_SLOT], v: f64, digits: &mut zmij::Buffer) -> usize {
+    if v.is_nan() {
+        return write_exp_rare(out, v);
     }
+    out[0] = b'-';
+    let at = v.is_sign_negative() as usize;
     let abs = v.abs();
     if abs == 0.0 {
-        out.extend_from_slice(b"0e0");
-        return;
+        out[at..at + 3].copy_from_slice(b"0e0");
+        return at + 3;
     }
-    if may_tie(abs) {
-        use std::io::Write as _;
-        let _ = write!(out, "{abs:e}");
-        return;
+    if !abs.is_finite() || may_tie(abs) {
+        return at + write_exp_rare(&mut out[at..], abs);
     }
     let text = digits.format_finite(abs).as_bytes();
-    // Żmij's scientific notation is Rust's but for the `+` of a positive
-    // exponent: digits without trailing zeros, lowercase `e`, an unpadded
-    // exponent. (Its exponent is `e`, a sign and at most three digits: the
-    // `e` is within the last five bytes.)
-    let tail = text.len().saturating_sub(5);
-    if let Some(e) = text[tail..].iter().position(|&c| c == b'e').map(|i| tail + i) {
-        out.extend_from_slice(&text[..=e]);
-        out.extend_from_slice(text[e + 1..].strip_prefix(b"+").unwrap_or(&text[e + 1..]));
-        return;
+    if abs < 1e-5 {
+        copy_short(&mut out[at..], text);
+        return at + text.len();
+    }
+    if abs >= 1e16 {
+        // `d.ddde+X`: the text without its `+`.
+        let e = text.iter().position(|&c| c == b'e').unwrap_or(text.len());
+        let mut n = at;
+        for &c in text[..=e].iter().chain(&text[e + 2..]) {
+            out[n] = c;
+            n += 1;
+        }
+        return n;
     }
     let d = from_decimal_notation(text);
-    out.push(d.digits[0]);
+    let mut n = at;
+    out[n] = d.digits[0];
+    n += 1;
     if d.n > 1 {
-        out.push(b'.');
-        out.extend_from_slice(&d.digits[1..d.n]);
+        out[n] = b'.';
+        out[n + 1..n + d.n].copy_from_slice(&d.digits[1..d.n]);
+        n += d.n;
     }
-    out.push(b'e');
-    push_int(out, d.exp);
+    out[n] = b'e';
+    n += 1;
+    // The exponent is in −5..=15 here.
+    if d.exp < 0 {
+        out[n] = b'-';
+        n += 1;
+    }
+    let e = d.exp.unsigned_abs() as u8;
+    if e >= 10 {
+        out[n] = b'1';
+        n += 1;
+    }
+    out[n] = b'0' + e % 10;
+    n + 1
+}
+
+/// `{:e}` of NaN, an infinite |v| or a possible tie, by Rust's
+/// formatter (rare: not the amplitudes of a simulation's rows).
+#[cold]
+fn write_exp_rare(out: &mut [u8], v: f64) -> usize {
+    use std::io::Write as _;
+    let space = out.len();
+    let mut rest = &mut out[..];
+    let _ = write!(rest, "{v:e}");
+    space - rest.len()
+}
+
+/// Append `v` as `format!("{v:e}")` would: [`write_exp`] on a `Vec`.
+pub fn push_exp(out: &mut Vec<u8>, v: f64, digits: &mut zmij::Buffer) {
+    let mut slot = [0u8; EXP_SLOT];
+    let n = write_exp(&mut slot, v, digits);
+    out.extend_from_slice(&slot[..n]);
 }
 
 /// Append `v` as `format!("{v}")` would: no exponent, no trailing `.0`
@@ -169,6 +214,12 @@ pub fn push_display(out: &mut Vec<u8>, v: f64, digits: &mut zmij::Buffer) {
     if abs != 0.0 && may_tie(abs) {
         use std::io::Write as _;
         let _ = write!(out, "{abs}");
+        return;
+    }
+    if (1e-5..1e16).contains(&abs) {
+        // Żmij's decimal notation is Rust's but for the `.0` of an integer.
+        let text = digits.format_finite(abs).as_bytes();
+        out.extend_from_slice(text.strip_suffix(b".0").unwrap_or(text));
         return;
     }
     let Some(d) = decimal(abs, digits) else {
@@ -239,6 +290,17 @@ mod tests {
             9007199254740993.0,
             // Exactly between 1.3948654250235362e15 and …63e15: a digit generator may round to even, Rust up.
             f64::from_bits(0x4313_d27d_a8ac_08c1),
+            // Where Żmij's text turns from scientific to decimal notation and back.
+            1e-5f64.next_down(),
+            1e-5f64.next_up(),
+            -1e-5,
+            9.99999e-6,
+            1e16f64.next_down(),
+            1e16f64.next_up(),
+            -1e16,
+            1.2345678901234567e16,
+            9.999999999999998e15,
+            -f64::NAN,
         ] {
             check(v, &mut digits, &mut out);
         }

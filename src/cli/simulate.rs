@@ -11,7 +11,7 @@
 
 use std::sync::atomic::{AtomicBool, Ordering};
 use super::error::{CliError, CliResult};
-use super::float_text::{push_display, push_exp};
+use super::float_text::{push_display, write_exp, EXP_SLOT};
 use crate::dynamics::{stability, Simulation};
 use std::io::Write;
 
@@ -64,45 +64,71 @@ pub fn column_unit(name: &str) -> Option<&'static str> {
 
 /// Formats CSV rows into one reused buffer: shortest round-trip floats
 /// (`{}` for time and joint, `{:e}` for the rest, src/cli/float_text.rs), no
-/// allocation per row.
+/// allocation per row. The buffer is kept at least [`EXP_SLOT`] bytes past
+/// the text, so each value is written in place at a cursor (no capacity check
+/// or `memcpy` call per value).
 pub struct RowWriter {
     line: Vec<u8>,
+    len: usize,
+    text: Vec<u8>,
     digits: zmij::Buffer,
 }
 
 impl Default for RowWriter {
     fn default() -> RowWriter {
-        RowWriter { line: Vec::with_capacity(4096), digits: zmij::Buffer::new() }
+        RowWriter { line: vec![0; 4096], len: 0, text: Vec::with_capacity(64), digits: zmij::Buffer::new() }
     }
+}
+
+/// The [`EXP_SLOT`] + 1 bytes of `line` from `at` (grown when short: once, for the first rows).
+fn slot(line: &mut Vec<u8>, at: usize) -> &mut [u8; EXP_SLOT + 1] {
+    if line.len() < at + EXP_SLOT + 1 {
+        line.resize(2 * line.len() + EXP_SLOT + 1, 0);
+    }
+    (&mut line[at..at + EXP_SLOT + 1]).try_into().unwrap_or_else(|_| unreachable!())
 }
 
 impl RowWriter {
     fn display(&mut self, v: f64) {
-        push_display(&mut self.line, v, &mut self.digits);
+        self.text.clear();
+        push_display(&mut self.text, v, &mut self.digits);
+        let end = self.len + self.text.len();
+        if self.line.len() < end + EXP_SLOT + 1 {
+            self.line.resize(2 * end + EXP_SLOT + 1, 0);
+        }
+        self.line[self.len..end].copy_from_slice(&self.text);
+        self.len = end;
+    }
+
+    fn byte(&mut self, c: u8) {
+        slot(&mut self.line, self.len)[0] = c;
+        self.len += 1;
     }
 
     fn exp(&mut self, v: f64) {
-        self.line.push(b',');
-        push_exp(&mut self.line, v, &mut self.digits);
+        let slot = slot(&mut self.line, self.len);
+        slot[0] = b',';
+        let value: &mut [u8; EXP_SLOT] = (&mut slot[1..]).try_into().unwrap_or_else(|_| unreachable!());
+        self.len += 1 + write_exp(value, v, &mut self.digits);
     }
 
     /// The row of the current state, newline included.
     pub fn row(&mut self, sim: &Simulation) -> &[u8] {
-        self.line.clear();
+        self.len = 0;
         let j = sim.joint();
         self.display(sim.time());
-        self.line.push(b',');
+        self.byte(b',');
         self.display(j.position);
-        self.line.push(b',');
+        self.byte(b',');
         self.display(j.velocity);
         for &v in sim.q_lagrange().iter().chain(sim.q_ale()) {
             self.exp(v);
         }
         for i in 0..sim.n_ale_nodes() {
-            self.exp(sim.ale_node(i).uz);
+            self.exp(sim.ale_node_uz(i));
         }
         for i in 0..sim.n_lagrange_nodes() {
-            self.exp(sim.lagrange_node(i).uz);
+            self.exp(sim.lagrange_node_uz(i));
         }
         if !sim.scene().load_models.is_empty() {
             self.exp(j.effort);
@@ -124,8 +150,8 @@ impl RowWriter {
         for j in 0..sim.link_count() {
             self.exp(sim.link_force(j));
         }
-        self.line.push(b'\n');
-        &self.line
+        self.byte(b'\n');
+        &self.line[..self.len]
     }
 }
 

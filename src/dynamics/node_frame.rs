@@ -106,6 +106,15 @@ impl NodeFrame {
         }
         out
     }
+
+    /// The w of [`NodeFrame::deflection`] alone (the same sum, bit for bit).
+    pub fn deflection_w(&self, q: &[f64]) -> f64 {
+        let mut w = 0.0;
+        for (s, &qi) in self.shapes.iter().zip(q) {
+            w += s.w * qi;
+        }
+        w
+    }
 }
 
 /// ∇(∂w_i/∂φ) at (r, φ): with w_i = R(r) Θ(φ), ∂_r ∂_φ w_i = R′ Θ′ and

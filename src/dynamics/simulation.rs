@@ -364,6 +364,17 @@ impl Simulation {
         NodeOutput::of(&self.scene.lagrange_nodes[j], q, q_dot, self.state.speed, self.residual_deflection(self.scene.ale_nodes.len() + j))
     }
 
+    /// The `uz` of [`Simulation::ale_node`] alone (m; the same sums, bit for
+    /// bit, without the rest of the node's kinematics: the CSV's column).
+    pub fn ale_node_uz(&self, j: usize) -> f64 {
+        self.scene.ale_nodes[j].deflection_w(self.state.ale().0) + self.residual_deflection(j)
+    }
+
+    /// The `uz` of [`Simulation::lagrange_node`] alone (m).
+    pub fn lagrange_node_uz(&self, j: usize) -> f64 {
+        self.scene.lagrange_nodes[j].deflection_w(self.state.lagrange().0) + self.residual_deflection(self.scene.ale_nodes.len() + j)
+    }
+
     /// Transverse force (N) at node `b` (ALE first, then Lagrangian): the held
     /// wrench plus the load models', z in the node frame.
     pub fn transverse_node_force(&self, b: usize) -> f64 {

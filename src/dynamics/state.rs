@@ -132,10 +132,23 @@ impl State {
     }
 }
 
-/// Every value finite, without an early exit (an OR over all of them the
-/// compiler vectorizes; the divergence guard runs it every step).
+/// Every value finite, without an early exit (the divergence guard runs it
+/// every step): v − v is +0 for a finite v and NaN for NaN or ±∞, so sums of
+/// them are 0 exactly when every value is finite. Four independent sums, so
+/// the compiler can keep them in vector lanes (two flops a value; a per-value
+/// `is_finite` fold was not vectorized, ~4 instructions a value).
 fn all_finite(values: &[f64]) -> bool {
-    !values.iter().fold(false, |any, v| any | !v.is_finite())
+    let mut sums = [0.0f64; 4];
+    let chunks = values.chunks_exact(4);
+    for &v in chunks.remainder() {
+        sums[0] += v - v;
+    }
+    for c in chunks {
+        for j in 0..4 {
+            sums[j] += c[j] - c[j];
+        }
+    }
+    (sums[0] + sums[1]) + (sums[2] + sums[3]) == 0.0
 }
 
 #[cfg(test)]

@@ -352,37 +352,50 @@ impl BandedStiffness {
     }
 
     /// Cholesky factor of K̄_k (lower band: l[i][d] = L(i, i − d)), or None if
-    /// not positive definite.
+    /// not positive definite. Row i: L(i, j) for j = i−3, i−2, i−1, then the
+    /// diagonal, each entry's products subtracted in the order of increasing
+    /// distance from it.
     fn factor(&self, k: u32, l: &mut Vec<[f64; 4]>) -> Option<()> {
         let (k2, ck) = ((k as f64).powi(2), angular_norm(k));
+        let k4 = k2 * k2;
         let n = self.n;
         l.clear();
         l.resize(n, [0.0; 4]);
-        let a = |i: usize, d: usize| ck * (self.parts[0][i][d] + k2 * self.parts[1][i][d] + k2 * k2 * self.parts[2][i][d]);
+        let [p0, p1, p2] = &self.parts;
+        let a = |i: usize, d: usize| ck * (p0[i][d] + k2 * p1[i][d] + k4 * p2[i][d]);
         for i in 0..n {
-            // L(i, j) for j = i−3..i−1, then the diagonal.
-            for d in (1..4).rev() {
-                if d > i {
-                    continue;
+            let mut row = [0.0; 4];
+            if i >= 3 {
+                row[3] = a(i - 3, 3) / l[i - 3][0];
+            }
+            if i >= 2 {
+                let lj = l[i - 2];
+                let mut s = a(i - 2, 2);
+                if i >= 3 {
+                    s -= row[3] * lj[1];
                 }
-                let j = i - d;
-                let mut s = a(j, d);
-                for m in 1..4 {
-                    // L(i, j − m) L(j, j − m)
-                    if m + d < 4 && m <= j {
-                        s -= l[i][d + m] * l[j][m];
-                    }
+                row[2] = s / lj[0];
+            }
+            if i >= 1 {
+                let lj = l[i - 1];
+                let mut s = a(i - 1, 1);
+                if i >= 2 {
+                    s -= row[2] * lj[1];
                 }
-                l[i][d] = s / l[j][0];
+                if i >= 3 {
+                    s -= row[3] * lj[2];
+                }
+                row[1] = s / lj[0];
             }
             let mut diag = a(i, 0);
             for d in 1..4.min(i + 1) {
-                diag -= l[i][d] * l[i][d];
+                diag -= row[d] * row[d];
             }
             if diag <= 0.0 || !diag.is_finite() {
                 return None;
             }
-            l[i][0] = diag.sqrt();
+            row[0] = diag.sqrt();
+            l[i] = row;
         }
         Some(())
     }
@@ -391,18 +404,28 @@ impl BandedStiffness {
 /// Solve L Lᵀ x = b in place (band factor from [`BandedStiffness::factor`]).
 fn band_solve(l: &[[f64; 4]], x: &mut [f64]) {
     let n = x.len();
-    for i in 0..n {
+    let l = &l[..n];
+    for i in 0..n.min(3) {
         let mut s = x[i];
-        for d in 1..4.min(i + 1) {
+        for d in 1..i + 1 {
             s -= l[i][d] * x[i - d];
         }
         x[i] = s / l[i][0];
     }
+    for i in 3..n {
+        let li = l[i];
+        let s = x[i] - li[1] * x[i - 1] - li[2] * x[i - 2] - li[3] * x[i - 3];
+        x[i] = s / li[0];
+    }
     for i in (0..n).rev() {
         let mut s = x[i];
-        for d in 1..4 {
-            if i + d < n {
-                s -= l[i + d][d] * x[i + d];
+        if i + 3 < n {
+            s = s - l[i + 1][1] * x[i + 1] - l[i + 2][2] * x[i + 2] - l[i + 3][3] * x[i + 3];
+        } else {
+            for d in 1..4 {
+                if i + d < n {
+                    s -= l[i + d][d] * x[i + d];
+                }
             }
         }
         x[i] = s / l[i][0];
@@ -483,6 +506,91 @@ mod tests {
         band_solve(&l, &mut b);
         for (u, v) in b.iter().zip(&xs) {
             assert!((u - v).abs() < 1e-13, "{u} vs {v}");
+        }
+    }
+
+    /// The band Cholesky as first written (loops over the band with the
+    /// bounds as conditions): the reference the unrolled rows must equal.
+    fn factor_loops(bs: &BandedStiffness, k: u32) -> Option<Vec<[f64; 4]>> {
+        let (k2, ck) = ((k as f64).powi(2), angular_norm(k));
+        let n = bs.n;
+        let mut l = vec![[0.0; 4]; n];
+        let a = |i: usize, d: usize| ck * (bs.parts[0][i][d] + k2 * bs.parts[1][i][d] + k2 * k2 * bs.parts[2][i][d]);
+        for i in 0..n {
+            for d in (1..4).rev() {
+                if d > i {
+                    continue;
+                }
+                let j = i - d;
+                let mut s = a(j, d);
+                for m in 1..4 {
+                    if m + d < 4 && m <= j {
+                        s -= l[i][d + m] * l[j][m];
+                    }
+                }
+                l[i][d] = s / l[j][0];
+            }
+            let mut diag = a(i, 0);
+            for d in 1..4.min(i + 1) {
+                diag -= l[i][d] * l[i][d];
+            }
+            if diag <= 0.0 || !diag.is_finite() {
+                return None;
+            }
+            l[i][0] = diag.sqrt();
+        }
+        Some(l)
+    }
+
+    fn band_solve_loops(l: &[[f64; 4]], x: &mut [f64]) {
+        let n = x.len();
+        for i in 0..n {
+            let mut s = x[i];
+            for d in 1..4.min(i + 1) {
+                s -= l[i][d] * x[i - d];
+            }
+            x[i] = s / l[i][0];
+        }
+        for i in (0..n).rev() {
+            let mut s = x[i];
+            for d in 1..4 {
+                if i + d < n {
+                    s -= l[i + d][d] * x[i + d];
+                }
+            }
+            x[i] = s / l[i][0];
+        }
+    }
+
+    #[test]
+    fn the_unrolled_band_cholesky_equals_the_loop_form_bit_for_bit() {
+        // The static solve of a steel annulus graded towards its rim (the
+        // lathe disc's residual), every band, and small systems (n < 4).
+        let plate = PlateConfig::lathe_disc();
+        let rigidity = crate::config::bending_rigidity(plate.youngs_modulus, plate.thickness, plate.poisson_ratio);
+        let mut systems = Vec::new();
+        for &k_band in &BANDS {
+            let basis = BSplineBasis::with_breakpoints(&breakpoints(0.075, 0.15, &[0.15, 0.1], k_band));
+            systems.push((BandedStiffness::new(&plate, rigidity, basis), k_band));
+        }
+        for n in 1..6 {
+            let dense = |i: usize, j: usize| match i.abs_diff(j) { 0 => 10.0 + i as f64, 1 => -2.0, 2 => 0.5, 3 => -0.25, _ => 0.0 };
+            let parts = [(0..n).map(|i| std::array::from_fn(|d| if i + d < n { dense(i, i + d) } else { 0.0 })).collect(), vec![[0.1; 4]; n], vec![[0.01; 4]; n]];
+            systems.push((BandedStiffness { basis: BSplineBasis::new(1.0, 2.0, 4), drop_inner: 0, n, parts }, 8));
+        }
+        let mut l = Vec::new();
+        for (bs, k_band) in &systems {
+            for k in [0, 1, 2, 3, k_band / 2 + 1, *k_band] {
+                let reference = factor_loops(bs, k);
+                assert_eq!(bs.factor(k, &mut l).is_some(), reference.is_some(), "k = {k}, n = {}", bs.n);
+                let Some(reference) = reference else { continue };
+                assert!(l.iter().flatten().zip(reference.iter().flatten()).all(|(a, b)| a.to_bits() == b.to_bits()), "factor k = {k}, n = {}", bs.n);
+                let b: Vec<f64> = (0..bs.n).map(|i| (i as f64 * 0.37 + 0.1).sin()).collect();
+                let (mut x, mut y) = (b.clone(), b);
+                band_solve(&l, &mut x);
+                band_solve_loops(&reference, &mut y);
+                assert!(x.iter().zip(&y).all(|(a, b)| a.to_bits() == b.to_bits()), "solve k = {k}, n = {}", bs.n);
+            }
         }
     }
 
