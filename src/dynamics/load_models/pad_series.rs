@@ -117,10 +117,11 @@ impl Pads {
         let q_dot = q.iter().map(|f| ratio * f).collect();
         let pads = self.pad_states() / 2;
         let mut pad = vec![0.0; nc * pads];
-        for c in (0..nc).filter(|_| self.is_massive()) {
+        for c in 0..nc * self.is_massive() as usize {
             for (d, contact) in self.contacts.iter().enumerate() {
-                // (I + K G)⁻¹ k_c = K_eff / 2 on ξ_b − ξ_t of contact d's pad.
-                let half = 0.5 * keff[c * nc + d] * active[d] as u8 as f64;
+                // (I + K G)⁻¹ k_c = K_eff / 2 on ξ_b − ξ_t of contact d's pad
+                // (K_eff's column of an open contact is 0).
+                let half = 0.5 * keff[c * nc + d];
                 pad[c * pads + 2 * contact.pad] -= half;
                 pad[c * pads + 2 * contact.pad + 1] += half;
             }
