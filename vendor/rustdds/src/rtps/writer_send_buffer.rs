@@ -759,15 +759,22 @@ mod tests {
       assert!(buf.get_by_sn(last).is_some());
     }
 
-    // The unsent backlog still back-pressures: 8 unsent samples fill it, and
-    // none of them is evicted.
+    // The unsent backlog still back-pressures: 8 unsent samples fill it. None
+    // of them is evicted although they exceed the depth; the sent ones, now
+    // older than the newest `depth`, are.
     let sent = buf.last_change_sequence_number();
     for _ in 0..8 {
       assert!(admit_now(&buf, WriteOptions::default()));
     }
     assert!(!admit_now(&buf, WriteOptions::default()));
-    assert_eq!(buf.retained_len(), depth + 8);
-    assert_eq!(buf.first_change_sequence_number(), SequenceNumber::new(i64::from(sent) - 2));
+    assert_eq!(buf.retained_len(), 8);
+    assert_eq!(buf.first_change_sequence_number(), sent.plus_1());
+    for sn in 1..=8 {
+      assert!(buf.get_by_sn(SequenceNumber::new(i64::from(sent) + sn)).is_some());
+    }
+    // Once they are sent, the depth applies again.
+    buf.set_sent_frontier(buf.last_change_sequence_number());
+    assert_eq!(buf.retained_len(), depth);
   }
 
   // Without `keep_last_evicts_sent` (the default) a reliable writer keeps every
