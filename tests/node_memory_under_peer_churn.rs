@@ -2,11 +2,13 @@
 //! issue 10).
 //!
 //! A killed reliable subscriber stays matched until its lease expires
-//! (Cyclone DDS: 10 s); RustDDS keeps what it has not acknowledged (up to
-//! 8,192 samples per writer) until then. With the RustDDS patch
-//! (vendor/rustdds/PATCH.md) a newly matched reader no longer costs one
-//! pending-GAP entry per sample the writer ever wrote — before, the node
-//! swung by tens of MB during the rounds, more the longer it had run. The node hands freed heap back to the OS
+//! (Cyclone DDS: 10 s). With the RustDDS patch (vendor/rustdds/PATCH.md) a
+//! newly matched reader no longer costs one pending-GAP entry per sample the
+//! writer ever wrote (change 1), a reliable keep-last writer keeps only its
+//! depth of sent samples instead of up to 8,192 unacknowledged ones per
+//! writer for a reader that stopped acknowledging (change 4), and discovery
+//! forgets departed endpoints (change 5). Before, the node swung by tens of
+//! MB during the rounds. The node hands freed heap back to the OS
 //! (src/ros/heap.rs). Measured: the node's resident memory after every round
 //! and once the leases have expired, against the same after a warm-up.
 
@@ -63,15 +65,17 @@ fn killed_and_departed_peers_leave_no_lasting_memory_behind() {
     let after = rss_kb(&node);
     println!("node RSS: after warm-up {warm} kB; during {ROUNDS} rounds of 8 + 8 killed peers {during:?} kB; leases expired {after} kB");
     // Measured: before the RustDDS patch (4 rounds) 17.3 → up to 25.6 MB during
-    // the rounds (+48 %), 17.1 MB after; with it (6 rounds, two runs) 19.4 →
-    // up to 26.5 MB (+37 %) and 29.1 MB (+50 %), 18.8 and 19.3 MB after. While killed peers' leases run RustDDS
-    // still keeps up to 8,192 unacknowledged samples per writer for each, so
-    // the rounds themselves are bounded, not flat: the bound below catches
-    // growth without limit (a pending-GAP set per sample ever written grew
-    // with the node's uptime), not the patch's difference at this short
-    // uptime — benches/peer_churn.py's 100 rounds show that. Once the leases
-    // have expired the node must be back within 5 %.
+    // the rounds (+48 %), 17.1 MB after; with changes 1–3 (6 rounds, two
+    // runs) +37 % and +50 % during, when each killed peer made every writer
+    // keep up to 8,192 unacknowledged samples for its lease. With changes
+    // 1–5 (five runs on the loaded 2-core machine, load average 8–10):
+    // 18.2 → 18.8 MB (+3.3 %), 18.4 → 19.0 MB (+3.0 %), 18.5 → 19.2 MB
+    // (+3.9 %), 18.2 → 18.8 MB (+3.2 %), 18.5 → 19.1 MB (+3.0 %) during the
+    // rounds; after expiry −1.0 %, −0.2 %, −1.5 %, −0.3 %, −1.0 %. The
+    // bounds leave room for the heap trim's 5-s period and a faster machine
+    // (more killed peers' leases overlapping) and still catch either old
+    // behaviour.
     let largest = *during.iter().max().unwrap();
-    assert!(largest * 4 <= warm * 7, "during the rounds: {warm} → {largest} kB (more than +75 %): {during:?}");
+    assert!(largest * 20 <= warm * 23, "during the rounds: {warm} → {largest} kB (more than +15 %): {during:?}");
     assert!(after * 20 <= warm * 21, "leases expired: {warm} → {after} kB (more than +5 %)");
 }

@@ -556,6 +556,17 @@ impl InnerPublisher {
       backlog_limit,
       max_retain,
     );
+    // KEEP_LAST on a keyless writer (one instance, so the depth is per writer):
+    // a reliable writer keeps its newest `depth` samples plus those not yet
+    // transmitted, instead of up to `window_limit` for readers that stopped
+    // acknowledging. Keyed writers would need the depth per instance; they
+    // keep the window.
+    if writer_qos.is_reliable()
+      && guid.entity_id.entity_kind == EntityKind::WRITER_NO_KEY_USER_DEFINED
+      && matches!(writer_qos.history(), Some(policy::History::KeepLast { .. }))
+    {
+      send_buffer.set_keep_last_evicts_sent(true);
+    }
     // Doorbell: enqueue this writer's entity id and wake the participant poll.
     let doorbell = Doorbell::new(guid.entity_id, self.writer_ready.clone());
 

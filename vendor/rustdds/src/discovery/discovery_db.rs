@@ -45,6 +45,10 @@ const DEFAULT_PARTICIPANT_LEASE_DURATION: Duration = Duration::from_secs(60);
 // How much longer to wait than lease duration before pronouncing lost.
 const PARTICIPANT_LEASE_DURATION_TOLERANCE: Duration = Duration::from_secs(0);
 
+// How long the endpoints of a participant lost by lease timeout stay in the
+// attic, waiting for it to come back, before they are forgotten.
+const ATTIC_RETENTION: std::time::Duration = std::time::Duration::from_secs(60);
+
 // TODO: Let DiscoveryDB itself become thread-safe and support smaller-scope
 // lock
 pub(crate) struct DiscoveryDB {
@@ -69,6 +73,11 @@ pub(crate) struct DiscoveryDB {
   // was lost due to time-out. If we have a
   external_topic_readers_attic: BTreeMap<GUID, DiscoveredReaderData>,
   external_topic_writers_attic: BTreeMap<GUID, DiscoveredWriterData>,
+  // When each participant in the attic was lost. After ATTIC_RETENTION its
+  // endpoints and topic records are dropped: a GUID prefix is never reused
+  // by a new participant, so without this every peer that ever vanished
+  // without a goodbye stayed here for good.
+  attic_since: BTreeMap<GuidPrefix, Instant>,
 
   // Database of topic updates:
   // Outer level key is topic name
@@ -137,6 +146,7 @@ impl DiscoveryDB {
       external_topic_writers: BTreeMap::new(),
       external_topic_readers_attic: BTreeMap::new(),
       external_topic_writers_attic: BTreeMap::new(),
+      attic_since: BTreeMap::new(),
       topics: BTreeMap::new(),
       topic_updated_sender,
       participant_status_sender,
@@ -194,6 +204,7 @@ impl DiscoveryDB {
         &mut self.external_topic_writers_attic,
         &mut self.external_topic_writers,
       );
+      self.attic_since.remove(&guid.prefix);
     }
 
     // In any case:
@@ -235,7 +246,9 @@ impl DiscoveryDB {
     if active_disposal {
       self.remove_topic_reader_with_prefix(guid_prefix);
       self.remove_topic_writer_with_prefix(guid_prefix);
+      self.remove_topic_data_with_prefix(guid_prefix);
     } else {
+      self.attic_since.insert(guid_prefix, Instant::now());
       // move to attic
       move_by_guid_prefix(
         guid_prefix,
@@ -273,6 +286,50 @@ impl DiscoveryDB {
   pub fn remove_topic_reader(&mut self, guid: GUID) {
     info!("remove_topic_reader {guid:?}");
     self.external_topic_readers.remove(&guid);
+    self.remove_topic_data_from(guid);
+  }
+
+  // The topics table keeps one record per (topic, announcing endpoint). Drop
+  // those an endpoint sent when it goes away; otherwise every remote reader or
+  // writer ever discovered on a topic that stays alive (one with a local
+  // endpoint) kept its record for the participant's lifetime.
+  fn remove_topic_data_from(&mut self, guid: GUID) {
+    if guid.prefix == self.my_guid.prefix {
+      return;
+    }
+    for sources in self.topics.values_mut() {
+      sources.remove(&guid);
+    }
+  }
+
+  fn remove_topic_data_with_prefix(&mut self, guid_prefix: GuidPrefix) {
+    if guid_prefix == self.my_guid.prefix {
+      return;
+    }
+    for sources in self.topics.values_mut() {
+      sources.retain(|g, _| g.prefix != guid_prefix);
+    }
+  }
+
+  // Forget the attic entries (endpoints and topic records) of participants
+  // lost longer than ATTIC_RETENTION ago.
+  fn attic_cleanup(&mut self, now: Instant) {
+    let expired: Vec<GuidPrefix> = self
+      .attic_since
+      .iter()
+      .filter(|(_, &since)| now.duration_since(since) > ATTIC_RETENTION)
+      .map(|(&p, _)| p)
+      .collect();
+    for prefix in expired {
+      self.attic_since.remove(&prefix);
+      self
+        .external_topic_readers_attic
+        .retain(|g, _| g.prefix != prefix);
+      self
+        .external_topic_writers_attic
+        .retain(|g, _| g.prefix != prefix);
+      self.remove_topic_data_with_prefix(prefix);
+    }
   }
 
   #[cfg(feature = "security")]
@@ -300,6 +357,7 @@ impl DiscoveryDB {
 
   pub fn remove_topic_writer(&mut self, guid: GUID) {
     self.external_topic_writers.remove(&guid);
+    self.remove_topic_data_from(guid);
   }
 
   // Delete participant proxies, if we have not heard of them within
@@ -344,6 +402,7 @@ impl DiscoveryDB {
     for (guid, _) in &to_remove {
       self.remove_participant(*guid, false); // false = removed due to timeout
     }
+    self.attic_cleanup(inow);
 
     to_remove
   }
@@ -1174,5 +1233,44 @@ mod tests {
     ));
     assert_eq!(discoverydb.get_local_topic_readers(&topic).len(), 2);
     assert_eq!(discoverydb.get_all_local_topic_readers().count(), 2);
+  }
+
+  // A disposed remote reader leaves no topic record behind; the endpoints of a
+  // participant lost by lease timeout stay in the attic (with their topic
+  // records) for ATTIC_RETENTION and are then forgotten; an actively disposed
+  // participant's go at once.
+  #[test]
+  fn discdb_forgets_departed_endpoints() {
+    let (sender, _receiver) = std::sync::mpsc::sync_channel::<()>(4);
+    let (status_sender, _status_receiver) = sync_status_channel(16).unwrap();
+    let mut db = DiscoveryDB::new(GUID::new_participant_guid(), sender, status_sender);
+    let records = |db: &DiscoveryDB| db.topics.get("churn").map_or(0, BTreeMap::len);
+
+    let reader = DiscoveredReaderData::default("churn".to_string(), "T".to_string());
+    let guid = reader.reader_proxy.remote_reader_guid;
+    db.update_subscription(&reader);
+    assert_eq!(records(&db), 1);
+    db.remove_topic_reader(guid);
+    assert!(db.external_topic_readers.is_empty());
+    assert_eq!(records(&db), 0);
+
+    db.update_subscription(&reader);
+    db.remove_participant(guid.prefix, false);
+    assert!(db.external_topic_readers.is_empty());
+    assert_eq!(db.external_topic_readers_attic.len(), 1);
+    let lost = db.attic_since[&guid.prefix];
+    db.attic_cleanup(lost + ATTIC_RETENTION);
+    assert_eq!(db.external_topic_readers_attic.len(), 1);
+    assert_eq!(records(&db), 1);
+    db.attic_cleanup(lost + ATTIC_RETENTION + StdDuration::from_millis(1));
+    assert!(db.external_topic_readers_attic.is_empty());
+    assert!(db.attic_since.is_empty());
+    assert_eq!(records(&db), 0);
+
+    db.update_subscription(&reader);
+    db.remove_participant(guid.prefix, true);
+    assert!(db.external_topic_readers.is_empty());
+    assert!(db.external_topic_readers_attic.is_empty());
+    assert_eq!(records(&db), 0);
   }
 }

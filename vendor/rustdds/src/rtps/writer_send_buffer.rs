@@ -70,6 +70,17 @@ struct Inner {
   // send window / unsent-backlog and must retain samples for repair.
   max_retain: usize,
 
+  // KEEP_LAST for a reliable writer (set with `set_keep_last_evicts_sent`): the
+  // `max_retain` bound also applies while reliable readers are matched, but
+  // only to samples already transmitted (`seq <= sent_frontier`), and the
+  // acknowledgement window no longer blocks admission. DDS v1.4 2.2.3.18
+  // HISTORY: KEEP_LAST keeps the most recent `depth` samples; a reader that
+  // later asks for an evicted one gets a GAP (see the repair path). Without it
+  // a reliable reader that stops acknowledging (a killed peer, until its lease
+  // expires) makes the writer retain up to `window_limit` samples and then
+  // refuse writes. Off by default.
+  keep_last_evicts_sent: bool,
+
   // Wakers of async producers / ack-waiters parked because the window was full
   // or acknowledgements were still pending. Drained (woken) on any advance.
   wakers: Vec<Waker>,
@@ -130,6 +141,7 @@ impl WriterSendBuffer {
           backlog_limit: backlog_limit.max(1),
           sent_frontier: SequenceNumber::new(0),
           max_retain: max_retain.max(1),
+          keep_last_evicts_sent: false,
           wakers: Vec::new(),
         }),
         progress: Condvar::new(),
@@ -171,9 +183,12 @@ impl WriterSendBuffer {
       return false;
     }
 
-    if !shared.reliable_writer || !inner.reliable_readers_present {
+    if !shared.reliable_writer || !inner.reliable_readers_present || inner.keep_last_evicts_sent
+    {
       // Best-effort and "no reliable reader yet" writers have no acknowledgement
-      // window to wait on; the backlog limit above is their only throttle.
+      // window to wait on; the backlog limit above is their only throttle. Nor
+      // has a KEEP_LAST writer with `keep_last_evicts_sent`: acknowledged or
+      // not, its sent samples beyond the depth make room.
       return true;
     }
     // Number of unacknowledged samples in [acked_before, last_seq].
@@ -302,7 +317,39 @@ impl WriterSendBuffer {
         inner.first_seq = oldest.plus_1();
       }
     }
+    Self::evict_sent_beyond_depth(inner);
     seq
+  }
+
+  // `keep_last_evicts_sent`: drop the oldest samples while more than
+  // `max_retain` (the depth) are retained, but never one the Writer has not
+  // transmitted yet. SNs are allocated in order and `sent_frontier` only
+  // advances, so the sent samples are a prefix of `changes`.
+  fn evict_sent_beyond_depth(inner: &mut Inner) {
+    if !inner.keep_last_evicts_sent {
+      return;
+    }
+    while inner.changes.len() > inner.max_retain {
+      match inner.changes.first_key_value() {
+        Some((&oldest, _)) if oldest <= inner.sent_frontier => {
+          inner.changes.remove(&oldest);
+          inner.first_seq = oldest.plus_1();
+        }
+        _ => break,
+      }
+    }
+  }
+
+  /// Honour KEEP_LAST for this reliable writer while readers are matched: keep
+  /// at most `max_retain` samples (the History depth) once they have been
+  /// transmitted, evicting the oldest sent sample even if unacknowledged, and
+  /// never block admission on the acknowledgement window (the unsent backlog
+  /// still does). For writers whose History is KEEP_LAST and whose samples all
+  /// belong to one instance (keyless topics): the depth is per instance.
+  pub fn set_keep_last_evicts_sent(&self, on: bool) {
+    let mut inner = self.shared.inner.lock().unwrap();
+    inner.keep_last_evicts_sent = on;
+    Self::evict_sent_beyond_depth(&mut inner);
   }
 
   // --- consumer side (Writer / event loop) ---
@@ -347,6 +394,7 @@ impl WriterSendBuffer {
     let mut inner = shared.inner.lock().unwrap();
     if sent_frontier > inner.sent_frontier {
       inner.sent_frontier = sent_frontier;
+      Self::evict_sent_beyond_depth(&mut inner);
       Self::wake_all(&mut inner, &shared.progress);
     }
   }
@@ -662,5 +710,94 @@ mod tests {
       assert!(admit_now(&buf, WriteOptions::default()));
     }
     assert_eq!(buf.retained_len(), max_retain + 10);
+  }
+
+  // KEEP_LAST with `keep_last_evicts_sent`: a matched reliable reader that never
+  // acknowledges (a killed peer) neither blocks admission nor makes the writer
+  // retain more than its depth of *sent* samples; samples not yet transmitted
+  // are never evicted, whatever the depth.
+  #[test]
+  fn keep_last_reliable_writer_evicts_only_sent_samples_beyond_depth() {
+    let depth = 3;
+    let buf = WriterSendBuffer::new(
+      GUID::GUID_UNKNOWN,
+      "t".to_string(),
+      /* reliable_writer */ true,
+      /* is_builtin */ false,
+      /* volatile */ true,
+      /* window_limit */ 8,
+      /* backlog_limit */ 8,
+      /* max_retain */ depth,
+    );
+    buf.set_keep_last_evicts_sent(true);
+    // A reliable reader is matched and never acknowledges anything.
+    buf.set_acked_frontier(Some(SequenceNumber::new(1)));
+
+    // Six samples written before the Writer transmits any: all retained.
+    for _ in 0..6 {
+      assert!(admit_now(&buf, WriteOptions::default()));
+    }
+    assert_eq!(buf.retained_len(), 6);
+    assert_eq!(buf.first_change_sequence_number(), SequenceNumber::new(1));
+
+    // The Writer transmits 1..=4: the sent ones beyond the depth go, the
+    // unsent 5 and 6 stay (three retained: 4, 5, 6).
+    buf.set_sent_frontier(SequenceNumber::new(4));
+    assert_eq!(buf.retained_len(), depth);
+    assert_eq!(buf.first_change_sequence_number(), SequenceNumber::new(4));
+    for sn in 4..=6 {
+      assert!(buf.get_by_sn(SequenceNumber::new(sn)).is_some(), "sample {sn}");
+    }
+
+    // Far more than the acknowledgement window (8) is admitted while the
+    // Writer keeps transmitting; the retained samples stay at the depth.
+    for _ in 0..100 {
+      assert!(admit_now(&buf, WriteOptions::default()));
+      let last = buf.last_change_sequence_number();
+      buf.set_sent_frontier(last);
+      assert_eq!(buf.retained_len(), depth);
+      assert!(buf.get_by_sn(last).is_some());
+    }
+
+    // The unsent backlog still back-pressures: 8 unsent samples fill it. None
+    // of them is evicted although they exceed the depth; the sent ones, now
+    // older than the newest `depth`, are.
+    let sent = buf.last_change_sequence_number();
+    for _ in 0..8 {
+      assert!(admit_now(&buf, WriteOptions::default()));
+    }
+    assert!(!admit_now(&buf, WriteOptions::default()));
+    assert_eq!(buf.retained_len(), 8);
+    assert_eq!(buf.first_change_sequence_number(), sent.plus_1());
+    for sn in 1..=8 {
+      assert!(buf.get_by_sn(SequenceNumber::new(i64::from(sent) + sn)).is_some());
+    }
+    // Once they are sent, the depth applies again.
+    buf.set_sent_frontier(buf.last_change_sequence_number());
+    assert_eq!(buf.retained_len(), depth);
+  }
+
+  // Without `keep_last_evicts_sent` (the default) a reliable writer keeps every
+  // unacknowledged sample and its window blocks admission.
+  #[test]
+  fn reliable_writer_by_default_keeps_unacknowledged_samples() {
+    let buf = WriterSendBuffer::new(
+      GUID::GUID_UNKNOWN,
+      "t".to_string(),
+      /* reliable_writer */ true,
+      /* is_builtin */ false,
+      /* volatile */ true,
+      /* window_limit */ 8,
+      /* backlog_limit */ 8,
+      /* max_retain */ 3,
+    );
+    buf.set_acked_frontier(Some(SequenceNumber::new(1)));
+    for _ in 0..8 {
+      assert!(admit_now(&buf, WriteOptions::default()));
+      let last = buf.last_change_sequence_number();
+      buf.set_sent_frontier(last);
+    }
+    assert_eq!(buf.retained_len(), 8);
+    assert!(!admit_now(&buf, WriteOptions::default()));
   }
 }
