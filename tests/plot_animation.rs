@@ -24,8 +24,12 @@ fn scene() -> PathBuf {
 
 /// 0.3 s of the swash plate (pitch links turning with it), every step; it
 /// ends deflected (1.4 mm at the first link).
+/// A fresh CSV per call: the tests run in parallel, and one must not read
+/// the file while another rewrites it.
 fn simulated_csv() -> PathBuf {
-    let csv = dir().join("animate_swash.csv");
+    static CALLS: std::sync::atomic::AtomicUsize = std::sync::atomic::AtomicUsize::new(0);
+    let call = CALLS.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+    let csv = dir().join(format!("animate_swash_{call}.csv"));
     let ok = Command::new(env!("CARGO_BIN_EXE_annular_plate"))
         .args(["simulate", "--quiet", "--duration", "0.3", "--csv"])
         .arg(&csv)
