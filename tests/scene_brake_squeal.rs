@@ -167,17 +167,17 @@ fn limit_cycle_of(c: Config, seconds: f64) -> Vec<(f64, f64, f64)> {
     let per = (0.1 / sim.dt()).round() as usize;
     let mut out = Vec::new();
     for _ in 0..(seconds / 0.1).round() as usize {
-        let (mut amp, mut normal, mut speed) = (0.0f64, f64::INFINITY, 0.0f64);
+        let (mut amp, mut normal, mut face) = (0.0f64, f64::INFINITY, 0.0f64);
         for _ in 0..per {
             sim.step().unwrap();
             amp = sim.q_ale().iter().fold(amp, |a, q| a.max(q.abs()));
             normal = sim.pad_contact_forces().iter().fold(normal, |n, f| n.min(f.top).min(f.bottom));
             for node in &sim.scene().ale_nodes {
                 let g = face_kinematics(node, sim.q_ale(), sim.q_dot_ale(), speed).grad_material_rate;
-                speed = speed.max(0.5 * h * g[0].hypot(g[1]));
+                face = face.max(0.5 * h * g[0].hypot(g[1]));
             }
         }
-        out.push((amp, normal, speed));
+        out.push((amp, normal, face));
     }
     out
 }
