@@ -80,11 +80,17 @@ impl Default for RowWriter {
     }
 }
 
-/// The [`EXP_SLOT`] + 1 bytes of `line` from `at` (grown when short: once, for the first rows).
-fn slot(line: &mut Vec<u8>, at: usize) -> &mut [u8; EXP_SLOT + 1] {
-    if line.len() < at + EXP_SLOT + 1 {
-        line.resize(2 * line.len() + EXP_SLOT + 1, 0);
+/// Grows `line` to at least `end` + [`EXP_SLOT`] + 1 bytes (doubling: once
+/// or twice, for the first rows), so the next value fits past `end`.
+fn keep_slot_after(line: &mut Vec<u8>, end: usize) {
+    if line.len() < end + EXP_SLOT + 1 {
+        line.resize(2 * end.max(line.len()) + EXP_SLOT + 1, 0);
     }
+}
+
+/// The [`EXP_SLOT`] + 1 bytes of `line` from `at`.
+fn slot(line: &mut Vec<u8>, at: usize) -> &mut [u8; EXP_SLOT + 1] {
+    keep_slot_after(line, at);
     (&mut line[at..at + EXP_SLOT + 1]).try_into().unwrap_or_else(|_| unreachable!())
 }
 
@@ -93,9 +99,7 @@ impl RowWriter {
         self.text.clear();
         push_display(&mut self.text, v, &mut self.digits);
         let end = self.len + self.text.len();
-        if self.line.len() < end + EXP_SLOT + 1 {
-            self.line.resize(2 * end + EXP_SLOT + 1, 0);
-        }
+        keep_slot_after(&mut self.line, end);
         self.line[self.len..end].copy_from_slice(&self.text);
         self.len = end;
     }
