@@ -92,7 +92,7 @@ fn pair(sim: &Simulation) -> Pair {
 /// (s = −(k_c + k_b)/m_p) and the sin mode (s = −ω²) stay alone.
 #[test]
 fn one_pad_on_one_mode_pair_has_the_frequencies_of_its_characteristic_polynomial() {
-    for (caliper, backing) in [(Caliper::Fixed, Some(BACKING)), (Caliper::Floating, None)] {
+    for (caliper, backing) in CALIPERS {
         let mut c = scene(caliper, PAD_MASS, backing, 0.0, &[0.0]);
         c.plate.damping = vec![0.0];
         c.pads.as_mut().unwrap().contact_damping = 0.0;
@@ -204,9 +204,17 @@ fn in_series(mut c: Config) -> Config {
 /// Modal pads, and pads in series with the residual flexibility.
 const DESCRIPTIONS: [fn(Config) -> Config; 2] = [|c| c, in_series];
 
+/// The fixed caliper (with its backing stiffness) and the floating one.
+const CALIPERS: [(Caliper, Option<f64>); 2] = [(Caliper::Fixed, Some(BACKING)), (Caliper::Floating, None)];
+
+/// Each caliper with each description.
+fn calipers_and_descriptions() -> impl Iterator<Item = ((Caliper, Option<f64>), fn(Config) -> Config)> {
+    CALIPERS.into_iter().flat_map(|c| DESCRIPTIONS.map(|d| (c, d)))
+}
+
 #[test]
 fn the_friction_threshold_with_pad_mass_matches_the_tests_own_eigen_solve() {
-    for ((caliper, backing), series) in [(Caliper::Fixed, Some(BACKING)), (Caliper::Floating, None)].into_iter().flat_map(|c| DESCRIPTIONS.map(|d| (c, d))) {
+    for ((caliper, backing), series) in calipers_and_descriptions() {
         let sim = Simulation::new(series(scene(caliper, PAD_MASS, backing, 0.0, &[0.0]))).unwrap();
         let eig = stability::friction_threshold(sim.scene(), SPEED, 20.0).expect("squeals below μ = 20");
         let own = own_threshold(&sim, backing.unwrap_or(0.0));
@@ -269,7 +277,7 @@ fn simulated_growth_rate(c: Config, steps: usize) -> (f64, f64) {
 
 #[test]
 fn eigenvalues_and_simulation_agree_on_growth_rates_with_pad_mass() {
-    for ((caliper, backing), series) in [(Caliper::Fixed, Some(BACKING)), (Caliper::Floating, None)].into_iter().flat_map(|c| DESCRIPTIONS.map(|d| (c, d))) {
+    for ((caliper, backing), series) in calipers_and_descriptions() {
         let sim = Simulation::new(series(scene(caliper, PAD_MASS, backing, 0.0, &[0.0]))).unwrap();
         let mu_c = stability::friction_threshold(sim.scene(), SPEED, 20.0).unwrap();
         for factor in [0.7, 1.5] {
