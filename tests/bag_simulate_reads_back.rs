@@ -290,12 +290,19 @@ fn simulate_refuses_an_existing_bag_and_needs_an_output() {
 /// Scenes with load models: the pad states (brake bench, clamped) and the
 /// tool state (lathe) are in the bag, one per step like the other state
 /// topics, with the values of the CSV's scene columns of the same run.
-#[test]
-fn a_simulate_bag_of_a_scene_with_load_models_holds_their_states() {
+/// config/brake_bench.yaml clamped at 5 kN (it starts unclamped), written
+/// as target/bag-tests/`name`.
+fn clamped_bench(name: &str) -> PathBuf {
     let text = std::fs::read_to_string(repo().join("config/brake_bench.yaml")).unwrap();
     assert!(text.contains("clamp_force: [0.0]"), "the bench starts unclamped");
-    let bench = repo().join("target/bag-tests/brake_bench_clamped.yaml");
+    let bench = repo().join("target/bag-tests").join(name);
     write_atomically(&bench, &text.replace("clamp_force: [0.0]", "clamp_force: [5000.0]"));
+    bench
+}
+
+#[test]
+fn a_simulate_bag_of_a_scene_with_load_models_holds_their_states() {
+    let bench = clamped_bench("brake_bench_clamped.yaml");
     let lathe = repo().join("config/lathe.yaml");
     for (scene, topic, ty, columns) in [
         (
@@ -346,9 +353,7 @@ fn a_simulate_bag_of_a_scene_with_load_models_holds_their_states() {
 /// at every step; massless pads leave those arrays empty.
 #[test]
 fn a_simulate_bag_of_massive_pads_holds_their_compressions() {
-    let text = std::fs::read_to_string(repo().join("config/brake_bench.yaml")).unwrap();
-    let bench = repo().join("target/bag-tests/brake_bench_massive.yaml");
-    write_atomically(&bench, &text.replace("clamp_force: [0.0]", "clamp_force: [5000.0]"));
+    let bench = clamped_bench("brake_bench_massive.yaml");
     let topic = "/annular_plate/pad_states";
     for mass in ["0.3", "0.0"] {
         let bag = fresh_dir(&format!("simulate_massive_pads_{mass}"));
