@@ -28,6 +28,7 @@ use super::services::{Command, LoopStatus};
 use super::marker_thread::MarkerFeed;
 use crate::bag::recorder::{Recorder, Sample};
 use crate::dynamics::{Checked, Command as SimCommand, NodeKind, Simulation, Wrench};
+use ros2_client::dds::rustdds::defer_wakes;
 use ros2_client::Publisher;
 use std::collections::VecDeque;
 use std::sync::mpsc::{Receiver, RecvTimeoutError};
@@ -454,10 +455,15 @@ impl SimLoop {
         match self.sim.step() {
             Ok(()) => {
                 self.clock.advance();
-                self.publish_clock();
-                if self.clock.total_steps().is_multiple_of(self.settings.publish_divisor.max(1) as u64) {
-                    self.publish_state();
-                }
+                // The step's samples wake the RustDDS event loop once, after
+                // the last of them (vendor/rustdds/PATCH.md §7), not at the
+                // first while the others are still being written.
+                defer_wakes(|| {
+                    self.publish_clock();
+                    if self.clock.total_steps().is_multiple_of(self.settings.publish_divisor.max(1) as u64) {
+                        self.publish_state();
+                    }
+                });
                 self.offer_marker();
             }
             Err(e) => {

@@ -255,6 +255,7 @@ pub use mio_06 as mio;
 pub use mio1;
 /// Re-export of the `bytes` crate, used in RustDDS's (de)serialization API.
 pub use bytes;
+pub use polling::defer_wakes;
 
 /// Components used to access NO_KEY Topics
 pub mod no_key {

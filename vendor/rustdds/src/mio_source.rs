@@ -27,16 +27,24 @@ macro_rules! socketpair_bridge {
 
       pub struct Source {
         rec: Mutex<$mio::net::TcpStream>,
-        // Set by every send before its byte is written, cleared by drain:
-        // false means nothing was sent since the last drain, so drain need
-        // not read the socket (a system call per take on an idle reader).
+        // Set by every send, cleared by drain: false means nothing was sent
+        // since the last drain, so drain need not read the socket (a system
+        // call per take on an idle reader).
         pending: Arc<AtomicBool>,
+        // Set (for good) when a poll first registers this source. Until then
+        // nobody can wait on the socket, so sends write no byte and drains
+        // read none: a reader that is only ever polled with `take` costs no
+        // system call per sample.
+        registered: Arc<AtomicBool>,
+        // The sending end, to signal samples that arrived before registration.
+        send: Arc<Mutex<$mio::net::TcpStream>>,
       }
 
       #[derive(Clone)]
       pub struct Sender {
         send: Arc<Mutex<$mio::net::TcpStream>>,
         pending: Arc<AtomicBool>,
+        registered: Arc<AtomicBool>,
       }
 
       #[cfg(not(target_os = "windows"))]
@@ -56,14 +64,19 @@ macro_rules! socketpair_bridge {
         let send =
           $mio::net::TcpStream::from_std(std::net::TcpStream::from(OwnedFd::from(send_sps)));
         let pending = Arc::new(AtomicBool::new(false));
+        let registered = Arc::new(AtomicBool::new(false));
+        let send = Arc::new(Mutex::new(send));
         Ok((
           Source {
             rec: Mutex::new(rec),
             pending: pending.clone(),
+            registered: registered.clone(),
+            send: send.clone(),
           },
           Sender {
-            send: Arc::new(Mutex::new(send)),
+            send,
             pending,
+            registered,
           },
         ))
       }
@@ -81,14 +94,19 @@ macro_rules! socketpair_bridge {
         let (send, _addr_send) = accepted?;
         debug!("IPC socket: {addr:#?} <-> {_addr_send:#?}");
         let pending = Arc::new(AtomicBool::new(false));
+        let registered = Arc::new(AtomicBool::new(false));
+        let send = Arc::new(Mutex::new(send));
         Ok((
           Source {
             rec: Mutex::new(rec),
             pending: pending.clone(),
+            registered: registered.clone(),
+            send: send.clone(),
           },
           Sender {
-            send: Arc::new(Mutex::new(send)),
+            send,
             pending,
+            registered,
           },
         ))
       }
@@ -97,20 +115,59 @@ macro_rules! socketpair_bridge {
         pub fn send(&self) {
           // Release: what was done before the send (the sample's insertion
           // in the cache) is seen by a drain that finds the flag set.
-          self.pending.store(true, Ordering::Release);
-          match self.send.lock().unwrap().write(&[0xcc]) {
-            Ok(_b) => {}
-            Err(e) => info!("PollEventSender.send: {e}"),
+          // SeqCst with `mark_registered`: a send and a registration that
+          // race cannot both miss each other, so one of them writes the byte.
+          self.pending.store(true, Ordering::SeqCst);
+          // No poll has ever registered the source: nobody waits on the
+          // socket (one that registers later is signalled by the registration).
+          if !self.registered.load(Ordering::SeqCst) {
+            return;
+          }
+          write_byte(&self.send);
+        }
+      }
+
+      fn write_byte(send: &Mutex<$mio::net::TcpStream>) {
+        match send.lock().unwrap().write(&[0xcc]) {
+          Ok(_b) => {}
+          Err(e) => info!("PollEventSender.send: {e}"),
+        }
+      }
+
+      impl Source {
+        // From now on every send writes its byte. A sample sent before (no
+        // byte) is signalled now, so that a poll that registers and then
+        // waits is woken for it as it would be for data already in a socket.
+        fn mark_registered(&self) {
+          if !self.registered.swap(true, Ordering::SeqCst) && self.pending.load(Ordering::SeqCst) {
+            write_byte(&self.send);
           }
         }
       }
 
       impl Source {
+        #[cfg(test)]
+        pub fn read_all_for_test(&self) -> usize {
+          let mut buf = [0u8; 64];
+          let mut total = 0;
+          while let Ok(n) = self.rec.lock().unwrap().read(&mut buf) {
+            if n == 0 {
+              break;
+            }
+            total += n;
+          }
+          total
+        }
+
         pub fn drain(&self) {
           // Nothing sent since the last drain: no byte to read (one that a
           // send wrote after an earlier drain found the socket empty stays
           // there and is read with the next send's).
           if !self.pending.swap(false, Ordering::AcqRel) {
+            return;
+          }
+          // Never registered: no send wrote a byte.
+          if !self.registered.load(Ordering::Acquire) {
             return;
           }
           let mut buf = [0u8; 64];
@@ -139,6 +196,7 @@ macro_rules! socketpair_bridge {
           token: $mio::Token,
           interests: $mio::Interest,
         ) -> io::Result<()> {
+          self.mark_registered();
           self
             .rec
             .lock()
@@ -152,6 +210,7 @@ macro_rules! socketpair_bridge {
           token: $mio::Token,
           interests: $mio::Interest,
         ) -> io::Result<()> {
+          self.mark_registered();
           self
             .rec
             .lock()
@@ -340,5 +399,57 @@ impl mio_06::Evented for NotificationReceiver {
 
   fn deregister(&self, poll: &mio_06::Poll) -> std::io::Result<()> {
     self.legacy_receiver.deregister(poll)
+  }
+}
+
+#[cfg(test)]
+mod tests {
+  use std::time::Duration;
+
+  use mio1::{Events, Interest, Poll, Token};
+
+  use super::*;
+
+  fn readable_within(poll: &mut Poll, timeout: Duration) -> bool {
+    let mut events = Events::with_capacity(4);
+    poll.poll(&mut events, Some(timeout)).unwrap();
+    !events.is_empty()
+  }
+
+  // Reads (and so consumes) what the socket holds.
+  fn bytes_in_socket(source: &bridge_1::Source) -> usize {
+    source.read_all_for_test()
+  }
+
+  // A reader that no poll has registered (taken from with `take` only) costs
+  // no system call per sample: sends write no byte.
+  #[test]
+  fn an_unregistered_source_gets_no_bytes_and_drains_without_reading() {
+    let (source, sender) = make_poll_channel().unwrap();
+    for _ in 0..3 {
+      sender.send();
+    }
+    assert_eq!(bytes_in_socket(&source.mio1), 0);
+    source.drain();
+  }
+
+  // A poll that registers after samples were sent is woken for them, as it
+  // would be for data already in a socket; from then on every send wakes it.
+  #[test]
+  fn registering_signals_samples_sent_before_and_every_send_after() {
+    let (mut source, sender) = make_poll_channel().unwrap();
+    sender.send();
+    let mut poll = Poll::new().unwrap();
+    poll
+      .registry()
+      .register(&mut source, Token(1), Interest::READABLE)
+      .unwrap();
+    assert!(readable_within(&mut poll, Duration::from_secs(2)), "the earlier sample");
+    source.drain();
+    assert!(!readable_within(&mut poll, Duration::ZERO));
+    sender.send();
+    assert!(readable_within(&mut poll, Duration::from_secs(2)), "a later sample");
+    source.drain();
+    assert_eq!(bytes_in_socket(&source.mio1), 0);
   }
 }

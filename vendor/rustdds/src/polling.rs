@@ -10,6 +10,7 @@
 // `Evented` source; user-visible sample and status channels stay mio-extras.
 
 use std::{
+  cell::RefCell,
   collections::BTreeMap,
   sync::{
     atomic::{AtomicBool, Ordering},
@@ -57,8 +58,15 @@ impl LoopWaker {
   }
 
   /// Wake the poll unless a wake is already pending. Call after enqueuing: the
-  /// `AcqRel` swap publishes the enqueue to the loop's `rearm`.
+  /// `AcqRel` swap publishes the enqueue to the loop's `rearm`. Inside
+  /// [`defer_wakes`] the wake is held until that scope ends.
   pub(crate) fn wake(&self) {
+    if !hold_wake(self) {
+      self.wake_now();
+    }
+  }
+
+  fn wake_now(&self) {
     if let Some(waker) = self.slot.get() {
       if self.pending.swap(true, Ordering::AcqRel) {
         return; // the loop has not yet rearmed: it will drain what we enqueued
@@ -77,6 +85,66 @@ impl LoopWaker {
   pub(crate) fn rearm(&self) {
     self.pending.swap(false, Ordering::AcqRel);
   }
+}
+
+thread_local! {
+  /// The wakes [`defer_wakes`] holds on this thread, one per poll (`None`
+  /// outside such a scope).
+  static HELD_WAKES: RefCell<Option<Vec<LoopWaker>>> = const { RefCell::new(None) };
+}
+
+/// Hold `waker`'s wake if this thread is inside [`defer_wakes`].
+fn hold_wake(waker: &LoopWaker) -> bool {
+  HELD_WAKES.with(|held| match held.try_borrow_mut().as_deref_mut() {
+    Ok(Some(wakers)) => {
+      if !wakers.iter().any(|w| Arc::ptr_eq(&w.pending, &waker.pending)) {
+        wakers.push(waker.clone());
+      }
+      true
+    }
+    _ => false,
+  })
+}
+
+/// Wake now every poll whose wake this thread holds (the scope stays open).
+/// Called before a write blocks for room: the samples it waits on may be the
+/// ones whose wake is held.
+pub(crate) fn release_held_wakes() {
+  let wakers = HELD_WAKES.with(|held| held.borrow_mut().as_mut().map(std::mem::take));
+  for waker in wakers.into_iter().flatten() {
+    waker.wake_now();
+  }
+}
+
+/// Run `f`, holding back the event-loop wake-ups that its writes would cause
+/// until it returns; then wake each participant's event loop once.
+///
+/// Every `DataWriter::write` wakes the participant's event-loop thread. A
+/// thread that writes several samples in a row (a fixed-rate loop publishing
+/// one sample per topic at every step) wakes it at the first write, and the
+/// loop, running on another core or preempting the writer, often drains
+/// before the next write and must be woken again: two or three thread
+/// wake-ups per step instead of one. Inside `f` the samples are queued as
+/// before and nothing is sent before `f` returns (a write that must block
+/// for room releases the held wakes first). Nested calls belong to the
+/// outermost one; the wakes are also released if `f` panics.
+pub fn defer_wakes<R>(f: impl FnOnce() -> R) -> R {
+  struct Release;
+  impl Drop for Release {
+    fn drop(&mut self) {
+      release_held_wakes();
+      HELD_WAKES.with(|held| *held.borrow_mut() = None);
+    }
+  }
+  let outermost = HELD_WAKES.with(|held| {
+    let mut held = held.borrow_mut();
+    held.is_none() && {
+      *held = Some(Vec::new());
+      true
+    }
+  });
+  let _release = outermost.then_some(Release);
+  f()
 }
 
 /// Bounded queue whose send wakes `waker`'s poll.
@@ -359,5 +427,83 @@ pub(crate) fn timeout_until(deadline: Option<Instant>, cap: Duration) -> Duratio
       }
     }
     None => cap,
+  }
+}
+
+#[cfg(test)]
+mod tests {
+  use mio1::{Events, Poll, Token};
+
+  use super::*;
+
+  const TOKEN: Token = Token(7);
+
+  // How many times `poll` reports the waker within a zero timeout, rearming
+  // after each report as the event loop does.
+  fn wakes(poll: &mut Poll, waker: &LoopWaker) -> usize {
+    let mut events = Events::with_capacity(4);
+    let mut count = 0;
+    loop {
+      poll.poll(&mut events, Some(Duration::ZERO)).unwrap();
+      if events.is_empty() {
+        return count;
+      }
+      count += events.iter().filter(|e| e.token() == TOKEN).count();
+      waker.rearm();
+    }
+  }
+
+  // Inside `defer_wakes` a wake writes nothing; at the end of the outermost
+  // scope each poll is woken once, however many wakes were held.
+  #[test]
+  fn defer_wakes_holds_the_wakes_of_its_scope_and_wakes_each_poll_once_at_its_end() {
+    let mut poll = Poll::new().unwrap();
+    let waker = LoopWaker::new();
+    waker.install(&poll, TOKEN).unwrap();
+    defer_wakes(|| {
+      waker.wake();
+      waker.clone().wake();
+      defer_wakes(|| waker.wake()); // nested: part of the outer scope
+      assert_eq!(wakes(&mut poll, &waker), 0, "a wake escaped the scope");
+    });
+    assert_eq!(wakes(&mut poll, &waker), 1);
+    // Outside any scope a wake is immediate again.
+    waker.wake();
+    assert_eq!(wakes(&mut poll, &waker), 1);
+  }
+
+  // A write about to block for room wakes the loop first (the samples it
+  // waits on may be the held ones); the scope stays open.
+  #[test]
+  fn release_held_wakes_wakes_now_and_keeps_the_scope() {
+    let mut poll = Poll::new().unwrap();
+    let waker = LoopWaker::new();
+    waker.install(&poll, TOKEN).unwrap();
+    defer_wakes(|| {
+      waker.wake();
+      release_held_wakes();
+      assert_eq!(wakes(&mut poll, &waker), 1);
+      waker.wake();
+      assert_eq!(wakes(&mut poll, &waker), 0, "the scope ended early");
+    });
+    assert_eq!(wakes(&mut poll, &waker), 1);
+  }
+
+  // A panic inside the scope still releases the held wakes.
+  #[test]
+  fn defer_wakes_releases_on_panic() {
+    let mut poll = Poll::new().unwrap();
+    let waker = LoopWaker::new();
+    waker.install(&poll, TOKEN).unwrap();
+    let result = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
+      defer_wakes(|| {
+        waker.wake();
+        panic!("inside the scope");
+      })
+    }));
+    assert!(result.is_err());
+    assert_eq!(wakes(&mut poll, &waker), 1);
+    waker.wake();
+    assert_eq!(wakes(&mut poll, &waker), 1, "the scope outlived the panic");
   }
 }

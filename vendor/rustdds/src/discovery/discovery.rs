@@ -733,6 +733,8 @@ impl Discovery {
       );
       match self.poll.poll(&mut events, Some(poll_timeout)) {
         Ok(_) => (),
+        // Interrupted by a signal (epoll_wait is never restarted): poll again.
+        Err(e) if e.kind() == std::io::ErrorKind::Interrupted => events.clear(),
         Err(e) => {
           error!("Failed in waiting of poll in discovery. {e:?}");
           return;

@@ -195,11 +195,15 @@ impl DPEventLoop {
     }
 
     // Command queues, doorbells and the timer share `waker` (installed when the
-    // loop starts). The acknack queue is drained on that same wake. Both ends
-    // of it are this thread. 1024 absorbs a burst of ACKNACKs from one poll's
-    // worth of datagrams; a still larger one is discarded.
+    // loop starts). Both ends of the acknack queue are this thread: it is
+    // filled while the loop handles the datagrams of one poll and drained in
+    // the same iteration, right after them, so its sends must not wake the
+    // poll (they did: an eventfd write and an empty extra iteration per
+    // ACKNACK). Its waker is never installed, so `wake` is a no-op. 1024
+    // absorbs a burst of ACKNACKs from one poll's worth of datagrams; a
+    // still larger one is discarded.
     let (acknack_sender, acknack_receiver) =
-      wake_channel::<(GuidPrefix, AckSubmessage)>(1024, &waker);
+      wake_channel::<(GuidPrefix, AckSubmessage)>(1024, &LoopWaker::new());
 
     // Deadlines live in the loop. Reader/Writer timeouts are scheduled later
     // through cloned handles passed into Reader::new / Writer::new.
@@ -305,6 +309,12 @@ impl DPEventLoop {
       let poll_timeout = timeout_until(ev_wrapper.shared_timer.borrow().next_deadline(), idle_cap);
       match ev_wrapper.poll.poll(&mut events, Some(poll_timeout)) {
         Ok(_) => {}
+        // A signal handled on this thread (or a debugger attaching) interrupts
+        // epoll_wait, which the kernel never restarts: poll again rather than
+        // end the participant's event loop.
+        Err(e) if e.kind() == std::io::ErrorKind::Interrupted => {
+          events.clear();
+        }
         Err(e) => {
           error!("dp_event_loop poll failed: {e:?}");
           break;

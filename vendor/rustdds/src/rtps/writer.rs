@@ -378,6 +378,22 @@ impl Writer {
     self.qos_policies.is_reliable()
   }
 
+  /// The Final flag of the HEARTBEAT piggybacked on DATA (RTPS v2.5 8.3.7.5:
+  /// set, the reader need not answer unless it misses samples).
+  ///
+  /// A writer whose admission waits for acknowledgements clears it, so every
+  /// reader acknowledges every datagram. A KEEP_LAST writer that evicts its
+  /// sent samples regardless (`keep_last_evicts_sent`) gains nothing from
+  /// those acknowledgements and sets it: a reader that received everything
+  /// stays silent, one that detects a missing sample still answers with a
+  /// NACK and is repaired as before, and the periodic HEARTBEAT (Final clear)
+  /// keeps collecting acknowledgements. At 1 kHz this saves every matched
+  /// reader an ACKNACK per sample and the writer's participant a wake-up to
+  /// receive it.
+  fn piggybacked_heartbeat_is_final(&self) -> bool {
+    self.send_buffer.keep_last_evicts_sent()
+  }
+
   /// Lists the known local (same DomainParticipant) ReaderProxies
   /// Note that local non-matching Readers are not here.
   pub fn local_readers(&self) -> Vec<EntityId> {
@@ -749,8 +765,8 @@ impl Writer {
         self.next_heartbeat_count(),
         self.endianness,
         EntityId::UNKNOWN, // to all readers
-        false,             // final_flag: request ACKNACK
-        false,             // liveliness_flag
+        self.piggybacked_heartbeat_is_final(),
+        false, // liveliness_flag
       );
     }
 
@@ -2510,7 +2526,7 @@ impl<'a> Iterator for FragmentationIter<'a> {
 
             // Add HEARTBEAT message if needed
             if send_heartbeat && !writer.like_stateless {
-              let final_flag = false; // false = request that readers acknowledge with ACKNACK.
+              let final_flag = writer.piggybacked_heartbeat_is_final();
               let liveliness_flag = false; // This is not a manual liveliness assertion (DDS API call), but side-effect of
                                            // writing new data.
               let hb_msg = MessageBuilder::new()
@@ -2569,7 +2585,7 @@ impl<'a> Iterator for FragmentationIter<'a> {
 
         // Add HEARTBEAT if needed
         if send_heartbeat && !writer.like_stateless {
-          let final_flag = false; // false = request that readers acknowledge with ACKNACK.
+          let final_flag = writer.piggybacked_heartbeat_is_final();
           let liveliness_flag = false; // This is not a manual liveliness assertion (DDS API call), but side-effect of
                                        // writing new data.
           message_builder = message_builder.heartbeat_msg(
@@ -2968,6 +2984,52 @@ mod tests {
         );
         assert_eq!(f.repair_round(), 5);
         assert!(!f.reader_proxy().repair_mode);
+      }
+    }
+
+    // The HEARTBEAT a reliable Writer piggybacks on a new sample asks the
+    // reader to acknowledge (Final clear) unless the Writer is KEEP_LAST with
+    // `keep_last_evicts_sent`, whose admission never waits for acknowledgements:
+    // then it is advisory (Final set) and a reader that has everything stays
+    // silent (PATCH.md §6).
+    #[test]
+    fn piggybacked_heartbeat_is_final_only_for_keep_last_writers_that_evict_sent_samples() {
+      use crate::{
+        messages::submessages::{submessage::WriterSubmessage, submessage_flag::HEARTBEAT_Flags},
+        rtps::SubmessageBody,
+      };
+      for evicts_sent in [false, true] {
+        let socket = std::net::UdpSocket::bind("127.0.0.1:0").unwrap();
+        socket
+          .set_read_timeout(Some(StdDuration::from_secs(5)))
+          .unwrap();
+        let mut f = Fixture::user(0, 100, Some(socket.local_addr().unwrap()));
+        f.writer.send_buffer.set_keep_last_evicts_sent(evicts_sent);
+        let data = DDSData::new(SerializedPayload::new(
+          RepresentationIdentifier::CDR_LE,
+          vec![0; 100],
+        ));
+        assert!(matches!(
+          f.writer
+            .send_buffer
+            .admit_blocking(WriteOptions::default(), data, Some(StdDuration::ZERO)),
+          Admission::Admitted(_)
+        ));
+        f.writer.process_pending();
+        let mut buf = [0u8; 2048];
+        let n = socket.recv(&mut buf).expect("the new sample's datagram");
+        let message = Message::read_from_buffer(&bytes::Bytes::copy_from_slice(&buf[..n])).unwrap();
+        let finals: Vec<bool> = message
+          .submessages
+          .iter()
+          .filter_map(|sm| match &sm.body {
+            SubmessageBody::Writer(WriterSubmessage::Heartbeat(_, flags)) => {
+              Some(flags.contains(HEARTBEAT_Flags::Final))
+            }
+            _ => None,
+          })
+          .collect();
+        assert_eq!(finals, vec![evicts_sent], "keep_last_evicts_sent = {evicts_sent}");
       }
     }
 

@@ -84,6 +84,10 @@ struct Inner {
   // Wakers of async producers / ack-waiters parked because the window was full
   // or acknowledgements were still pending. Drained (woken) on any advance.
   wakers: Vec<Waker>,
+  // Threads blocked on `progress` (counted under the lock). `notify_all` is a
+  // futex system call even with nobody waiting, and the Writer advances its
+  // frontiers several times per sample: it is made only when someone waits.
+  waiting: usize,
 }
 
 struct Shared {
@@ -142,6 +146,7 @@ impl WriterSendBuffer {
           sent_frontier: SequenceNumber::new(0),
           max_retain: max_retain.max(1),
           keep_last_evicts_sent: false,
+          waiting: 0,
           wakers: Vec::new(),
         }),
         progress: Condvar::new(),
@@ -202,7 +207,30 @@ impl WriterSendBuffer {
     for w in inner.wakers.drain(..) {
       w.wake();
     }
-    progress.notify_all();
+    if inner.waiting > 0 {
+      progress.notify_all();
+    }
+  }
+
+  // Block on `progress` (at most until `deadline`), counted in `waiting`.
+  fn wait_progress<'a>(
+    progress: &Condvar,
+    mut inner: std::sync::MutexGuard<'a, Inner>,
+    deadline: Option<Instant>,
+  ) -> std::sync::MutexGuard<'a, Inner> {
+    inner.waiting += 1;
+    // The samples this write waits on may be the ones whose event-loop wake
+    // this thread holds (`defer_wakes`): wake the loop before blocking.
+    crate::polling::release_held_wakes();
+    let mut inner = match deadline {
+      None => progress.wait(inner).unwrap(),
+      Some(deadline) => {
+        let left = deadline.saturating_duration_since(Instant::now());
+        progress.wait_timeout(inner, left).unwrap().0
+      }
+    };
+    inner.waiting -= 1;
+    inner
   }
 
   // --- producer side ---
@@ -231,20 +259,10 @@ impl WriterSendBuffer {
         return Admission::Admitted(seq);
       }
       // Window full: wait for an acknowledgement to free up space.
-      match deadline {
-        None => {
-          inner = shared.progress.wait(inner).unwrap();
-        }
-        Some(deadline) => {
-          let now = Instant::now();
-          if now >= deadline {
-            return Admission::WouldBlock;
-          }
-          let (guard, _timeout_result) =
-            shared.progress.wait_timeout(inner, deadline - now).unwrap();
-          inner = guard;
-        }
+      if deadline.is_some_and(|d| Instant::now() >= d) {
+        return Admission::WouldBlock;
       }
+      inner = Self::wait_progress(&shared.progress, inner, deadline);
     }
   }
 
@@ -350,6 +368,13 @@ impl WriterSendBuffer {
     let mut inner = self.shared.inner.lock().unwrap();
     inner.keep_last_evicts_sent = on;
     Self::evict_sent_beyond_depth(&mut inner);
+  }
+
+  /// Whether this writer honours KEEP_LAST by evicting sent samples
+  /// ([`set_keep_last_evicts_sent`](Self::set_keep_last_evicts_sent)): its
+  /// admission never waits for acknowledgements.
+  pub fn keep_last_evicts_sent(&self) -> bool {
+    self.shared.inner.lock().unwrap().keep_last_evicts_sent
   }
 
   // --- consumer side (Writer / event loop) ---
@@ -466,8 +491,7 @@ impl WriterSendBuffer {
       if now >= deadline {
         return false;
       }
-      let (guard, _to) = shared.progress.wait_timeout(inner, deadline - now).unwrap();
-      inner = guard;
+      inner = Self::wait_progress(&shared.progress, inner, Some(deadline));
     }
   }
 
@@ -542,6 +566,45 @@ mod tests {
     // The reader's first ACKNACK acknowledges seq 1.
     buf.set_acked_frontier(Some(SequenceNumber::new(2)));
     assert!(admit_now(&buf, WriteOptions::default())); // seq 2
+  }
+
+  // The condition variable is signalled only while a thread waits on it
+  // (`waiting`): a write blocked on a full window must still be woken by the
+  // acknowledgement that makes room, long before its timeout.
+  #[test]
+  fn a_write_blocked_on_a_full_window_wakes_when_an_acknowledgement_makes_room() {
+    let buf = std::sync::Arc::new(WriterSendBuffer::new(
+      GUID::GUID_UNKNOWN,
+      "t".to_string(),
+      /* reliable_writer */ true,
+      /* is_builtin */ false,
+      /* volatile */ true,
+      /* window_limit */ 1,
+      /* backlog_limit */ 1000,
+      /* max_retain */ 1,
+    ));
+    buf.set_acked_frontier(Some(SequenceNumber::zero()));
+    assert!(admit_now(&buf, WriteOptions::default())); // seq 1: the window is full
+    assert_eq!(buf.shared.inner.lock().unwrap().waiting, 0);
+    let blocked = {
+      let buf = buf.clone();
+      std::thread::spawn(move || {
+        let start = std::time::Instant::now();
+        let admitted = matches!(
+          buf.admit_blocking(WriteOptions::default(), sample(), Some(StdDuration::from_secs(10))),
+          Admission::Admitted(_)
+        );
+        (admitted, start.elapsed())
+      })
+    };
+    while buf.shared.inner.lock().unwrap().waiting == 0 {
+      std::thread::sleep(StdDuration::from_millis(1));
+    }
+    buf.set_acked_frontier(Some(SequenceNumber::new(2))); // the reader acknowledges seq 1
+    let (admitted, waited) = blocked.join().unwrap();
+    assert!(admitted);
+    assert!(waited < StdDuration::from_secs(5), "woken only by the timeout: {waited:?}");
+    assert_eq!(buf.shared.inner.lock().unwrap().waiting, 0);
   }
 
   // nonblocking-transmit: a best-effort writer that opted in via
