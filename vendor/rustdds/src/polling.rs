@@ -143,7 +143,7 @@ pub fn defer_wakes<R>(f: impl FnOnce() -> R) -> R {
       true
     }
   });
-  let _release = outermost.then_some(Release);
+  let _release = outermost.then(|| Release); // (`then_some` would build, and drop, one for an inner scope)
   f()
 }
 

@@ -2998,38 +2998,29 @@ mod tests {
         messages::submessages::{submessage::WriterSubmessage, submessage_flag::HEARTBEAT_Flags},
         rtps::SubmessageBody,
       };
-      for evicts_sent in [false, true] {
-        let socket = std::net::UdpSocket::bind("127.0.0.1:0").unwrap();
-        socket
-          .set_read_timeout(Some(StdDuration::from_secs(5)))
-          .unwrap();
-        let mut f = Fixture::user(0, 100, Some(socket.local_addr().unwrap()));
-        f.writer.send_buffer.set_keep_last_evicts_sent(evicts_sent);
-        let data = DDSData::new(SerializedPayload::new(
-          RepresentationIdentifier::CDR_LE,
-          vec![0; 100],
-        ));
-        assert!(matches!(
-          f.writer
-            .send_buffer
-            .admit_blocking(WriteOptions::default(), data, Some(StdDuration::ZERO)),
-          Admission::Admitted(_)
-        ));
-        f.writer.process_pending();
-        let mut buf = [0u8; 2048];
-        let n = socket.recv(&mut buf).expect("the new sample's datagram");
-        let message = Message::read_from_buffer(&bytes::Bytes::copy_from_slice(&buf[..n])).unwrap();
-        let finals: Vec<bool> = message
-          .submessages
-          .iter()
-          .filter_map(|sm| match &sm.body {
-            SubmessageBody::Writer(WriterSubmessage::Heartbeat(_, flags)) => {
-              Some(flags.contains(HEARTBEAT_Flags::Final))
-            }
-            _ => None,
-          })
-          .collect();
-        assert_eq!(finals, vec![evicts_sent], "keep_last_evicts_sent = {evicts_sent}");
+      // One unfragmented sample (DATA + HEARTBEAT) and one fragmented one
+      // (DATAFRAGs, then the trailing HEARTBEAT).
+      for payload_len in [100, 3 * FRAGMENT_SIZE] {
+        for evicts_sent in [false, true] {
+          let f = Fixture::user(1, payload_len, None);
+          f.writer.send_buffer.set_keep_last_evicts_sent(evicts_sent);
+          let cc = f.writer.send_buffer.get_by_sn(SequenceNumber::new(1)).unwrap();
+          let finals: Vec<bool> =
+            FragmentationIter::new_resume(&f.writer, &cc, None, true, SampleCursor::Fresh)
+              .flat_map(|(_, message)| message.submessages)
+              .filter_map(|sm| match sm.body {
+                SubmessageBody::Writer(WriterSubmessage::Heartbeat(_, flags)) => {
+                  Some(flags.contains(HEARTBEAT_Flags::Final))
+                }
+                _ => None,
+              })
+              .collect();
+          assert_eq!(
+            finals,
+            vec![evicts_sent],
+            "payload {payload_len} bytes, keep_last_evicts_sent = {evicts_sent}"
+          );
+        }
       }
     }
 
