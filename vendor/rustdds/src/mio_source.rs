@@ -143,9 +143,7 @@ macro_rules! socketpair_bridge {
             write_byte(&self.send);
           }
         }
-      }
 
-      impl Source {
         #[cfg(test)]
         pub fn read_all_for_test(&self) -> usize {
           let mut buf = [0u8; 64];
