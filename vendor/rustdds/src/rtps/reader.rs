@@ -499,12 +499,13 @@ impl Reader {
     }
   }
 
-  pub fn contains_writer(&self, entity_id: EntityId) -> bool {
+  /// Whether `writer` (the full GUID: a writer of another participant may
+  /// carry the same entity id) is matched with this reader. A map lookup; it
+  /// was a scan over every matched writer comparing entity ids only, run for
+  /// every reader on every DATA addressed to ENTITYID_UNKNOWN.
+  pub fn contains_writer(&self, writer: GUID) -> bool {
     if !self.like_stateless {
-      self
-        .matched_writers
-        .iter()
-        .any(|(&g, _)| g.entity_id == entity_id)
+      self.matched_writers.contains_key(&writer)
     } else {
       // Making it explicit: stateless reader does not contain any writers
       false
