@@ -9,7 +9,7 @@
 //! re-evaluates the memoryless load models (pads, links) at every stage. A
 //! step that produces a non-finite or implausible state is undone and reported.
 
-use super::ale::{harmonics, lagrange_to_ale};
+use super::ale::{harmonics, lagrange_to_ale, pair_to_ale};
 use super::error::{Divergence, StepError};
 use super::integrators::equations::{accelerations, mode_constants, ModeConstants};
 use super::integrators::exponential::ModePropagator;
@@ -106,6 +106,8 @@ pub struct Stepper {
     /// the next step's χ0 ones (computed once, not twice).
     exp_harm: Vec<(f64, f64)>,
     exp_harm_at: Option<JointAngle>,
+    /// χ1's harmonics while a step is computed.
+    exp_harm_next: Vec<(f64, f64)>,
     /// The (h, Ω̄) every propagator in `propagators` is for: a step at the
     /// same substep and mean speed skips checking them mode by mode.
     propagators_for: Option<(f64, f64)>,
@@ -148,6 +150,7 @@ impl Stepper {
             harm_end: Vec::with_capacity(k),
             exp_harm: Vec::with_capacity(k),
             exp_harm_at: None,
+            exp_harm_next: Vec::with_capacity(k),
             propagators_for: None,
             held_loads: None,
             views: Views::new(n),
@@ -335,15 +338,20 @@ impl Stepper {
             }
             self.propagators_for = Some((h, speed_mean));
         }
-        let (lagrange_q, lagrange_v) = match state.coordinates {
-            Coordinates::Lagrangian => (&mut state.q, &mut state.q_dot),
-            Coordinates::Ale => (&mut state.q_other, &mut state.q_dot_other),
+        // Each mode's new Lagrangian (q, q̇) at χ1 and, from it, its ALE one
+        // (the same operations as `derive_ale`, while the pair is at hand).
+        harmonics(&chi1, scene.layout.k_max, &mut self.exp_harm_next);
+        let (lagrange_q, lagrange_v, ale_q, ale_v) = match state.coordinates {
+            Coordinates::Lagrangian => (&mut state.q, &mut state.q_dot, &mut state.q_other, &mut state.q_dot_other),
+            Coordinates::Ale => (&mut state.q_other, &mut state.q_dot_other, &mut state.q, &mut state.q_dot),
         };
         let f = &self.loads;
         for &i in &scene.layout.axisymmetric {
             let (q, qd) = self.propagators[i].advance(lagrange_q[i], lagrange_v[i], f.ale_frame[i], Complex::new(0.0, 0.0));
             lagrange_q[i] = q;
             lagrange_v[i] = qd;
+            ale_q[i] = q;
+            ale_v[i] = qd;
         }
         for p in &scene.layout.pairs {
             let (co, si) = self.exp_harm[p.k as usize];
@@ -351,13 +359,21 @@ impl Stepper {
             let (fc, fs) = (f.ale_frame[p.cos], f.ale_frame[p.sin]);
             let gc = Complex::new(fc, -fs) * e0;
             let gs = Complex::new(fs, fc) * e0;
-            for (idx, g) in [(p.cos, gc), (p.sin, gs)] {
-                let (q, qd) = self.propagators[idx].advance(lagrange_q[idx], lagrange_v[idx], f.plate_frame[idx], g);
-                lagrange_q[idx] = q;
-                lagrange_v[idx] = qd;
-            }
+            let (qc, vc) = self.propagators[p.cos].advance(lagrange_q[p.cos], lagrange_v[p.cos], f.plate_frame[p.cos], gc);
+            let (qs, vs) = self.propagators[p.sin].advance(lagrange_q[p.sin], lagrange_v[p.sin], f.plate_frame[p.sin], gs);
+            lagrange_q[p.cos] = qc;
+            lagrange_v[p.cos] = vc;
+            lagrange_q[p.sin] = qs;
+            lagrange_v[p.sin] = vs;
+            let [bar_c, bar_s, dot_c, dot_s] = pair_to_ale(self.exp_harm_next[p.k as usize], p.k as f64 * speed1, [qc, qs], [vc, vs]);
+            ale_q[p.cos] = bar_c;
+            ale_q[p.sin] = bar_s;
+            ale_v[p.cos] = dot_c;
+            ale_v[p.sin] = dot_s;
         }
-        self.derive_ale(scene, state, chi1, speed1);
+        // Every mode is axisymmetric or in a pair (model::build), so both descriptions are whole.
+        std::mem::swap(&mut self.exp_harm, &mut self.exp_harm_next);
+        self.exp_harm_at = Some(chi1);
     }
 
     /// The exponential step's result is the Lagrangian description at χ1:
