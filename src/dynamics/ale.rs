@@ -46,6 +46,8 @@ pub fn rotate_pairs(layout: &ModeLayout, harm: &[(f64, f64)], x: &mut [f64], to_
 /// One pass over the pairs (the same operations, in the same order, as
 /// rotating q, then q̇, then adding kΩ J q̄).
 pub fn lagrange_to_ale(layout: &ModeLayout, harm: &[(f64, f64)], speed: f64, q: &mut [f64], q_dot: &mut [f64]) {
+    // Both of length n: one index check serves both.
+    let q_dot = &mut q_dot[..q.len()];
     for p in &layout.pairs {
         let (c, s) = harm[p.k as usize];
         let [bar_c, bar_s, dot_c, dot_s] = pair_to_ale((c, s), p.k as f64 * speed, [q[p.cos], q[p.sin]], [q_dot[p.cos], q_dot[p.sin]]);

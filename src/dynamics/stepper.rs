@@ -345,27 +345,32 @@ impl Stepper {
             Coordinates::Lagrangian => (&mut state.q, &mut state.q_dot, &mut state.q_other, &mut state.q_dot_other),
             Coordinates::Ale => (&mut state.q_other, &mut state.q_dot_other, &mut state.q, &mut state.q_dot),
         };
-        let f = &self.loads;
+        // All of length n, so one index check serves every array (the compiler merges them).
+        let n = lagrange_q.len();
+        let (lagrange_v, ale_q, ale_v) = (&mut lagrange_v[..n], &mut ale_q[..n], &mut ale_v[..n]);
+        let (propagators, ale_frame, plate_frame) = (&self.propagators[..n], &self.loads.ale_frame[..n], &self.loads.plate_frame[..n]);
+        let harmonics_len = self.exp_harm.len();
+        let (harm0, harm1) = (&self.exp_harm[..], &self.exp_harm_next[..harmonics_len]);
         for &i in &scene.layout.axisymmetric {
-            let (q, qd) = self.propagators[i].advance(lagrange_q[i], lagrange_v[i], f.ale_frame[i], Complex::new(0.0, 0.0));
+            let (q, qd) = propagators[i].advance(lagrange_q[i], lagrange_v[i], ale_frame[i], Complex::new(0.0, 0.0));
             lagrange_q[i] = q;
             lagrange_v[i] = qd;
             ale_q[i] = q;
             ale_v[i] = qd;
         }
         for p in &scene.layout.pairs {
-            let (co, si) = self.exp_harm[p.k as usize];
+            let (co, si) = harm0[p.k as usize];
             let e0 = Complex::new(co, si);
-            let (fc, fs) = (f.ale_frame[p.cos], f.ale_frame[p.sin]);
+            let (fc, fs) = (ale_frame[p.cos], ale_frame[p.sin]);
             let gc = Complex::new(fc, -fs) * e0;
             let gs = Complex::new(fs, fc) * e0;
-            let (qc, vc) = self.propagators[p.cos].advance(lagrange_q[p.cos], lagrange_v[p.cos], f.plate_frame[p.cos], gc);
-            let (qs, vs) = self.propagators[p.sin].advance(lagrange_q[p.sin], lagrange_v[p.sin], f.plate_frame[p.sin], gs);
+            let (qc, vc) = propagators[p.cos].advance(lagrange_q[p.cos], lagrange_v[p.cos], plate_frame[p.cos], gc);
+            let (qs, vs) = propagators[p.sin].advance(lagrange_q[p.sin], lagrange_v[p.sin], plate_frame[p.sin], gs);
             lagrange_q[p.cos] = qc;
             lagrange_v[p.cos] = vc;
             lagrange_q[p.sin] = qs;
             lagrange_v[p.sin] = vs;
-            let [bar_c, bar_s, dot_c, dot_s] = pair_to_ale(self.exp_harm_next[p.k as usize], p.k as f64 * speed1, [qc, qs], [vc, vs]);
+            let [bar_c, bar_s, dot_c, dot_s] = pair_to_ale(harm1[p.k as usize], p.k as f64 * speed1, [qc, qs], [vc, vs]);
             ale_q[p.cos] = bar_c;
             ale_q[p.sin] = bar_s;
             ale_v[p.cos] = dot_c;
