@@ -26,9 +26,9 @@ output.
       2ζωkΩ J), under a constant space-fixed rim load of the size of the steady
       cut's feed force F (the mean tool_feed_force of the full-scene run over
       2–5 s) along −z, as the tool pushes: −F/m on every cos and axisymmetric
-      mode (the shapes are 1 at the rim at θ = 0), the sin modes unloaded, integrated with
-      Exudyn's implicit generalized-α solver (SolveDynamic, default settings,
-      55 000 steps), solution written every 1 ms. Timed solver only (process
+      mode (the shapes are 1 at the rim at θ = 0), the sin modes unloaded,
+      integrated with Exudyn's implicit generalized-α solver (SolveDynamic,
+      default settings, 55 000 steps), solution written every 1 ms. Timed solver only (process
       CPU around SolveDynamic) and as a whole process.
 
 Two ratios: Exudyn's solver against annular_plate on the same equations (the
