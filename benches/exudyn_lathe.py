@@ -3,25 +3,40 @@
 simulate` and in Exudyn (PyPI), both at a 10 kHz step for 5.5 s with 1 kHz
 output.
 
-  annular_plate: `simulate config/lathe.yaml` with simulation.rate_hz 10 kHz,
-      `--output-rate 1000 --csv` — the full lathe scene (30 ALE modes, the
-      regenerative tool model with its surface memory, node outputs), timed as
-      a whole process (user + system CPU of the child, and wall).
+  annular_plate, full scene: `simulate config/lathe.yaml` with
+      simulation.rate_hz 10 kHz, `--output-rate 1000 --csv` — the full lathe
+      scene (30 ALE modes, the regenerative tool model with its surface memory
+      in series with the residual flexibility, node outputs), timed as a whole
+      process (user + system CPU of the child, and wall).
+  annular_plate, same equations: Exudyn's equations below and nothing else —
+      lathe.yaml without the tool and without the Lagrangian node, the rim load
+      as a held ALE wrench (0, 0, −F, 0, 0, 0) at the ALE node on the rim at
+      θ = 0 (`loads.ale_wrench`), `plate.residual_flexibility: false` (Exudyn's
+      model has no residual correction), 10 kHz, 5.5 s, `--output-rate 1000
+      --csv`. Its CSV row: time, joint angle and speed, the 30 Lagrangian and
+      the 30 ALE amplitudes and the ALE node's uz (64 values, shortest
+      round-trip text); Exudyn's coordinates file row: time and the 30
+      coordinates, velocities and accelerations (91 values, 10 significant
+      digits). Timed as a whole process (model build from the plate data
+      included; Exudyn is given the modes).
   Exudyn: the 30 ALE modal equations of the same disc at the same spin
       (docs/dynamics.md, "The ALE equations"; frequencies, modal masses and
       damping from `annular_plate modes --json`) as one ObjectGenericODE2
       (mass-normalised: M = I, D = 2ζω I − 2kΩ J per pair, K = (ω² − k²Ω²) I −
       2ζωkΩ J), under a constant space-fixed rim load of the size of the steady
-      cut's feed force (the mean tool_feed_force of the annular_plate run over
-      2–5 s, on every cos mode; the sin modes unloaded), integrated with
-      Exudyn's implicit generalized-α solver (SolveDynamic, default settings,
-      55 000 steps), solution written every 1 ms. Timed solver only (process
+      cut's feed force F (the mean tool_feed_force of the full-scene run over
+      2–5 s) along −z, as the tool pushes: −F/m on every cos and axisymmetric
+      mode (the shapes are 1 at the rim at θ = 0), the sin modes unloaded,
+      integrated with Exudyn's implicit generalized-α solver (SolveDynamic,
+      default settings, 55 000 steps), solution written every 1 ms. Timed solver only (process
       CPU around SolveDynamic) and as a whole process.
 
-Exudyn's side is the linear part only (no tool model): it does less work
-than annular_plate's run, so the ratio is conservative. The script checks
-that Exudyn solved those equations: its ALE amplitudes at 5.5 s against the
-closed-form steady state [(ω² − k²Ω²) I − 2ζωkΩ J] q̄ = f̄ (docs/dynamics.md).
+Two ratios: Exudyn's solver against annular_plate on the same equations (the
+issue's comparison), and against the full scene (Exudyn does less work). The
+script checks that both solved those equations: Exudyn's and annular_plate's
+ALE amplitudes at 5.5 s against the closed-form steady state
+[(ω² − k²Ω²) I − 2ζωkΩ J] q̄ = f̄ (docs/dynamics.md) and against each other
+(largest difference relative to the largest steady amplitude).
 
 Exudyn is installed by the script into target/exudyn-venv (like the tests'
 peer in target/peer-venv):
@@ -79,6 +94,37 @@ def annular_plate_run(node):
     cpu, wall = child_cpu([node, "simulate", scene, "--duration", str(DURATION), "--output-rate", str(OUTPUT_HZ),
                            "--csv", csv, "--quiet"], stderr=subprocess.DEVNULL)
     return cpu, wall, csv
+
+
+def same_equations_run(node, force):
+    """annular_plate on Exudyn's equations (module docstring): (CPU s, wall s, q̄ at the last row)."""
+    with open(os.path.join(REPO, "config", "lathe.yaml")) as f:
+        text = f.read()
+    for old, new in [
+        ("rate_hz: 1000.0", f"rate_hz: {RATE_HZ:.1f}"),
+        ("      damping: [0.02]\n", "      damping: [0.02]\n      residual_flexibility: false\n"),
+        ("      lagrange_radial: [1.0]     # a material point on the rim (turns with the disc)\n"
+         "      lagrange_angular: [0.0]\n", ""),
+    ]:
+        assert old in text, old
+        text = text.replace(old, new)
+    tool, sim = text.index("    tool:\n"), text.index("    simulation:\n")
+    text = text[:tool] + f"    loads:\n      ale_wrench: [0.0, 0.0, {-force!r}, 0.0, 0.0, 0.0]\n" + text[sim:]
+    scene = os.path.join(OUT, "same_equations.yaml")
+    with open(scene, "w") as f:
+        f.write(text)
+    csv = os.path.join(OUT, "same_equations.csv")
+    cpu, wall = child_cpu([node, "simulate", scene, "--duration", str(DURATION), "--output-rate", str(OUTPUT_HZ),
+                           "--csv", csv, "--quiet"], stderr=subprocess.DEVNULL)
+    with open(csv) as f:
+        cols = f.readline().strip().split(",")
+        last = None
+        for last in f:
+            pass
+    row = dict(zip(cols, last.strip().split(",")))
+    assert abs(float(row["time"]) - DURATION) < 1e-9, row["time"]
+    q_ale = [float(row[f"qale{i}"]) for i in range(1, sum(c.startswith("qale") for c in cols) + 1)]
+    return cpu, wall, q_ale
 
 
 def steady_feed_force(csv):
@@ -141,11 +187,17 @@ def exudyn_side(args):
     solver_wall = time.perf_counter() - w0
     q_end = np.array(mbs.GetNodeOutput(node, exu.OutputVariableType.Coordinates))
     steady = np.linalg.solve(K, f)
-    error = np.max(np.abs(q_end - steady)) / np.max(np.abs(steady))
+    scale = np.max(np.abs(steady))
+    error = np.max(np.abs(q_end - steady)) / scale
+    with open(args.annular_plate_q) as fh:
+        q_ap = np.array(json.load(fh))
+    ap_error = np.max(np.abs(q_ap - steady)) / scale
+    ap_vs_exudyn = np.max(np.abs(q_ap - q_end)) / scale
     with open(settings.solutionSettings.coordinatesSolutionFileName) as fh:
         rows = sum(1 for line in fh if line and line[0] not in "#\n")
     print(json.dumps({"solver_cpu": solver_cpu, "solver_wall": solver_wall, "steady_error": error, "rows": rows,
-                      "modes": n, "setup_cpu": t0 - t_start}))
+                      "annular_plate_steady_error": ap_error, "annular_plate_vs_exudyn": ap_vs_exudyn,
+                      "steady_amplitude": scale, "modes": n, "setup_cpu": t0 - t_start}))
 
 
 def main():
@@ -156,6 +208,7 @@ def main():
     ap.add_argument("--modes-json", help=argparse.SUPPRESS)
     ap.add_argument("--spin", type=float, help=argparse.SUPPRESS)
     ap.add_argument("--force", type=float, help=argparse.SUPPRESS)
+    ap.add_argument("--annular-plate-q", help=argparse.SUPPRESS)
     args = ap.parse_args()
     if args.exudyn_side:
         exudyn_side(args)
@@ -172,12 +225,19 @@ def main():
                               stderr=subprocess.DEVNULL)
     spin = 100.0 / 60.0 / 0.15
     rows = []
+    force = None
     for r in range(args.repeat):
         ap_cpu, ap_wall, csv = annular_plate_run(args.node)
-        force = steady_feed_force(csv)
+        if force is None:
+            force = steady_feed_force(csv)  # from the first run: every run then solves the same equations
+        same_cpu, same_wall, q_ale = same_equations_run(args.node, force)
+        q_file = os.path.join(OUT, "annular_plate_q_ale.json")
+        with open(q_file, "w") as f:
+            json.dump(q_ale, f)
         t0 = time.perf_counter()
         p = subprocess.Popen([python, os.path.abspath(__file__), "--exudyn-side", "--modes-json", modes_json,
-                              "--spin", repr(spin), "--force", repr(force)], stdout=subprocess.PIPE, text=True)
+                              "--spin", repr(spin), "--force", repr(-force), "--annular-plate-q", q_file],
+                             stdout=subprocess.PIPE, text=True)
         out = p.stdout.read()
         _, status, usage = os.wait4(p.pid, 0)
         exu_wall = time.perf_counter() - t0
@@ -185,16 +245,21 @@ def main():
         if status != 0:
             sys.exit("the Exudyn side failed")
         e = json.loads(out)
-        rows.append((ap_cpu, ap_wall, e["solver_cpu"], exu_cpu))
-        print(f"[run {r + 1}] annular_plate whole process {ap_cpu:.3f} s CPU ({ap_wall:.3f} s wall); "
+        rows.append((ap_cpu, same_cpu, e["solver_cpu"], exu_cpu))
+        print(f"[run {r + 1}] annular_plate whole process: full scene {ap_cpu:.3f} s CPU ({ap_wall:.3f} s wall), "
+              f"same equations {same_cpu:.3f} s CPU ({same_wall:.3f} s wall); "
               f"Exudyn solver {e['solver_cpu']:.3f} s CPU ({e['solver_wall']:.3f} s wall), whole process "
-              f"{exu_cpu:.3f} s CPU ({exu_wall:.3f} s wall); {e['rows']} solution rows; Exudyn's q̄ at 5.5 s vs the closed-form "
-              f"steady state: {e['steady_error']:.1e} (relative); feed force {force:.1f} N", flush=True)
+              f"{exu_cpu:.3f} s CPU ({exu_wall:.3f} s wall); {e['rows']} solution rows; feed force {force:.1f} N", flush=True)
+        print(f"        q̄ at 5.5 s (largest |difference| / largest steady |q̄| = {e['steady_amplitude']:.3e} m): "
+              f"Exudyn vs closed form {e['steady_error']:.1e}, annular_plate vs closed form "
+              f"{e['annular_plate_steady_error']:.1e}, annular_plate vs Exudyn {e['annular_plate_vs_exudyn']:.1e}", flush=True)
     rng = lambda xs: f"{min(xs):.3f}–{max(xs):.3f}"
-    ratios = [ex / ap for ap, _, ex, _ in rows]
-    print(f"\nannular_plate whole process {rng([r[0] for r in rows])} s CPU, Exudyn solver only "
-          f"{rng([r[2] for r in rows])} s CPU, Exudyn whole process {rng([r[3] for r in rows])} s CPU: "
-          f"Exudyn solver / annular_plate process = {min(ratios):.1f}–{max(ratios):.1f} (run by run)")
+    same = [ex / s for _, s, ex, _ in rows]
+    full = [ex / ap for ap, _, ex, _ in rows]
+    print(f"\nannular_plate whole process: same equations {rng([r[1] for r in rows])} s CPU, full scene "
+          f"{rng([r[0] for r in rows])} s CPU; Exudyn solver only {rng([r[2] for r in rows])} s CPU, Exudyn whole "
+          f"process {rng([r[3] for r in rows])} s CPU.\nExudyn solver / annular_plate process (run by run): "
+          f"same equations {min(same):.1f}–{max(same):.1f}, full scene {min(full):.1f}–{max(full):.1f}")
 
 
 if __name__ == "__main__":

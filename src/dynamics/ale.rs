@@ -46,18 +46,24 @@ pub fn rotate_pairs(layout: &ModeLayout, harm: &[(f64, f64)], x: &mut [f64], to_
 /// One pass over the pairs (the same operations, in the same order, as
 /// rotating q, then q̇, then adding kΩ J q̄).
 pub fn lagrange_to_ale(layout: &ModeLayout, harm: &[(f64, f64)], speed: f64, q: &mut [f64], q_dot: &mut [f64]) {
+    // Both of length n: one index check serves both.
+    let q_dot = &mut q_dot[..q.len()];
     for p in &layout.pairs {
         let (c, s) = harm[p.k as usize];
-        let (qc, qs) = (q[p.cos], q[p.sin]);
-        let (bar_c, bar_s) = (c * qc - s * qs, s * qc + c * qs);
-        let (vc, vs) = (q_dot[p.cos], q_dot[p.sin]);
-        let w = p.k as f64 * speed;
-        // q̄̇ = R q̇ + kΩ J q̄
-        q_dot[p.cos] = (c * vc - s * vs) - w * bar_s;
-        q_dot[p.sin] = (s * vc + c * vs) + w * bar_c;
+        let [bar_c, bar_s, dot_c, dot_s] = pair_to_ale((c, s), p.k as f64 * speed, [q[p.cos], q[p.sin]], [q_dot[p.cos], q_dot[p.sin]]);
+        q_dot[p.cos] = dot_c;
+        q_dot[p.sin] = dot_s;
         q[p.cos] = bar_c;
         q[p.sin] = bar_s;
     }
+}
+
+/// One pair's Lagrangian (q_c, q_s), (q̇_c, q̇_s) → ALE [q̄_c, q̄_s, q̄̇_c, q̄̇_s]
+/// at (cos kχ, sin kχ) and w = kΩ: q̄ = R q, q̄̇ = R q̇ + kΩ J q̄ (eq. 20).
+#[inline(always)]
+pub fn pair_to_ale((c, s): (f64, f64), w: f64, [qc, qs]: [f64; 2], [vc, vs]: [f64; 2]) -> [f64; 4] {
+    let (bar_c, bar_s) = (c * qc - s * qs, s * qc + c * qs);
+    [bar_c, bar_s, (c * vc - s * vs) - w * bar_s, (s * vc + c * vs) + w * bar_c]
 }
 
 /// ALE (q̄, q̄̇) → Lagrangian (q, q̇): q̇ = Rᵀ (q̄̇ − kΩ J q̄).

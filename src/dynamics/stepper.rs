@@ -9,7 +9,7 @@
 //! re-evaluates the memoryless load models (pads, links) at every stage. A
 //! step that produces a non-finite or implausible state is undone and reported.
 
-use super::ale::{harmonics, lagrange_to_ale};
+use super::ale::{harmonics, lagrange_to_ale, pair_to_ale};
 use super::error::{Divergence, StepError};
 use super::integrators::equations::{accelerations, mode_constants, ModeConstants};
 use super::integrators::exponential::ModePropagator;
@@ -21,6 +21,7 @@ use super::commands::Inputs;
 use super::loads::{add_reference_motion, compute as node_loads, StepLoads};
 use super::scene::Scene;
 use super::state::{JointAngle, State};
+use super::wrench::Wrench;
 use crate::config::{Config, Coordinates, IntegratorKind};
 use nalgebra::Complex;
 
@@ -100,6 +101,19 @@ pub struct Stepper {
     base_ale_frame: Vec<f64>,
     harm: Vec<(f64, f64)>,
     harm_end: Vec<(f64, f64)>,
+    /// The exponential step's harmonics (cos kχ, sin kχ) and the angle they
+    /// are of: a step ends where the next one starts, so its χ1 harmonics are
+    /// the next step's χ0 ones (computed once, not twice).
+    exp_harm: Vec<(f64, f64)>,
+    exp_harm_at: Option<JointAngle>,
+    /// χ1's harmonics while a step is computed.
+    exp_harm_next: Vec<(f64, f64)>,
+    /// The (h, Ω̄) every propagator in `propagators` is for: a step at the
+    /// same substep and mean speed skips checking them mode by mode.
+    propagators_for: Option<(f64, f64)>,
+    /// The node loads of the held wrenches when nothing else enters them (no
+    /// follower loads, no load models), with the wrenches they are of.
+    held_loads: Option<HeldLoads>,
     /// Both descriptions at an RK4 stage.
     views: Views,
     /// Per-mode exact propagators, keyed by (h, kΩ): recomputed when either changes.
@@ -134,6 +148,11 @@ impl Stepper {
             base_ale_frame: vec![0.0; n],
             harm: Vec::with_capacity(k),
             harm_end: Vec::with_capacity(k),
+            exp_harm: Vec::with_capacity(k),
+            exp_harm_at: None,
+            exp_harm_next: Vec::with_capacity(k),
+            propagators_for: None,
+            held_loads: None,
             views: Views::new(n),
             propagators: vec![ModePropagator::UNSET; n],
             y: vec![0.0; 2 * n + scene.load_models.continuous_states()],
@@ -226,9 +245,7 @@ impl Stepper {
             models.evaluate(&ctx, &slots, &inputs.commands, &mut self.model_wrenches);
             state.load_models = slots;
         }
-        let (q_ale, _) = state.ale();
-        let (q_lagrange, _) = state.lagrange();
-        node_loads(scene, inputs, &self.model_wrenches, q_ale, q_lagrange, &mut self.loads);
+        self.node_loads(scene, state, inputs);
         let d = drive(&scene.joint, scene.polar_inertia, state.speed, inputs.speed_command, self.loads.axial_torque, &self.model_wrenches.friction, h);
         let (speed0, alpha) = (state.speed, d.acceleration);
         let speed_mean = speed0 + 0.5 * alpha * h;
@@ -263,51 +280,105 @@ impl Stepper {
         Ok(())
     }
 
+    /// The node loads at the substep start into `self.loads`. When they depend
+    /// on the wrenches alone (no follower loads, no load models) they are
+    /// computed once per set of held wrenches and copied (the same numbers:
+    /// [`node_loads`] of the same inputs).
+    fn node_loads(&mut self, scene: &Scene, state: &State, inputs: &Inputs) {
+        let (q_ale, _) = state.ale();
+        let (q_lagrange, _) = state.lagrange();
+        if scene.effects.follower_loads || !scene.load_models.is_empty() {
+            return node_loads(scene, inputs, &self.model_wrenches, q_ale, q_lagrange, &mut self.loads);
+        }
+        match &mut self.held_loads {
+            Some(held) if held.is_of(inputs) => {}
+            slot => {
+                let held = slot.get_or_insert_with(|| HeldLoads { ale: Vec::new(), lagrange: Vec::new(), loads: StepLoads::new(scene.n_modes()) });
+                node_loads(scene, inputs, &self.model_wrenches, q_ale, q_lagrange, &mut held.loads);
+                held.ale.clone_from(&inputs.ale);
+                held.lagrange.clone_from(&inputs.lagrange);
+            }
+        }
+        let Some(held) = &self.held_loads else { unreachable!() };
+        self.loads.ale_frame.copy_from_slice(&held.loads.ale_frame);
+        self.loads.plate_frame.copy_from_slice(&held.loads.plate_frame);
+        self.loads.axial_torque = held.loads.axial_torque;
+    }
+
+    /// The exponential step's harmonics of χ into `exp_harm` (kept when they
+    /// are already of χ).
+    fn exp_harmonics(&mut self, chi: &JointAngle, k_max: u32) {
+        if self.exp_harm_at != Some(*chi) {
+            harmonics(chi, k_max, &mut self.exp_harm);
+            self.exp_harm_at = Some(*chi);
+        }
+    }
+
     /// Exact step of the Lagrangian description over h (the loads held), then
     /// the ALE one derived at χ1: both written into `state`.
     #[allow(clippy::too_many_arguments)]
     fn exponential(&mut self, scene: &Scene, state: &mut State, h: f64, speed_mean: f64, chi0: JointAngle, chi1: JointAngle, speed1: f64) {
+        self.exp_harmonics(&chi0, scene.layout.k_max);
         if let Some(stiffening) = &scene.stiffening {
-            harmonics(&chi0, scene.layout.k_max, &mut self.harm);
             let (lagrange_q, lagrange_v) = match state.coordinates {
                 Coordinates::Lagrangian => (&mut state.q, &mut state.q_dot),
                 Coordinates::Ale => (&mut state.q_other, &mut state.q_dot_other),
             };
-            block_exponential::advance(stiffening, &mut self.stiffened, &self.consts, &self.harm, h, speed_mean, speed1, &self.loads, lagrange_q, lagrange_v);
+            block_exponential::advance(stiffening, &mut self.stiffened, &self.consts, &self.exp_harm, h, speed_mean, speed1, &self.loads, lagrange_q, lagrange_v);
             return self.derive_ale(scene, state, chi1, speed1);
         }
-        let soft = scene.off_axis_rate_squared();
-        for (i, m) in scene.model.modes().iter().enumerate() {
-            let nu = m.k as f64 * speed_mean;
-            let p = &mut self.propagators[i];
-            if p.h != h || p.nu != nu {
-                *p = ModePropagator::new(m.modal_mass, m.damping, m.omega, soft, h, nu);
+        if self.propagators_for != Some((h, speed_mean)) {
+            let soft = scene.off_axis_rate_squared();
+            for (i, m) in scene.model.modes().iter().enumerate() {
+                let nu = m.k as f64 * speed_mean;
+                let p = &mut self.propagators[i];
+                if p.h != h || p.nu != nu {
+                    *p = ModePropagator::new(m.modal_mass, m.damping, m.omega, soft, h, nu);
+                }
             }
+            self.propagators_for = Some((h, speed_mean));
         }
-        harmonics(&chi0, scene.layout.k_max, &mut self.harm);
-        let (lagrange_q, lagrange_v) = match state.coordinates {
-            Coordinates::Lagrangian => (&mut state.q, &mut state.q_dot),
-            Coordinates::Ale => (&mut state.q_other, &mut state.q_dot_other),
+        // Each mode's new Lagrangian (q, q̇) at χ1 and, from it, its ALE one
+        // (the same operations as `derive_ale`, while the pair is at hand).
+        harmonics(&chi1, scene.layout.k_max, &mut self.exp_harm_next);
+        let (lagrange_q, lagrange_v, ale_q, ale_v) = match state.coordinates {
+            Coordinates::Lagrangian => (&mut state.q, &mut state.q_dot, &mut state.q_other, &mut state.q_dot_other),
+            Coordinates::Ale => (&mut state.q_other, &mut state.q_dot_other, &mut state.q, &mut state.q_dot),
         };
-        let f = &self.loads;
+        // All of length n, so one index check serves every array (the compiler merges them).
+        let n = lagrange_q.len();
+        let (lagrange_v, ale_q, ale_v) = (&mut lagrange_v[..n], &mut ale_q[..n], &mut ale_v[..n]);
+        let (propagators, ale_frame, plate_frame) = (&self.propagators[..n], &self.loads.ale_frame[..n], &self.loads.plate_frame[..n]);
+        let harmonics_len = self.exp_harm.len();
+        let (harm0, harm1) = (&self.exp_harm[..], &self.exp_harm_next[..harmonics_len]);
         for &i in &scene.layout.axisymmetric {
-            let (q, qd) = self.propagators[i].advance(lagrange_q[i], lagrange_v[i], f.ale_frame[i], Complex::new(0.0, 0.0));
+            let (q, qd) = propagators[i].advance(lagrange_q[i], lagrange_v[i], ale_frame[i], Complex::new(0.0, 0.0));
             lagrange_q[i] = q;
             lagrange_v[i] = qd;
+            ale_q[i] = q;
+            ale_v[i] = qd;
         }
         for p in &scene.layout.pairs {
-            let (co, si) = self.harm[p.k as usize];
+            let (co, si) = harm0[p.k as usize];
             let e0 = Complex::new(co, si);
-            let (fc, fs) = (f.ale_frame[p.cos], f.ale_frame[p.sin]);
+            let (fc, fs) = (ale_frame[p.cos], ale_frame[p.sin]);
             let gc = Complex::new(fc, -fs) * e0;
             let gs = Complex::new(fs, fc) * e0;
-            for (idx, g) in [(p.cos, gc), (p.sin, gs)] {
-                let (q, qd) = self.propagators[idx].advance(lagrange_q[idx], lagrange_v[idx], f.plate_frame[idx], g);
-                lagrange_q[idx] = q;
-                lagrange_v[idx] = qd;
-            }
+            let (qc, vc) = propagators[p.cos].advance(lagrange_q[p.cos], lagrange_v[p.cos], plate_frame[p.cos], gc);
+            let (qs, vs) = propagators[p.sin].advance(lagrange_q[p.sin], lagrange_v[p.sin], plate_frame[p.sin], gs);
+            lagrange_q[p.cos] = qc;
+            lagrange_v[p.cos] = vc;
+            lagrange_q[p.sin] = qs;
+            lagrange_v[p.sin] = vs;
+            let [bar_c, bar_s, dot_c, dot_s] = pair_to_ale(harm1[p.k as usize], p.k as f64 * speed1, [qc, qs], [vc, vs]);
+            ale_q[p.cos] = bar_c;
+            ale_q[p.sin] = bar_s;
+            ale_v[p.cos] = dot_c;
+            ale_v[p.sin] = dot_s;
         }
-        self.derive_ale(scene, state, chi1, speed1);
+        // Every mode is axisymmetric or in a pair (model::build), so both descriptions are whole.
+        std::mem::swap(&mut self.exp_harm, &mut self.exp_harm_next);
+        self.exp_harm_at = Some(chi1);
     }
 
     /// The exponential step's result is the Lagrangian description at χ1:
@@ -319,8 +390,11 @@ impl Stepper {
         };
         ale_q.copy_from_slice(lagrange_q);
         ale_v.copy_from_slice(lagrange_v);
-        harmonics(&chi1, scene.layout.k_max, &mut self.harm);
-        lagrange_to_ale(&scene.layout, &self.harm, speed1, ale_q, ale_v);
+        if self.exp_harm_at != Some(chi1) {
+            harmonics(&chi1, scene.layout.k_max, &mut self.exp_harm);
+            self.exp_harm_at = Some(chi1);
+        }
+        lagrange_to_ale(&scene.layout, &self.exp_harm, speed1, ale_q, ale_v);
     }
 
     /// The implicit midpoint rule over h in `inner` equal steps, the loads
@@ -414,6 +488,23 @@ impl Stepper {
     }
 }
 
+/// Node loads of held wrenches and the wrenches they are of.
+struct HeldLoads {
+    ale: Vec<Wrench>,
+    lagrange: Vec<Wrench>,
+    loads: StepLoads,
+}
+
+impl HeldLoads {
+    /// Whether `inputs` hold the same wrenches, bit for bit.
+    fn is_of(&self, inputs: &Inputs) -> bool {
+        let same = |a: &[Wrench], b: &[Wrench]| {
+            a.len() == b.len() && a.iter().zip(b).all(|(x, y)| x.force.iter().chain(&x.moment).zip(y.force.iter().chain(&y.moment)).all(|(u, v)| u.to_bits() == v.to_bits()))
+        };
+        same(&self.ale, &inputs.ale) && same(&self.lagrange, &inputs.lagrange)
+    }
+}
+
 /// Amplitudes and rates in one description, for filling both views mid-step.
 struct StateView<'a> {
     q: &'a [f64],
@@ -437,6 +528,21 @@ impl StateView<'_> {
     }
 }
 
+/// max |v| over finite values, in four independent lanes (no early exit).
+fn largest_magnitude(values: &[f64]) -> f64 {
+    let mut m = [0.0f64; 4];
+    let chunks = values.chunks_exact(4);
+    for &v in chunks.remainder() {
+        m[0] = m[0].max(v.abs());
+    }
+    for c in chunks {
+        for j in 0..4 {
+            m[j] = m[j].max(c[j].abs());
+        }
+    }
+    m[0].max(m[1]).max(m[2].max(m[3]))
+}
+
 /// Divergence guard: everything finite, amplitudes within the plausibility limit.
 fn check(scene: &Scene, state: &State) -> Result<(), StepError> {
     let diverged = |cause| Err(StepError::Diverged { time: state.time, cause });
@@ -444,7 +550,9 @@ fn check(scene: &Scene, state: &State) -> Result<(), StepError> {
         return diverged(Divergence::NonFinite);
     }
     let limit = scene.limits.max_deflection_thicknesses * scene.model.plate().thickness;
-    if let Some((i, &q)) = state.q.iter().enumerate().find(|(_, q)| q.abs() > limit) {
+    if largest_magnitude(&state.q) <= limit {
+        // Every amplitude within the limit (one vectorizable pass; the search below only when one is not).
+    } else if let Some((i, &q)) = state.q.iter().enumerate().find(|(_, q)| q.abs() > limit) {
         let m = &scene.model.modes()[i];
         return diverged(Divergence::ModeBeyondLimit { mode: i, k: m.k, l: m.l, shape: m.shape, value: q, limit });
     }

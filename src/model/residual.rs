@@ -391,7 +391,8 @@ impl BandedStiffness {
             for d in 1..4.min(i + 1) {
                 diag -= row[d] * row[d];
             }
-            if diag <= 0.0 || !diag.is_finite() {
+            // Positive and finite (NaN fails both comparisons).
+            if !(diag > 0.0 && diag < f64::INFINITY) {
                 return None;
             }
             row[0] = diag.sqrt();
