@@ -1111,8 +1111,34 @@ impl Discovery {
     }
   }
 
+  // A departed participant's writers send nothing more (their proxies go with
+  // it), and one that vanished never disposes its endpoints: the discovery
+  // readers forget its writers' read positions and its key hashes, which
+  // otherwise stayed for every participant ever discovered.
+  fn forget_participant_in_readers(&self, prefix: GuidPrefix) {
+    self
+      .dcps_participant
+      .reader
+      .forget_participant(prefix, |k| k.0.prefix == prefix);
+    self
+      .dcps_subscription
+      .reader
+      .forget_participant(prefix, |k| k.0.prefix == prefix);
+    self
+      .dcps_publication
+      .reader
+      .forget_participant(prefix, |k| k.0.prefix == prefix);
+    // Topic keys are topic names, shared by participants.
+    self.dcps_topic.reader.forget_participant(prefix, |_| false);
+    self
+      .dcps_participant_message
+      .reader
+      .forget_participant(prefix, |k| k.guid_prefix() == prefix);
+  }
+
   fn process_participant_dispose(&mut self, participant_guidp: GuidPrefix) {
     discovery_db_write(&self.discovery_db).remove_participant(participant_guidp, true); // true = actively removed
+    self.forget_participant_in_readers(participant_guidp);
     self.send_discovery_notification(DiscoveryNotificationType::ParticipantLost {
       guid_prefix: participant_guidp,
     });
@@ -1776,6 +1802,7 @@ impl Discovery {
     let removed = discovery_db_write(&self.discovery_db).participant_cleanup();
     for (guid_prefix, reason) in removed {
       debug!("participant cleanup - timeout for {guid_prefix:?}");
+      self.forget_participant_in_readers(guid_prefix);
       self.send_discovery_notification(DiscoveryNotificationType::ParticipantLost { guid_prefix });
       self.send_participant_status(DomainParticipantStatusEvent::ParticipantLost {
         id: guid_prefix,

@@ -100,6 +100,17 @@ where
     self.take_only = true;
     self.simple_data_reader.set_take_only();
   }
+
+  /// See `SimpleDataReader::forget_participant`.
+  pub(crate) fn forget_participant(
+    &self,
+    prefix: crate::structure::guid::GuidPrefix,
+    is_its_key: impl Fn(&D::K) -> bool,
+  ) {
+    self
+      .simple_data_reader
+      .forget_participant(prefix, is_its_key);
+  }
 }
 
 impl<D: 'static, DA> DataReader<D, DA>
@@ -1519,6 +1530,65 @@ mod tests {
       .count();
     let instances = datareader.datasample_cache.instance_map.len();
     (taken, taken_again, cached, instances)
+  }
+
+  // The writer's participant departs: its read position and the key hashes of
+  // its keys go, another participant's stay.
+  #[test]
+  fn forget_participant_drops_its_read_positions_and_key_hashes() {
+    let dp = DomainParticipant::new(test_domain_id(0)).expect("Participant creation failed!");
+    let qos = crate::dds::qos::QosPolicyBuilder::new()
+      .reliable(crate::Duration::ZERO)
+      .build();
+    let sub = dp.create_subscriber(&qos).unwrap();
+    let topic = dp
+      .create_topic(
+        "forget participant".to_string(),
+        "RandomData".to_string(),
+        &qos,
+        TopicKind::WithKey,
+      )
+      .unwrap();
+    let topic_cache =
+      dp.dds_cache()
+        .write()
+        .unwrap()
+        .add_new_topic(topic.name(), topic.get_type(), &topic.qos());
+    let mut datareader = sub
+      .create_datareader::<RandomData, CDRDeserializerAdapter<RandomData>>(&topic, None)
+      .unwrap();
+    datareader.set_take_only();
+    let writer = |prefix: u8| GUID {
+      prefix: GuidPrefix::new(&[prefix; 12]),
+      entity_id: EntityId::create_custom_entity_id(
+        [1; 3],
+        EntityKind::WRITER_WITH_KEY_USER_DEFINED,
+      ),
+    };
+    for (prefix, key) in [(1, 10), (2, 20)] {
+      let mut tc = topic_cache.lock().unwrap();
+      tc.add_change(
+        &Timestamp::now(),
+        crate::structure::cache_change::CacheChange::new(
+          writer(prefix),
+          SequenceNumber::from(1),
+          crate::dds::with_key::WriteOptions::default(),
+          crate::dds::ddsdata::DDSData::new(SerializedPayload::new(
+            RepresentationIdentifier::CDR_LE,
+            to_vec::<RandomData, LittleEndian>(&RandomData {
+              a: key,
+              b: "x".to_string(),
+            })
+            .unwrap(),
+          )),
+        ),
+      );
+      tc.mark_reliably_received_before(writer(prefix), SequenceNumber::from(2));
+    }
+    assert_eq!(datareader.take(100, ReadCondition::any()).unwrap().len(), 2);
+    assert_eq!(datareader.simple_data_reader.read_state_len(), (2, 2));
+    datareader.forget_participant(writer(1).prefix, |key| *key == 10);
+    assert_eq!(datareader.simple_data_reader.read_state_len(), (1, 1));
   }
 
   #[test]

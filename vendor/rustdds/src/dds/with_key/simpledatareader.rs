@@ -33,7 +33,7 @@ use crate::{
     cache_change::CacheChange,
     dds_cache::TopicCache,
     entity::RTPSEntity,
-    guid::{EntityId, GUID},
+    guid::{EntityId, GuidPrefix, GUID},
     sequence_number::SequenceNumber,
     time::Timestamp,
   },
@@ -206,6 +206,30 @@ where
   /// forgets its key hash (the instance's last sample).
   pub(crate) fn set_take_only(&mut self) {
     self.take_only = true;
+  }
+
+  /// Forget the read positions of the writers of participant `prefix` and the
+  /// key hashes of the keys `is_its_key` says are its, once the participant
+  /// is gone: its writers' proxies have been removed, so nothing more arrives
+  /// from them, and its instances are not disposed if it vanished without a
+  /// goodbye. Should it come back, its writers start over and what they send
+  /// again is read again.
+  pub(crate) fn forget_participant(&self, prefix: GuidPrefix, is_its_key: impl Fn(&D::K) -> bool) {
+    let mut read_state = self.read_state.lock().unwrap();
+    read_state
+      .last_read_sn
+      .retain(|writer, _| writer.prefix != prefix);
+    read_state.hash_to_key_map.retain(|_, key| !is_its_key(key));
+  }
+
+  // Read positions (writers) and key hashes held.
+  #[cfg(test)]
+  pub(crate) fn read_state_len(&self) -> (usize, usize) {
+    let read_state = self.read_state.lock().unwrap();
+    (
+      read_state.last_read_sn.len(),
+      read_state.hash_to_key_map.len(),
+    )
   }
 
   pub(crate) fn set_waker(&self, w: Option<Waker>) {
