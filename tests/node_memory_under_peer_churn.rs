@@ -6,11 +6,13 @@
 //! newly matched reader no longer costs one pending-GAP entry per sample the
 //! writer ever wrote (change 1), a reliable keep-last writer keeps only its
 //! depth of sent samples instead of up to 8,192 unacknowledged ones per
-//! writer for a reader that stopped acknowledging (change 4), and discovery
-//! forgets departed endpoints (change 5). Before, the node swung by tens of
-//! MB during the rounds. The node hands freed heap back to the OS
-//! (src/ros/heap.rs). Measured: the node's resident memory after every round
-//! and once the leases have expired, against the same after a warm-up.
+//! writer for a reader that stopped acknowledging (change 4), discovery
+//! forgets departed endpoints (change 5), its readers keep nothing they have
+//! taken (change 6) and forget a departed participant (change 8), and the
+//! SPDP writer keeps its depth of announcements (change 7). Before, the node
+//! swung by tens of MB during the rounds. The node hands freed heap back to
+//! the OS (src/ros/heap.rs). Measured: the node's resident memory after every
+//! round and once the leases have expired, against the same after a warm-up.
 
 #![cfg(feature = "ros")]
 
@@ -71,11 +73,17 @@ fn killed_and_departed_peers_leave_no_lasting_memory_behind() {
     // 1–5 (five runs on the loaded 2-core machine, load average 8–10):
     // 18.2 → 18.8 MB (+3.3 %), 18.4 → 19.0 MB (+3.0 %), 18.5 → 19.2 MB
     // (+3.9 %), 18.2 → 18.8 MB (+3.2 %), 18.5 → 19.1 MB (+3.0 %) during the
-    // rounds; after expiry −1.0 %, −0.2 %, −1.5 %, −0.3 %, −1.0 %. The
-    // bounds leave room for the heap trim's 5-s period and a faster machine
-    // (more killed peers' leases overlapping) and still catch either old
-    // behaviour.
+    // rounds; after expiry −1.0 %, −0.2 %, −1.5 %, −0.3 %, −1.0 %. With
+    // changes 1–7 (two runs, load average 2–6): 18.6 → 19.1 MB (+2.5 %),
+    // 18.6 → 19.2 MB (+2.9 %); after expiry −0.9 %, −1.1 %. With changes 1–8:
+    // 18.6 → 19.1 MB (+2.8 %), 18.4 → 19.0 MB (+3.0 %); after expiry −1.1 %,
+    // −1.0 %. (Six rounds are too few to tell changes 6 and 7 apart: what they
+    // remove grows by ≈ 60 kB per round of 20 peers; benches/peer_churn.py
+    // measures them over 100 rounds.) The bounds — during the rounds the
+    // issue's goal, +10 % — leave room for the heap trim's 5-s period and a
+    // faster machine (more killed peers' leases overlapping) and still catch
+    // the swings before changes 4 and 5.
     let largest = *during.iter().max().unwrap();
-    assert!(largest * 20 <= warm * 23, "during the rounds: {warm} → {largest} kB (more than +15 %): {during:?}");
+    assert!(largest * 10 <= warm * 11, "during the rounds: {warm} → {largest} kB (more than +10 %): {during:?}");
     assert!(after * 20 <= warm * 21, "leases expired: {warm} → {after} kB (more than +5 %)");
 }

@@ -456,7 +456,7 @@ impl SimLoop {
             Ok(()) => {
                 self.clock.advance();
                 // The step's samples wake the RustDDS event loop once, after
-                // the last of them (vendor/rustdds/PATCH.md §7), not at the
+                // the last of them (vendor/rustdds/PATCH.md §10), not at the
                 // first while the others are still being written.
                 defer_wakes(|| {
                     self.publish_clock();

@@ -423,7 +423,7 @@ impl Discovery {
     }
 
     // Participant
-    let dcps_participant = construct_topic_and_poll!(
+    let mut dcps_participant = construct_topic_and_poll!(
       PlCdr,
       with_key,
       builtin_topic_names::DCPS_PARTICIPANT,
@@ -440,7 +440,7 @@ impl Discovery {
 
     // Subscriptions: What are the Readers on the network and what are they
     // subscribing to?
-    let dcps_subscription = construct_topic_and_poll!(
+    let mut dcps_subscription = construct_topic_and_poll!(
       PlCdr,
       with_key,
       builtin_topic_names::DCPS_SUBSCRIPTION,
@@ -456,7 +456,7 @@ impl Discovery {
     );
 
     // Publication : Who are the Writers here and elsewhere
-    let dcps_publication = construct_topic_and_poll!(
+    let mut dcps_publication = construct_topic_and_poll!(
       PlCdr,
       with_key,
       builtin_topic_names::DCPS_PUBLICATION,
@@ -472,7 +472,7 @@ impl Discovery {
     );
 
     // Topic topic (not a typo)
-    let dcps_topic = construct_topic_and_poll!(
+    let mut dcps_topic = construct_topic_and_poll!(
       PlCdr,
       with_key,
       builtin_topic_names::DCPS_TOPIC,
@@ -488,7 +488,7 @@ impl Discovery {
     );
 
     // Participant Message Data 8.4.13
-    let dcps_participant_message = construct_topic_and_poll!(
+    let mut dcps_participant_message = construct_topic_and_poll!(
       CDR,
       with_key,
       builtin_topic_names::DCPS_PARTICIPANT_MESSAGE,
@@ -502,6 +502,16 @@ impl Discovery {
       EntityId::P2P_BUILTIN_PARTICIPANT_MESSAGE_WRITER,
       Some(DISCOVERY_PARTICIPANT_MESSAGE_TIMER_TOKEN),
     );
+
+    // Discovery is the only reader of these topics and processes each sample
+    // once: it keeps nothing once taken. Otherwise the SEDP topic caches kept up
+    // to SEDP_READER_RESOURCE_LIMITS samples, and every reader one instance per
+    // remote participant or endpoint ever discovered.
+    dcps_participant.reader.set_take_only();
+    dcps_subscription.reader.set_take_only();
+    dcps_publication.reader.set_take_only();
+    dcps_topic.reader.set_take_only();
+    dcps_participant_message.reader.set_take_only();
 
     // DDS Security
 
@@ -1103,8 +1113,34 @@ impl Discovery {
     }
   }
 
+  // A departed participant's writers send nothing more (their proxies go with
+  // it), and one that vanished never disposes its endpoints: the discovery
+  // readers forget its writers' read positions and its key hashes, which
+  // otherwise stayed for every participant ever discovered.
+  fn forget_participant_in_readers(&self, prefix: GuidPrefix) {
+    self
+      .dcps_participant
+      .reader
+      .forget_participant(prefix, |k| k.0.prefix == prefix);
+    self
+      .dcps_subscription
+      .reader
+      .forget_participant(prefix, |k| k.0.prefix == prefix);
+    self
+      .dcps_publication
+      .reader
+      .forget_participant(prefix, |k| k.0.prefix == prefix);
+    // Topic keys are topic names, shared by participants.
+    self.dcps_topic.reader.forget_participant(prefix, |_| false);
+    self
+      .dcps_participant_message
+      .reader
+      .forget_participant(prefix, |k| k.guid_prefix() == prefix);
+  }
+
   fn process_participant_dispose(&mut self, participant_guidp: GuidPrefix) {
     discovery_db_write(&self.discovery_db).remove_participant(participant_guidp, true); // true = actively removed
+    self.forget_participant_in_readers(participant_guidp);
     self.send_discovery_notification(DiscoveryNotificationType::ParticipantLost {
       guid_prefix: participant_guidp,
     });
@@ -1768,6 +1804,7 @@ impl Discovery {
     let removed = discovery_db_write(&self.discovery_db).participant_cleanup();
     for (guid_prefix, reason) in removed {
       debug!("participant cleanup - timeout for {guid_prefix:?}");
+      self.forget_participant_in_readers(guid_prefix);
       self.send_discovery_notification(DiscoveryNotificationType::ParticipantLost { guid_prefix });
       self.send_participant_status(DomainParticipantStatusEvent::ParticipantLost {
         id: guid_prefix,
@@ -2009,10 +2046,11 @@ impl Discovery {
   // newer SEDP samples arrive, it may be removed unread. The RTPS Reader has
   // already acknowledged it, so the endpoint it announces stays undiscovered.
   //
-  // The cache holds samples up to the limit whether or not they have been
-  // read. 4096 lets a waiting sample outlast 4096 newer announcements instead
-  // of 64; at a few hundred bytes per sample, a full cache takes a few MiB per
-  // SEDP topic and DomainParticipant. RustDDS does not enforce max_instances,
+  // 4096 lets a waiting sample outlast 4096 newer announcements instead of 64.
+  // Samples Discovery has taken leave the cache at once (its readers are
+  // take-only, see `DataReader::set_take_only`), so the limit bounds only
+  // samples not yet taken; before, the cache kept taken samples up to the
+  // limit too, a few MiB per SEDP topic and DomainParticipant when full. RustDDS does not enforce max_instances,
   // and the DataReader keeps History depth samples per instance, so all three
   // limits are kept consistent.
   const SEDP_READER_RESOURCE_LIMITS: ResourceLimits = ResourceLimits {

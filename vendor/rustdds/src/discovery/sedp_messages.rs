@@ -1309,6 +1309,12 @@ pub struct ParticipantMessageDataKey(GuidPrefix, ParticipantMessageDataKind);
 
 impl Key for ParticipantMessageDataKey {}
 
+impl ParticipantMessageDataKey {
+  pub(crate) fn guid_prefix(&self) -> GuidPrefix {
+    self.0
+  }
+}
+
 // =======================================================================
 // =======================================================================
 // =======================================================================

@@ -1678,48 +1678,21 @@ impl Writer {
     depth: Option<usize>,
     resource_limit: usize,
   ) {
-    let first_keeper = if !self.like_stateless {
-      // Regular stateful writer behavior
-      // All readers have acked up to this point (SequenceNumber)
-      let acked_by_all_readers = self
-        .readers
-        .values()
-        .map(RtpsReaderProxy::acked_up_to_before)
-        .min()
-        .unwrap_or_else(SequenceNumber::zero);
-      // If all readers have acked all up to before 5, and depth is 5, we need
-      // to keep samples 0..4, i.e. from acked_up_to_before - depth .
-      let depth_keeper = if let Some(depth) = depth {
-        max(
-          acked_by_all_readers - SequenceNumber::from(depth),
-          self.send_buffer.first_change_sequence_number(),
-        )
-      } else {
-        // try to keep all
-        self.send_buffer.first_change_sequence_number()
-      };
-      // Never evict samples that some matched (reliable) reader has not yet
-      // acknowledged: clamp the keeper to at most the all-acked point so that
-      // unacknowledged samples remain available for repair. The resource-limit
-      // backstop below still bounds memory if a reader falls hopelessly behind.
-      min(depth_keeper, acked_by_all_readers)
-    } else {
-      // Stateless-like writer currently supports only BestEffort behavior, so here we
-      // make it explicit that it does not care about acked sequence numbers
-      let depth = depth.unwrap_or(0);
-      max(
-        self.send_buffer.last_change_sequence_number() - SequenceNumber::from(depth),
-        self.send_buffer.first_change_sequence_number(),
-      )
-    };
-    // Memory-safety backstop: never retain more than `resource_limit` samples,
-    // even if that forces eviction of still-unacknowledged data.
-    let first_keeper = max(
-      max(
-        first_keeper,
-        self.send_buffer.last_change_sequence_number() - SequenceNumber::from(resource_limit),
-      ),
-      SequenceNumber::zero(),
+    // All readers have acked up to this point (SequenceNumber)
+    let acked_by_all_readers = self
+      .readers
+      .values()
+      .map(RtpsReaderProxy::acked_up_to_before)
+      .min()
+      .unwrap_or_else(SequenceNumber::zero);
+    let first_keeper = first_change_to_keep(
+      self.like_stateless,
+      self.is_reliable(),
+      depth,
+      resource_limit,
+      self.send_buffer.first_change_sequence_number(),
+      self.send_buffer.last_change_sequence_number(),
+      acked_by_all_readers,
     );
     debug!(
       "WriterSendBuffer: cleaning before {first_keeper:?} topic={:?}",
@@ -2609,6 +2582,52 @@ impl<'a> Iterator for FragmentationIter<'a> {
   }
 }
 
+// The first SequenceNumber a Writer keeps at cache cleaning, given its
+// retained changes `first..=last`, its History depth (None = KEEP_ALL) and the
+// SN all its matched readers have acknowledged up to (zero without readers).
+//
+// A stateless writer (which supports only BestEffort) or a stateful BestEffort
+// KEEP_LAST one keeps the changes from `last - depth` (stateless KEEP_ALL: only
+// the last), whatever was acknowledged. A BestEffort reader never acknowledges,
+// so for a stateful BestEffort writer the acknowledgements held the keeper at
+// zero and it kept every sample up to `resource_limit` (e.g. the SPDP writer:
+// one announcement per newly discovered participant, up to 8,192).
+fn first_change_to_keep(
+  like_stateless: bool,
+  reliable: bool,
+  depth: Option<usize>,
+  resource_limit: usize,
+  first: SequenceNumber,
+  last: SequenceNumber,
+  acked_by_all_readers: SequenceNumber,
+) -> SequenceNumber {
+  let ignore_acks = like_stateless || (!reliable && depth.is_some());
+  let first_keeper = if ignore_acks {
+    let depth = depth.unwrap_or(0);
+    max(last - SequenceNumber::from(depth), first)
+  } else {
+    // If all readers have acked all up to before 5, and depth is 5, we need
+    // to keep samples 0..4, i.e. from acked_up_to_before - depth .
+    let depth_keeper = if let Some(depth) = depth {
+      max(acked_by_all_readers - SequenceNumber::from(depth), first)
+    } else {
+      // try to keep all
+      first
+    };
+    // Never evict samples that some matched (reliable) reader has not yet
+    // acknowledged: clamp the keeper to at most the all-acked point so that
+    // unacknowledged samples remain available for repair. The resource-limit
+    // backstop below still bounds memory if a reader falls hopelessly behind.
+    min(depth_keeper, acked_by_all_readers)
+  };
+  // Memory-safety backstop: never retain more than `resource_limit` samples,
+  // even if that forces eviction of still-unacknowledged data.
+  max(
+    max(first_keeper, last - SequenceNumber::from(resource_limit)),
+    SequenceNumber::zero(),
+  )
+}
+
 // -------------------------------------------------------------------------------------
 // -------------------------------------------------------------------------------------
 // -------------------------------------------------------------------------------------
@@ -2625,6 +2644,35 @@ mod tests {
   // At a 1500-byte-MTU budget, a two-fragment "1 KB" sample (its serialized form
   // is slightly over the 1024-byte fragment size) packs BOTH fragments into one
   // DATAFRAG submessage, so it goes out in a single datagram instead of two.
+  // Cache cleaning of a stateful BestEffort KEEP_LAST writer (the SPDP writer:
+  // depth 8, matched only by BestEffort readers, which never acknowledge).
+  #[test]
+  fn best_effort_keep_last_writer_keeps_its_depth_without_acks() {
+    use super::first_change_to_keep;
+    use crate::structure::sequence_number::SequenceNumber;
+    let sn = SequenceNumber::new;
+    // 100 announcements retained, no acknowledgement: keep from 92 (depth 8, as
+    // the stateless writer's `last - depth`), not all 100.
+    assert_eq!(
+      first_change_to_keep(false, false, Some(8), 8192, sn(1), sn(100), sn(0)),
+      sn(92)
+    );
+    // A reliable writer still keeps what its readers have not acknowledged.
+    assert_eq!(
+      first_change_to_keep(false, true, Some(8), 8192, sn(1), sn(100), sn(0)),
+      sn(0)
+    );
+    assert_eq!(
+      first_change_to_keep(false, true, Some(8), 8192, sn(1), sn(100), sn(95)),
+      sn(87)
+    );
+    // The resource limit still bounds a writer whose readers never acknowledge.
+    assert_eq!(
+      first_change_to_keep(false, false, None, 50, sn(1), sn(100), sn(0)),
+      sn(50)
+    );
+  }
+
   #[test]
   fn small_mtu_packs_1k_sample_into_one_datafrag() {
     // header_len 20 (RTPS header only), budget 1452, fragment size 1024,
@@ -2991,7 +3039,7 @@ mod tests {
     // reader to acknowledge (Final clear) unless the Writer is KEEP_LAST with
     // `keep_last_evicts_sent`, whose admission never waits for acknowledgements:
     // then it is advisory (Final set) and a reader that has everything stays
-    // silent (PATCH.md §6).
+    // silent (PATCH.md §9).
     #[test]
     fn piggybacked_heartbeat_is_final_only_for_keep_last_writers_that_evict_sent_samples() {
       use crate::{

@@ -300,6 +300,24 @@ impl TopicCache {
     self.changes.get(instant)
   }
 
+  // Drop the change `sn` of `writer` once the topic's only DataReader has taken
+  // it (see `SimpleDataReader::set_take_only`). A later duplicate of it is not
+  // handed over again: the Reader's writer proxy ignores SNs it has received,
+  // and the DataReader reads a writer's SNs only after its last one taken.
+  pub fn remove_taken_change(&mut self, writer: GUID, sn: SequenceNumber) {
+    let Some(instant) = self
+      .sequence_numbers
+      .get(&writer)
+      .and_then(|sn_map| sn_map.get(&sn))
+      .copied()
+    else {
+      return;
+    };
+    if let Some(cc) = self.changes.remove(&instant) {
+      self.remove_sn(&cc);
+    }
+  }
+
   pub fn add_change(&mut self, instant: &Timestamp, cache_change: CacheChange) {
     self
       .add_change_internal(instant, cache_change)

@@ -72,6 +72,7 @@ pub enum SelectByKey {
 pub struct DataReader<D: Keyed, DA: DeserializerAdapter<D> = CDRDeserializerAdapter<D>> {
   simple_data_reader: SimpleDataReader<D, DA>,
   datasample_cache: DataSampleCache<D>, // DataReader-local cache of deserialized samples
+  take_only: bool,                      // see `set_take_only`
 }
 
 impl<D: 'static, DA> DataReader<D, DA>
@@ -85,7 +86,30 @@ where
     Self {
       simple_data_reader,
       datasample_cache: dsc,
+      take_only: false,
     }
+  }
+
+  /// For a DataReader that is the only reader of its topic cache, only takes,
+  /// and ignores view and instance states, such as a built-in discovery
+  /// reader: a taken sample is kept nowhere, and an instance is forgotten
+  /// when its last sample is taken. Otherwise each sample stays in the topic
+  /// cache up to its ResourceLimits, and each instance (with its key hash)
+  /// for the DataReader's lifetime: one per remote endpoint ever discovered.
+  pub(crate) fn set_take_only(&mut self) {
+    self.take_only = true;
+    self.simple_data_reader.set_take_only();
+  }
+
+  /// See `SimpleDataReader::forget_participant`.
+  pub(crate) fn forget_participant(
+    &self,
+    prefix: crate::structure::guid::GuidPrefix,
+    is_its_key: impl Fn(&D::K) -> bool,
+  ) {
+    self
+      .simple_data_reader
+      .forget_participant(prefix, is_its_key);
   }
 }
 
@@ -115,11 +139,23 @@ where
   }
 
   fn take_by_keys(&mut self, keys: &[(Timestamp, D::K)]) -> Vec<DataSample<D>> {
-    self.datasample_cache.take_by_keys(keys)
+    let taken = self.datasample_cache.take_by_keys(keys);
+    self.forget_emptied_instances(keys);
+    taken
   }
 
   fn take_bare_by_keys(&mut self, keys: &[(Timestamp, D::K)]) -> Vec<Sample<D, D::K>> {
-    self.datasample_cache.take_bare_by_keys(keys)
+    let taken = self.datasample_cache.take_bare_by_keys(keys);
+    self.forget_emptied_instances(keys);
+    taken
+  }
+
+  fn forget_emptied_instances(&mut self, keys: &[(Timestamp, D::K)]) {
+    if self.take_only {
+      self
+        .datasample_cache
+        .forget_emptied_instances(keys.iter().map(|(_, key)| key));
+    }
   }
 
   fn select_instance_keys_for_access(
@@ -1384,6 +1420,182 @@ mod tests {
     let result_vec2 = datareader.take(100, ReadCondition::any());
     assert!(result_vec2.is_ok());
     assert_eq!(result_vec2.unwrap().len(), 0);
+  }
+
+  // A Reliable DataReader that takes everything, and then sees sample 1 again,
+  // as a repair or a reconnecting writer resends it. Returns the samples taken
+  // (first round, after the duplicate), the changes left in the topic cache
+  // and the instances the DataReader still knows.
+  fn take_all_twice(take_only: bool) -> (usize, usize, usize, usize) {
+    let dp = DomainParticipant::new(test_domain_id(0)).expect("Participant creation failed!");
+    let qos = crate::dds::qos::QosPolicyBuilder::new()
+      .history(policy::History::KeepAll)
+      .reliable(crate::Duration::ZERO)
+      .build();
+    let sub = dp.create_subscriber(&qos).unwrap();
+    let topic = dp
+      .create_topic(
+        "take only".to_string(),
+        "RandomData".to_string(),
+        &qos,
+        TopicKind::WithKey,
+      )
+      .unwrap();
+    let topic_cache =
+      dp.dds_cache()
+        .write()
+        .unwrap()
+        .add_new_topic(topic.name(), topic.get_type(), &topic.qos());
+
+    let (notification_sender, _notification_receiver) =
+      crate::mio_source::notification_channel(100);
+    let (_notification_event_source, notification_event_sender) =
+      mio_source::make_poll_channel().unwrap();
+    let (status_sender, _status_receiver) = sync_status_channel::<DataReaderStatus>(4).unwrap();
+    let (participant_status_sender, _participant_status_receiver) =
+      sync_status_channel(16).unwrap();
+    let (_reader_command_sender, reader_command_receiver) =
+      wake_channel::<ReaderCommand>(10, &LoopWaker::new());
+    let reader_ing = ReaderIngredients {
+      guid: GUID::new_with_prefix_and_id(dp.guid_prefix(), EntityId::default()),
+      notification_sender,
+      status_sender,
+      topic_name: topic.name(),
+      topic_cache_handle: topic_cache.clone(),
+      like_stateless: false,
+      qos_policy: qos.clone(),
+      data_reader_command_receiver: reader_command_receiver,
+      data_reader_waker: Arc::new(Mutex::new(None)),
+      poll_event_sender: notification_event_sender,
+      security_plugins: None,
+      discovery_notify: None,
+    };
+    let mut reader = Reader::new(
+      reader_ing,
+      Rc::new(UDPSender::new_with_random_port().unwrap()),
+      new_shared_timer(),
+      participant_status_sender,
+    );
+    let mut datareader = sub
+      .create_datareader::<RandomData, CDRDeserializerAdapter<RandomData>>(&topic, None)
+      .unwrap();
+    if take_only {
+      datareader.set_take_only();
+    }
+
+    let writer_guid = GUID {
+      prefix: GuidPrefix::new(&[1; 12]),
+      entity_id: EntityId::create_custom_entity_id(
+        [1; 3],
+        EntityKind::WRITER_WITH_KEY_USER_DEFINED,
+      ),
+    };
+    let mr_state = MessageReceiverState {
+      source_guid_prefix: writer_guid.prefix,
+      ..Default::default()
+    };
+    reader.matched_writer_add(writer_guid, EntityId::UNKNOWN, vec![], vec![], &qos);
+    let reader_id = reader.entity_id();
+    let data_msg = |sn: i64| Data {
+      reader_id,
+      writer_id: writer_guid.entity_id,
+      writer_sn: SequenceNumber::from(sn),
+      serialized_payload: Some(
+        SerializedPayload {
+          representation_identifier: RepresentationIdentifier::CDR_LE,
+          representation_options: [0, 0],
+          value: Bytes::from(
+            to_vec::<RandomData, LittleEndian>(&RandomData {
+              a: sn, // one instance per sample, as one endpoint per SEDP sample
+              b: "x".to_string(),
+            })
+            .unwrap(),
+          ),
+        }
+        .into(),
+      ),
+      ..Data::default()
+    };
+    let data_flags = DATA_Flags::Endianness | DATA_Flags::Data;
+    for sn in 1..=3 {
+      reader.handle_data_msg(data_msg(sn), data_flags, &mr_state);
+    }
+    let taken = datareader.take(100, ReadCondition::any()).unwrap().len();
+    reader.handle_data_msg(data_msg(1), data_flags, &mr_state);
+    let taken_again = datareader.take(100, ReadCondition::any()).unwrap().len();
+    let cached = topic_cache
+      .lock()
+      .unwrap()
+      .get_changes_in_range_best_effort(Timestamp::ZERO, Timestamp::now())
+      .count();
+    let instances = datareader.datasample_cache.instance_map.len();
+    (taken, taken_again, cached, instances)
+  }
+
+  // The writer's participant departs: its read position and the key hashes of
+  // its keys go, another participant's stay.
+  #[test]
+  fn forget_participant_drops_its_read_positions_and_key_hashes() {
+    let dp = DomainParticipant::new(test_domain_id(0)).expect("Participant creation failed!");
+    let qos = crate::dds::qos::QosPolicyBuilder::new()
+      .reliable(crate::Duration::ZERO)
+      .build();
+    let sub = dp.create_subscriber(&qos).unwrap();
+    let topic = dp
+      .create_topic(
+        "forget participant".to_string(),
+        "RandomData".to_string(),
+        &qos,
+        TopicKind::WithKey,
+      )
+      .unwrap();
+    let topic_cache =
+      dp.dds_cache()
+        .write()
+        .unwrap()
+        .add_new_topic(topic.name(), topic.get_type(), &topic.qos());
+    let mut datareader = sub
+      .create_datareader::<RandomData, CDRDeserializerAdapter<RandomData>>(&topic, None)
+      .unwrap();
+    datareader.set_take_only();
+    let writer = |prefix: u8| GUID {
+      prefix: GuidPrefix::new(&[prefix; 12]),
+      entity_id: EntityId::create_custom_entity_id(
+        [1; 3],
+        EntityKind::WRITER_WITH_KEY_USER_DEFINED,
+      ),
+    };
+    for (prefix, key) in [(1, 10), (2, 20)] {
+      let mut tc = topic_cache.lock().unwrap();
+      tc.add_change(
+        &Timestamp::now(),
+        crate::structure::cache_change::CacheChange::new(
+          writer(prefix),
+          SequenceNumber::from(1),
+          crate::dds::with_key::WriteOptions::default(),
+          crate::dds::ddsdata::DDSData::new(SerializedPayload::new(
+            RepresentationIdentifier::CDR_LE,
+            to_vec::<RandomData, LittleEndian>(&RandomData {
+              a: key,
+              b: "x".to_string(),
+            })
+            .unwrap(),
+          )),
+        ),
+      );
+      tc.mark_reliably_received_before(writer(prefix), SequenceNumber::from(2));
+    }
+    assert_eq!(datareader.take(100, ReadCondition::any()).unwrap().len(), 2);
+    assert_eq!(datareader.simple_data_reader.read_state_len(), (2, 2));
+    datareader.forget_participant(writer(1).prefix, |key| *key == 10);
+    assert_eq!(datareader.simple_data_reader.read_state_len(), (1, 1));
+  }
+
+  #[test]
+  fn take_only_reader_keeps_nothing_once_taken() {
+    // Every sample is handed over once either way.
+    assert_eq!(take_all_twice(false), (3, 0, 3, 3));
+    assert_eq!(take_all_twice(true), (3, 0, 0, 0));
   }
 
   #[test]

@@ -564,6 +564,29 @@ where
     result
   }
 
+  // Forget the instances among `keys` that hold no sample any more (all taken
+  // or evicted), with their state and generation counts: a later sample of the
+  // same key starts a new instance (view state NEW). For a take-only DataReader
+  // (`DataReader::set_take_only`).
+  pub(in crate::dds::with_key) fn forget_emptied_instances<'a>(
+    &mut self,
+    keys: impl Iterator<Item = &'a D::K>,
+  ) where
+    D::K: 'a,
+  {
+    for key in keys {
+      let emptied = self.instance_map.get(key).is_some_and(|imd| {
+        imd
+          .instance_samples
+          .iter()
+          .all(|ts| !self.datasamples.contains_key(ts))
+      });
+      if emptied {
+        self.instance_map.remove(key);
+      }
+    }
+  }
+
   //
   // Panics: `keys` must only contain (Timestamp,Key)-pairs that were immediately
   // before this call obtained by select_*_for_access functions. This function

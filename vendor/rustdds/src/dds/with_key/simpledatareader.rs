@@ -33,7 +33,7 @@ use crate::{
     cache_change::CacheChange,
     dds_cache::TopicCache,
     entity::RTPSEntity,
-    guid::{EntityId, GUID},
+    guid::{EntityId, GuidPrefix, GUID},
     sequence_number::SequenceNumber,
     time::Timestamp,
   },
@@ -100,6 +100,9 @@ pub struct SimpleDataReader<D: Keyed, DA: DeserializerAdapter<D> = CDRDeserializ
   topic_cache: Arc<Mutex<TopicCache>>,
 
   read_state: Mutex<ReadState<<D as Keyed>::K>>,
+
+  // See `set_take_only`.
+  take_only: bool,
 
   deserializer_type: PhantomData<DA>, // This is to provide use for DA
 
@@ -186,6 +189,7 @@ where
       notification_receiver: Mutex::new(notification_receiver),
       topic_cache,
       read_state: Mutex::new(ReadState::new()),
+      take_only: false,
       my_topic: topic,
       deserializer_type: PhantomData,
       discovery_command,
@@ -195,6 +199,39 @@ where
       event_source,
     })
   }
+  /// For a DataReader that is the only reader of its topic cache and only
+  /// takes, such as a built-in discovery reader: a Reliable reader's taken
+  /// sample leaves the topic cache at once, instead of staying there up to the
+  /// ResourceLimits for DataReaders that never come; and a taken dispose
+  /// forgets its key hash (the instance's last sample).
+  pub(crate) fn set_take_only(&mut self) {
+    self.take_only = true;
+  }
+
+  /// Forget the read positions of the writers of participant `prefix` and the
+  /// key hashes of the keys `is_its_key` says are its, once the participant
+  /// is gone: its writers' proxies have been removed, so nothing more arrives
+  /// from them, and its instances are not disposed if it vanished without a
+  /// goodbye. Should it come back, its writers start over and what they send
+  /// again is read again.
+  pub(crate) fn forget_participant(&self, prefix: GuidPrefix, is_its_key: impl Fn(&D::K) -> bool) {
+    let mut read_state = self.read_state.lock().unwrap();
+    read_state
+      .last_read_sn
+      .retain(|writer, _| writer.prefix != prefix);
+    read_state.hash_to_key_map.retain(|_, key| !is_its_key(key));
+  }
+
+  // Read positions (writers) and key hashes held.
+  #[cfg(test)]
+  pub(crate) fn read_state_len(&self) -> (usize, usize) {
+    let read_state = self.read_state.lock().unwrap();
+    (
+      read_state.last_read_sn.len(),
+      read_state.hash_to_key_map.len(),
+    )
+  }
+
   pub(crate) fn set_waker(&self, w: Option<Waker>) {
     *self.data_reader_waker.lock().unwrap() = w;
   }
@@ -348,7 +385,7 @@ where
       Some(policy::Reliability::Reliable { .. })
     );
 
-    let topic_cache = self.acquire_the_topic_cache_guard();
+    let mut topic_cache = self.acquire_the_topic_cache_guard();
 
     let mut read_state_ref = self.read_state.lock().unwrap();
     let latest_instant = read_state_ref.latest_instant;
@@ -382,6 +419,18 @@ where
         read_state_ref
           .last_read_sn
           .insert(writer_guid, sequence_number);
+        if self.take_only {
+          if is_reliable {
+            topic_cache.remove_taken_change(writer_guid, sequence_number);
+          }
+          if let Ok(DeserializedCacheChange {
+            sample: Sample::Dispose(key),
+            ..
+          }) = &result
+          {
+            read_state_ref.hash_to_key_map.remove(&key.hash_key(false));
+          }
+        }
 
         // // Debug sanity check:
         // use crate::Duration;
