@@ -385,9 +385,9 @@ impl Writer {
   /// reader acknowledges every datagram. A KEEP_LAST writer that evicts its
   /// sent samples regardless (`keep_last_evicts_sent`) gains nothing from
   /// those acknowledgements and sets it: a reader that received everything
-  /// stays silent, one that detects a missing sample still answers with a
-  /// NACK and is repaired as before, and the periodic HEARTBEAT (Final clear)
-  /// keeps collecting acknowledgements. At 1 kHz this saves every matched
+  /// stays silent, one that detects a missing sample may NACK at once and
+  /// must at the periodic HEARTBEAT (Final clear), which also keeps
+  /// collecting acknowledgements. At 1 kHz this saves every matched
   /// reader an ACKNACK per sample and the writer's participant a wake-up to
   /// receive it.
   fn piggybacked_heartbeat_is_final(&self) -> bool {
