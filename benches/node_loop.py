@@ -13,8 +13,10 @@ updated at 1 kHz, measure
 with the wrenches sent either as one annular_plate/msg/NodeWrenchArray of 18
 per millisecond (`--mode batch`) or as 18 geometry_msgs/WrenchStamped per
 millisecond on the 18 per-node topics (`--mode topics`), and idle (`--mode idle`);
-with `--marker-rate HZ` the node also publishes ~/plate_marker at that rate
-(0 = off, the default here) and the peer subscribes to it as RViz would.
+with `--input-reception step_aligned` the node reads its input datagrams at
+step boundaries while they are many (`ros.input_reception`); with
+`--marker-rate HZ` the node also publishes ~/plate_marker at that rate (0 =
+off, the default here) and the peer subscribes to it as RViz would.
 `--wrench-topics N` sends on the first N of the 18 per-node topics only.
 
 `--compare` runs, in one invocation and alternating, the node and the Cyclone
@@ -106,7 +108,9 @@ def in_netns_main(args):
     env = dict(os.environ, ROS_DOMAIN_ID="42")
     node = subprocess.Popen(
         [args.node, "run", scene, "--ros-args", "-p", "ros.diagnostics_period:=1.0",
-         "-p", f"ros.marker_rate_hz:={args.marker_rate}", "--log-level", "warn"],
+         "-p", f"ros.marker_rate_hz:={args.marker_rate}", "--log-level", "warn"]
+        # (the default is left out, so the script also runs builds that predate the key)
+        + (["-p", "ros.input_reception:=step_aligned"] if args.input_reception == "step_aligned" else []),
         env=env, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
     try:
         dp = DomainParticipant(42)
@@ -376,7 +380,8 @@ def netns_run(args, extra):
     cmd = ["unshare", "-n", "--", "sh", "-c",
            'ip link set lo up && exec "$0" "$@"', sys.executable, os.path.abspath(__file__), "--in-netns",
            "--seconds", str(args.seconds), "--warmup", str(args.warmup), "--node", args.node,
-           "--marker-rate", str(args.marker_rate), "--floor-rate", str(args.floor_rate)] + serialize_flag(args) + extra
+           "--marker-rate", str(args.marker_rate), "--floor-rate", str(args.floor_rate),
+           "--input-reception", args.input_reception] + serialize_flag(args) + extra
     out = subprocess.run(cmd, stdout=subprocess.PIPE, text=True).stdout
     values = {l.split()[1]: float(l.split()[2]) for l in out.splitlines() if l.startswith("RESULT")}
     return values, "\n".join(l for l in out.splitlines() if not l.startswith("RESULT"))
@@ -418,6 +423,8 @@ def main():
     ap.add_argument("--python-serialize", action="store_true",
                     help="the peer serializes every sample in Python (DataWriter.write, ~17 µs each: "
                          "18 topics' writes spread over the millisecond) instead of writing pre-serialized bursts")
+    ap.add_argument("--input-reception", choices=["on_arrival", "step_aligned"], default="on_arrival",
+                    help="the node's ros.input_reception (step_aligned: input datagrams read at step boundaries)")
     ap.add_argument("--node", default=os.path.join(REPO, "target", "release", "annular_plate"))
     ap.add_argument("--compare", action="store_true", help="node against the ddsperf floor in the four cases")
     ap.add_argument("--repeat", type=int, default=3, help="with --compare: runs per case")

@@ -127,7 +127,7 @@ impl OfflineRecorder {
             };
             let status = vec![
                 diagnostics::simulation_status(&self.node_name, &report),
-                diagnostics::inputs_status(&self.node_name, &self.inputs, 0),
+                diagnostics::inputs_status(&self.node_name, &self.inputs, 0, None),
             ];
             self.bag.write(&Sample::Diagnostics(diagnostics::diagnostics_message(stamp, status)), stamp)?;
         }

@@ -176,13 +176,18 @@ pub fn simulation_status(node_name: &str, r: &LoopReport) -> DiagnosticStatus {
 }
 
 /// `<node>: inputs`; `new_rejected` = rejections since the last report.
-pub fn inputs_status(node_name: &str, s: &InputStats, new_rejected: u64) -> DiagnosticStatus {
+/// `reception` (the node only): how the input datagrams are read,
+/// `ros/step_aligned_receive.rs`.
+pub fn inputs_status(node_name: &str, s: &InputStats, new_rejected: u64, reception: Option<&str>) -> DiagnosticStatus {
     let mut values: Vec<KeyValue> =
         Source::ALL.iter().map(|src| kv(&format!("accepted_{}", src.name()), s.accepted(*src).to_string())).collect();
     values.push(kv("accepted_total", s.accepted_total().to_string()));
     values.push(kv("rejected_total", s.rejected_total().to_string()));
     values.extend(RejectReason::ALL.iter().map(|r| kv(&format!("rejected_{}", r.name()), s.rejected(*r).to_string())));
     values.push(kv("expired_wrenches", s.expired().to_string()));
+    if let Some(reception) = reception {
+        values.push(kv("input_reception", reception.to_string()));
+    }
     DiagnosticStatus {
         level: if new_rejected > 0 { DiagnosticStatus::WARN } else { DiagnosticStatus::OK },
         name: format!("{node_name}: inputs"),

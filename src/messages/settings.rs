@@ -30,6 +30,9 @@ pub struct RosSettings {
     pub diagnostics_period: f64,
     pub reject_log_period: f64,
     pub service_mapping: ServiceMapping,
+    /// `ros.input_reception`: `step_aligned` reads the input datagrams at step
+    /// boundaries while they are many (`ros/step_aligned_receive.rs`).
+    pub step_aligned_reception: bool,
     /// `ros.marker_*`: `~/plate_marker`.
     pub marker: MarkerSettings,
 }
@@ -46,6 +49,7 @@ impl Default for RosSettings {
             diagnostics_period: 1.0,
             reject_log_period: 1.0,
             service_mapping: ServiceMapping::Enhanced,
+            step_aligned_reception: false,
             marker: MarkerSettings::default(),
         }
     }
@@ -158,6 +162,13 @@ impl RosSettings {
                 other => return Err(err("ros.service_mapping", format!("`{other}` is not one of enhanced, cyclone, basic"))),
             };
         }
+        if let Some(r) = string("ros.input_reception")? {
+            s.step_aligned_reception = match r.as_str() {
+                "on_arrival" => false,
+                "step_aligned" => true,
+                other => return Err(err("ros.input_reception", format!("`{other}` is not one of on_arrival, step_aligned"))),
+            };
+        }
         Ok(s)
     }
 
@@ -188,6 +199,10 @@ impl RosSettings {
                     }
                     .to_string(),
                 ),
+            ),
+            (
+                "ros.input_reception",
+                ParamValue::String(if self.step_aligned_reception { "step_aligned" } else { "on_arrival" }.to_string()),
             ),
             ("ros.marker_rate_hz", ParamValue::Double(self.marker.rate_hz)),
             ("ros.marker_rings", ParamValue::Integer(self.marker.rings as i64)),
@@ -258,6 +273,7 @@ mod tests {
             ("ros.start_paused", "true"),
             ("ros.diagnostics_period", "2"),
             ("ros.service_mapping", "cyclone"),
+            ("ros.input_reception", "step_aligned"),
         ]))
         .unwrap();
         assert_eq!(s.frame_prefix, "left_");
@@ -265,6 +281,8 @@ mod tests {
         assert_eq!(s.wrench_timeout, 0.5);
         assert_eq!(s.diagnostics_period, 2.0);
         assert_eq!(s.service_mapping, ServiceMapping::Cyclone);
+        assert!(s.step_aligned_reception);
+        assert!(!RosSettings::default().step_aligned_reception, "inputs are read on arrival unless asked");
         let follow = RosSettings::from_params(&params(&[("use_sim_time", "true")])).unwrap();
         assert!(follow.use_sim_time && !follow.sim_time, "use_sim_time follows /clock, it does not publish one");
     }
@@ -288,6 +306,7 @@ mod tests {
             ("ros.wrench_timeout", "-1"),
             ("ros.diagnostics_period", "0"),
             ("ros.service_mapping", "zenoh"),
+            ("ros.input_reception", "sometimes"),
             ("ros.frame_prefx", "a"),
             ("ros.marker_rate_hz", "-1"),
             ("ros.marker_rings", "0"),

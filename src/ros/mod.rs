@@ -18,6 +18,7 @@
 //!   [`sim_services`]: the same through the standard `simulation_interfaces` services;
 //! - [`diagnostics`]: the `/diagnostics` statuses (shared with `simulate --bag`);
 //! - [`sim_loop`]: the fixed-rate simulation thread;
+//! - [`step_aligned_receive`]: input datagrams read at step boundaries while they are many;
 //! - [`marker_thread`]: `~/plate_marker`, built and published off the loop;
 //! - [`critical_speeds`]: `~/critical_speeds`, once at start (latched);
 //! - [`logging`]: `/rosout` and stderr;
@@ -39,6 +40,7 @@ pub mod params_service;
 pub mod services;
 pub mod sim_loop;
 pub mod sim_services;
+pub mod step_aligned_receive;
 
 pub use crate::messages::RosType;
 pub use error::NodeError;

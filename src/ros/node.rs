@@ -16,6 +16,7 @@ use super::params_service::{effective_parameters, ParamStore};
 use super::services::{self, Command};
 use crate::messages::settings::RosSettings;
 use super::sim_loop::{LoopSettings, Publishers, SimLoop};
+use super::step_aligned_receive::StepAlignedReceive;
 use super::marker_thread::MarkerFeed;
 use crate::messages::marker::PlateMarker;
 use crate::messages::visualization::MarkerArray;
@@ -418,6 +419,9 @@ async fn serve(setup: NodeSetup, sim: Simulation, domain: u16, bag: Option<NodeB
     let outputs = OutputMessages::new(&sim, &frames);
     let mut sim_loop =
         SimLoop::new(sim, outputs, pubs, rx, Arc::clone(&stats), Arc::clone(&logger), loop_settings(&setup)).with_inputs(inputs).with_critical_speeds(critical);
+    if settings.step_aligned_reception {
+        sim_loop = sim_loop.with_step_aligned_receive(StepAlignedReceive::new(context.domain_participant().receive_gate()));
+    }
     let (recorder, record_thread) = recording.unzip();
     let marker_thread = match start_marker(&mut node, &setup, sim_loop.simulation(), &frames, recorder.clone())? {
         Some((feed, join)) => {

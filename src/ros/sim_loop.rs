@@ -26,6 +26,7 @@ use crate::messages::outputs::{clock_message, OutputMessages, Shared};
 use super::params_service::RuntimeChange;
 use super::services::{Command, LoopStatus};
 use super::marker_thread::MarkerFeed;
+use super::step_aligned_receive::StepAlignedReceive;
 use crate::bag::recorder::{Recorder, Sample};
 use crate::dynamics::{Checked, Command as SimCommand, NodeKind, Simulation, Wrench};
 use ros2_client::dds::rustdds::defer_wakes;
@@ -107,6 +108,10 @@ pub struct SimLoop {
     /// Inputs taken at a boundary: (reception time ns, order taken, input),
     /// applied in reception order (reused: no allocation once grown).
     taken: Vec<(i64, u32, Command)>,
+    /// How many inputs the last boundary took.
+    taken_last: usize,
+    /// Input datagrams read at step boundaries (`ros/step_aligned_receive.rs`).
+    receive: Option<StepAlignedReceive>,
     /// The critical speeds (`~/critical_speeds`) for the near-critical status.
     critical_speeds: Vec<crate::model::campbell::CriticalSpeed>,
 }
@@ -148,6 +153,8 @@ impl SimLoop {
             marker: None,
             inputs: Vec::new(),
             taken: Vec::new(),
+            taken_last: 0,
+            receive: None,
             critical_speeds: Vec::new(),
             settings,
         }
@@ -156,6 +163,12 @@ impl SimLoop {
     /// Read these input topics at every step boundary.
     pub fn with_inputs(mut self, inputs: Vec<Box<dyn PolledInput>>) -> Self {
         self.inputs = inputs;
+        self
+    }
+
+    /// Read the input datagrams at step boundaries while they are many.
+    pub fn with_step_aligned_receive(mut self, receive: StepAlignedReceive) -> Self {
+        self.receive = Some(receive);
         self
     }
 
@@ -205,6 +218,7 @@ impl SimLoop {
             }
             if !self.step_requests.is_empty() {
                 // Stepping on request: as fast as possible, commands in between.
+                self.release_receive();
                 self.drain_commands();
                 if self.stop || self.paused_steps_cancelled() {
                     continue;
@@ -214,6 +228,7 @@ impl SimLoop {
                 self.finish_step_request();
             } else if self.paused || self.diverged.is_some() {
                 self.timing.interrupt();
+                self.release_receive();
                 // Not stepping: the input topics are read every
                 // PAUSED_INPUT_POLL, so inputs take hold (and are counted)
                 // before the next ~/step.
@@ -225,6 +240,7 @@ impl SimLoop {
                 }
             } else if let Some(due) = self.clock.follower().map(|f| f.due()) {
                 // use_sim_time: the steps the external clock's advance holds.
+                self.release_receive();
                 if due == 0 {
                     let wait = self.next_diagnostics.saturating_duration_since(Instant::now());
                     self.wait_command(wait);
@@ -250,7 +266,13 @@ impl SimLoop {
                     continue;
                 }
                 // Apply everything that arrived before the deadline.
+                if let Some(receive) = &self.receive {
+                    receive.before_take();
+                }
                 self.drain_commands();
+                if let Some(receive) = &mut self.receive {
+                    receive.after_take(self.taken_last);
+                }
                 if self.stop || self.paused {
                     continue;
                 }
@@ -290,6 +312,7 @@ impl SimLoop {
                 taken.push((received, order, cmd));
             });
         }
+        self.taken_last = taken.len();
         taken.sort_unstable_by_key(|&(received, order, _)| (received, order));
         for (_, _, cmd) in taken.drain(..) {
             if !self.stop {
@@ -297,6 +320,12 @@ impl SimLoop {
             }
         }
         self.taken = taken;
+    }
+
+    fn release_receive(&mut self) {
+        if let Some(receive) = &mut self.receive {
+            receive.release();
+        }
     }
 
     /// A resume while steps were requested ends those requests.
@@ -545,8 +574,11 @@ impl SimLoop {
         let rejected = self.stats.rejected_total();
         let new_rejected = rejected - self.rejected_at_last_report;
         self.rejected_at_last_report = rejected;
-        let mut status =
-            vec![diagnostics::simulation_status(name, &report), diagnostics::inputs_status(name, &self.stats, new_rejected)];
+        let reception = self.receive.as_ref().map_or("on arrival", |r| r.reception());
+        let mut status = vec![
+            diagnostics::simulation_status(name, &report),
+            diagnostics::inputs_status(name, &self.stats, new_rejected, Some(reception)),
+        ];
         status.push(crate::messages::critical_speeds::status(name, &self.critical_speeds, self.sim.joint().velocity));
         if let Some(r) = &self.recorder {
             let rec = r.report(self.dropped_at_last_report);

@@ -256,6 +256,7 @@ pub use mio1;
 /// Re-export of the `bytes` crate, used in RustDDS's (de)serialization API.
 pub use bytes;
 pub use polling::defer_wakes;
+pub use rtps::receive_gate::{ReceiveGate, RECEIVE_GATE_MAX_HOLD};
 
 /// Components used to access NO_KEY Topics
 pub mod no_key {

@@ -66,7 +66,8 @@ impl LoopWaker {
     }
   }
 
-  fn wake_now(&self) {
+  /// Wake the poll now, even inside [`defer_wakes`].
+  pub(crate) fn wake_now(&self) {
     if let Some(waker) = self.slot.get() {
       if self.pending.swap(true, Ordering::AcqRel) {
         return; // the loop has not yet rearmed: it will drain what we enqueued

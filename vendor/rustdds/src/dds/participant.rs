@@ -46,6 +46,7 @@ use crate::{
     constant::*,
     dp_event_loop::{DPEventLoop, DomainInfo, EventLoopCommand},
     reader::*,
+    receive_gate::ReceiveGate,
     writer::WriterIngredients,
   },
   structure::{dds_cache::DDSCache, entity::RTPSEntity, guid::*, locator::Locator},
@@ -535,6 +536,12 @@ impl DomainParticipant {
   /// ```
   pub fn participant_id(&self) -> u16 {
     self.dpi.lock().unwrap().participant_id()
+  }
+
+  /// This participant's [`ReceiveGate`]: align the reception of user traffic
+  /// with the points where the application takes its samples.
+  pub fn receive_gate(&self) -> ReceiveGate {
+    self.dpi.lock().unwrap().receive_gate()
   }
 
   pub(crate) fn only_networks(&self) -> Option<Arc<[IpAddr]>> {
@@ -1065,6 +1072,10 @@ impl DomainParticipantDisc {
     self.dpi.participant_id()
   }
 
+  pub fn receive_gate(&self) -> ReceiveGate {
+    self.dpi.receive_gate()
+  }
+
   pub fn discovered_topics(&self) -> Vec<DiscoveredTopicData> {
     self.dpi.discovered_topics()
   }
@@ -1194,6 +1205,9 @@ pub(crate) struct DomainParticipantInner {
   security_plugins_handle: Option<SecurityPluginsHandle>,
 
   only_networks: Option<Arc<[IpAddr]>>,
+
+  /// Step-aligned reception of user traffic (`rtps/receive_gate.rs`).
+  receive_gate: ReceiveGate,
 }
 
 impl Drop for DomainParticipantInner {
@@ -1371,6 +1385,8 @@ impl DomainParticipantInner {
     )));
 
     let (stop_poll_sender, stop_poll_receiver) = wake_channel_unbounded(&dp_waker);
+    let receive_gate = ReceiveGate::new(dp_waker.clone());
+    let receive_gate_loop_side = receive_gate.loop_side();
 
     let (ev_ready_tx, ev_ready_rx) = std::sync::mpsc::sync_channel::<CreateResult<()>>(1);
 
@@ -1415,6 +1431,7 @@ impl DomainParticipantInner {
           reader_ready_rx,
           writer_ready_rx,
           dp_waker,
+          receive_gate_loop_side,
         ) {
           Ok(dp_event_loop) => {
             let _ = ev_ready_tx.send(Ok(()));
@@ -1464,7 +1481,12 @@ impl DomainParticipantInner {
       self_locators,
       security_plugins_handle,
       only_networks,
+      receive_gate,
     })
+  }
+
+  pub fn receive_gate(&self) -> ReceiveGate {
+    self.receive_gate.clone()
   }
 
   pub fn dds_cache(&self) -> Arc<RwLock<DDSCache>> {

@@ -39,6 +39,7 @@ use crate::{
     message_receiver::MessageReceiver,
     outbound::SocketId,
     reader::{Reader, ReaderIngredients},
+    receive_gate::{GateAction, GateLoopSide},
     rtps_reader_proxy::RtpsReaderProxy,
     rtps_writer_proxy::RtpsWriterProxy,
     timed_event::DpTimerEvent,
@@ -103,6 +104,8 @@ pub struct DPEventLoop {
   reader_ready: ReadyReceiver<EntityId>,
   writer_ready: ReadyReceiver<EntityId>,
   waker: LoopWaker,
+  /// Step-aligned reception of user traffic (`receive_gate.rs`).
+  receive_gate: GateLoopSide,
 
   writers: HashMap<EntityId, Writer>,
   udp_sender: Rc<UDPSender>,
@@ -167,6 +170,7 @@ impl DPEventLoop {
     reader_ready: ReadyReceiver<EntityId>,
     writer_ready: ReadyReceiver<EntityId>,
     waker: LoopWaker,
+    receive_gate: GateLoopSide,
   ) -> CreateResult<Self> {
     macro_rules! try_init {
       ($result:expr, $msg:literal) => {
@@ -252,6 +256,7 @@ impl DPEventLoop {
       reader_ready,
       writer_ready,
       waker,
+      receive_gate,
       writers: HashMap::new(),
       bulk_ready: BTreeMap::new(),
       writable_armed: BTreeSet::new(),
@@ -306,7 +311,12 @@ impl DPEventLoop {
       } else {
         Duration::from_millis(2)
       };
-      let poll_timeout = timeout_until(ev_wrapper.shared_timer.borrow().next_deadline(), idle_cap);
+      let next_deadline = ev_wrapper.shared_timer.borrow().next_deadline();
+      let next_deadline = match (next_deadline, ev_wrapper.receive_gate.deadline()) {
+        (Some(a), Some(b)) => Some(a.min(b)),
+        (a, b) => a.or(b),
+      };
+      let poll_timeout = timeout_until(next_deadline, idle_cap);
       match ev_wrapper.poll.poll(&mut events, Some(poll_timeout)) {
         Ok(_) => {}
         // A signal handled on this thread (or a debugger attaching) interrupts
@@ -343,18 +353,7 @@ impl DPEventLoop {
               | USER_TRAFFIC_MUL_LISTENER_TOKEN => {
                 // Edge-triggered: read until WouldBlock. A cap would leave
                 // datagrams sitting with no further readiness event.
-                let udp_messages = ev_wrapper.udp_listeners.get_mut(&token).map_or_else(
-                  || {
-                    error!("No listener with token {:?}", token);
-                    vec![]
-                  },
-                  |l| l.messages_bounded(usize::MAX),
-                );
-                for (packet, origin) in udp_messages {
-                  ev_wrapper
-                    .message_receiver
-                    .handle_received_packet(&packet, origin);
-                }
+                ev_wrapper.read_listener(token);
               }
               LOOP_WAKE_TOKEN => {
                 // Queues are drained below, once, for this whole iteration.
@@ -382,6 +381,7 @@ impl DPEventLoop {
         }
       }
 
+      ev_wrapper.serve_receive_gate(now);
       ev_wrapper.drain_timers(preparing_to_stop);
       if ev_wrapper.drain_queues(
         &mut readers_to_remove,
@@ -403,6 +403,63 @@ impl DPEventLoop {
       ev_wrapper.service_outbound();
     } // loop
   } // fn
+
+  /// Read the listener of `token` until WouldBlock (it is edge-triggered: a
+  /// cap would leave datagrams sitting with no further readiness event) and
+  /// handle every datagram.
+  fn read_listener(&mut self, token: Token) {
+    let udp_messages = self.udp_listeners.get_mut(&token).map_or_else(
+      || {
+        error!("No listener with token {:?}", token);
+        vec![]
+      },
+      |l| l.messages_bounded(usize::MAX),
+    );
+    for (packet, origin) in udp_messages {
+      self
+        .message_receiver
+        .handle_received_packet(&packet, origin);
+    }
+  }
+
+  /// Hold, release or read the user-traffic listeners as the receive gate
+  /// asks (`receive_gate.rs`).
+  fn serve_receive_gate(&mut self, now: Instant) {
+    const USER_TOKENS: [Token; 2] = [USER_TRAFFIC_LISTENER_TOKEN, USER_TRAFFIC_MUL_LISTENER_TOKEN];
+    loop {
+      match self.receive_gate.next_action(now) {
+        GateAction::None => return,
+        GateAction::Hold => {
+          for token in USER_TOKENS {
+            if let Some(l) = self.udp_listeners.get_mut(&token) {
+              if let Err(e) = self.poll.registry().deregister(l.mio_socket()) {
+                error!("receive gate: cannot hold listener {token:?}: {e}");
+              }
+            }
+          }
+        }
+        GateAction::Release => {
+          // Registering reports a socket that already holds datagrams as
+          // readable at once, so nothing held is left unread.
+          for token in USER_TOKENS {
+            if let Some(l) = self.udp_listeners.get_mut(&token) {
+              if let Err(e) = self.poll.registry().register(l.mio_socket(), token, Interest::READABLE) {
+                error!("receive gate: cannot release listener {token:?}: {e}");
+              }
+            }
+          }
+        }
+        GateAction::Read(ticket) => {
+          for token in USER_TOKENS {
+            if self.udp_listeners.contains_key(&token) {
+              self.read_listener(token);
+            }
+          }
+          self.receive_gate.did_read(now, ticket);
+        }
+      }
+    }
+  }
 
   // Returns true when the loop should exit.
   fn drain_queues(
@@ -1358,7 +1415,8 @@ mod tests {
         true,
         reader_ready,
         writer_ready,
-        waker,
+        waker.clone(),
+        crate::rtps::receive_gate::ReceiveGate::new(waker).loop_side(),
       )
       .expect("DPEventLoop::new in test");
       dp_event_loop.event_loop();
