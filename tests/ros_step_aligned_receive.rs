@@ -1,7 +1,7 @@
 //! Per-topic wrenches read at step boundaries (issue 10; RustDDS patch §16,
 //! `src/ros/step_aligned_receive.rs`, `ros.input_reception`).
 //!
-//! A Cyclone DDS peer publishes a WrenchStamped on each of six ALE wrench
+//! A Cyclone DDS peer publishes a WrenchStamped on each of twelve ALE wrench
 //! topics every millisecond, as an rclpy script with one publisher per pad
 //! does, to the node running free at 1 kHz. With `ros.input_reception:
 //! step_aligned` the node reads its input datagrams at step boundaries while
@@ -18,10 +18,14 @@ mod harness;
 use harness::{f, peer, start_node_on, temp_dir, Netns};
 use serde_json::{json, Value};
 
-const TOPICS: usize = 6;
+const TOPICS: usize = 12;
 
-/// The brake bench's disc with six ALE nodes on one radius.
-fn six_node_scene() -> std::path::PathBuf {
+/// One flow at a time: two Python peers and two nodes at once on a loaded
+/// 2-core machine could slow the peer below what engages the gate.
+static ONE_AT_A_TIME: std::sync::Mutex<()> = std::sync::Mutex::new(());
+
+/// The brake bench's disc with twelve ALE nodes on one radius.
+fn scene_with_ale_nodes() -> std::path::PathBuf {
     let angular: Vec<String> = (0..TOPICS).map(|j| format!("{}", j as f64 / TOPICS as f64)).collect();
     let text = format!(
         "/**:\n  ros__parameters:\n    plate:\n      inner_radius: 0.07\n      outer_radius: 0.153\n      thickness: 0.0181\n      \
@@ -31,15 +35,16 @@ fn six_node_scene() -> std::path::PathBuf {
         vec!["0.6"; TOPICS].join(", "),
         angular.join(", ")
     );
-    let path = temp_dir().join("six_ale_nodes.yaml");
+    let path = temp_dir().join("twelve_ale_nodes.yaml");
     std::fs::write(&path, text).expect("write the scene");
     path
 }
 
 /// The flow of `seconds` against a node started with `ros_args`.
 fn flow(domain: u16, ros_args: &[&str], seconds: f64) -> Value {
+    let _one = ONE_AT_A_TIME.lock().unwrap_or_else(|e| e.into_inner());
     let ns = Netns::new();
-    let node = start_node_on(&ns, domain, &six_node_scene(), &[], ros_args);
+    let node = start_node_on(&ns, domain, &scene_with_ale_nodes(), &[], ros_args);
     let out = peer(&ns, &node, "per_topic_flow", "/annular_plate", json!({"topics": TOPICS, "seconds": seconds}));
     let sent = f(&out, "sent") as u64;
     assert!(sent as f64 >= 300.0 * seconds, "the peer sent only {sent} wrenches in {seconds} s");
@@ -63,7 +68,7 @@ fn per_topic_wrenches_are_read_at_step_boundaries_and_none_is_lost() {
     let during = receptions(&out);
     assert!(
         during.contains(&"at step boundaries"),
-        "six wrenches a step must switch the node to step-aligned reception; /diagnostics said {during:?}"
+        "twelve wrenches a step must switch the node to step-aligned reception; /diagnostics said {during:?}"
     );
     assert_eq!(out["after"], "on arrival", "once the flow stops the node reads on arrival again");
 
