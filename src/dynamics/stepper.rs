@@ -290,16 +290,13 @@ impl Stepper {
         if scene.effects.follower_loads || !scene.load_models.is_empty() {
             return node_loads(scene, inputs, &self.model_wrenches, q_ale, q_lagrange, &mut self.loads);
         }
-        match &mut self.held_loads {
-            Some(held) if held.is_of(inputs) => {}
-            slot => {
-                let held = slot.get_or_insert_with(|| HeldLoads { ale: Vec::new(), lagrange: Vec::new(), loads: StepLoads::new(scene.n_modes()) });
-                node_loads(scene, inputs, &self.model_wrenches, q_ale, q_lagrange, &mut held.loads);
-                held.ale.clone_from(&inputs.ale);
-                held.lagrange.clone_from(&inputs.lagrange);
-            }
+        let fresh = !self.held_loads.as_ref().is_some_and(|held| held.is_of(inputs));
+        let held = self.held_loads.get_or_insert_with(|| HeldLoads { ale: Vec::new(), lagrange: Vec::new(), loads: StepLoads::new(scene.n_modes()) });
+        if fresh {
+            node_loads(scene, inputs, &self.model_wrenches, q_ale, q_lagrange, &mut held.loads);
+            held.ale.clone_from(&inputs.ale);
+            held.lagrange.clone_from(&inputs.lagrange);
         }
-        let Some(held) = &self.held_loads else { unreachable!() };
         self.loads.ale_frame.copy_from_slice(&held.loads.ale_frame);
         self.loads.plate_frame.copy_from_slice(&held.loads.plate_frame);
         self.loads.axial_torque = held.loads.axial_torque;
@@ -390,10 +387,7 @@ impl Stepper {
         };
         ale_q.copy_from_slice(lagrange_q);
         ale_v.copy_from_slice(lagrange_v);
-        if self.exp_harm_at != Some(chi1) {
-            harmonics(&chi1, scene.layout.k_max, &mut self.exp_harm);
-            self.exp_harm_at = Some(chi1);
-        }
+        self.exp_harmonics(&chi1, scene.layout.k_max);
         lagrange_to_ale(&scene.layout, &self.exp_harm, speed1, ale_q, ale_v);
     }
 
@@ -550,11 +544,12 @@ fn check(scene: &Scene, state: &State) -> Result<(), StepError> {
         return diverged(Divergence::NonFinite);
     }
     let limit = scene.limits.max_deflection_thicknesses * scene.model.plate().thickness;
-    if largest_magnitude(&state.q) <= limit {
-        // Every amplitude within the limit (one vectorizable pass; the search below only when one is not).
-    } else if let Some((i, &q)) = state.q.iter().enumerate().find(|(_, q)| q.abs() > limit) {
-        let m = &scene.model.modes()[i];
-        return diverged(Divergence::ModeBeyondLimit { mode: i, k: m.k, l: m.l, shape: m.shape, value: q, limit });
+    // One vectorizable pass; the search for the culprit only when some amplitude is beyond the limit.
+    if largest_magnitude(&state.q) > limit {
+        if let Some((i, &q)) = state.q.iter().enumerate().find(|(_, q)| q.abs() > limit) {
+            let m = &scene.model.modes()[i];
+            return diverged(Divergence::ModeBeyondLimit { mode: i, k: m.k, l: m.l, shape: m.shape, value: q, limit });
+        }
     }
     if state.speed.abs() > scene.limits.max_speed * 1.5 {
         return diverged(Divergence::SpeedBeyondLimit { speed: state.speed, limit: scene.limits.max_speed });
