@@ -26,7 +26,7 @@ use crate::messages::outputs::{clock_message, OutputMessages, Shared};
 use super::params_service::RuntimeChange;
 use super::services::{Command, LoopStatus};
 use super::marker_thread::MarkerFeed;
-use super::step_aligned_receive::StepAlignedReceive;
+use super::step_aligned_receive::{StepAlignedReceive, ON_ARRIVAL};
 use crate::bag::recorder::{Recorder, Sample};
 use crate::dynamics::{Checked, Command as SimCommand, NodeKind, Simulation, Wrench};
 use ros2_client::dds::rustdds::defer_wakes;
@@ -108,8 +108,6 @@ pub struct SimLoop {
     /// Inputs taken at a boundary: (reception time ns, order taken, input),
     /// applied in reception order (reused: no allocation once grown).
     taken: Vec<(i64, u32, Command)>,
-    /// How many inputs the last boundary took.
-    taken_last: usize,
     /// Input datagrams read at step boundaries (`ros/step_aligned_receive.rs`).
     receive: Option<StepAlignedReceive>,
     /// The critical speeds (`~/critical_speeds`) for the near-critical status.
@@ -153,7 +151,6 @@ impl SimLoop {
             marker: None,
             inputs: Vec::new(),
             taken: Vec::new(),
-            taken_last: 0,
             receive: None,
             critical_speeds: Vec::new(),
             settings,
@@ -269,9 +266,9 @@ impl SimLoop {
                 if let Some(receive) = &self.receive {
                     receive.before_take();
                 }
-                self.drain_commands();
+                let taken = self.drain_commands();
                 if let Some(receive) = &mut self.receive {
-                    receive.after_take(self.taken_last);
+                    receive.after_take(taken);
                 }
                 if self.stop || self.paused {
                     continue;
@@ -293,18 +290,19 @@ impl SimLoop {
     }
 
     /// The queued service calls in arrival order, then the samples waiting
-    /// on the input topics in DDS reception order.
-    fn drain_commands(&mut self) {
+    /// on the input topics in DDS reception order; how many samples.
+    fn drain_commands(&mut self) -> usize {
         while let Ok(cmd) = self.rx.try_recv() {
             self.handle(cmd);
             if self.stop {
-                return;
+                return 0;
             }
         }
-        self.take_inputs();
+        self.take_inputs()
     }
 
-    fn take_inputs(&mut self) {
+    /// The samples waiting on the input topics, applied; how many.
+    fn take_inputs(&mut self) -> usize {
         let mut taken = std::mem::take(&mut self.taken);
         for input in &mut self.inputs {
             input.drain(&mut |received, cmd| {
@@ -312,7 +310,7 @@ impl SimLoop {
                 taken.push((received, order, cmd));
             });
         }
-        self.taken_last = taken.len();
+        let count = taken.len();
         taken.sort_unstable_by_key(|&(received, order, _)| (received, order));
         for (_, _, cmd) in taken.drain(..) {
             if !self.stop {
@@ -320,6 +318,7 @@ impl SimLoop {
             }
         }
         self.taken = taken;
+        count
     }
 
     fn release_receive(&mut self) {
@@ -574,7 +573,7 @@ impl SimLoop {
         let rejected = self.stats.rejected_total();
         let new_rejected = rejected - self.rejected_at_last_report;
         self.rejected_at_last_report = rejected;
-        let reception = self.receive.as_ref().map_or("on arrival", |r| r.reception());
+        let reception = self.receive.as_ref().map_or(ON_ARRIVAL, |r| r.reception());
         let mut status = vec![
             diagnostics::simulation_status(name, &report),
             diagnostics::inputs_status(name, &self.stats, new_rejected, Some(reception)),

@@ -32,6 +32,9 @@ const WEIGHT: f64 = 1.0 / 32.0;
 /// after the gate's hold anyway).
 const RECEIVE_WAIT: Duration = Duration::from_millis(2);
 
+/// `input_reception` on `/diagnostics` while datagrams are read as they arrive.
+pub const ON_ARRIVAL: &str = "on arrival";
+
 /// The loop's use of the participant's receive gate.
 pub struct StepAlignedReceive {
     gate: ReceiveGate,
@@ -67,7 +70,7 @@ impl StepAlignedReceive {
         if self.gate.is_engaged() {
             "at step boundaries"
         } else {
-            "on arrival"
+            ON_ARRIVAL
         }
     }
 
