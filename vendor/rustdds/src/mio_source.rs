@@ -63,22 +63,7 @@ macro_rules! socketpair_bridge {
         let rec = $mio::net::TcpStream::from_std(std::net::TcpStream::from(OwnedFd::from(rec_sps)));
         let send =
           $mio::net::TcpStream::from_std(std::net::TcpStream::from(OwnedFd::from(send_sps)));
-        let pending = Arc::new(AtomicBool::new(false));
-        let registered = Arc::new(AtomicBool::new(false));
-        let send = Arc::new(Mutex::new(send));
-        Ok((
-          Source {
-            rec: Mutex::new(rec),
-            pending: pending.clone(),
-            registered: registered.clone(),
-            send: send.clone(),
-          },
-          Sender {
-            send,
-            pending,
-            registered,
-          },
-        ))
+        Ok(pair(rec, send))
       }
 
       #[cfg(target_os = "windows")]
@@ -93,10 +78,16 @@ macro_rules! socketpair_bridge {
         }
         let (send, _addr_send) = accepted?;
         debug!("IPC socket: {addr:#?} <-> {_addr_send:#?}");
+        Ok(pair(rec, send))
+      }
+
+      /// The two ends over a connected stream: `rec` is read by drains, `send`
+      /// written by sends (and by the registration that signals earlier ones).
+      fn pair(rec: $mio::net::TcpStream, send: $mio::net::TcpStream) -> (Source, Sender) {
         let pending = Arc::new(AtomicBool::new(false));
         let registered = Arc::new(AtomicBool::new(false));
         let send = Arc::new(Mutex::new(send));
-        Ok((
+        (
           Source {
             rec: Mutex::new(rec),
             pending: pending.clone(),
@@ -108,7 +99,7 @@ macro_rules! socketpair_bridge {
             pending,
             registered,
           },
-        ))
+        )
       }
 
       impl Sender {

@@ -72,7 +72,6 @@ pub enum SelectByKey {
 pub struct DataReader<D: Keyed, DA: DeserializerAdapter<D> = CDRDeserializerAdapter<D>> {
   simple_data_reader: SimpleDataReader<D, DA>,
   datasample_cache: DataSampleCache<D>, // DataReader-local cache of deserialized samples
-  take_only: bool,                      // see `set_take_only`
 }
 
 impl<D: 'static, DA> DataReader<D, DA>
@@ -86,7 +85,6 @@ where
     Self {
       simple_data_reader,
       datasample_cache: dsc,
-      take_only: false,
     }
   }
 
@@ -97,7 +95,6 @@ where
   /// cache up to its ResourceLimits, and each instance (with its key hash)
   /// for the DataReader's lifetime: one per remote endpoint ever discovered.
   pub(crate) fn set_take_only(&mut self) {
-    self.take_only = true;
     self.simple_data_reader.set_take_only();
   }
 
@@ -151,7 +148,7 @@ where
   }
 
   fn forget_emptied_instances(&mut self, keys: &[(Timestamp, D::K)]) {
-    if self.take_only {
+    if self.simple_data_reader.is_take_only() {
       self
         .datasample_cache
         .forget_emptied_instances(keys.iter().map(|(_, key)| key));

@@ -208,6 +208,10 @@ where
     self.take_only = true;
   }
 
+  pub(crate) fn is_take_only(&self) -> bool {
+    self.take_only
+  }
+
   /// Forget the read positions of the writers of participant `prefix` and the
   /// key hashes of the keys `is_its_key` says are its, once the participant
   /// is gone: its writers' proxies have been removed, so nothing more arrives
