@@ -25,6 +25,15 @@ pub const CACHE_CLEAN_PERIOD: Duration = Duration::from_secs(4);
 pub const NACK_RESPONSE_DELAY: Duration = Duration::from_millis(5);
 pub const NACK_SUPPRESSION_DURATION: Duration = Duration::from_millis(0);
 
+// A reader whose ACKNACK requested samples that have not arrived asks again
+// after this delay, doubling it each time up to NACK_RETRY_MAX_DELAY, instead
+// of waiting for the writer's next periodic HEARTBEAT. A writer may ignore a
+// NACK that arrives while the sample is still being sent (Fast DDS: a change
+// is "underway" until its nack-suppression timer fires, and its periodic
+// HEARTBEAT comes every 3 s), or the ACKNACK datagram itself may be lost.
+pub const NACK_RETRY_FIRST_DELAY: Duration = Duration::from_millis(20);
+pub const NACK_RETRY_MAX_DELAY: Duration = Duration::from_millis(1280);
+
 // Time between two repair rounds (SendRepairData, SendRepairFrags) for one
 // reader, and the backoff while the reader's send socket has queued control
 // datagrams. A Writer with a finite, positive Deadline uses a fifth of it,

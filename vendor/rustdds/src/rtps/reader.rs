@@ -42,8 +42,12 @@ use crate::{
   network::udp_sender::UDPSender,
   polling::{ReadySender, SharedTimer, WakeReceiver},
   rtps::{
-    fragment_assembler::FragmentAssembler, message_receiver::MessageReceiverState,
-    rtps_writer_proxy::RtpsWriterProxy, timed_event::DpTimerEvent, Message,
+    constant::{NACK_RETRY_FIRST_DELAY, NACK_RETRY_MAX_DELAY},
+    fragment_assembler::FragmentAssembler,
+    message_receiver::MessageReceiverState,
+    rtps_writer_proxy::{NackRetry, RtpsWriterProxy},
+    timed_event::DpTimerEvent,
+    Message,
   },
   structure::{
     cache_change::{CacheChange, ChangeKind},
@@ -66,6 +70,9 @@ use crate::no_security::SecurityPluginsHandle;
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub(crate) enum TimedEvent {
   DeadlineMissedCheck,
+  /// Ask the writer again for the samples it has not sent since our last
+  /// ACKNACK (see [`Reader::handle_nack_retry`]).
+  NackRetry(GUID),
 }
 
 // Some pieces necessary to construct a reader.
@@ -324,7 +331,93 @@ impl Reader {
         self.handle_requested_deadline_event();
         self.set_requested_deadline_check_timer(); // re-prime timer
       }
+      TimedEvent::NackRetry(writer_guid) => self.handle_nack_retry(writer_guid),
     }
+  }
+
+  /// After an ACKNACK that requested samples: remember the HEARTBEAT range it
+  /// answered and make sure a retry is scheduled (a new request restarts the
+  /// backoff at [`NACK_RETRY_FIRST_DELAY`]).
+  fn arm_nack_retry(
+    &self,
+    writer_proxy: &mut RtpsWriterProxy,
+    first: SequenceNumber,
+    last: SequenceNumber,
+  ) {
+    let scheduled = writer_proxy.nack_retry.is_some_and(|r| r.scheduled);
+    writer_proxy.nack_retry = Some(NackRetry {
+      first,
+      last,
+      delay: NACK_RETRY_FIRST_DELAY,
+      scheduled: true,
+    });
+    if !scheduled {
+      self.schedule_nack_retry(writer_proxy.remote_writer_guid, NACK_RETRY_FIRST_DELAY);
+    }
+  }
+
+  fn schedule_nack_retry(&self, writer_guid: GUID, after: std::time::Duration) {
+    self.timed_event_timer.borrow_mut().set_timeout(
+      after,
+      DpTimerEvent::Reader {
+        entity_id: self.my_guid.entity_id,
+        event: TimedEvent::NackRetry(writer_guid),
+      },
+    );
+  }
+
+  /// The retry timer of an outstanding request fired: if samples of the range
+  /// our last ACKNACK answered are still missing, request them again and
+  /// schedule the next retry at twice the delay; stop when nothing is missing,
+  /// the writer is gone, or the delay passed [`NACK_RETRY_MAX_DELAY`] (the
+  /// writer's periodic HEARTBEAT takes over).
+  fn handle_nack_retry(&mut self, writer_guid: GUID) {
+    if !self.matched_writers.contains_key(&writer_guid) {
+      return;
+    }
+    self.with_mutable_writer_proxy(writer_guid, |this, writer_proxy| {
+      let Some(retry) = writer_proxy.nack_retry else {
+        return;
+      };
+      let missing = writer_proxy.missing_seqnums(retry.first, retry.last);
+      let Some(&first_missing) = missing.first() else {
+        writer_proxy.nack_retry = None;
+        return;
+      };
+      let set = missing
+        .iter()
+        .copied()
+        .take_while(|sn| *sn < first_missing + SequenceNumber::new(256))
+        .collect();
+      let acknack = AckNack {
+        reader_id: this.entity_id(),
+        writer_id: writer_guid.entity_id,
+        reader_sn_state: SequenceNumberSet::from_base_and_set(first_missing, &set),
+        count: writer_proxy.next_ack_nack_sequence_number(),
+      };
+      let flags = BitFlags::<ACKNACK_Flags>::from_flag(ACKNACK_Flags::Endianness)
+        | BitFlags::<ACKNACK_Flags>::from_flag(ACKNACK_Flags::Final);
+      this.send_acknack_to(
+        flags,
+        acknack,
+        InfoDestination {
+          guid_prefix: writer_guid.prefix,
+        },
+        &writer_proxy.unicast_locator_list,
+        writer_guid,
+      );
+      let delay = retry.delay * 2;
+      if delay > NACK_RETRY_MAX_DELAY {
+        writer_proxy.nack_retry = None;
+      } else {
+        writer_proxy.nack_retry = Some(NackRetry {
+          delay,
+          scheduled: true,
+          ..retry
+        });
+        this.schedule_nack_retry(writer_guid, delay);
+      }
+    });
   }
 
   pub fn process_command(&mut self) {
@@ -1068,6 +1161,9 @@ impl Reader {
             reply_locators,
             writer_guid,
           );
+          if !missing_seqnums.is_empty() {
+            this.arm_nack_retry(writer_proxy, heartbeat.first_sn, heartbeat.last_sn);
+          }
 
           return true;
         }
@@ -1719,8 +1815,9 @@ mod tests {
     );
   }
 
-  #[test]
-  fn reader_handles_heartbeats() {
+  /// A Reliable reader with one matched writer: (reader, writer, the receiver
+  /// state of that writer's messages).
+  fn reliable_reader_with_a_writer() -> (Reader, GUID, MessageReceiverState<'static>) {
     // 1. Create a reader for a topic with Reliable QoS
     // Create the DDS cache and the topic
     let dds_cache = Arc::new(RwLock::new(DDSCache::new()));
@@ -1790,6 +1887,13 @@ mod tests {
       &reliable_qos,
     );
 
+    (reader, writer_guid, mr_state)
+  }
+
+  #[test]
+  fn reader_handles_heartbeats() {
+    let (mut reader, writer_guid, mr_state) = reliable_reader_with_a_writer();
+
     // 3. Send an initial heartbeat from the new writer, reader should not respond
     // with acknack first_sn: 1, last_sn: 0 to indicate no samples available
     let hb_new = Heartbeat {
@@ -1832,6 +1936,63 @@ mod tests {
       .matched_writer(writer_guid)
       .expect("Did not find a matched writer");
     assert_eq!(writer_proxy.sent_ack_nack_count, 3);
+  }
+
+  #[test]
+  fn an_unanswered_nack_is_repeated_with_backoff_until_the_samples_arrive() {
+    let (mut reader, writer_guid, mr_state) = reliable_reader_with_a_writer();
+    let sent = |r: &Reader| r.matched_writer(writer_guid).unwrap().sent_ack_nack_count;
+    let retry = |r: &Reader| r.matched_writer(writer_guid).unwrap().nack_retry;
+
+    // The writer announces samples 1..=3 that never came: the reader NACKs and
+    // arms a retry.
+    let hb = Heartbeat {
+      reader_id: reader.entity_id(),
+      writer_id: writer_guid.entity_id,
+      first_sn: SequenceNumber::new(1),
+      last_sn: SequenceNumber::new(3),
+      count: 1,
+    };
+    assert!(reader.handle_heartbeat_msg(&hb, false, &mr_state));
+    let after_hb = sent(&reader);
+    assert_eq!(
+      retry(&reader).map(|r| (r.delay, r.scheduled)),
+      Some((NACK_RETRY_FIRST_DELAY, true))
+    );
+
+    // Each firing of the retry timer asks again and doubles the delay, up to
+    // NACK_RETRY_MAX_DELAY; then it stops (the writer's periodic HEARTBEAT
+    // takes over).
+    let mut delay = NACK_RETRY_FIRST_DELAY;
+    let mut retries = 0;
+    while retry(&reader).is_some() {
+      reader.handle_timed_event(TimedEvent::NackRetry(writer_guid));
+      retries += 1;
+      delay *= 2;
+      assert_eq!(sent(&reader), after_hb + retries, "one ACKNACK per firing");
+      if delay <= NACK_RETRY_MAX_DELAY {
+        assert_eq!(retry(&reader).map(|r| r.delay), Some(delay));
+      }
+      assert!(retries <= 16, "the retries must stop");
+    }
+    assert_eq!(retries, 7, "20, 40, ..., 1280 ms");
+
+    // A new HEARTBEAT re-arms it; once the samples are accounted for (here a
+    // GAP: not available), the next firing sends nothing and disarms.
+    let hb2 = Heartbeat { count: 2, ..hb };
+    assert!(reader.handle_heartbeat_msg(&hb2, false, &mr_state));
+    assert!(retry(&reader).is_some());
+    let gap = Gap {
+      reader_id: reader.entity_id(),
+      writer_id: writer_guid.entity_id,
+      gap_start: SequenceNumber::new(1),
+      gap_list: SequenceNumberSet::new_empty(SequenceNumber::new(4)),
+    };
+    reader.handle_gap_msg(&gap, &mr_state);
+    let before = sent(&reader);
+    reader.handle_timed_event(TimedEvent::NackRetry(writer_guid));
+    assert_eq!(sent(&reader), before, "nothing missing: no ACKNACK");
+    assert_eq!(retry(&reader), None);
   }
 
   #[test]

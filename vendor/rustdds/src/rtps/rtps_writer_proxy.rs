@@ -75,6 +75,21 @@ pub(crate) struct RtpsWriterProxy {
   // These are used for quick tracking of
   last_received_sequence_number: SequenceNumber,
   last_received_timestamp: Timestamp,
+
+  /// While an ACKNACK that requested samples is unanswered: the HEARTBEAT
+  /// range it answered, the delay before the reader asks again, and whether
+  /// that retry is scheduled (see `Reader::handle_nack_retry`).
+  pub(crate) nack_retry: Option<NackRetry>,
+}
+
+/// An outstanding request of a reader to one writer (see
+/// [`RtpsWriterProxy::nack_retry`]).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) struct NackRetry {
+  pub first: SequenceNumber,
+  pub last: SequenceNumber,
+  pub delay: std::time::Duration,
+  pub scheduled: bool,
 }
 
 impl RtpsWriterProxy {
@@ -97,6 +112,7 @@ impl RtpsWriterProxy {
       ack_base: SequenceNumber::new(1),
       last_received_sequence_number: SequenceNumber::new(0),
       last_received_timestamp: Timestamp::INVALID,
+      nack_retry: None,
     }
   }
 
@@ -331,6 +347,7 @@ impl RtpsWriterProxy {
       ack_base: SequenceNumber::default(),
       last_received_sequence_number: SequenceNumber::new(0),
       last_received_timestamp: Timestamp::INVALID,
+      nack_retry: None,
     }
   } // fn
 
