@@ -241,6 +241,8 @@ def scenario_topics(p, a):
         "rosout": {"messages": len(rosout), "names": sorted({m.name for m in rosout})},
         "graph_topics": topics,
         "graph_nodes": [list(x) for x in p.node.get_node_names_and_namespaces()],
+        "node_publishes": dict(p.node.get_publisher_names_and_types_by_node(a.get("node_name", "annular_plate"), a.get("node_namespace", "/"))),
+        "node_subscribes": dict(p.node.get_subscriber_names_and_types_by_node(a.get("node_name", "annular_plate"), a.get("node_namespace", "/"))),
     }
 
 
@@ -269,7 +271,7 @@ def scenario_inputs(p, a):
     p.diagnostics()
     p.wait_status(": inputs", lambda v: True)
     pubs["speed"].publish(Float64(data=26.0))
-    pubs["ale_1"].publish(wrench_msg(a.get("ale_1_frame", ""), fz=10.0))
+    pubs["ale_1"].publish(wrench_msg(a.get("ale_1_frame", "plate_ale_1"), fz=10.0))
     arr = NodeWrenchArray()
     arr.wrenches = [NodeWrench(kind=NodeWrench.ALE, index=2, wrench=wrench_msg().wrench)]
     pubs["wrenches"].publish(arr)
@@ -289,15 +291,25 @@ def scenario_inputs(p, a):
     bad_pad.clamp_force = [100.0]
     pubs["pads"].publish(bad_pad)
     pubs["pad_1"].publish(Float64(data=-5.0))
-    bad, _ = p.wait_status(": inputs", lambda v: int(v.get("rejected_total", 0)) >= 5)
+    p.wait_status(": inputs", lambda v: int(v.get("rejected_total", 0)) >= 5)
     p.spin_for(0.5)
-    bad = p.last_status(": inputs")
+    bad, st = p.wait_status(": inputs", lambda v: int(v.get("rejected_total", 0)) >= 5)
+    p.spin_for(0.5)  # and a report or more with no new rejection
+
+    def level(st):
+        return st.level[0] if isinstance(st.level, (bytes, bytearray)) else int(st.level)
+    # (rejected_total, level) of every inputs status kept, oldest first.
+    reports = []
+    for m in p.diagnostics():
+        v, st = p.status_values(m, ": inputs")
+        if v is not None:
+            reports.append([int(v["rejected_total"]), level(st)])
     # The node still runs: a step goes through and the state carries the good inputs.
     step, _ = p.client(Step, p.private("step"))
     states = p.collect(PadStates, p.private("pad_states"), 10, keep=5)
     r, _ = p.call(step, Step.Request(steps=3), 20.0)
     p.spin_until(lambda: states and states[-1].step == r.step, 20.0, "the pad state of the last step")
-    return {"after_good": good, "after_bad": bad, "step": {"success": r.success, "step": r.step},
+    return {"after_good": good, "after_bad": bad, "reports": reports, "step": {"success": r.success, "step": r.step},
             "clamp_force": list(states[-1].clamp_force)}
 
 
@@ -573,7 +585,12 @@ def scenario_clock_in(p, a):
         raise Timeout(f"no modal amplitudes of step {expect_step} after /clock = {t} (last step {ma[-1].step if ma else None})")
 
     # The origin: no step yet; then 5 steps' worth reliable, 10 more best effort.
-    rel.publish(clock(origin))
+    # Several times over a second: the node's reader may match the writer a
+    # moment after the writer saw it; the first that arrives is the origin,
+    # the others stand still.
+    for _ in range(10):
+        rel.publish(clock(origin))
+        p.spin_for(0.1)
     p.spin_for(0.5)
     before = [m.step for m in ma]
     m5 = drive(rel, origin + 5 * dt, 5)
