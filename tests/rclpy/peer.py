@@ -413,7 +413,7 @@ def sparam(name, s):
 def scenario_params(p, a):
     """The six parameter services as the `ros2 param` verbs call them (one fresh
     client per verb), then `calls` consecutive describe_parameters calls on one
-    client with replies from ~100 B to ~64 KB, then the first reply of fresh
+    client with replies from ~100 B to ~70 KB, then the first reply of fresh
     clients. A reply not there within `timeout` s counts as lost (and the
     scenario goes on)."""
     timeout = a.get("timeout", 10.0)
@@ -469,12 +469,12 @@ def scenario_params(p, a):
              GetParameters.Request(names=["simulation.realtime_factor", "ros.wrench_timeout", "plate.thickness"]))
     out["get_after"] = [pvalue(v) for v in r.values] if r else None
 
-    # `calls` consecutive calls on one client, replies from ~100 B to ~64 KB:
+    # `calls` consecutive calls on one client, replies from ~100 B to ~70 KB:
     # describe_parameters of the first n names of the declared list repeated
     # (a descriptor per name asked, duplicates included); n grows
     # geometrically, aimed with the bytes per descriptor seen so far.
     calls = a.get("calls", 200)
-    lo, hi = a.get("min_bytes", 100), a.get("max_bytes", 65536)
+    lo, hi = a.get("min_bytes", 100), a.get("max_bytes", 70000)
     client, _ = p.client(DescribeParameters, p.private("describe_parameters"))
     cycle = all_names or ["plate.thickness"]
     per_name = 300.0  # first guess of a descriptor's CDR bytes; refined by every reply
