@@ -25,7 +25,6 @@ from rclpy.qos import (DurabilityPolicy, HistoryPolicy, QoSProfile, ReliabilityP
                        qos_profile_sensor_data)
 from rclpy.serialization import serialize_message
 
-from builtin_interfaces.msg import Time
 from diagnostic_msgs.msg import DiagnosticArray
 from geometry_msgs.msg import WrenchStamped
 from rcl_interfaces.msg import Log, ParameterType, ParameterValue
@@ -38,7 +37,7 @@ from std_msgs.msg import Float64
 from std_srvs.srv import SetBool, Trigger
 from tf2_msgs.msg import TFMessage
 from visualization_msgs.msg import MarkerArray
-from simulation_interfaces.msg import Result, SimulationState
+from simulation_interfaces.msg import SimulationState
 from simulation_interfaces.srv import GetSimulationState, ResetSimulation, SetSimulationState, StepSimulation
 
 from annular_plate.msg import (CriticalSpeeds, ModalAmplitudes, NodeWrench, NodeWrenchArray, PadClampForces,
@@ -157,20 +156,6 @@ class Peer:
             if v is not None:
                 return v
         return None
-
-
-def ros_time(t):
-    return {"sec": t.sec, "nanosec": t.nanosec}
-
-
-def quantiles(xs):
-    if not xs:
-        return {}
-    s = sorted(xs)
-
-    def q(p):
-        return s[min(len(s) - 1, int(round(p * (len(s) - 1))))]
-    return {"n": len(s), "min": s[0], "p50": q(0.5), "p90": q(0.9), "p99": q(0.99), "max": s[-1]}
 
 
 # ---- scenarios ----------------------------------------------------------------------
