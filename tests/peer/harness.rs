@@ -107,8 +107,19 @@ pub struct Netns {
 
 impl Netns {
     pub fn new() -> Netns {
+        Netns::start("ip link set lo up")
+    }
+
+    /// The same with loopback's MTU set to `mtu` bytes (Linux's default is
+    /// 65536; 1500 is what an Ethernet link between two machines gives, so
+    /// DDS fragments what is larger than about 1.4 kB, as it would there).
+    pub fn with_lo_mtu(mtu: u32) -> Netns {
+        Netns::start(&format!("ip link set lo mtu {mtu} && ip link set lo up"))
+    }
+
+    fn start(setup: &str) -> Netns {
         let mut holder = Command::new("unshare")
-            .args(["-n", "--", "sh", "-c", "ip link set lo up && echo ready && exec sleep 100000"])
+            .args(["-n", "--", "sh", "-c", &format!("{setup} && echo ready && exec sleep 100000")])
             .stdout(Stdio::piped())
             .stderr(Stdio::piped())
             .spawn()
