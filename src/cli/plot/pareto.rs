@@ -80,19 +80,32 @@ pub(super) fn panels(r: &StudyReport) -> [PanelData; 3] {
             .chain(ls.iter().enumerate().map(|(i, &l)| Series {
                 name: format!("l ≤ {l} + residual"),
                 color: PALETTE[(i + ls.len()) % PALETTE.len()],
-                points: b.rows.iter().filter(|x| x.l_max == l).map(|x| (x.step_time_s, floor(x.relative_error_with_residual), format!("k ≤ {}", x.k_max))).collect(),
+                points: b
+                    .rows
+                    .iter()
+                    .filter(|x| x.l_max == l)
+                    .map(|x| (x.step_time_with_residual_s, floor(x.relative_error_with_residual), format!("k ≤ {}", x.k_max)))
+                    .collect(),
             }))
             .collect(),
-        front: b.rows.iter().filter(|x| x.pareto).map(|x| (x.step_time_s, floor(x.relative_error))).collect(),
+        // One front over both variants of every set.
+        front: b
+            .rows
+            .iter()
+            .filter(|x| x.pareto)
+            .map(|x| (x.step_time_s, floor(x.relative_error)))
+            .chain(b.rows.iter().filter(|x| x.pareto_with_residual).map(|x| (x.step_time_with_residual_s, floor(x.relative_error_with_residual))))
+            .collect(),
         picks: b
             .recommendations
             .iter()
             .filter_map(|x| {
                 let s = x.setting.as_ref()?;
-                Some((x.target, x.cost?, floor(x.error?), format!("k≤{}, l≤{}", s.k_max, s.l_max)))
+                let residual = if s.residual_flexibility { " + res." } else { "" };
+                Some((x.target, x.cost?, floor(x.error?), format!("k≤{}, l≤{}{residual}", s.k_max, s.l_max)))
             })
             .collect(),
-        uncertainty: b.reference.uncertainty,
+        uncertainty: b.reference.uncertainty_with_residual.min(b.reference.uncertainty),
     };
     let c = &r.integrator;
     let mut names: Vec<&str> = c.rows.iter().map(|x| x.integrator).collect();
@@ -149,7 +162,10 @@ impl Painter for ParetoPicture<'_> {
         let (top, rest) = root.split_vertically(44);
         draw_title(
             &top,
-            &format!("Error against cost — {} ({} modes); targets dashed, recommended settings ringed, Pareto front black", r.scene.source, r.scene.modes),
+            &format!(
+                "Error against cost — {} ({} modes); targets dashed, recommended settings ringed, Pareto front black; errors below {ERROR_FLOOR:e} drawn at it",
+                r.scene.source, r.scene.modes
+            ),
             20.0,
         )?;
         let areas = rest.split_evenly((1, 3));
