@@ -1420,24 +1420,21 @@ impl Reader {
     self.matched_writers = writer_proxies;
   }
 
-  // An ACKNACK without the final flag requests an immediate HEARTBEAT from the
-  // writer.
   fn send_preemptive_acknack_to(&self, writer_proxy: &mut RtpsWriterProxy) {
-    let flags = BitFlags::<ACKNACK_Flags>::from_flag(ACKNACK_Flags::Endianness);
     let acknack_count = writer_proxy.next_ack_nack_sequence_number();
     let RtpsWriterProxy {
       remote_writer_guid,
       unicast_locator_list,
       ..
     } = writer_proxy;
+    let (flags, acknack) = preemptive_acknack(
+      self.entity_id(),
+      remote_writer_guid.entity_id,
+      acknack_count,
+    );
     self.send_acknack_to(
       flags,
-      AckNack {
-        reader_id: self.entity_id(),
-        writer_id: remote_writer_guid.entity_id,
-        reader_sn_state: SequenceNumberSet::new_empty(SequenceNumber::new(1)),
-        count: acknack_count,
-      },
+      acknack,
       InfoDestination {
         guid_prefix: remote_writer_guid.prefix,
       },
@@ -1484,6 +1481,35 @@ impl fmt::Debug for Reader {
   }
 }
 
+/// The preemptive ACKNACK a reader sends to a writer it has just matched (and
+/// periodically while that writer has sent it nothing): no Final flag, so it
+/// asks for an immediate HEARTBEAT, and readerSNState = {base 0, numBits 0}.
+///
+/// Base 0 is outside the SequenceNumberSet validity rule of RTPS v2.5 8.3.5.5,
+/// but it is the form the other implementations send and recognise as
+/// preemptive (eProsima Fast DDS, the default ROS 2 RMW; RTI Connext Micro;
+/// embeddedRTPS), and this crate's writer accepts it too. Fast DDS answers it
+/// with a HEARTBEAT at once, but takes {base 1, numBits 0} for an ordinary
+/// ACKNACK that requests nothing and only restarts its heartbeat period
+/// (3 s by default). A sample such a writer sent before we had matched it — a
+/// ROS 2 service request that arrives while discovery is still processing the
+/// client's endpoints — was then withheld for those 3 s.
+pub(crate) fn preemptive_acknack(
+  reader_id: EntityId,
+  writer_id: EntityId,
+  count: i32,
+) -> (BitFlags<ACKNACK_Flags>, AckNack) {
+  (
+    BitFlags::<ACKNACK_Flags>::from_flag(ACKNACK_Flags::Endianness),
+    AckNack {
+      reader_id,
+      writer_id,
+      reader_sn_state: SequenceNumberSet::new_empty(SequenceNumber::zero()),
+      count,
+    },
+  )
+}
+
 #[cfg(test)]
 mod tests {
   use std::sync::RwLock;
@@ -1494,6 +1520,8 @@ mod tests {
     structure::{dds_cache::DDSCache, guid::EntityKind},
     QosPolicyBuilder,
   };
+  #[cfg(not(feature = "security"))]
+  use speedy::Writable;
   use super::*;
 
   #[test]
@@ -1804,6 +1832,33 @@ mod tests {
       .matched_writer(writer_guid)
       .expect("Did not find a matched writer");
     assert_eq!(writer_proxy.sent_ack_nack_count, 3);
+  }
+
+  #[test]
+  fn preemptive_acknack_asks_for_a_heartbeat_with_base_zero() {
+    let reader_id = EntityId::new([0, 0, 0x22], EntityKind::READER_NO_KEY_USER_DEFINED);
+    let writer_id = EntityId::new([0, 0, 0x14], EntityKind::WRITER_NO_KEY_USER_DEFINED);
+    let (flags, acknack) = preemptive_acknack(reader_id, writer_id, 1);
+    assert!(
+      !flags.contains(ACKNACK_Flags::Final),
+      "no Final flag: a HEARTBEAT is requested"
+    );
+    assert_eq!(acknack.reader_sn_state.base(), SequenceNumber::zero());
+    assert_eq!(
+      acknack.reader_sn_state.iter().count(),
+      0,
+      "numBits 0: nothing requested"
+    );
+    assert_eq!(
+      (acknack.reader_id, acknack.writer_id, acknack.count),
+      (reader_id, writer_id, 1)
+    );
+    // On the wire: readerId, writerId, bitmapBase {high 0, low 0}, numBits 0, count.
+    let bytes = acknack
+      .write_to_vec_with_ctx(Endianness::LittleEndian)
+      .expect("serialize");
+    assert_eq!(bytes.len(), 4 + 4 + 8 + 4 + 4);
+    assert_eq!(&bytes[8..20], &[0u8; 12]);
   }
 
   #[test]

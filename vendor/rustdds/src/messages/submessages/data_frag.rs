@@ -87,8 +87,18 @@ impl DataFrag {
     2 + // fragmentsInSubmessage
     2 + // fragmentSize
     4 + // sampleSize
-    self.inline_qos.as_ref().map(|q| q.len_serialized() ).unwrap_or(0) + // QoS ParameterList
+    self.written_inline_qos().map_or(0, ParameterList::len_serialized) + // QoS ParameterList
     self.serialized_payload.len()
+  }
+
+  /// The inline QoS as it goes on the wire: absent when there is none or it is
+  /// empty. `len_serialized` and `write_to` both use it, so the submessage
+  /// length always counts exactly the bytes written.
+  fn written_inline_qos(&self) -> Option<&ParameterList> {
+    self
+      .inline_qos
+      .as_ref()
+      .filter(|q| !q.parameters.is_empty())
   }
 
   /// Spec talks about (expected) total number of fragments.
@@ -301,8 +311,10 @@ impl<C: Context> Writable<C> for DataFrag {
     writer.write_value(&self.fragments_in_submessage)?;
     writer.write_value(&self.fragment_size)?;
     writer.write_value(&self.data_size)?;
-    if self.inline_qos.is_some() && !self.inline_qos.as_ref().unwrap().parameters.is_empty() {
-      writer.write_value(&self.inline_qos)?;
+    // The ParameterList itself, not the `Option` around it: speedy would
+    // prefix an `Option` with a one-byte tag, which no RTPS reader expects.
+    if let Some(inline_qos) = self.written_inline_qos() {
+      writer.write_value(inline_qos)?;
     }
     writer.write_bytes(&self.serialized_payload)?;
     Ok(())
@@ -325,7 +337,10 @@ mod tests {
   use speedy::{Endianness, Writable};
 
   use super::*;
-  use crate::messages::submessages::submessages::DATAFRAG_Flags;
+  use crate::{
+    messages::submessages::{elements::parameter::Parameter, submessages::DATAFRAG_Flags},
+    structure::parameter_id::ParameterId,
+  };
 
   fn serialize_body(df: &DataFrag) -> Bytes {
     let mut buf = Vec::new();
@@ -381,6 +396,76 @@ mod tests {
     };
     let bytes = serialize_body(&df);
     assert!(DataFrag::deserialize(&bytes, BitFlags::<DATAFRAG_Flags>::empty()).is_err());
+  }
+
+  /// A DATA_FRAG carrying inline QoS (a service reply's related sample
+  /// identity) is laid out as RTPS 9.4.5.3 says: the ParameterList starts right
+  /// after sampleSize (octetsToInlineQos = 28), the submessage length counts
+  /// exactly the bytes written, and the submessage reads back whole.
+  #[test]
+  fn datafrag_with_inline_qos_is_written_as_rtps_lays_it_out() {
+    let identity = vec![7u8; 24]; // GUID (16) + sequence number (8)
+    let mut inline_qos = ParameterList::new();
+    inline_qos.push(Parameter {
+      parameter_id: ParameterId::PID_RELATED_SAMPLE_IDENTITY,
+      value: identity.clone(),
+    });
+    let payload: Vec<u8> = (0..=255u8).cycle().take(512).collect();
+    let df = DataFrag {
+      writer_sn: SequenceNumber::new(3),
+      fragment_starting_num: FragmentNumber::new(1),
+      fragments_in_submessage: 2,
+      fragment_size: 256,
+      data_size: 1000,
+      inline_qos: Some(inline_qos),
+      serialized_payload: Bytes::from(payload.clone()),
+      ..Default::default()
+    };
+    let bytes = serialize_body(&df);
+    assert_eq!(
+      bytes.len(),
+      df.len_serialized(),
+      "submessage length must count every byte written"
+    );
+    assert_eq!(&bytes[2..4], &28u16.to_le_bytes(), "octetsToInlineQos");
+    // The first parameter's id and length right after the 28-byte header
+    // (no Option tag in between), then its value.
+    let pid: u16 = 0x0083; // PID_RELATED_SAMPLE_IDENTITY (DDS-RPC)
+    assert_eq!(&bytes[32..34], &pid.to_le_bytes());
+    assert_eq!(&bytes[34..36], &24u16.to_le_bytes());
+    assert_eq!(&bytes[36..60], identity.as_slice());
+    assert_eq!(
+      &bytes[bytes.len() - 512..],
+      payload.as_slice(),
+      "the payload ends the submessage"
+    );
+
+    let flags = BitFlags::<DATAFRAG_Flags>::from_endianness(Endianness::LittleEndian)
+      | DATAFRAG_Flags::InlineQos;
+    let back = DataFrag::deserialize(&bytes, flags).expect("reads back");
+    let qos = back.inline_qos.expect("inline QoS read back");
+    assert_eq!(qos.parameters.len(), 1);
+    assert_eq!(qos.parameters[0].value, identity);
+    assert_eq!(back.serialized_payload.as_ref(), payload.as_slice());
+  }
+
+  /// An empty inline QoS is not written (no InlineQos flag goes with it), and
+  /// the length says so.
+  #[test]
+  fn datafrag_with_empty_inline_qos_writes_none() {
+    let df = DataFrag {
+      writer_sn: SequenceNumber::new(1),
+      fragment_starting_num: FragmentNumber::new(1),
+      fragments_in_submessage: 1,
+      fragment_size: 256,
+      data_size: 256,
+      inline_qos: Some(ParameterList::new()),
+      serialized_payload: Bytes::from(vec![1u8; 256]),
+      ..Default::default()
+    };
+    let bytes = serialize_body(&df);
+    assert_eq!(bytes.len(), df.len_serialized());
+    assert_eq!(bytes.len(), 28 + 4 + 256);
   }
 
   #[test]
