@@ -40,7 +40,7 @@ pub(super) struct PanelData {
     uncertainty: f64,
 }
 
-/// Errors below this are drawn at it (exact to round-off).
+/// Errors below this are drawn at it, hollow (exact to round-off; a log axis has no 0).
 pub(super) const ERROR_FLOOR: f64 = 1e-16;
 
 pub(super) fn panels(r: &StudyReport) -> [PanelData; 3] {
@@ -163,7 +163,7 @@ impl Painter for ParetoPicture<'_> {
         draw_title(
             &top,
             &format!(
-                "Error against cost — {} ({} modes); targets dashed, recommended settings ringed, Pareto front black; errors below {ERROR_FLOOR:e} drawn at it",
+                "Error against cost — {} ({} modes); targets dashed, recommended settings ringed, Pareto front black; hollow: error below {ERROR_FLOOR:e}, drawn at it",
                 r.scene.source, r.scene.modes
             ),
             20.0,
@@ -224,7 +224,8 @@ impl Painter for ParetoPicture<'_> {
                 pts.sort_by(|a, b| a.0.total_cmp(&b.0));
                 chart.draw_series(LineSeries::new(pts.clone(), color.mix(0.5).stroke_width(1))).map_err(de)?;
                 chart
-                    .draw_series(pts.iter().map(|&p| Circle::new(p, 4, color.filled())))
+                    // An error below the floor is not on the axis: drawn at the floor, hollow.
+                    .draw_series(pts.iter().map(|&p| Circle::new(p, 4, if p.1 <= ERROR_FLOOR { color.stroke_width(2) } else { color.filled() })))
                     .map_err(de)?
                     .label(s.name.as_str())
                     .legend(move |(x, y)| Circle::new((x + 10, y), 4, color.filled()));
