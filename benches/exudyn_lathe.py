@@ -32,7 +32,7 @@ output.
       CPU around SolveDynamic) and as a whole process.
 
 Two ratios: Exudyn's solver against annular_plate on the same equations (the
-issue's comparison), and against the full scene (Exudyn does less work). The
+headline comparison), and against the full scene (Exudyn does less work). The
 script checks that both solved those equations: Exudyn's and annular_plate's
 ALE amplitudes at 5.5 s against the closed-form steady state
 [(ω² − k²Ω²) I − 2ζωkΩ J] q̄ = f̄ (docs/dynamics.md) and against each other

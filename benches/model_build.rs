@@ -1,7 +1,7 @@
 //! Model build time: the lathe mode set (k = 0..7, l = 0, 1; target well under
 //! 10 ms) and a large one (k = 0..60, l = 0..10; target under 100 ms), with
 //! the default `plate.radial_splines: auto` (tolerance 1e-6) and with a fixed
-//! 32 splines (the default before issue 11).
+//! 32 splines (`plate.radial_splines: 32`).
 
 use annular_plate::config::{PlateConfig, RadialSplines};
 use annular_plate::model::PlateModel;

@@ -11,7 +11,7 @@ scenario, the same as tests/node_memory_under_peer_churn.rs (which runs 4
 rounds and asserts the memory comes back once the leases expire).
 
 Printed: the node's VmRSS after every round, then after the last leases
-have expired (`--expiry` seconds), and the summary the issue asks for —
+have expired (`--expiry` seconds), and the summary it is run for —
 whether the memory stays flat within 10 %: the largest RSS from round
 `--warm-rounds` on against the RSS after that warm-up round, and the RSS
 after the final expiry against the same.

@@ -54,7 +54,7 @@ fn steps(c: &mut Criterion) {
         c.bench_function(&format!("effects/{name}"), |b| b.iter(|| sim.step().unwrap()));
     }
 
-    // Centrifugal stiffening (issue 12): at constant speed the per-k block
+    // Centrifugal stiffening: at constant speed the per-k block
     // propagators are cached; in a spin-up (a slow ramp at 1 rad/s², so the
     // speed changes every substep for the whole run) they are rebuilt every substep.
     let stiff = |c: &mut Config| c.centrifugal.stiffening = true;

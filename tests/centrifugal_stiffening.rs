@@ -1,4 +1,4 @@
-//! Centrifugal stiffening of the spinning annulus (issue 12) against
+//! Centrifugal stiffening of the spinning annulus against
 //! independent solutions written here:
 //!
 //! * the Lamé prestress against the textbook stress-function form

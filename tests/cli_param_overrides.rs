@@ -1,5 +1,5 @@
 //! `-p NAME:=VALUE` for `modes`, `simulate`, `study`, `campbell` and
-//! `stability` (issue 16: only `plot` and `run` took it): an override gives exactly what the same value
+//! `stability` as for `plot` and `run`: an override gives exactly what the same value
 //! written into the file gives, and a bad one is refused naming the key.
 
 mod support;

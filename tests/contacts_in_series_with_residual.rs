@@ -1,4 +1,4 @@
-//! Contacts see the corrected compliance (issue 11): with
+//! Contacts see the corrected compliance: with
 //! `plate.residual_flexibility` the brake pads act on the modal deflection
 //! plus the truncated modes' static deflection of their own forces and the
 //! held wrenches — the residual as a spring in series with the contact,

@@ -1,5 +1,5 @@
 //! `~/critical_speeds` and the near-critical /diagnostics status on the wire
-//! (issue 12), against the Cyclone DDS peer (`tests/peer/peer.py`).
+//! against the Cyclone DDS peer (`tests/peer/peer.py`).
 //!
 //! The node starts paused on the brake bench with
 //! `plate.centrifugal_stiffening:=true` and its joint speed 2 % above the

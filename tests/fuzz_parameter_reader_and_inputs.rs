@@ -35,7 +35,7 @@ impl Rng {
     }
 }
 
-/// The inputs that broke the reader before (issue 14), as seeds.
+/// Inputs that once broke the reader, as seeds.
 fn seeds() -> Vec<String> {
     let plate = |line: &str| format!("annular_plate:\n  ros__parameters:\n    plate:\n      {line}\n");
     let mut s: Vec<String> = ["brake_bench.yaml", "brake_squeal.yaml", "brake_squeal_paper.yaml", "design_example.yaml", "lathe.yaml", "swash_plate.yaml"]

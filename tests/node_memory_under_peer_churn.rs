@@ -1,5 +1,5 @@
-//! Peers joining and leaving do not grow the node for good (issue 14, item 5;
-//! issue 10).
+//! Peers joining and leaving do not grow the node for good (the
+//! RustDDS patch, vendor/rustdds/PATCH.md).
 //!
 //! A killed reliable subscriber stays matched until its lease expires
 //! (Cyclone DDS: 10 s). With the RustDDS patch (vendor/rustdds/PATCH.md) a
@@ -66,23 +66,14 @@ fn killed_and_departed_peers_leave_no_lasting_memory_behind() {
     std::thread::sleep(EXPIRY);
     let after = rss_kb(&node);
     println!("node RSS: after warm-up {warm} kB; during {ROUNDS} rounds of 8 + 8 killed peers {during:?} kB; leases expired {after} kB");
-    // Measured: before the RustDDS patch (4 rounds) 17.3 → up to 25.6 MB during
-    // the rounds (+48 %), 17.1 MB after; with changes 1–3 (6 rounds, two
-    // runs) +37 % and +50 % during, when each killed peer made every writer
-    // keep up to 8,192 unacknowledged samples for its lease. With changes
-    // 1–5 (five runs on the loaded 2-core machine, load average 8–10):
-    // 18.2 → 18.8 MB (+3.3 %), 18.4 → 19.0 MB (+3.0 %), 18.5 → 19.2 MB
-    // (+3.9 %), 18.2 → 18.8 MB (+3.2 %), 18.5 → 19.1 MB (+3.0 %) during the
-    // rounds; after expiry −1.0 %, −0.2 %, −1.5 %, −0.3 %, −1.0 %. With
-    // changes 1–7 (two runs, load average 2–6): 18.6 → 19.1 MB (+2.5 %),
-    // 18.6 → 19.2 MB (+2.9 %); after expiry −0.9 %, −1.1 %. With changes 1–8:
-    // 18.6 → 19.1 MB (+2.8 %), 18.4 → 19.0 MB (+3.0 %); after expiry −1.1 %,
-    // −1.0 %. (Six rounds are too few to tell changes 6 and 7 apart: what they
-    // remove grows by ≈ 60 kB per round of 20 peers; benches/peer_churn.py
-    // measures them over 100 rounds.) The bounds — during the rounds the
-    // issue's goal, +10 % — leave room for the heap trim's 5-s period and a
-    // faster machine (more killed peers' leases overlapping) and still catch
-    // the swings before changes 4 and 5.
+    // Measured with the RustDDS patch's memory changes 1–8 (two runs): 18.6 → 19.1 MB
+    // (+2.8 %), 18.4 → 19.0 MB (+3.0 %) during the rounds; after expiry
+    // −1.1 %, −1.0 %. (Six rounds are too few to show the discovery readers'
+    // share, ≈ 60 kB per round of 20 peers; benches/peer_churn.py measures it
+    // over 100 rounds.) The bounds — during the rounds the goal, +10 % —
+    // leave room for the heap trim's 5-s period and a faster machine (more
+    // killed peers' leases overlapping) and still catch the swings that
+    // changes 4 and 5 remove.
     let largest = *during.iter().max().unwrap();
     assert!(largest * 10 <= warm * 11, "during the rounds: {warm} → {largest} kB (more than +10 %): {during:?}");
     assert!(after * 20 <= warm * 21, "leases expired: {warm} → {after} kB (more than +5 %)");

@@ -1,7 +1,6 @@
 //! package.xml and CMakeLists.txt name every interface of the package: each
 //! `msg/*.msg` and `srv/*.srv` is in package.xml's description and in
-//! CMakeLists.txt's `rosidl_generate_interfaces` (issue 16: package.xml
-//! described 4 of its 7), and every standard package whose types the node
+//! CMakeLists.txt's `rosidl_generate_interfaces`, and every standard package whose types the node
 //! speaks is an exec_depend.
 
 use std::path::PathBuf;

@@ -327,7 +327,7 @@ fn face_friction_keys_are_read_and_a_speed_law_without_faces_is_refused_naming_t
     let p = c.pads.unwrap();
     assert_eq!((p.contact_surface, p.static_friction_coefficient, p.stribeck_speed), (ContactSurface::Faces, Some(0.5), 2.0));
     let c = Config::from_yaml_str(&file(""), "annular_plate").unwrap();
-    // `faces` is the default (issue 15); `mid_plane` reproduces the paper.
+    // `faces` is the default; `mid_plane` reproduces the paper.
     assert_eq!((c.pads.as_ref().unwrap().contact_surface, c.pads.as_ref().unwrap().static_friction_coefficient), (ContactSurface::Faces, None));
     let e = Config::from_yaml_str(&file("      contact_surface: mid_plane\n      static_friction_coefficient: 0.5\n"), "annular_plate").unwrap_err().to_string();
     assert!(e.contains("pads.static_friction_coefficient") && e.contains("pads.contact_surface"), "{e}");

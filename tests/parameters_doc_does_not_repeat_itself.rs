@@ -1,6 +1,5 @@
 //! docs/parameters.md (generated from src/config/table.rs) says each thing
-//! once: no paragraph and no sentence of prose appears twice (issue 16: it
-//! repeated paragraphs). Table rows are per key and may share wording.
+//! once: no paragraph and no sentence of prose appears twice. Table rows are per key and may share wording.
 
 use std::collections::BTreeMap;
 

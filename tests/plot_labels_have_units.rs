@@ -1,6 +1,6 @@
 //! Every column a `simulate` CSV can hold has a unit, and `plot csv`'s axis
-//! labels carry them for the scene columns too (pads, tool, drive effort;
-//! issue 16: those were labelled with bare names).
+//! labels carry them for the scene columns too (pads, tool, drive
+//! effort).
 
 mod support;
 

@@ -1,6 +1,6 @@
 //! `plate.radial_splines: auto` (the default) against the exact Bessel-function
 //! solution of the annular Kirchhoff plate (`tests/support/exact_plate.rs`,
-//! written independently of the library's numerics), issue 11:
+//! written independently of the library's numerics):
 //!
 //! * all 9 pairs of edge conditions × r_i/r_a ∈ {0.1, 0.5, 0.9}, with the
 //!   mode set k ≤ 60 × l ≤ 10 requested: every ⟨k, l⟩ of the sampled k within

@@ -1,5 +1,5 @@
-//! The release binary carries no DWARF debug info (issue 16: it was 87–92 MB
-//! with `debug = 1`; `cargo build --profile profiling` keeps line tables for
+//! The release binary carries no DWARF debug info (with `debug = 1` it is
+//! 87–92 MB; `cargo build --profile profiling` keeps line tables for
 //! perf). Read from the ELF section headers of the binary the tests run.
 
 use std::path::Path;

@@ -1,4 +1,4 @@
-//! Residual flexibility on a spinning disc (issue 11, item 4): a space-fixed
+//! Residual flexibility on a spinning disc: a space-fixed
 //! transverse force on the rim of the lathe disc turning at 0.5 and 0.9 times
 //! its lowest critical speed. The steady deflection under the force in the
 //! ALE description solves, per mode, (K_i − k²Ω² M_i) q_i = f_i (constant

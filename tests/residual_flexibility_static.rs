@@ -1,4 +1,4 @@
-//! Residual flexibility (issue 11): the paper's 30 modes plus the static
+//! Residual flexibility: the paper's 30 modes plus the static
 //! correction of the truncated modes reproduce the exact static deflection of
 //! the Kirchhoff plate under a point force to 0.1 %, under the load and away
 //! from it, where the 30 modes alone are several per cent off.

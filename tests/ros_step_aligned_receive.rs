@@ -1,4 +1,4 @@
-//! Per-topic wrenches read at step boundaries (issue 10; RustDDS patch §16,
+//! Per-topic wrenches read at step boundaries (RustDDS patch §16,
 //! `src/ros/step_aligned_receive.rs`, `ros.input_reception`).
 //!
 //! A Cyclone DDS peer publishes a WrenchStamped on each of twelve ALE wrench

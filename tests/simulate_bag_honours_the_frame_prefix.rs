@@ -1,6 +1,5 @@
 //! `simulate --bag` records with the scene's `ros.frame_prefix` and
-//! `ros.world_frame`, as `run` publishes them (issue 16: it ignored the
-//! prefix). The bag's chunks are uncompressed MCAP, so the CDR strings of
+//! `ros.world_frame`, as `run` publishes them. The bag's chunks are uncompressed MCAP, so the CDR strings of
 //! the frame and joint names are in the file as they are on the wire:
 //! every node frame and the joint carry the prefix, the tilt transform
 //! hangs from the scene's world frame.

@@ -1,5 +1,5 @@
-//! Issue 12: "A simulation spun up through a stiffened critical speed under a
-//! space-fixed load resonates where the Campbell diagram says, not at ω/k."
+//! A simulation spun up through a stiffened critical speed under a
+//! space-fixed load resonates where the Campbell diagram says, not at ω/k.
 //!
 //! The swash plate's annulus (r 0.1–0.39 m, supported inside, free outside;
 //! ⟨2, 0⟩ at ω₀/2 = 301.7 rad/s, stiffened critical speed 458 rad/s) with

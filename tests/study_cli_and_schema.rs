@@ -29,7 +29,8 @@ fn json(args: &[&str]) -> Value {
 
 /// The document less everything measured in wall time (and what is chosen by it).
 fn without_timings(v: &Value) -> Value {
-    const TIMED: [&str; 6] = ["build_time_s", "step_time_s", "wall_s_per_simulated_s", "wall_time_s", "pareto", "recommendations"];
+    const TIMED: [&str; 8] =
+        ["build_time_s", "step_time_s", "step_time_with_residual_s", "wall_s_per_simulated_s", "wall_time_s", "pareto", "pareto_with_residual", "recommendations"];
     match v {
         Value::Object(m) => Value::Object(m.iter().filter(|(k, _)| !TIMED.contains(&k.as_str())).map(|(k, v)| (k.clone(), without_timings(v))).collect()),
         Value::Array(a) => Value::Array(a.iter().map(without_timings).collect()),
@@ -111,9 +112,9 @@ fn json_schema_is_stable() {
             "timing_budget"
         ])
     );
-    let recommendation = set(&["target", "setting", "error", "claimed_error", "cost"]);
+    let recommendation = set(&["target", "setting", "error", "claimed_error", "cost", "is_default"]);
     let axis = |extra: &[&'static str]| {
-        let mut s = set(&["what", "error_measure", "cost_measure", "reference", "rows", "recommendations"]);
+        let mut s = set(&["what", "error_measure", "cost_measure", "reference", "rows", "recommendations", "default_setting"]);
         s.extend(extra.iter().copied());
         s
     };
@@ -125,15 +126,34 @@ fn json_schema_is_stable() {
     assert_eq!(keys(&a["rows"][0]["worst_mode"]), set(&["k", "l"]));
     assert_eq!(keys(&a["recommendations"][0]), recommendation);
     assert_eq!(keys(&a["recommendations"][0]["setting"]), set(&["radial_splines"]));
+    // `auto` (the default) competes with the fixed counts.
+    assert_eq!(a["default_setting"]["radial_splines"], "auto");
+    assert!(a["rows"].as_array().unwrap().iter().any(|r| r["radial_splines"] == "auto"));
 
     let b = &v["mode_count"];
     assert_eq!(keys(b), axis(&["load_case", "damping", "notes"]));
     assert_eq!(keys(&b["load_case"]), set(&["point", "ale_node", "loads", "speed_rad_s", "note"]));
-    assert_eq!(keys(&b["reference"]), set(&["k_max", "l_max", "modes", "radial_splines", "response_m", "response_with_residual_m", "nested", "uncertainty", "uncertainty_method"]));
-    assert_eq!(keys(&b["rows"][0]), set(&["k_max", "l_max", "modes", "response_m", "relative_error", "response_with_residual_m", "relative_error_with_residual", "step_time_s", "pareto"]));
+    assert_eq!(keys(&b["reference"]), set(&["k_max", "l_max", "modes", "radial_splines", "response_m", "response_with_residual_m", "nested", "uncertainty", "uncertainty_method", "uncertainty_with_residual"]));
+    assert_eq!(
+        keys(&b["rows"][0]),
+        set(&[
+            "k_max",
+            "l_max",
+            "modes",
+            "response_m",
+            "relative_error",
+            "response_with_residual_m",
+            "relative_error_with_residual",
+            "step_time_s",
+            "step_time_with_residual_s",
+            "pareto",
+            "pareto_with_residual"
+        ])
+    );
+    assert_eq!(keys(&b["default_setting"]), set(&["k_max", "l_max", "residual_flexibility"]));
     assert_eq!(keys(&b["recommendations"][0]), recommendation);
     let picked = b["recommendations"].as_array().unwrap().iter().find(|r| !r["setting"].is_null()).expect("a mode set is recommended");
-    assert_eq!(keys(&picked["setting"]), set(&["k_max", "l_max", "modes", "radial_splines"]));
+    assert_eq!(keys(&picked["setting"]), set(&["k_max", "l_max", "modes", "radial_splines", "residual_flexibility"]));
 
     let c = &v["integrator"];
     assert_eq!(keys(c), axis(&["duration_s", "sample_rate_hz", "modes", "notes"]));
@@ -142,6 +162,7 @@ fn json_schema_is_stable() {
     assert_eq!(c["reference"]["checks"].as_array().unwrap().len(), 2);
     assert_eq!(keys(&c["rows"][0]), set(&["integrator", "rate_hz", "status", "detail", "relative_error", "wall_s_per_simulated_s", "pareto"]));
     assert_eq!(keys(&c["recommendations"][0]["setting"]), set(&["integrator", "rate_hz"]));
+    assert_eq!(c["default_setting"]["integrator"], "exponential");
     let integrators: BTreeSet<&str> = c["rows"].as_array().unwrap().iter().map(|r| r["integrator"].as_str().unwrap()).collect();
     assert_eq!(integrators, set(&["exponential", "implicit_midpoint", "rk4"]));
     assert!(c["rows"].as_array().unwrap().iter().all(|r| r["status"] == "ok"));
@@ -150,7 +171,7 @@ fn json_schema_is_stable() {
     let rows = |x: &Value| x["rows"].as_array().unwrap().len();
     let plan = &v["plan"];
     let len = |x: &Value| x.as_array().unwrap().len();
-    assert_eq!(rows(a), len(&plan["splines"]));
+    assert_eq!(rows(a), len(&plan["splines"]) + 1, "the plan's counts and auto");
     assert_eq!(rows(b), len(&plan["k_max"]) * len(&plan["l_max"]));
     assert_eq!(rows(c), len(&plan["integrators"]) * len(&plan["rates_hz"]));
     assert_eq!(len(&a["recommendations"]), len(&plan["targets"]));
@@ -263,4 +284,30 @@ fn a_scene_with_massive_pads_is_studied_with_an_rk4_reference() {
             assert!(row["detail"].as_str().unwrap().contains("pads.mass"), "{row}");
         }
     }
+}
+
+/// The lathe scene file: for the load-point targets 1e-3 and 1e-4 the study
+/// recommends a mode set with the residual flexibility (the scene's default),
+/// not the ~1,500 modes the modes alone would need; the same advice is in the
+/// table. (Its error against the exact plate: tests/study_recommendations_hold.rs.)
+#[test]
+fn lathe_file_is_advised_the_residual_flexibility_for_load_point_targets() {
+    let file = concat!(env!("CARGO_MANIFEST_DIR"), "/config/lathe.yaml");
+    let (ok, out, err) = study(&[file, "--json", "--quiet"]);
+    assert!(ok, "{err}");
+    let v: Value = serde_json::from_str(&out).unwrap();
+    let b = &v["mode_count"];
+    assert_eq!(b["default_setting"]["residual_flexibility"], true);
+    for target in [1e-3, 1e-4] {
+        let rec = b["recommendations"].as_array().unwrap().iter().find(|r| r["target"].as_f64() == Some(target)).expect("the target is in the plan");
+        println!("target {target:e}: {rec}");
+        assert_eq!(rec["setting"]["residual_flexibility"], true, "target {target:e}: {rec}");
+        assert!(rec["claimed_error"].as_f64().unwrap() <= target);
+    }
+    // The residual points are on the front.
+    assert!(b["rows"].as_array().unwrap().iter().any(|r| r["pareto_with_residual"] == true));
+    let (ok, table, err) = study(&[file, "--quiet"]);
+    assert!(ok, "{err}");
+    let line = table.lines().find(|l| l.trim_start().starts_with("1e-3") || l.trim_start().starts_with("1e-03")).unwrap_or_else(|| panic!("{table}"));
+    assert!(line.contains("+ residual"), "{line}");
 }

@@ -26,10 +26,10 @@ $B plot csv "$T/swash.csv" --columns lagrange1_uz,lagrange2_uz --panel q3,q1 \
   --ylabel "deflection at the links (m)" --ylabel "q3 = ⟨0,0⟩, q1 = ⟨1,0⟩ cos (m)" \
   --title "config/swash_plate.yaml (paper Fig. 15): deflection at the two linkage points; modal amplitudes" \
   --out docs/img/scene_swash_plate.png
-$B simulate config/brake_squeal.yaml --duration 5 --csv "$T/squeal.csv" --quiet
+$B simulate config/brake_squeal_paper.yaml --duration 5 --csv "$T/squeal.csv" --quiet
 $B plot csv "$T/squeal.csv" --columns q1,q2 --panel q3,q4 \
   --ylabel "⟨1,0⟩ pair, Lagrangian (m)" --ylabel "⟨2,0⟩ pair, Lagrangian (m)" \
-  --title "config/brake_squeal.yaml (paper Fig. 17): modal amplitudes at μ = 0.6, above the flutter threshold 0.300 (sampled at 1 kHz)" \
+  --title "config/brake_squeal_paper.yaml (paper Fig. 17): modal amplitudes at μ = 0.6, above the flutter threshold 0.300 (sampled at 1 kHz)" \
   --out docs/img/scene_brake_squeal.png
 
 # The plate as RViz/Foxglove get it (docs/ros.md): a marker drawn from a bag,

@@ -122,9 +122,14 @@ fn fmt_rate(hz: f64) -> String {
 
 fn fmt_rec<S>(r: &Recommendation<S>, setting: impl Fn(&S) -> String, cost: impl Fn(f64) -> String) -> String {
     match (&r.setting, r.claimed_error, r.cost) {
-        (Some(s), Some(e), Some(c)) => format!("{} (≤ {e:.1e}; {})", setting(s), cost(c)),
+        (Some(s), Some(e), Some(c)) => format!("{}{} (≤ {e:.1e}; {})", setting(s), if r.is_default { " [default]" } else { "" }, cost(c)),
         _ => "not reached in the grid".into(),
     }
+}
+
+/// A mode set as the recommendations name it.
+pub fn fmt_mode_set(k_max: u32, l_max: u32, residual_flexibility: bool) -> String {
+    format!("k ≤ {k_max}, l ≤ {l_max}{}", if residual_flexibility { " + residual" } else { ", modes only" })
 }
 
 /// The human-readable report.
@@ -163,7 +168,7 @@ pub fn table(r: &StudyReport) -> String {
         let _ = writeln!(
             o,
             "   {:>14} {:>14.3e} {:>11} {:>14} {}",
-            row.radial_splines,
+            row.radial_splines.to_string(),
             row.max_relative_error,
             format!("⟨{},{}⟩", row.worst_mode.k, row.worst_mode.l),
             fmt_time(row.build_time_s),
@@ -208,9 +213,10 @@ pub fn table(r: &StudyReport) -> String {
         ),
         (
             "relative error with residual flexibility (docs/residual_flexibility.md; reference plus its own residual)",
-            &|x: &study::response::ResponseRow| format!("{:.2e} ", x.relative_error_with_residual),
+            &|x: &study::response::ResponseRow| format!("{:.2e}{}", x.relative_error_with_residual, if x.pareto_with_residual { "*" } else { " " }),
         ),
-        ("wall time per step", &|x: &study::response::ResponseRow| fmt_time(x.step_time_s)),
+        ("wall time per step, modes only", &|x: &study::response::ResponseRow| fmt_time(x.step_time_s)),
+        ("wall time per step with residual flexibility", &|x: &study::response::ResponseRow| fmt_time(x.step_time_with_residual_s)),
         ("modes", &|x: &study::response::ResponseRow| x.modes.to_string()),
     ] {
         let _ = writeln!(o, "   {title}:");
@@ -272,15 +278,38 @@ pub fn table(r: &StudyReport) -> String {
     }
 
     // Recommendations.
-    let _ =
-        writeln!(o, "\nRecommended: the cheapest measured setting whose error plus the reference's uncertainty is within the target (≤ claimed error; cost)");
-    let _ = writeln!(o, "   {:>7}  {:<34} {:<54} integrator and rate", "target", "plate.radial_splines", "mode set");
+    let _ = writeln!(
+        o,
+        "\nRecommended: the cheapest measured setting whose error plus the reference's uncertainty is within the target (≤ claimed error; cost); [default] = the scene's own setting"
+    );
+    let default_set = match &r.mode_count.default_setting {
+        Some(d) => fmt_mode_set(d.k_max, d.l_max, d.residual_flexibility),
+        None => "not a rectangular set".into(),
+    };
+    let _ = writeln!(
+        o,
+        "   the scene's own settings: plate.radial_splines {}; mode set {}; {} {}",
+        r.radial_splines.default_setting.radial_splines,
+        default_set,
+        r.integrator.default_setting.integrator,
+        fmt_rate(r.integrator.default_setting.rate_hz)
+    );
+    let _ = writeln!(
+        o,
+        "   mode set: each set competes with and without plate.residual_flexibility (residual reference uncertainty {:.1e}, modal {:.1e}); it decides the deflection under the load, not which vibrations are resolved",
+        r.mode_count.reference.uncertainty_with_residual,
+        r.mode_count.reference.uncertainty
+    );
+    let _ = writeln!(o, "   {:>7}  {:<44} {:<64} integrator and rate", "target", "plate.radial_splines", "mode set");
     for i in 0..r.plan.targets.len() {
         let a = fmt_rec(&r.radial_splines.recommendations[i], |s| s.radial_splines.to_string(), |c| format!("build {}", fmt_time(c)));
-        let b =
-            fmt_rec(&r.mode_count.recommendations[i], |s| format!("k ≤ {}, l ≤ {} ({} modes)", s.k_max, s.l_max, s.modes), |c| format!("{}/step", fmt_time(c)));
+        let b = fmt_rec(
+            &r.mode_count.recommendations[i],
+            |s| format!("{} ({} modes)", fmt_mode_set(s.k_max, s.l_max, s.residual_flexibility), s.modes),
+            |c| format!("{}/step", fmt_time(c)),
+        );
         let c = fmt_rec(&r.integrator.recommendations[i], |s| format!("{} {}", s.integrator, fmt_rate(s.rate_hz)), |c| format!("{}/sim s", fmt_time(c)));
-        let _ = writeln!(o, "   {:>7.0e}  {:<34} {:<54} {}", r.plan.targets[i], a, b, c);
+        let _ = writeln!(o, "   {:>7.0e}  {:<44} {:<64} {}", r.plan.targets[i], a, b, c);
     }
     let _ = writeln!(o, "\n(study wall time {:.1} s)", r.wall_time_s);
     o

@@ -200,7 +200,7 @@ impl PlateConfig {
     }
 }
 
-/// The spline count of `auto` before 2026-11-25, and the count the
+/// The count the
 /// `auto` search starts from for the first k (`plate.radial_splines`).
 pub const DEFAULT_RADIAL_SPLINES: usize = 32;
 

@@ -1,5 +1,5 @@
-//! Contacts in series with the residual flexibility (issue 11,
-//! docs/residual_flexibility.md, "Contacts").
+//! Contacts in series with the residual flexibility
+//! (docs/residual_flexibility.md, "Contacts").
 //!
 //! A load model whose force depends on the deflection at its node frames —
 //! the brake pads' contact springs, the lathe tool's chip — sees there the

@@ -1,4 +1,4 @@
-//! The squeal stability map (issue 12): the linearised system of
+//! The squeal stability map: the linearised system of
 //! [`super::stability`] over friction coefficient × speed — per grid point
 //! the largest growth rate, the unstable mode's ⟨k, l⟩ and frequency — and
 //! the threshold μ_c(Ω) per speed. Grid points run in parallel over the

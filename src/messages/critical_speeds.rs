@@ -1,5 +1,5 @@
-//! `~/critical_speeds` and the near-critical /diagnostics status (issue 12,
-//! docs/ros.md): the critical speeds of the retained modes as `campbell`
+//! `~/critical_speeds` and the near-critical /diagnostics status
+//! (docs/ros.md): the critical speeds of the retained modes as `campbell`
 //! computes them (honouring `plate.centrifugal_stiffening`), as a message
 //! published once at start, and the `<node>: critical speeds` status — WARN
 //! while the joint speed is within [`NEAR_FRACTION`] of one of them.

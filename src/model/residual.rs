@@ -1,5 +1,5 @@
 //! Residual flexibility of the truncated modes (the mode-acceleration
-//! method's static correction; issue 11, docs/residual_flexibility.md).
+//! method's static correction; docs/residual_flexibility.md).
 //!
 //! A transverse unit force at (r_b, φ_b) deflects the plate at (r_a, φ_a) by
 //! the static Green's function

@@ -1,4 +1,4 @@
-//! `~/critical_speeds` (issue 12, docs/ros.md): computed once when the node
+//! `~/critical_speeds` (docs/ros.md): computed once when the node
 //! starts, as `annular_plate campbell` does (honouring
 //! `plate.centrifugal_stiffening`), and published latched — reliable,
 //! transient local, keep last 1 — so a late joiner still receives it. The

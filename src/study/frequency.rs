@@ -1,7 +1,8 @@
 //! Axis 1: natural-frequency error against `plate.radial_splines`, with the
 //! model build time.
 //!
-//! For each spline count the plate's requested ⟨k, l⟩ are computed and compared
+//! For each spline count, and for `auto` (per k the count whose estimated
+//! error reaches `plate.frequency_tolerance`, the default), the plate's requested ⟨k, l⟩ are computed and compared
 //! with a reference model of the same plate at `spline_reference_factor` × the
 //! largest count studied. The reference's own error is bounded by its
 //! difference from a model at half its spline count: the Ritz frequencies
@@ -10,7 +11,7 @@
 //! does beyond ~128 splines (docs/study.md), hence the full plan's factor 2.
 
 use super::timing::min_time;
-use super::{mark_pareto, recommend, Recommendation, StudyError, StudyPlan};
+use super::{mark_pareto, recommend, Candidate, Recommendation, StudyError, StudyPlan};
 use crate::config::{PlateConfig, RadialSplines};
 use crate::model::PlateModel;
 use serde::Serialize;
@@ -26,7 +27,8 @@ pub struct ModeId {
 /// One spline count.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct FrequencyRow {
-    pub radial_splines: usize,
+    /// A fixed count, or `auto` (per k the count reaching `plate.frequency_tolerance`).
+    pub radial_splines: RadialSplines,
     /// max over the requested ⟨k, l⟩ of |f − f_ref| / f_ref.
     pub max_relative_error: f64,
     /// Where that maximum occurs.
@@ -51,7 +53,7 @@ pub struct FrequencyReference {
 
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct FrequencySetting {
-    pub radial_splines: usize,
+    pub radial_splines: RadialSplines,
 }
 
 #[derive(Debug, Clone, PartialEq, Serialize)]
@@ -62,6 +64,8 @@ pub struct FrequencyAxis {
     pub reference: FrequencyReference,
     pub rows: Vec<FrequencyRow>,
     pub recommendations: Vec<Recommendation<FrequencySetting>>,
+    /// The scene's own `plate.radial_splines`.
+    pub default_setting: FrequencySetting,
 }
 
 /// Frequencies (rad/s) per ⟨k, l⟩ of a model.
@@ -111,15 +115,17 @@ pub fn run(plate: &PlateConfig, plan: &StudyPlan, tick: &mut dyn FnMut(&str)) ->
     let (uncertainty, _) = max_error(&omegas(&check), &w_ref);
 
     let mut rows = Vec::new();
-    for &n in &grid {
-        tick(&format!("{n} radial splines"));
-        let p = with_splines(plate, n);
+    let settings = grid.iter().map(|&n| RadialSplines::Fixed(n)).chain(std::iter::once(RadialSplines::Auto));
+    for setting in settings {
+        tick(&format!("{setting} radial splines"));
+        let mut p = plate.clone();
+        p.radial_splines = setting;
         let model = PlateModel::new(&p)?;
         let (e, worst) = max_error(&omegas(&model), &w_ref);
         let build_time_s = min_time(plan.timing_budget, 3, 10_000, || {
             std::hint::black_box(PlateModel::new(std::hint::black_box(&p)).ok());
         });
-        rows.push(FrequencyRow { radial_splines: n, max_relative_error: e, worst_mode: worst, build_time_s, pareto: false });
+        rows.push(FrequencyRow { radial_splines: setting, max_relative_error: e, worst_mode: worst, build_time_s, pareto: false });
     }
     let points: Vec<(f64, f64)> = rows.iter().map(|r| (r.max_relative_error, r.build_time_s)).collect();
     for (r, p) in rows.iter_mut().zip(mark_pareto(&points)) {
@@ -127,8 +133,13 @@ pub fn run(plate: &PlateConfig, plan: &StudyPlan, tick: &mut dyn FnMut(&str)) ->
     }
     let recommendations = recommend(
         &plan.targets,
-        uncertainty,
-        rows.iter().map(|r| (r.max_relative_error, r.build_time_s, FrequencySetting { radial_splines: r.radial_splines })),
+        rows.iter().map(|r| Candidate {
+            error: r.max_relative_error,
+            uncertainty,
+            cost: r.build_time_s,
+            setting: FrequencySetting { radial_splines: r.radial_splines },
+            is_default: r.radial_splines == plate.radial_splines,
+        }),
     );
     Ok(FrequencyAxis {
         what: "natural-frequency error of the requested ⟨k, l⟩ against plate.radial_splines",
@@ -142,5 +153,6 @@ pub fn run(plate: &PlateConfig, plan: &StudyPlan, tick: &mut dyn FnMut(&str)) ->
         },
         rows,
         recommendations,
+        default_setting: FrequencySetting { radial_splines: plate.radial_splines },
     })
 }

@@ -13,7 +13,11 @@
 //! Every reference carries an uncertainty (its own estimated error), and a
 //! setting is recommended for a target error only if its measured error plus
 //! that uncertainty is within the target; among those the cheapest measured
-//! one wins. The errors are deterministic (bit-identical run to run); only the
+//! one wins. Every lever an axis measures competes: `auto` and the fixed
+//! spline counts; each mode set with and without the residual flexibility;
+//! each integrator at each rate. A recommendation says whether it is the
+//! scene's own setting (`is_default`), and each axis names that setting
+//! (`default_setting`). The errors are deterministic (bit-identical run to run); only the
 //! timings vary. Pure library code: no ROS, no output formatting.
 
 pub mod frequency;
@@ -128,7 +132,7 @@ impl StudyPlan {
 
     /// Work units [`run`] reports through its progress callback for `config`.
     pub fn units(&self, config: &Config) -> usize {
-        let a = 1 + frequency::spline_grid(&config.plate, self).len();
+        let a = 2 + frequency::spline_grid(&config.plate, self).len();
         let (k_ref, l_ref) = self.response_reference;
         let b = 1 + self.k_max.iter().filter(|&&k| k <= k_ref).count() * self.l_max.iter().filter(|&&l| l <= l_ref).count();
         let c = 3 + self.integrators.len() * self.rates_hz.len();
@@ -147,22 +151,43 @@ pub struct Recommendation<S> {
     pub claimed_error: Option<f64>,
     /// The setting's measured cost (the axis' cost measure).
     pub cost: Option<f64>,
+    /// The recommended setting is the scene's own (what runs without changing the file).
+    pub is_default: bool,
 }
 
-/// For each target the cheapest (error, cost, setting) with error + uncertainty ≤ target;
-/// ties in cost go to the smaller error.
-pub fn recommend<S: Clone>(targets: &[f64], uncertainty: f64, candidates: impl Iterator<Item = (f64, f64, S)>) -> Vec<Recommendation<S>> {
-    let candidates: Vec<(f64, f64, S)> = candidates.collect();
+/// One measured setting offered to [`recommend`].
+#[derive(Debug, Clone)]
+pub struct Candidate<S> {
+    pub error: f64,
+    /// The uncertainty of the reference this error was measured against.
+    pub uncertainty: f64,
+    pub cost: f64,
+    pub setting: S,
+    /// The scene's own setting.
+    pub is_default: bool,
+}
+
+/// For each target the cheapest candidate with error + uncertainty ≤ target;
+/// ties in cost go to the smaller claimed error.
+pub fn recommend<S: Clone>(targets: &[f64], candidates: impl Iterator<Item = Candidate<S>>) -> Vec<Recommendation<S>> {
+    let candidates: Vec<Candidate<S>> = candidates.collect();
     targets
         .iter()
         .map(|&target| {
             let best = candidates
                 .iter()
-                .filter(|(e, c, _)| e.is_finite() && c.is_finite() && e + uncertainty <= target)
-                .min_by(|a, b| a.1.total_cmp(&b.1).then(a.0.total_cmp(&b.0)));
+                .filter(|c| c.error.is_finite() && c.cost.is_finite() && c.error + c.uncertainty <= target)
+                .min_by(|a, b| a.cost.total_cmp(&b.cost).then((a.error + a.uncertainty).total_cmp(&(b.error + b.uncertainty))));
             match best {
-                Some((e, c, s)) => Recommendation { target, setting: Some(s.clone()), error: Some(*e), claimed_error: Some(e + uncertainty), cost: Some(*c) },
-                None => Recommendation { target, setting: None, error: None, claimed_error: None, cost: None },
+                Some(c) => Recommendation {
+                    target,
+                    setting: Some(c.setting.clone()),
+                    error: Some(c.error),
+                    claimed_error: Some(c.error + c.uncertainty),
+                    cost: Some(c.cost),
+                    is_default: c.is_default,
+                },
+                None => Recommendation { target, setting: None, error: None, claimed_error: None, cost: None, is_default: false },
             }
         })
         .collect()

@@ -23,14 +23,18 @@
 //! otherwise the larger difference is taken. The uncertainty is added to every
 //! error before a setting is recommended.
 //!
-//! **With residual flexibility** (issue 11, docs/residual_flexibility.md):
-//! each set's response plus the static deflection of the modes it leaves out
-//! under the loads' transverse forces (moments stay modal), against the
-//! reference plus its own residual; the recommendations use the plain modal
-//! errors.
+//! **With residual flexibility** (`plate.residual_flexibility`,
+//! docs/residual_flexibility.md): each set's response plus the static
+//! deflection of the modes it leaves out under the loads' transverse forces
+//! (moments stay modal), against the reference plus its own residual. Its
+//! uncertainty is the larger of the modal reference's (the correction replaces
+//! the tail that uncertainty bounds) and the safety factor times the change of
+//! the corrected response from the nested set (K/2, L/2) to (K, L) (what the
+//! spin does to the left-out modes). Both variants of every set are timed and
+//! compete for every target: each set once with the correction off, once on.
 
 use super::timing::min_time_per_unit;
-use super::{mark_pareto, recommend, Recommendation, StudyError, StudyPlan};
+use super::{mark_pareto, recommend, Candidate, Recommendation, StudyError, StudyPlan};
 use crate::config::{Config, IntegratorKind, NodePosition, RadialSplines, WrenchConfig};
 use crate::dynamics::{Simulation, SimulationError};
 use crate::model::{AngularShape, PlateModel};
@@ -163,9 +167,15 @@ pub struct ResponseRow {
     /// Its error against the reference plus the reference's own residual.
     pub relative_error_with_residual: f64,
     /// Wall time of one `Simulation::step` with this mode set (the scene's
-    /// integrator, rate and loads), s: the fastest of repeated batches.
+    /// integrator, rate and loads; `plate.residual_flexibility: false`), s:
+    /// the fastest of repeated batches.
     pub step_time_s: f64,
+    /// The same with `plate.residual_flexibility: true`, s.
+    pub step_time_with_residual_s: f64,
+    /// On the axis' Pareto front (both variants of every set compete), without the correction.
     pub pareto: bool,
+    /// On the axis' Pareto front, with the correction.
+    pub pareto_with_residual: bool,
 }
 
 #[derive(Debug, Clone, PartialEq, Serialize)]
@@ -182,6 +192,8 @@ pub struct ResponseReference {
     /// Estimated relative truncation error of the reference (see module docs).
     pub uncertainty: f64,
     pub uncertainty_method: String,
+    /// Estimated relative error of the reference plus its residual (see module docs).
+    pub uncertainty_with_residual: f64,
 }
 
 #[derive(Debug, Clone, PartialEq, Serialize)]
@@ -191,6 +203,16 @@ pub struct ModeSetSetting {
     pub modes: usize,
     /// Radial splines the errors were measured with (enough for every ⟨k, l⟩ of the grid).
     pub radial_splines: usize,
+    /// `plate.residual_flexibility`: the truncated modes' static deflection added.
+    pub residual_flexibility: bool,
+}
+
+/// The scene's own mode set, if it is rectangular (k = 0..k_max, l = 0..l_max).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct DefaultModeSet {
+    pub k_max: u32,
+    pub l_max: u32,
+    pub residual_flexibility: bool,
 }
 
 #[derive(Debug, Clone, PartialEq, Serialize)]
@@ -203,7 +225,18 @@ pub struct ResponseAxis {
     pub reference: ResponseReference,
     pub rows: Vec<ResponseRow>,
     pub recommendations: Vec<Recommendation<ModeSetSetting>>,
+    /// The scene's own mode set and `plate.residual_flexibility` (None: not a rectangular set).
+    pub default_setting: Option<DefaultModeSet>,
     pub notes: Vec<String>,
+}
+
+/// The scene's own rectangular mode set, if it is one.
+pub fn default_mode_set(config: &Config) -> Option<DefaultModeSet> {
+    let p = &config.plate;
+    let k_max = *p.nodal_diameters.iter().max()?;
+    let l_max = *p.nodal_circles.iter().max()?;
+    let rectangular = p.nodal_diameters.iter().copied().eq(0..=k_max) && p.nodal_circles.iter().copied().eq(0..=l_max);
+    rectangular.then_some(DefaultModeSet { k_max, l_max, residual_flexibility: p.residual_flexibility })
 }
 
 /// Number of elastic modes of the set on this plate (rigid-body modes of a free–free plate excluded).
@@ -264,53 +297,87 @@ pub fn run(config: &Config, plan: &StudyPlan, tick: &mut dyn FnMut(&str)) -> Res
         (d1.abs().max(d2.abs()) / reference.abs(), "nested sets not in a geometric regime: the larger difference".to_string())
     };
 
+    // The corrected reference: its change from the nested set (K/2, L/2) is what
+    // the spin does to the modes between them; the modal uncertainty bounds the
+    // tail the correction replaces.
+    let (k_half, l_half) = nested[1].0;
+    let half_with_residual = nested[1].1 + residual(k_half, l_half);
+    let uncertainty_with_residual =
+        uncertainty.max(SAFETY_FACTOR * (reference_with_residual - half_with_residual).abs() / reference_with_residual.abs());
+
     let mut rows = Vec::new();
     let mut rk4_fallback_noted = false;
     for &l_max in plan.l_max.iter().filter(|&&l| l <= l_ref) {
         for &k_max in plan.k_max.iter().filter(|&&k| k <= k_ref) {
             tick(&format!("modes k ≤ {k_max}, l ≤ {l_max}"));
             let r = partial_sum(&contrib, k_max, l_max);
-            let mut set = scene_with_set(&scene, k_max, l_max, damping);
-            let mut sim = match Simulation::new(set.clone()) {
-                Err(SimulationError::TooManySubsteps { .. }) => {
-                    set.simulation.integrator = IntegratorKind::Exponential;
-                    if !rk4_fallback_noted {
-                        notes.push("rk4 refuses the larger mode sets at the scene's rate: their cost per step is the exponential integrator's".into());
-                        rk4_fallback_noted = true;
+            let mut times = [0.0; 2];
+            let mut modes = 0;
+            for (with_residual, time) in [false, true].into_iter().zip(times.iter_mut()) {
+                let mut set = scene_with_set(&scene, k_max, l_max, damping);
+                set.plate.residual_flexibility = with_residual;
+                let mut sim = match Simulation::new(set.clone()) {
+                    Err(SimulationError::TooManySubsteps { .. }) => {
+                        set.simulation.integrator = IntegratorKind::Exponential;
+                        if !rk4_fallback_noted {
+                            notes.push("rk4 refuses the larger mode sets at the scene's rate: their cost per step is the exponential integrator's".into());
+                            rk4_fallback_noted = true;
+                        }
+                        Simulation::new(set)?
                     }
-                    Simulation::new(set)?
-                }
-                other => other?,
-            };
-            let step_time_s = min_time_per_unit(plan.timing_budget, |n| {
-                for _ in 0..n {
-                    if sim.step().is_err() {
-                        sim.reset();
+                    other => other?,
+                };
+                *time = min_time_per_unit(plan.timing_budget, |n| {
+                    for _ in 0..n {
+                        if sim.step().is_err() {
+                            sim.reset();
+                        }
                     }
-                }
-            });
+                });
+                modes = sim.model().n_modes();
+            }
             let rc = r + residual(k_max, l_max);
             rows.push(ResponseRow {
                 k_max,
                 l_max,
-                modes: sim.model().n_modes(),
+                modes,
                 response_m: r,
                 relative_error: (r - reference).abs() / reference.abs(),
                 response_with_residual_m: rc,
                 relative_error_with_residual: (rc - reference_with_residual).abs() / reference_with_residual.abs(),
-                step_time_s,
+                step_time_s: times[0],
+                step_time_with_residual_s: times[1],
                 pareto: false,
+                pareto_with_residual: false,
             });
         }
     }
-    let points: Vec<(f64, f64)> = rows.iter().map(|r| (r.relative_error, r.step_time_s)).collect();
-    for (r, p) in rows.iter_mut().zip(mark_pareto(&points)) {
-        r.pareto = p;
+    let points: Vec<(f64, f64)> = rows
+        .iter()
+        .map(|r| (r.relative_error, r.step_time_s))
+        .chain(rows.iter().map(|r| (r.relative_error_with_residual, r.step_time_with_residual_s)))
+        .collect();
+    let front = mark_pareto(&points);
+    let n = rows.len();
+    for (i, r) in rows.iter_mut().enumerate() {
+        r.pareto = front[i];
+        r.pareto_with_residual = front[n + i];
     }
+    let default_setting = default_mode_set(config);
+    let is_default = |k_max: u32, l_max: u32, residual_flexibility: bool| {
+        default_setting.as_ref().is_some_and(|d| d.k_max == k_max && d.l_max == l_max && d.residual_flexibility == residual_flexibility)
+    };
     let recommendations = recommend(
         &plan.targets,
-        uncertainty,
-        rows.iter().map(|r| (r.relative_error, r.step_time_s, ModeSetSetting { k_max: r.k_max, l_max: r.l_max, modes: r.modes, radial_splines: splines })),
+        rows.iter().flat_map(|r| {
+            [false, true].map(|with_residual| Candidate {
+                error: if with_residual { r.relative_error_with_residual } else { r.relative_error },
+                uncertainty: if with_residual { uncertainty_with_residual } else { uncertainty },
+                cost: if with_residual { r.step_time_with_residual_s } else { r.step_time_s },
+                setting: ModeSetSetting { k_max: r.k_max, l_max: r.l_max, modes: r.modes, radial_splines: splines, residual_flexibility: with_residual },
+                is_default: is_default(r.k_max, r.l_max, with_residual),
+            })
+        }),
     );
     Ok(ResponseAxis {
         what: "steady deflection at the load point under the held space-fixed loads, against the mode set k ≤ k_max, l ≤ l_max",
@@ -328,9 +395,11 @@ pub fn run(config: &Config, plan: &StudyPlan, tick: &mut dyn FnMut(&str)) -> Res
             nested,
             uncertainty,
             uncertainty_method,
+            uncertainty_with_residual,
         },
         rows,
         recommendations,
+        default_setting,
         notes,
     })
 }

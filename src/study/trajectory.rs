@@ -19,7 +19,7 @@
 //! recommended.
 
 use super::timing::min_time;
-use super::{mark_pareto, recommend, Recommendation, StudyError, StudyPlan};
+use super::{mark_pareto, recommend, Candidate, Recommendation, StudyError, StudyPlan};
 use crate::config::{Config, IntegratorKind};
 use crate::dynamics::{Simulation, SimulationError};
 use serde::Serialize;
@@ -135,6 +135,8 @@ pub struct TrajectoryAxis {
     pub reference: TrajectoryReference,
     pub rows: Vec<TrajectoryRow>,
     pub recommendations: Vec<Recommendation<IntegratorSetting>>,
+    /// The scene's own integrator and rate.
+    pub default_setting: IntegratorSetting,
     pub notes: Vec<String>,
 }
 
@@ -217,12 +219,19 @@ pub fn run(config: &Config, plan: &StudyPlan, tick: &mut dyn FnMut(&str)) -> Res
     for (&i, p) in ok.iter().zip(mark_pareto(&points)) {
         rows[i].pareto = p;
     }
+    let default_setting = IntegratorSetting { integrator: config.simulation.integrator.name(), rate_hz: config.simulation.rate_hz };
     let recommendations = recommend(
         &plan.targets,
-        uncertainty,
         ok.iter().map(|&i| {
             let r = &rows[i];
-            (r.relative_error.unwrap(), r.wall_s_per_simulated_s.unwrap(), IntegratorSetting { integrator: r.integrator, rate_hz: r.rate_hz })
+            let setting = IntegratorSetting { integrator: r.integrator, rate_hz: r.rate_hz };
+            Candidate {
+                error: r.relative_error.unwrap(),
+                uncertainty,
+                cost: r.wall_s_per_simulated_s.unwrap(),
+                is_default: setting == default_setting,
+                setting,
+            }
         }),
     );
     Ok(TrajectoryAxis {
@@ -241,6 +250,7 @@ pub fn run(config: &Config, plan: &StudyPlan, tick: &mut dyn FnMut(&str)) -> Res
         },
         rows,
         recommendations,
+        default_setting,
         notes,
     })
 }

@@ -40,7 +40,7 @@ pub(super) struct PanelData {
     uncertainty: f64,
 }
 
-/// Errors below this are drawn at it (exact to round-off).
+/// Errors below this are drawn at it, hollow (exact to round-off; a log axis has no 0).
 pub(super) const ERROR_FLOOR: f64 = 1e-16;
 
 pub(super) fn panels(r: &StudyReport) -> [PanelData; 3] {
@@ -80,19 +80,32 @@ pub(super) fn panels(r: &StudyReport) -> [PanelData; 3] {
             .chain(ls.iter().enumerate().map(|(i, &l)| Series {
                 name: format!("l ≤ {l} + residual"),
                 color: PALETTE[(i + ls.len()) % PALETTE.len()],
-                points: b.rows.iter().filter(|x| x.l_max == l).map(|x| (x.step_time_s, floor(x.relative_error_with_residual), format!("k ≤ {}", x.k_max))).collect(),
+                points: b
+                    .rows
+                    .iter()
+                    .filter(|x| x.l_max == l)
+                    .map(|x| (x.step_time_with_residual_s, floor(x.relative_error_with_residual), format!("k ≤ {}", x.k_max)))
+                    .collect(),
             }))
             .collect(),
-        front: b.rows.iter().filter(|x| x.pareto).map(|x| (x.step_time_s, floor(x.relative_error))).collect(),
+        // One front over both variants of every set.
+        front: b
+            .rows
+            .iter()
+            .filter(|x| x.pareto)
+            .map(|x| (x.step_time_s, floor(x.relative_error)))
+            .chain(b.rows.iter().filter(|x| x.pareto_with_residual).map(|x| (x.step_time_with_residual_s, floor(x.relative_error_with_residual))))
+            .collect(),
         picks: b
             .recommendations
             .iter()
             .filter_map(|x| {
                 let s = x.setting.as_ref()?;
-                Some((x.target, x.cost?, floor(x.error?), format!("k≤{}, l≤{}", s.k_max, s.l_max)))
+                let residual = if s.residual_flexibility { " + res." } else { "" };
+                Some((x.target, x.cost?, floor(x.error?), format!("k≤{}, l≤{}{residual}", s.k_max, s.l_max)))
             })
             .collect(),
-        uncertainty: b.reference.uncertainty,
+        uncertainty: b.reference.uncertainty_with_residual.min(b.reference.uncertainty),
     };
     let c = &r.integrator;
     let mut names: Vec<&str> = c.rows.iter().map(|x| x.integrator).collect();
@@ -149,7 +162,10 @@ impl Painter for ParetoPicture<'_> {
         let (top, rest) = root.split_vertically(44);
         draw_title(
             &top,
-            &format!("Error against cost — {} ({} modes); targets dashed, recommended settings ringed, Pareto front black", r.scene.source, r.scene.modes),
+            &format!(
+                "Error against cost — {} ({} modes); targets dashed, recommended settings ringed, Pareto front black; hollow: error below {ERROR_FLOOR:e}, drawn at it",
+                r.scene.source, r.scene.modes
+            ),
             20.0,
         )?;
         let areas = rest.split_evenly((1, 3));
@@ -208,7 +224,8 @@ impl Painter for ParetoPicture<'_> {
                 pts.sort_by(|a, b| a.0.total_cmp(&b.0));
                 chart.draw_series(LineSeries::new(pts.clone(), color.mix(0.5).stroke_width(1))).map_err(de)?;
                 chart
-                    .draw_series(pts.iter().map(|&p| Circle::new(p, 4, color.filled())))
+                    // An error below the floor is not on the axis: drawn at the floor, hollow.
+                    .draw_series(pts.iter().map(|&p| Circle::new(p, 4, if p.1 <= ERROR_FLOOR { color.stroke_width(2) } else { color.filled() })))
                     .map_err(de)?
                     .label(s.name.as_str())
                     .legend(move |(x, y)| Circle::new((x + 10, y), 4, color.filled()));

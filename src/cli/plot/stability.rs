@@ -2,6 +2,11 @@
 //! speed × friction coefficient as cells coloured by the largest growth rate
 //! (red: growing, blue: decaying; the shade grows with |rate| relative to the
 //! largest of its sign) and the threshold μ_c(Ω) as a black curve with dots.
+//! A threshold outside the plotted μ range is not drawn on the axis as if it
+//! were there: it is an arrow at the edge it lies beyond, labelled with the
+//! bound, and the curve is broken there. Unstable already at the first μ,
+//! the threshold is at or below it ("≤ 0.2"); stable over the whole range,
+//! above the last ("> 0.6").
 
 use super::render::*;
 use super::Size;
@@ -22,6 +27,43 @@ pub struct StabilityGrid<'a> {
 #[derive(Debug, Clone, PartialEq)]
 pub struct StabilityGeometry {
     pub cells: Vec<(i32, i32, bool)>,
+    /// One entry per speed with a threshold: where it was drawn and how.
+    pub thresholds: Vec<ThresholdMark>,
+}
+
+/// Where a threshold lies against the plotted μ range.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Placement {
+    Within,
+    /// Below the range, or at or below its first μ (unstable there already):
+    /// an arrow pointing down at the lower edge, labelled "≤ μ_first" / "< edge".
+    Below,
+    /// Above the range (stable over all of it): an arrow pointing up at the
+    /// upper edge, labelled "> μ_last".
+    Above,
+}
+
+#[derive(Debug, Clone, PartialEq)]
+pub struct ThresholdMark {
+    pub speed: f64,
+    /// The map's threshold (∞: stable over the range).
+    pub mu: f64,
+    pub placement: Placement,
+    /// Pixel of the dot (within) or of the arrow's tip (at the edge).
+    pub pixel: (i32, i32),
+    /// The edge label ("< 0.2"), for a threshold outside the range.
+    pub label: Option<String>,
+}
+
+/// Where `t` lies against [lo, hi].
+pub fn placement(t: f64, lo: f64, hi: f64) -> Placement {
+    if t < lo {
+        Placement::Below
+    } else if t > hi {
+        Placement::Above
+    } else {
+        Placement::Within
+    }
 }
 
 pub fn stability_map(grid: &StabilityGrid, out: &Path, size: Size) -> CliResult<StabilityGeometry> {
@@ -84,9 +126,50 @@ impl Painter for MapPicture<'_, '_> {
                 cells.push((px, py, growing));
             }
         }
-        let curve: Vec<(f64, f64)> = g.speeds.iter().zip(g.threshold_mu).filter_map(|(&s, t)| t.map(|t| (s, t))).collect();
-        chart.draw_series(LineSeries::new(curve.clone(), BLACK.stroke_width(2))).map_err(de)?;
-        chart.draw_series(curve.iter().map(|&p| Circle::new(p, 4, BLACK.filled()))).map_err(de)?;
-        Ok(StabilityGeometry { cells })
+        // The threshold: dots joined where consecutive speeds are within the
+        // range; beyond it an arrow at the edge with the bound it passes.
+        let mut thresholds = Vec::new();
+        let mut runs: Vec<Vec<(f64, f64)>> = vec![Vec::new()];
+        let label_style = TextStyle::from((FONT, 14).into_font()).color(&BLACK);
+        let (mu_first, mu_last) = (g.mu[0], g.mu[g.mu.len() - 1]);
+        for (i, (&s, t)) in g.speeds.iter().zip(g.threshold_mu).enumerate() {
+            let unstable_at_first = g.growth_rate.get(i).and_then(|r| r.first()).is_some_and(|&r| r > 0.0);
+            // Where the threshold lies and the bound to write at the edge:
+            // unstable already at the first μ, it is at or below that μ (the
+            // map does not know where); stable over the range, above the last.
+            let (place, bound) = match *t {
+                None if unstable_at_first => continue,
+                None => (Placement::Above, format!("> {mu_last}")),
+                Some(t) if unstable_at_first && t <= mu_first => (Placement::Below, format!("≤ {mu_first}")),
+                Some(t) => match placement(t, y0, y1) {
+                    Placement::Within => (Placement::Within, String::new()),
+                    Placement::Below => (Placement::Below, format!("< {}", tick(y0, y1 - y0))),
+                    Placement::Above => (Placement::Above, format!("> {}", tick(y1, y1 - y0))),
+                },
+            };
+            let mu = t.unwrap_or(f64::INFINITY);
+            if place == Placement::Within {
+                runs.last_mut().expect("one run at least").push((s, mu));
+                chart.draw_series(std::iter::once(Circle::new((s, mu), 4, BLACK.filled()))).map_err(de)?;
+                thresholds.push(ThresholdMark { speed: s, mu, placement: place, pixel: chart.backend_coord(&(s, mu)), label: None });
+                continue;
+            }
+            runs.push(Vec::new());
+            let below = place == Placement::Below;
+            let edge = if below { y0 } else { y1 };
+            // The tip on the edge, the body inside the plot.
+            let tip = chart.backend_coord(&(s, edge));
+            let dir = if below { -1 } else { 1 };
+            // (pixel y grows downwards: the body of a downward arrow is above its tip)
+            let base = tip.1 + dir * 14;
+            root.draw(&Polygon::new(vec![tip, (tip.0 - 7, base), (tip.0 + 7, base)], BLACK.filled())).map_err(de)?;
+            root.draw(&PathElement::new(vec![(tip.0, base), (tip.0, base + dir * 12)], BLACK.stroke_width(2))).map_err(de)?;
+            root.draw(&Text::new(bound.clone(), (tip.0 + 9, base + dir * 6 - 7), label_style.clone())).map_err(de)?;
+            thresholds.push(ThresholdMark { speed: s, mu, placement: place, pixel: tip, label: Some(bound) });
+        }
+        for run in runs.into_iter().filter(|r| r.len() > 1) {
+            chart.draw_series(LineSeries::new(run, BLACK.stroke_width(2))).map_err(de)?;
+        }
+        Ok(StabilityGeometry { cells, thresholds })
     }
 }

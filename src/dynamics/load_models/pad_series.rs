@@ -1,5 +1,5 @@
-//! Brake pads in series with the residual flexibility (issue 11,
-//! `dynamics::contact_compliance`, docs/residual_flexibility.md): with
+//! Brake pads in series with the residual flexibility
+//! (`dynamics::contact_compliance`, docs/residual_flexibility.md): with
 //! `plate.residual_flexibility` each contact point acts on the modal
 //! deflection plus the truncated modes' static deflection of the pads' own
 //! net axial forces (G among the contact points, constant: ALE frames) and
