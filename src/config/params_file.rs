@@ -173,7 +173,10 @@ impl Params {
             if let Some(map) = ros_parameters {
                 flatten_map("", map, &mut own)?;
             }
-            params.values.extend(own);
+            params.values.extend(own.into_iter().map(|(k, v)| {
+                let v = super::check::read_as_declared(&k, v);
+                (k, v)
+            }));
         }
         Ok(params)
     }
@@ -195,7 +198,7 @@ impl Params {
                 message: "a parameter value is a scalar or a flat list, not a map".to_string(),
             });
         }
-        let value = convert_value(name, &value)?;
+        let value = super::check::read_as_declared(name, convert_value(name, &value)?);
         self.values.insert(name.to_string(), value);
         Ok(())
     }

@@ -45,6 +45,7 @@ const MIN_RELATIVE_WIDTH: f64 = 1e-3;
 pub(super) fn config_from_params(params: &Params) -> Result<Config, ConfigError> {
     let known = known_keys();
     check_unknown_keys(params, &known)?;
+    super::check::check_params(params)?;
     let r = Reader::new(params, &known);
 
     let plate = read_plate(&r)?;
@@ -84,7 +85,7 @@ fn check_unknown_keys(params: &Params, known: &[&str]) -> Result<(), ConfigError
 /// The known key a typo most likely meant: a close spelling, the same name
 /// in another section (`simulation.speed` → `joint.speed`), or a known name
 /// the given one abbreviates (`plate.poisson` → `plate.poisson_ratio`).
-fn suggest(key: &str, known: &[&str]) -> Option<String> {
+pub(super) fn suggest(key: &str, known: &[&str]) -> Option<String> {
     let lower = key.to_lowercase();
     let best = known.iter().map(|k| (levenshtein(&lower, k), *k)).min_by_key(|(d, _)| *d);
     if let Some((d, k)) = best {
