@@ -29,6 +29,12 @@ pub struct CampbellArgs {
     pub overrides: Vec<String>,
 }
 
+/// The fastest speed of `--speeds`, rad/s (the declared maximum of `limits.max_speed`).
+pub const MAX_SPEED: f64 = 1e6;
+
+/// The most points of a `FROM:TO:N` range.
+pub const MAX_POINTS: usize = 100_000;
+
 /// `FROM:TO:N` → N speeds from FROM to TO inclusive (N = 1: FROM, which must equal TO).
 pub fn parse_range(option: &str, text: &str) -> CliResult<Vec<f64>> {
     let bad = |why: &str| CliError::Usage(format!("{option} {text}: {why} (give FROM:TO:N, e.g. 0:6000:121)"));
@@ -43,7 +49,7 @@ pub fn parse_range(option: &str, text: &str) -> CliResult<Vec<f64>> {
     if from < 0.0 || to < from {
         return Err(bad("0 ≤ FROM ≤ TO is required"));
     }
-    if n == 0 || n > 100_000 {
+    if n == 0 || n > MAX_POINTS {
         return Err(bad("N must be between 1 and 100000"));
     }
     if n == 1 && to != from {
@@ -52,7 +58,7 @@ pub fn parse_range(option: &str, text: &str) -> CliResult<Vec<f64>> {
     Ok(linspace(from, to, n))
 }
 
-fn linspace(from: f64, to: f64, n: usize) -> Vec<f64> {
+pub fn linspace(from: f64, to: f64, n: usize) -> Vec<f64> {
     if n == 1 {
         return vec![from];
     }
@@ -66,7 +72,15 @@ pub fn main(args: CampbellArgs) -> CliResult<()> {
     }
     let model = PlateModel::new(&config.plate)?;
     let speeds = match &args.speeds {
-        Some(text) => parse_range("--speeds", text)?,
+        Some(text) => {
+            let speeds = parse_range("--speeds", text)?;
+            if let Some(s) = speeds.iter().find(|s| s.abs() > MAX_SPEED) {
+                return Err(CliError::Usage(format!(
+                    "--speeds {text}: the speed {s:e} rad/s is above {MAX_SPEED:e} rad/s, the largest limits.max_speed any scene may declare"
+                )));
+            }
+            speeds
+        }
         None => {
             let critical = critical_speeds(&model, &config.centrifugal)?;
             // Without any critical speed (only k = 0 modes): up to the highest frequency, in rad/s.

@@ -322,7 +322,7 @@ pub const SECTIONS: &[Section] = &[
         params: &[
             p("limits.max_force", Ty::Double, "double", "N", Value::Double(10000000.0), "1e7", "> 0", "larger forces (per node, magnitude) are rejected as absurd").above(0.0),
             p("limits.max_moment", Ty::Double, "double", "N·m", Value::Double(1000000.0), "1e6", "> 0", "larger moments (per node, magnitude) are rejected as absurd").above(0.0),
-            p("limits.max_speed", Ty::Double, "double", "rad/s", Value::Double(10000.0), "1e4", "> 0", "larger joint speeds are rejected").above(0.0),
+            p("limits.max_speed", Ty::Double, "double", "rad/s", Value::Double(10000.0), "1e4", "> 0, ≤ 1e6", "larger joint speeds are rejected (also the speeds of `stability`)").above(0.0).max(1e6),
             p("limits.max_deflection_thicknesses", Ty::Double, "double", "—", Value::Double(1000.0), "1e3", "> 0", "divergence guard: a modal amplitude beyond this many plate thicknesses stops the run").above(0.0),
         ],
     },
