@@ -146,16 +146,21 @@ fn run() -> anyhow::Result<()> {
         }
         Some(Command::Bag { what: BagCommand::Repair { dir } }) => {
             match annular_plate::bag::repair::repair(&dir).with_context(|| format!("bag repair {}", dir.display()))? {
-                annular_plate::bag::repair::Repair::AlreadyComplete { file } => eprintln!("{} is complete: nothing to repair", file.display()),
-                annular_plate::bag::repair::Repair::Repaired { summary, broken } => eprintln!(
-                    "repaired {}: {} messages on {} topics ({:.3} s) in {}; the damaged file is {}",
-                    summary.dir.display(),
-                    summary.message_count,
-                    summary.topics.len(),
-                    summary.duration as f64 * 1e-9,
-                    summary.file,
-                    broken.display()
-                ),
+                annular_plate::bag::repair::Repair::AlreadyComplete { files } => {
+                    eprintln!("{}: {} .mcap file(s), each complete or repaired before: nothing to repair", dir.display(), files.len())
+                }
+                annular_plate::bag::repair::Repair::Repaired { repaired } => {
+                    for (source, summary) in &repaired {
+                        eprintln!(
+                            "repaired {}: {} messages on {} topics ({:.3} s) in {}; the damaged file is left as it was",
+                            source.display(),
+                            summary.message_count,
+                            summary.topics.len(),
+                            summary.duration as f64 * 1e-9,
+                            summary.dir.join(&summary.file).display()
+                        );
+                    }
+                }
             }
             Ok(())
         }
