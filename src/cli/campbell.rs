@@ -32,6 +32,10 @@ pub struct CampbellArgs {
 /// The fastest speed of `--speeds`, rad/s (the declared maximum of `limits.max_speed`).
 pub const MAX_SPEED: f64 = 1e6;
 
+/// The most `--speeds` with centrifugal stiffening (an eigensolution per speed):
+/// 100,000 took 55 s and 1.6 GB (brake-squeal scene), this many ~6 s.
+pub const MAX_STIFFENED_SPEEDS: usize = 10_000;
+
 /// The most points of a `FROM:TO:N` range.
 pub const MAX_POINTS: usize = 100_000;
 
@@ -77,6 +81,16 @@ pub fn main(args: CampbellArgs) -> CliResult<()> {
             if let Some(s) = speeds.iter().find(|s| s.abs() > MAX_SPEED) {
                 return Err(CliError::Usage(format!(
                     "--speeds {text}: the speed {s:e} rad/s is above {MAX_SPEED:e} rad/s, the largest limits.max_speed any scene may declare"
+                )));
+            }
+            if config.centrifugal.stiffening && speeds.len() > MAX_STIFFENED_SPEEDS {
+                return Err(CliError::Usage(format!(
+                    "--speeds {text}: {} speeds with plate.centrifugal_stiffening: true is more than {MAX_STIFFENED_SPEEDS} \
+                     (each speed is an eigensolution per nodal-diameter number: ~0.55 ms and ~16 kB a speed for the brake-squeal scene, \
+                     {:.0} s and {:.0} MB here); give fewer speeds",
+                    speeds.len(),
+                    speeds.len() as f64 * 5.5e-4,
+                    speeds.len() as f64 * 0.016
                 )));
             }
             speeds

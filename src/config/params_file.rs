@@ -113,8 +113,13 @@ impl Params {
         if bytes > MAX_FILE_BYTES {
             return Err(ConfigError::TooLarge { path: path.to_path_buf(), bytes, limit: MAX_FILE_BYTES });
         }
-        let text = std::fs::read_to_string(path)
+        // The size again while reading: a device or pipe (/dev/zero) has no length beforehand.
+        let mut text = String::new();
+        std::io::Read::read_to_string(&mut std::io::Read::take(std::fs::File::open(path).map_err(io)?, MAX_FILE_BYTES + 1), &mut text)
             .map_err(|e| ConfigError::Io { path: path.to_path_buf(), message: e.to_string() })?;
+        if text.len() as u64 > MAX_FILE_BYTES {
+            return Err(ConfigError::TooLarge { path: path.to_path_buf(), bytes: text.len() as u64, limit: MAX_FILE_BYTES });
+        }
         Params::from_yaml_str(&text, node_name).map_err(|e| match e {
             ConfigError::Yaml { message } => ConfigError::Yaml { message: format!("{}: {message}", path.display()) },
             other => other,
