@@ -310,8 +310,8 @@ pub const SECTIONS: &[Section] = &[
             p("simulation.coordinates", Ty::String, "string", "—", Value::Str("ale"), "`ale`", "`ale` or `lagrangian`", "modal amplitudes integrated in the non-rotating frame (ALE, eq. 20) or in the rotating plate frame"),
             p("simulation.realtime_factor", Ty::Double, "double", "—", Value::Double(1.0), "1", "0, or in [1e-6, 1e6]", "1 = wall clock, 0 = as fast as possible (the node only; can be set while it runs)").min(1e-6).max(1e6).or_zero(),
             p("simulation.publish_divisor", Ty::Integer, "integer", "—", Value::Integer(1), "1", "≥ 1", "publish every n-th step (the node only)").min(1.0).max(4294967295.0),
-            p("simulation.rk4_step_limit", Ty::Double, "double", "—", Value::Double(0.2), "0.2", "> 0, ≤ 2.5", "`rk4` sub-steps itself so that h·λ_max stays below this; its amplitude error per step is (hω)⁶/144 (the brake-squeal scene uses 0.1)").above(0.0).max(2.5),
-            p("simulation.midpoint_step_limit", Ty::Double, "double", "—", Value::Double(0.5), "0.5", "> 0, ≤ 1e6", "`implicit_midpoint` sub-steps itself so that h·λ_max stays below this: the fastest mode's frequency is then within 1 − 2·atan(x/2)/x (2.0 % at 0.5), slower ones within (hω)²/12; a huge value accepts unresolved modes (A-stable, they ring without numerical damping)").above(0.0).max(1e6),
+            p("simulation.rk4_step_limit", Ty::Double, "double", "—", Value::Double(0.2), "0.2", "> 0, ≤ 2.5", "`rk4` sub-steps itself so that h·λ_max stays below this; its amplitude error per step is (hω)⁶/144 (the brake-squeal scene uses 0.1)").above(0.0).max(super::MAX_RK4_STEP_LIMIT),
+            p("simulation.midpoint_step_limit", Ty::Double, "double", "—", Value::Double(0.5), "0.5", "> 0, ≤ 1e6", "`implicit_midpoint` sub-steps itself so that h·λ_max stays below this: the fastest mode's frequency is then within 1 − 2·atan(x/2)/x (2.0 % at 0.5), slower ones within (hω)²/12; a huge value accepts unresolved modes (A-stable, they ring without numerical damping)").above(0.0).max(super::MAX_MIDPOINT_STEP_LIMIT),
         ],
     },
     Section {

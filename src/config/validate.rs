@@ -455,32 +455,22 @@ fn read_reference(r: &Reader) -> Result<ReferenceConfig, ConfigError> {
     })
 }
 
+/// Types, ranges and defaults of these keys are the table's (`config::check`
+/// ran before); only the choices are read here.
 fn read_simulation(r: &Reader) -> Result<SimulationConfig, ConfigError> {
     let d = SimulationConfig::default();
-    let rate_hz = r.positive("simulation.rate_hz", d.rate_hz)?;
-    if rate_hz > 1e6 {
-        return Err(ConfigError::AboveMaximum { key: "simulation.rate_hz".into(), value: rate_hz, max: 1e6 });
-    }
-    let substeps = r.u32_in("simulation.substeps", d.substeps, 1, 10_000)?;
+    let rate_hz = r.declared_f64("simulation.rate_hz")?;
+    let substeps = r.declared_u32("simulation.substeps")?;
     let integrator = read_choice(r, "simulation.integrator", d.integrator.name(), INTEGRATORS, IntegratorKind::from_name)?;
     let coordinates = read_choice(r, "simulation.coordinates", "ale", COORDINATES, |s| match s {
         "ale" => Some(Coordinates::Ale),
         "lagrangian" => Some(Coordinates::Lagrangian),
         _ => None,
     })?;
-    let realtime_factor = r.f64("simulation.realtime_factor", d.realtime_factor)?;
-    if realtime_factor < 0.0 {
-        return Err(ConfigError::Negative { key: "simulation.realtime_factor".into(), value: realtime_factor });
-    }
-    let publish_divisor = r.u32_in("simulation.publish_divisor", d.publish_divisor, 1, u32::MAX)?;
-    let rk4_step_limit = r.positive("simulation.rk4_step_limit", d.rk4_step_limit)?;
-    if rk4_step_limit > super::MAX_RK4_STEP_LIMIT {
-        return Err(ConfigError::AboveMaximum { key: "simulation.rk4_step_limit".into(), value: rk4_step_limit, max: super::MAX_RK4_STEP_LIMIT });
-    }
-    let midpoint_step_limit = r.positive("simulation.midpoint_step_limit", d.midpoint_step_limit)?;
-    if midpoint_step_limit > super::MAX_MIDPOINT_STEP_LIMIT {
-        return Err(ConfigError::AboveMaximum { key: "simulation.midpoint_step_limit".into(), value: midpoint_step_limit, max: super::MAX_MIDPOINT_STEP_LIMIT });
-    }
+    let realtime_factor = r.declared_f64("simulation.realtime_factor")?;
+    let publish_divisor = r.declared_u32("simulation.publish_divisor")?;
+    let rk4_step_limit = r.declared_f64("simulation.rk4_step_limit")?;
+    let midpoint_step_limit = r.declared_f64("simulation.midpoint_step_limit")?;
     Ok(SimulationConfig { rate_hz, substeps, integrator, coordinates, realtime_factor, publish_divisor, rk4_step_limit, midpoint_step_limit })
 }
 

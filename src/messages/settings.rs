@@ -141,10 +141,8 @@ impl RosSettings {
         }
         s.sim_time = publish_clock;
         s.use_sim_time = use_sim_time;
+        // Types and ranges: `config::check` above (the table's declaration).
         if let Some(t) = double("ros.wrench_timeout")? {
-            if !t.is_finite() || t < 0.0 {
-                return Err(err("ros.wrench_timeout", format!("{t} must be finite and >= 0 (0 = hold wrenches until replaced)")));
-            }
             s.wrench_timeout = t;
         }
         if let Some(j) = double("ros.max_clock_jump")? {
@@ -152,15 +150,9 @@ impl RosSettings {
         }
         s.start_paused = boolean("ros.start_paused")?.unwrap_or(false);
         if let Some(p) = double("ros.diagnostics_period")? {
-            if !p.is_finite() || p <= 0.0 {
-                return Err(err("ros.diagnostics_period", format!("{p} must be finite and > 0")));
-            }
             s.diagnostics_period = p;
         }
         if let Some(p) = double("ros.reject_log_period")? {
-            if !p.is_finite() || p < 0.0 {
-                return Err(err("ros.reject_log_period", format!("{p} must be finite and >= 0")));
-            }
             s.reject_log_period = p;
         }
         s.marker = read_marker(params)?;
