@@ -11,6 +11,7 @@
 
 use std::f64::consts::FRAC_PI_2;
 
+use super::check::suggest;
 use super::raw::{positive, read_choice, Reader};
 use super::{
     Boundary, Config, ConfigError, Coordinates, InitialConfig, IntegratorKind, JointConfig, LimitsConfig, LoadsConfig, NodePosition,
@@ -82,49 +83,6 @@ fn check_unknown_keys(params: &Params, known: &[&str]) -> Result<(), ConfigError
     Ok(())
 }
 
-/// The known key a typo most likely meant: a close spelling, the same name
-/// in another section (`simulation.speed` → `joint.speed`), or a known name
-/// the given one abbreviates (`plate.poisson` → `plate.poisson_ratio`).
-pub(super) fn suggest(key: &str, known: &[&str]) -> Option<String> {
-    let lower = key.to_lowercase();
-    let best = known.iter().map(|k| (levenshtein(&lower, k), *k)).min_by_key(|(d, _)| *d);
-    if let Some((d, k)) = best {
-        if d <= (k.chars().count() / 6).max(2) {
-            return Some(k.to_string());
-        }
-    }
-    let (section, last) = match lower.rsplit_once('.') {
-        Some((s, l)) => (s, l),
-        None => ("", lower.as_str()),
-    };
-    let last_of = |k: &str| k.rsplit_once('.').map_or(k, |(_, l)| l).to_string();
-    let section_of = |k: &str| k.rsplit_once('.').map_or("", |(s, _)| s).to_string();
-    if let Some(k) = known.iter().find(|k| last_of(k) == last) {
-        return Some(k.to_string());
-    }
-    if last.chars().count() >= 4 {
-        if let Some(k) = known.iter().find(|k| section_of(k) == section && last_of(k).starts_with(last)) {
-            return Some(k.to_string());
-        }
-    }
-    None
-}
-
-fn levenshtein(a: &str, b: &str) -> usize {
-    let a: Vec<char> = a.chars().collect();
-    let b: Vec<char> = b.chars().collect();
-    let mut prev: Vec<usize> = (0..=b.len()).collect();
-    let mut cur = vec![0; b.len() + 1];
-    for i in 1..=a.len() {
-        cur[0] = i;
-        for j in 1..=b.len() {
-            let cost = usize::from(a[i - 1] != b[j - 1]);
-            cur[j] = (prev[j] + 1).min(cur[j - 1] + 1).min(prev[j - 1] + cost);
-        }
-        std::mem::swap(&mut prev, &mut cur);
-    }
-    prev[b.len()]
-}
 
 // ---- plate -------------------------------------------------------------------
 

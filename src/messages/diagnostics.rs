@@ -280,6 +280,21 @@ mod tests {
     }
 
     #[test]
+    fn a_clock_jump_forward_warns_once_and_is_counted() {
+        let mut r = report();
+        r.clock_jumps = Some(1);
+        r.new_clock_jumps = 1;
+        let s = simulation_status("/n", &r);
+        assert_eq!(s.level, DiagnosticStatus::WARN);
+        assert!(s.message.contains("ros.max_clock_jump"), "{}", s.message);
+        assert!(s.values.contains(&KeyValue { key: "clock_jumps_forward".into(), value: "1".into() }));
+        r.new_clock_jumps = 0;
+        let s = simulation_status("/n", &r);
+        assert_eq!(s.level, DiagnosticStatus::OK, "the next report is OK, the count stays");
+        assert!(s.values.contains(&KeyValue { key: "clock_jumps_forward".into(), value: "1".into() }));
+    }
+
+    #[test]
     fn recording_levels() {
         let mut r = RecordReport {
             path: "b".into(),
