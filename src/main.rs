@@ -93,6 +93,17 @@ enum BagCommand {
 
 /// Errors go to stderr as one readable message (with its causes), exit status 1.
 /// A closed pipe on the output (`simulate --csv - | head`) ends the program quietly.
+/// Whether fd 1 was closed when the process started: Rust's runtime then
+/// opens /dev/null read-write in its place (a shell's `>/dev/null` opens it
+/// write-only), and writes to it succeed without a trace.
+fn stdout_was_closed() -> bool {
+    let null = std::fs::read_link("/proc/self/fd/1").is_ok_and(|p| p == std::path::Path::new("/dev/null"));
+    let flags = std::fs::read_to_string("/proc/self/fdinfo/1")
+        .ok()
+        .and_then(|t| t.lines().find_map(|l| l.strip_prefix("flags:").and_then(|v| u32::from_str_radix(v.trim(), 8).ok())));
+    null && flags.is_some_and(|f| f & 0o3 == 0o2)
+}
+
 fn main() -> std::process::ExitCode {
     match run() {
         Ok(()) => std::process::ExitCode::SUCCESS,
@@ -146,16 +157,21 @@ fn run() -> anyhow::Result<()> {
         }
         Some(Command::Bag { what: BagCommand::Repair { dir } }) => {
             match annular_plate::bag::repair::repair(&dir).with_context(|| format!("bag repair {}", dir.display()))? {
-                annular_plate::bag::repair::Repair::AlreadyComplete { file } => eprintln!("{} is complete: nothing to repair", file.display()),
-                annular_plate::bag::repair::Repair::Repaired { summary, broken } => eprintln!(
-                    "repaired {}: {} messages on {} topics ({:.3} s) in {}; the damaged file is {}",
-                    summary.dir.display(),
-                    summary.message_count,
-                    summary.topics.len(),
-                    summary.duration as f64 * 1e-9,
-                    summary.file,
-                    broken.display()
-                ),
+                annular_plate::bag::repair::Repair::AlreadyComplete { files } => {
+                    eprintln!("{}: {} .mcap file(s), each complete or repaired before: nothing to repair", dir.display(), files.len())
+                }
+                annular_plate::bag::repair::Repair::Repaired { repaired } => {
+                    for (source, summary) in &repaired {
+                        eprintln!(
+                            "repaired {}: {} messages on {} topics ({:.3} s) in {}; the damaged file is left as it was",
+                            source.display(),
+                            summary.message_count,
+                            summary.topics.len(),
+                            summary.duration as f64 * 1e-9,
+                            summary.dir.join(&summary.file).display()
+                        );
+                    }
+                }
             }
             Ok(())
         }
@@ -187,7 +203,15 @@ fn run() -> anyhow::Result<()> {
             let started = std::time::Instant::now();
             let mut out: Option<Box<dyn Write>> = match &csv {
                 None => None,
-                Some(p) if p.as_os_str() == "-" => Some(Box::new(BufWriter::with_capacity(1 << 18, std::io::stdout().lock()))),
+                // Its own descriptor: std's stdout reports writes to a closed fd 1 as done.
+                Some(p) if p.as_os_str() == "-" => {
+                    use std::os::fd::AsFd;
+                    if stdout_was_closed() {
+                        anyhow::bail!("--csv -: stdout is closed (the process started without it), nothing to write the CSV to; give --csv FILE or redirect stdout");
+                    }
+                    let fd = std::io::stdout().as_fd().try_clone_to_owned().context("--csv -: stdout is closed, nothing to write the CSV to")?;
+                    Some(Box::new(BufWriter::with_capacity(1 << 18, std::fs::File::from(fd))))
+                }
                 Some(p) => Some(Box::new(BufWriter::with_capacity(1 << 18,
                     std::fs::File::create(p).with_context(|| format!("cannot create {}", p.display()))?,
                 ))),

@@ -61,11 +61,11 @@ fn frames_follow_the_run_and_colour_the_deflection_of_the_model() {
     let data = CsvData::read(&csv).unwrap();
     let config = Config::from_params_file(&scene(), "/annular_plate").unwrap();
     let out = dir().join("animate_swash.gif");
-    let anim = Animation { fps: 20, slowdown: 1.0, scale: None, size: Size { width: 480, height: 260 } };
+    let anim = Animation { fps: 20, max_frames: 10_000, slowdown: 1.0, scale: None, size: Size { width: 480, height: 260 } };
     let mut calls = 0;
-    let info = animate(&data, &config, &anim, &out, |_, _| calls += 1).unwrap();
+    let info = animate(&data, &config, &anim, &out, |done, _| calls += usize::from(done > 0)).unwrap();
     let decoded = frames(&out);
-    // Duration × fps: 0.3 s × 20.
+    // Duration × fps: 0.3 s × 20 (and one call with 0 done before the first frame).
     assert_eq!((info.frames, decoded.len(), calls), (6, 6, 6));
     let rows = data.columns[0].len();
     assert_eq!((info.rows[0], *info.rows.last().unwrap()), (0, rows - 1), "first and last frames are the first and last rows");
@@ -148,11 +148,11 @@ fn frame_count_is_duration_times_fps_and_mp4_without_ffmpeg_names_the_remedy() {
     let small = Size { width: 200, height: 120 };
     for (fps, slowdown, want) in [(10, 1.0, 3), (25, 2.0, 15)] {
         let out = dir().join(format!("animate_{fps}_{slowdown}.gif"));
-        let info = animate(&data, &config, &Animation { fps, slowdown, scale: Some(20.0), size: small }, &out, |_, _| {}).unwrap();
+        let info = animate(&data, &config, &Animation { fps, max_frames: 10_000, slowdown, scale: Some(20.0), size: small }, &out, |_, _| {}).unwrap();
         assert_eq!((info.frames, frames(&out).len(), info.scale), (want, want, 20.0));
     }
     // Too short for two frames: refused with the numbers and the remedy.
-    let err = animate(&data, &config, &Animation { fps: 3, slowdown: 1.0, scale: None, size: small }, &dir().join("x.gif"), |_, _| {}).unwrap_err();
+    let err = animate(&data, &config, &Animation { fps: 3, max_frames: 10_000, slowdown: 1.0, scale: None, size: small }, &dir().join("x.gif"), |_, _| {}).unwrap_err();
     assert!(err.to_string().contains("--slowdown"), "{err}");
     // MP4 goes through ffmpeg; without it the error says what to do.
     let out = Command::new(env!("CARGO_BIN_EXE_annular_plate"))

@@ -27,7 +27,7 @@ fn the_map_reproduces_the_squeal_threshold_at_the_scene_speed() {
     let doc: Value = serde_json::from_str(&out).unwrap();
     let mut keys: Vec<&String> = doc.as_object().unwrap().keys().collect();
     keys.sort();
-    assert_eq!(keys, ["growth_rate", "mode", "mu", "speeds_rad_s", "threshold_mu"]);
+    assert_eq!(keys, ["growth_rate", "mode", "mu", "params_digest", "speeds_rad_s", "threshold_mu"]);
     assert_eq!(doc["speeds_rad_s"], serde_json::json!([25.0]));
     let threshold = doc["threshold_mu"][0].as_f64().unwrap();
     assert!((threshold - 0.300423).abs() < 5e-7, "threshold {threshold}");

@@ -121,6 +121,8 @@ impl OfflineRecorder {
                 rate_hz: 1.0 / sim.dt(),
                 // Offline: as fast as possible.
                 realtime_factor: 0.0,
+                clock_jumps: None,
+                new_clock_jumps: 0,
                 publish_failures: 0,
                 markers_skipped: 0,
                 timing: self.timing.report(now),

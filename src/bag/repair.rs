@@ -3,68 +3,292 @@
 //! metadata.yaml from its last checkpoint. Repair reads every complete
 //! message up to where the file breaks off (the writer closes a chunk and
 //! rewrites metadata.yaml every [`CHECKPOINT_PERIOD`](super::writer::CHECKPOINT_PERIOD),
-//! so at most that much is lost), writes them into a complete MCAP file of
-//! the same name with a fresh metadata.yaml, and keeps the damaged file as
-//! `<name>.broken`. A bag that is already complete is left as it is.
+//! so at most that much is lost) and writes them into a complete MCAP file
+//! of a fresh name beside it, `<stem>.repaired.mcap` (`-2`, `-3`, … if that
+//! name is taken by a file it cannot use).
+//!
+//! - It streams: the damaged file is read in [`READ_BLOCK`] pieces through
+//!   mcap's sans-io reader; memory is bounded by one record
+//!   ([`MAX_RECORD_BYTES`]), not by the file. A record longer than that, an
+//!   invalid opcode (a zero-filled tail) or a record that does not parse is
+//!   where the file breaks off.
+//! - It touches nothing it did not write: the damaged file stays as it is,
+//!   byte for byte, and so does any other file (an old `<name>.broken`).
+//!   When every repaired file is complete and verified (read back: its
+//!   message count, its footer and end magic), metadata.yaml is replaced
+//!   atomically by one that lists the repaired files; the checkpoint's
+//!   metadata.yaml is first copied to a fresh `metadata.yaml.before-repair`.
+//! - Every damaged `.mcap` of the directory is repaired; a file that does not
+//!   start with the MCAP magic (text, garbage, an empty file) is refused.
+//! - It is idempotent: a damaged file whose `<stem>.repaired.mcap` is complete
+//!   is repaired already; a bag whose every file is complete is left as it is.
 
-use super::writer::{BagError, BagSummary, BagWriter, TopicId};
+use super::writer::{write_combined_metadata, BagError, BagSummary, BagWriter, TopicId};
 use std::collections::BTreeMap;
+use std::fs::File;
+use std::io::Read;
 use std::path::{Path, PathBuf};
+
+/// Bytes read from the damaged file at a time.
+pub const READ_BLOCK: usize = 1 << 20;
+/// The longest record repair accepts (the recorder's chunks are far smaller).
+pub const MAX_RECORD_BYTES: usize = 64 << 20;
+/// The most `.mcap` files of one directory.
+const MAX_FILES: usize = 10_000;
 
 /// What `repair` did.
 #[derive(Debug)]
 pub enum Repair {
-    /// The bag was complete: nothing changed.
-    AlreadyComplete { file: PathBuf },
-    /// The bag was rewritten; the damaged file is kept beside it.
-    Repaired { summary: BagSummary, broken: PathBuf },
+    /// Every file was complete (or repaired before): nothing changed.
+    AlreadyComplete { files: Vec<PathBuf> },
+    /// Damaged files repaired into new files beside them (originals untouched).
+    Repaired {
+        repaired: Vec<(PathBuf, BagSummary)>,
+    },
 }
 
-fn mcap_file(dir: &Path) -> Result<PathBuf, BagError> {
-    let io = |e: std::io::Error| BagError::Io { path: dir.to_path_buf(), source: e };
-    let mut files: Vec<PathBuf> = std::fs::read_dir(dir)
-        .map_err(io)?
-        .filter_map(|e| e.ok().map(|e| e.path()))
-        .filter(|p| p.extension().is_some_and(|e| e == "mcap"))
-        .collect();
+fn io(path: &Path) -> impl FnOnce(std::io::Error) -> BagError + '_ {
+    move |source| BagError::Io {
+        path: path.to_path_buf(),
+        source,
+    }
+}
+
+fn mcap_err(path: &Path, message: impl Into<String>) -> BagError {
+    BagError::Mcap {
+        path: path.to_path_buf(),
+        message: message.into(),
+    }
+}
+
+fn mcap_files(dir: &Path) -> Result<Vec<PathBuf>, BagError> {
+    let mut files = Vec::new();
+    for entry in std::fs::read_dir(dir).map_err(io(dir))? {
+        let p = entry.map_err(io(dir))?.path();
+        if p.extension().is_some_and(|e| e == "mcap") && p.is_file() {
+            files.push(p);
+            if files.len() > MAX_FILES {
+                return Err(mcap_err(dir, format!("more than {MAX_FILES} .mcap files")));
+            }
+        }
+    }
     files.sort();
-    files.pop().ok_or_else(|| BagError::Mcap { path: dir.to_path_buf(), message: "no .mcap file in the bag directory".into() })
+    if files.is_empty() {
+        return Err(mcap_err(dir, "no .mcap file in the bag directory"));
+    }
+    Ok(files)
 }
 
-/// Whether `bytes` is a complete MCAP file (summary and end magic readable).
-fn is_complete(bytes: &[u8]) -> bool {
-    matches!(mcap::read::Summary::read(bytes), Ok(Some(_)))
+/// The state of one file, from its first and last bytes only.
+#[derive(Debug, PartialEq)]
+enum Kind {
+    Complete,
+    Damaged,
+}
+
+fn kind(path: &Path) -> Result<Kind, BagError> {
+    use std::io::{Seek, SeekFrom};
+    let mut f = File::open(path).map_err(io(path))?;
+    let len = f.metadata().map_err(io(path))?.len();
+    let mut head = [0u8; 8];
+    let n = f.read(&mut head).map_err(io(path))?;
+    if n < 8 || head != mcap::MAGIC[..] {
+        return Err(mcap_err(
+            path,
+            format!("not an MCAP file (it does not start with the MCAP magic; {len} bytes): refused, nothing written"),
+        ));
+    }
+    // A complete file ends with the footer record (opcode 0x02, length 20) and the magic.
+    const TAIL: u64 = 1 + 8 + 20 + 8;
+    if len < 8 + TAIL {
+        return Ok(Kind::Damaged);
+    }
+    let mut tail = [0u8; TAIL as usize];
+    f.seek(SeekFrom::Start(len - TAIL)).map_err(io(path))?;
+    f.read_exact(&mut tail).map_err(io(path))?;
+    let footer =
+        tail[0] == 0x02 && tail[1..9] == 20u64.to_le_bytes() && tail[29..] == mcap::MAGIC[..];
+    Ok(if footer {
+        Kind::Complete
+    } else {
+        Kind::Damaged
+    })
+}
+
+/// Calls `record(opcode, body)` for each record of `path` (inside chunks
+/// too) until the file ends or breaks off; reads [`READ_BLOCK`] at a time.
+/// Returns whether it ended cleanly (a complete file) or broke off.
+fn stream_records(
+    path: &Path,
+    mut record: impl FnMut(u8, &[u8]) -> Result<bool, BagError>,
+) -> Result<bool, BagError> {
+    use mcap::sans_io::linear_reader::{LinearReadEvent, LinearReader, LinearReaderOptions};
+    let mut file = File::open(path).map_err(io(path))?;
+    let options = LinearReaderOptions::default()
+        .with_record_length_limit(MAX_RECORD_BYTES)
+        .with_prevalidate_chunk_crcs(true);
+    let mut reader = LinearReader::new_with_options(options);
+    // Bytes fed since the last record: a record that needs more than the limit is where the file breaks off.
+    let mut pending = 0usize;
+    while let Some(event) = reader.next_event() {
+        match event {
+            Ok(LinearReadEvent::ReadRequest(want)) => {
+                if pending > MAX_RECORD_BYTES {
+                    return Ok(false);
+                }
+                let buf = reader.insert(want.clamp(1, READ_BLOCK));
+                let n = file.read(buf).map_err(io(path))?;
+                reader.notify_read(n);
+                pending += n;
+            }
+            Ok(LinearReadEvent::Record { data, opcode }) => {
+                pending = 0;
+                // 0x00 is no MCAP record: a zero-filled (sparse) tail.
+                if opcode == 0 || opcode > 0x0F {
+                    return Ok(false);
+                }
+                if !record(opcode, data)? {
+                    return Ok(false);
+                }
+            }
+            Err(_) => return Ok(false),
+        }
+    }
+    Ok(true)
+}
+
+/// Copy every complete message of the damaged `source` into `writer`.
+fn copy_messages(source: &Path, writer: &mut BagWriter) -> Result<u64, BagError> {
+    use mcap::records::Record;
+    let mut schemas: BTreeMap<u16, (String, Vec<u8>)> = BTreeMap::new();
+    let mut channels: BTreeMap<u16, (String, u16, String)> = BTreeMap::new();
+    let mut topics: BTreeMap<u16, TopicId> = BTreeMap::new();
+    let mut count = 0;
+    stream_records(source, |opcode, body| {
+        let Ok(rec) = mcap::parse_record(opcode, body) else {
+            return Ok(false);
+        };
+        match rec {
+            Record::Schema { header, data } => {
+                schemas.insert(header.id, (header.name, data.into_owned()));
+            }
+            Record::Channel(c) => {
+                let qos = c
+                    .metadata
+                    .get("offered_qos_profiles")
+                    .cloned()
+                    .unwrap_or_default();
+                channels.insert(c.id, (c.topic, c.schema_id, qos));
+            }
+            Record::Message { header, data } => {
+                let topic = match topics.get(&header.channel_id) {
+                    Some(&t) => t,
+                    None => {
+                        let Some((name, schema_id, qos)) = channels.get(&header.channel_id) else {
+                            return Ok(false);
+                        };
+                        let (type_name, schema) =
+                            schemas.get(schema_id).cloned().unwrap_or_default();
+                        let t =
+                            writer.add_topic_with_schema(name, &type_name, &schema, qos.clone())?;
+                        topics.insert(header.channel_id, t);
+                        t
+                    }
+                };
+                writer.write_raw(topic, header.log_time, &data)?;
+                count += 1;
+            }
+            _ => {}
+        }
+        Ok(true)
+    })?;
+    Ok(count)
+}
+
+/// Read the repaired file back: complete, with `expected` messages.
+fn verify(path: &Path, expected: u64) -> Result<(), BagError> {
+    if kind(path)? != Kind::Complete {
+        return Err(mcap_err(
+            path,
+            "the repaired file has no footer: left in place, metadata.yaml not changed",
+        ));
+    }
+    let mut count = 0u64;
+    let clean = stream_records(path, |opcode, _| {
+        count += u64::from(opcode == 0x05);
+        Ok(true)
+    })?;
+    if !clean || count != expected {
+        return Err(mcap_err(path, format!("read back {count} messages of {expected} written: left in place, metadata.yaml not changed")));
+    }
+    Ok(())
+}
+
+/// `<stem>.repaired.mcap` beside `source`, or the first free `-2`, `-3`, …;
+/// `Ok(None)` when a complete one exists (repaired before).
+fn repaired_name(source: &Path) -> Result<Option<String>, BagError> {
+    let stem = source
+        .file_stem()
+        .map(|s| s.to_string_lossy().into_owned())
+        .unwrap_or_default();
+    let dir = source.parent().unwrap_or(Path::new("."));
+    let first = format!("{stem}.repaired.mcap");
+    if dir.join(&first).exists() {
+        if kind(&dir.join(&first)).is_ok_and(|k| k == Kind::Complete) {
+            return Ok(None);
+        }
+    } else {
+        return Ok(Some(first));
+    }
+    (2..MAX_FILES)
+        .map(|i| format!("{stem}.repaired-{i}.mcap"))
+        .find(|n| !dir.join(n).exists())
+        .map(Some)
+        .ok_or_else(|| mcap_err(source, "no free name for the repaired file"))
+}
+
+/// A fresh name `base`, `base-2`, … in `dir`.
+fn fresh(dir: &Path, base: &str) -> PathBuf {
+    std::iter::once(base.to_string())
+        .chain((2..).map(|i| format!("{base}-{i}")))
+        .map(|n| dir.join(n))
+        .find(|p| !p.exists())
+        .expect("a free name")
 }
 
 /// Repair the bag directory `dir` (see the module documentation).
 pub fn repair(dir: &Path) -> Result<Repair, BagError> {
-    let path = mcap_file(dir)?;
-    let bytes = std::fs::read(&path).map_err(|e| BagError::Io { path: path.clone(), source: e })?;
-    if is_complete(&bytes) && dir.join("metadata.yaml").is_file() {
-        return Ok(Repair::AlreadyComplete { file: path });
+    let files = mcap_files(dir)?;
+    let mut damaged = Vec::new();
+    for f in &files {
+        if kind(f)? == Kind::Damaged {
+            damaged.push(f.clone());
+        }
     }
-    let file_name = path.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
-    let broken = dir.join(format!("{file_name}.broken"));
-    std::fs::rename(&path, &broken).map_err(|e| BagError::Io { path: path.clone(), source: e })?;
-    let mut writer = BagWriter::create_file(dir, file_name)?;
-    let options = mcap::read::Options::IgnoreEndMagic.into();
-    let stream = mcap::MessageStream::new_with_options(&bytes, options).map_err(|e| BagError::Mcap { path: broken.clone(), message: e.to_string() })?;
-    let mut topics: BTreeMap<u16, TopicId> = BTreeMap::new();
-    // Messages until the first record that is cut off.
-    for message in stream.map_while(Result::ok) {
-        let channel = &message.channel;
-        let topic = match topics.get(&channel.id) {
-            Some(&t) => t,
-            None => {
-                let (type_name, schema) = channel.schema.as_ref().map_or((String::new(), Vec::new()), |s| (s.name.clone(), s.data.to_vec()));
-                let qos = channel.metadata.get("offered_qos_profiles").cloned().unwrap_or_default();
-                let t = writer.add_topic_with_schema(&channel.topic, &type_name, &schema, qos)?;
-                topics.insert(channel.id, t);
-                t
-            }
-        };
-        writer.write_raw(topic, message.log_time, &message.data)?;
+    let mut todo = Vec::new();
+    for f in &damaged {
+        if let Some(name) = repaired_name(f)? {
+            todo.push((f.clone(), name));
+        }
     }
-    let summary = writer.finish()?;
-    Ok(Repair::Repaired { summary, broken })
+    if todo.is_empty() && dir.join("metadata.yaml").is_file() {
+        return Ok(Repair::AlreadyComplete { files });
+    }
+    let mut repaired = Vec::new();
+    let mut parts = Vec::new();
+    for (source, name) in todo {
+        let mut writer = BagWriter::create_file(dir, name.clone())?.without_checkpoints();
+        let count = copy_messages(&source, &mut writer)?;
+        let (summary, metadata) = writer.finish_file()?;
+        verify(&dir.join(&name), count)?;
+        repaired.push((source, summary));
+        parts.push(metadata);
+    }
+    let meta = dir.join("metadata.yaml");
+    if meta.is_file() {
+        let keep = fresh(dir, "metadata.yaml.before-repair");
+        std::fs::copy(&meta, &keep).map_err(io(&keep))?;
+    }
+    write_combined_metadata(dir, parts)?;
+    Ok(Repair::Repaired { repaired })
 }

@@ -90,6 +90,9 @@ pub struct BagWriter {
     count: u64,
     /// When the last chunk was closed and metadata.yaml rewritten.
     checkpoint: Option<Instant>,
+    /// Whether writing checkpoints (off for `bag repair`: metadata.yaml is
+    /// only replaced once the repaired file is verified).
+    checkpoints: bool,
 }
 
 /// How often a recording closes its MCAP chunk and rewrites metadata.yaml,
@@ -185,7 +188,14 @@ impl BagWriter {
             last: 0,
             count: 0,
             checkpoint: None,
+            checkpoints: true,
         })
+    }
+
+    /// No checkpoints: metadata.yaml is left alone until [`Self::finish`].
+    pub(super) fn without_checkpoints(mut self) -> Self {
+        self.checkpoints = false;
+        self
     }
 
     pub fn dir(&self) -> &Path {
@@ -241,7 +251,7 @@ impl BagWriter {
         self.last = self.last.max(log_time);
         let r = self.mcap.write_to_known_channel(&header, data);
         r.map_err(|e| self.mcap_error(e))?;
-        if self.checkpoint.is_none_or(|t| t.elapsed() >= CHECKPOINT_PERIOD) {
+        if self.checkpoints && self.checkpoint.is_none_or(|t| t.elapsed() >= CHECKPOINT_PERIOD) {
             self.checkpoint()?;
         }
         Ok(())
@@ -302,7 +312,16 @@ impl BagWriter {
     }
 
     /// Write the MCAP summary and metadata.yaml; the bag is complete.
-    pub fn finish(mut self) -> Result<BagSummary, BagError> {
+    pub fn finish(self) -> Result<BagSummary, BagError> {
+        let dir = self.dir.clone();
+        let (summary, metadata) = self.finish_file()?;
+        write_metadata_yaml(&dir, &metadata)?;
+        Ok(summary)
+    }
+
+    /// Write the MCAP summary (not metadata.yaml): the file is complete;
+    /// its part of metadata.yaml for [`write_combined_metadata`].
+    pub(super) fn finish_file(mut self) -> Result<(BagSummary, Metadata), BagError> {
         let metadata = self.metadata();
         let serialized = serde_yaml_ng::to_string(&metadata).map_err(|e| BagError::Yaml(e.to_string()))?;
         let record = mcap::records::Metadata {
@@ -318,9 +337,7 @@ impl BagWriter {
         file.sync_all().map_err(io(&path))?;
         let bytes = file.metadata().map_err(io(&path))?.len();
 
-        write_metadata_yaml(&self.dir, &metadata)?;
-
-        Ok(BagSummary {
+        let summary = BagSummary {
             dir: self.dir.clone(),
             file: self.file_name.clone(),
             message_count: metadata.message_count,
@@ -332,8 +349,38 @@ impl BagWriter {
                 .map(|t| TopicSummary { name: t.name.clone(), type_name: t.type_name.clone(), count: t.count })
                 .collect(),
             bytes,
-        })
+        };
+        Ok((summary, metadata))
     }
+}
+
+/// Write `dir/metadata.yaml` for the files of `parts` together (`bag repair`
+/// of several files): counts summed per topic, the earliest start, the
+/// latest end.
+pub(super) fn write_combined_metadata(dir: &Path, parts: Vec<Metadata>) -> Result<(), BagError> {
+    let mut parts = parts.into_iter();
+    let Some(mut all) = parts.next() else { return Ok(()) };
+    for m in parts {
+        let (a0, a1) = (all.starting_time.nanoseconds_since_epoch, all.starting_time.nanoseconds_since_epoch + all.duration.nanoseconds);
+        let (b0, b1) = (m.starting_time.nanoseconds_since_epoch, m.starting_time.nanoseconds_since_epoch + m.duration.nanoseconds);
+        let (start, end) = match (all.message_count, m.message_count) {
+            (0, _) => (b0, b1),
+            (_, 0) => (a0, a1),
+            _ => (a0.min(b0), a1.max(b1)),
+        };
+        all.starting_time.nanoseconds_since_epoch = start;
+        all.duration.nanoseconds = end - start;
+        all.message_count += m.message_count;
+        for t in m.topics_with_message_count {
+            match all.topics_with_message_count.iter_mut().find(|a| a.topic_metadata.name == t.topic_metadata.name) {
+                Some(a) => a.message_count += t.message_count,
+                None => all.topics_with_message_count.push(t),
+            }
+        }
+        all.relative_file_paths.extend(m.relative_file_paths);
+        all.files.extend(m.files);
+    }
+    write_metadata_yaml(dir, &all)
 }
 
 // ---- metadata.yaml (rosbag2_storage/yaml.hpp, version 9) -----------------------
@@ -377,7 +424,7 @@ struct FileInformation {
 }
 
 #[derive(Serialize)]
-struct Metadata {
+pub(super) struct Metadata {
     version: u32,
     storage_identifier: String,
     duration: Nanoseconds,

@@ -29,6 +29,16 @@ pub struct CampbellArgs {
     pub overrides: Vec<String>,
 }
 
+/// The fastest speed of `--speeds`, rad/s (the declared maximum of `limits.max_speed`).
+pub const MAX_SPEED: f64 = 1e6;
+
+/// The most `--speeds` with centrifugal stiffening (an eigensolution per speed):
+/// 100,000 took 55 s and 1.6 GB (brake-squeal scene), this many ~6 s.
+pub const MAX_STIFFENED_SPEEDS: usize = 10_000;
+
+/// The most points of a `FROM:TO:N` range.
+pub const MAX_POINTS: usize = 100_000;
+
 /// `FROM:TO:N` → N speeds from FROM to TO inclusive (N = 1: FROM, which must equal TO).
 pub fn parse_range(option: &str, text: &str) -> CliResult<Vec<f64>> {
     let bad = |why: &str| CliError::Usage(format!("{option} {text}: {why} (give FROM:TO:N, e.g. 0:6000:121)"));
@@ -43,7 +53,7 @@ pub fn parse_range(option: &str, text: &str) -> CliResult<Vec<f64>> {
     if from < 0.0 || to < from {
         return Err(bad("0 ≤ FROM ≤ TO is required"));
     }
-    if n == 0 || n > 100_000 {
+    if n == 0 || n > MAX_POINTS {
         return Err(bad("N must be between 1 and 100000"));
     }
     if n == 1 && to != from {
@@ -52,7 +62,7 @@ pub fn parse_range(option: &str, text: &str) -> CliResult<Vec<f64>> {
     Ok(linspace(from, to, n))
 }
 
-fn linspace(from: f64, to: f64, n: usize) -> Vec<f64> {
+pub fn linspace(from: f64, to: f64, n: usize) -> Vec<f64> {
     if n == 1 {
         return vec![from];
     }
@@ -66,7 +76,25 @@ pub fn main(args: CampbellArgs) -> CliResult<()> {
     }
     let model = PlateModel::new(&config.plate)?;
     let speeds = match &args.speeds {
-        Some(text) => parse_range("--speeds", text)?,
+        Some(text) => {
+            let speeds = parse_range("--speeds", text)?;
+            if let Some(s) = speeds.iter().find(|s| s.abs() > MAX_SPEED) {
+                return Err(CliError::Usage(format!(
+                    "--speeds {text}: the speed {s:e} rad/s is above {MAX_SPEED:e} rad/s, the largest limits.max_speed any scene may declare"
+                )));
+            }
+            if config.centrifugal.stiffening && speeds.len() > MAX_STIFFENED_SPEEDS {
+                return Err(CliError::Usage(format!(
+                    "--speeds {text}: {} speeds with plate.centrifugal_stiffening: true is more than {MAX_STIFFENED_SPEEDS} \
+                     (each speed is an eigensolution per nodal-diameter number: ~0.55 ms and ~16 kB a speed for the brake-squeal scene, \
+                     {:.0} s and {:.0} MB here); give fewer speeds",
+                    speeds.len(),
+                    speeds.len() as f64 * 5.5e-4,
+                    speeds.len() as f64 * 0.016
+                )));
+            }
+            speeds
+        }
         None => {
             let critical = critical_speeds(&model, &config.centrifugal)?;
             // Without any critical speed (only k = 0 modes): up to the highest frequency, in rad/s.

@@ -91,6 +91,9 @@ pub enum ConfigError {
     #[error("{key} = {} exceeds its maximum of {}", num(*value), num(*max))]
     AboveMaximum { key: String, value: f64, max: f64 },
 
+    #[error("{key} = {} is out of its declared range: it must be {rule}", num(*value))]
+    OutOfRange { key: String, value: f64, rule: String },
+
     #[error("{key} must not be empty")]
     Empty { key: String },
     /// A caliper key against its geometric rule (`calipers.*`, docs/scenes.md).

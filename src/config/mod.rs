@@ -7,6 +7,7 @@
 //! the key (`plate.inner_radius`) and the rule.
 
 pub mod calipers;
+mod check;
 mod centrifugal;
 mod load_model_sections;
 mod load_models;
@@ -21,6 +22,7 @@ pub use centrifugal::{CentrifugalConfig, InPlaneInner};
 pub use load_models::{
     Caliper, ContactSurface, LinksConfig, PadContact, PadsConfig, SpringsConfig, ToolConfig, MAX_TOOL_FEED_RATE,
 };
+pub use check::{check, check_params};
 pub use error::{ConfigError, Degeneracy};
 pub use params_file::{ParamValue, Params};
 

@@ -113,8 +113,13 @@ impl Params {
         if bytes > MAX_FILE_BYTES {
             return Err(ConfigError::TooLarge { path: path.to_path_buf(), bytes, limit: MAX_FILE_BYTES });
         }
-        let text = std::fs::read_to_string(path)
+        // The size again while reading: a device or pipe (/dev/zero) has no length beforehand.
+        let mut text = String::new();
+        std::io::Read::read_to_string(&mut std::io::Read::take(std::fs::File::open(path).map_err(io)?, MAX_FILE_BYTES + 1), &mut text)
             .map_err(|e| ConfigError::Io { path: path.to_path_buf(), message: e.to_string() })?;
+        if text.len() as u64 > MAX_FILE_BYTES {
+            return Err(ConfigError::TooLarge { path: path.to_path_buf(), bytes: text.len() as u64, limit: MAX_FILE_BYTES });
+        }
         Params::from_yaml_str(&text, node_name).map_err(|e| match e {
             ConfigError::Yaml { message } => ConfigError::Yaml { message: format!("{}: {message}", path.display()) },
             other => other,
@@ -173,7 +178,10 @@ impl Params {
             if let Some(map) = ros_parameters {
                 flatten_map("", map, &mut own)?;
             }
-            params.values.extend(own);
+            params.values.extend(own.into_iter().map(|(k, v)| {
+                let v = super::check::read_as_declared(&k, v);
+                (k, v)
+            }));
         }
         Ok(params)
     }
@@ -195,7 +203,7 @@ impl Params {
                 message: "a parameter value is a scalar or a flat list, not a map".to_string(),
             });
         }
-        let value = convert_value(name, &value)?;
+        let value = super::check::read_as_declared(name, convert_value(name, &value)?);
         self.values.insert(name.to_string(), value);
         Ok(())
     }

@@ -25,6 +25,29 @@ impl<'a> Reader<'a> {
         self.params.get(key)
     }
 
+    /// A double key's value or its declared default (`config/table.rs`); its
+    /// type and range were checked by `config::check` before any section is read.
+    pub(super) fn declared_f64(&self, key: &str) -> Result<f64, ConfigError> {
+        match (self.get(key), super::table::find(key).map(|p| p.default)) {
+            (Some(ParamValue::Double(x)), _) => Ok(*x),
+            (None, Some(super::table::Value::Double(x))) => Ok(x),
+            (Some(other), _) => Err(wrong_type(key, "a double", other)),
+            (None, _) => Err(ConfigError::MissingValue { key: key.to_string() }),
+        }
+    }
+
+    /// An integer key's value (or its declared default) as a `u32`; its
+    /// declared range was checked by `config::check`.
+    pub(super) fn declared_u32(&self, key: &str) -> Result<u32, ConfigError> {
+        let i = match (self.get(key), super::table::find(key).map(|p| p.default)) {
+            (Some(ParamValue::Integer(i)), _) => *i,
+            (None, Some(super::table::Value::Integer(i))) => i,
+            (Some(other), _) => return Err(wrong_type(key, "an integer", other)),
+            (None, _) => return Err(ConfigError::MissingValue { key: key.to_string() }),
+        };
+        u32::try_from(i).map_err(|_| ConfigError::AboveMaximum { key: key.to_string(), value: i as f64, max: u32::MAX as f64 })
+    }
+
     /// Whether the parameter set gives `key` at all.
     pub(super) fn has(&self, key: &str) -> bool {
         self.get(key).is_some()
@@ -57,24 +80,6 @@ impl<'a> Reader<'a> {
             Some(ParamValue::Integer(i)) => Ok(*i),
             Some(other) => Err(wrong_type(key, "an integer", other)),
         }
-    }
-
-    /// An integer in `min..=max` with `min` 0 (else `Negative`) or 1 (else `NotPositive`).
-    pub(super) fn u32_in(&self, key: &str, default: u32, min: u32, max: u32) -> Result<u32, ConfigError> {
-        debug_assert!(min <= 1);
-        let i = self.i64(key, default as i64)?;
-        if i < min as i64 {
-            let value = i as f64;
-            return Err(if min == 0 {
-                ConfigError::Negative { key: key.to_string(), value }
-            } else {
-                ConfigError::NotPositive { key: key.to_string(), value }
-            });
-        }
-        if i > max as i64 {
-            return Err(ConfigError::AboveMaximum { key: key.to_string(), value: i as f64, max: max as f64 });
-        }
-        Ok(i as u32)
     }
 
     pub(super) fn bool(&self, key: &str, default: bool) -> Result<bool, ConfigError> {

@@ -18,6 +18,97 @@ pub enum Ty {
     IntegerArray,
     DoubleArray,
     StringArray,
+    /// The string `auto` or an integer (`plate.radial_splines`).
+    AutoOrInteger,
+    /// The string `auto` or a double (`ros.marker_scale`).
+    AutoOrDouble,
+}
+
+impl Ty {
+    /// As an error message states what the key takes.
+    pub fn expected(self) -> &'static str {
+        match self {
+            Ty::Bool => "a bool (true or false)",
+            Ty::Integer => "an integer",
+            Ty::Double => "a double",
+            Ty::String => "a string",
+            Ty::IntegerArray => "an integer array",
+            Ty::DoubleArray => "a double array",
+            Ty::StringArray => "a string array",
+            Ty::AutoOrInteger => "`auto` or an integer",
+            Ty::AutoOrDouble => "`auto` or a double",
+        }
+    }
+}
+
+/// One end of a declared numeric range.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Bound {
+    Open,
+    /// `≥ x` (or `≤ x` as the upper end).
+    Inclusive(f64),
+    /// `> x` (or `< x`).
+    Exclusive(f64),
+}
+
+/// The range every number of a key (each element of an array) must lie in,
+/// checked by `config::check` for every source of a value; doubles must be
+/// finite whatever the range. `or_zero`: 0 is accepted besides the range
+/// (`simulation.realtime_factor`: 0 = as fast as possible).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Range {
+    pub min: Bound,
+    pub max: Bound,
+    pub or_zero: bool,
+}
+
+impl Range {
+    pub const ANY: Range = Range { min: Bound::Open, max: Bound::Open, or_zero: false };
+
+    /// Whether `x` lies in the range.
+    pub fn contains(&self, x: f64) -> bool {
+        let low = match self.min {
+            Bound::Open => true,
+            Bound::Inclusive(m) => x >= m,
+            Bound::Exclusive(m) => x > m,
+        };
+        let high = match self.max {
+            Bound::Open => true,
+            Bound::Inclusive(m) => x <= m,
+            Bound::Exclusive(m) => x < m,
+        };
+        (low && high) || (self.or_zero && x == 0.0)
+    }
+
+    /// The range as an error message states it (`> 0`, `in (0, 2.5]`, `0 or in [1e-6, 1e6]`).
+    pub fn text(&self) -> String {
+        let n = |x: f64| if x != 0.0 && (x.abs() >= 1e6 || x.abs() < 1e-4) { format!("{x:e}") } else { format!("{x}") };
+        let range = match (self.min, self.max) {
+            (Bound::Open, Bound::Open) => "finite".to_string(),
+            (Bound::Inclusive(a), Bound::Open) => format!(">= {}", n(a)),
+            (Bound::Exclusive(a), Bound::Open) => format!("> {}", n(a)),
+            (Bound::Open, Bound::Inclusive(b)) => format!("<= {}", n(b)),
+            (Bound::Open, Bound::Exclusive(b)) => format!("< {}", n(b)),
+            (lo, hi) => {
+                let (l, a) = match lo {
+                    Bound::Inclusive(a) => ('[', a),
+                    Bound::Exclusive(a) => ('(', a),
+                    Bound::Open => ('(', f64::NEG_INFINITY),
+                };
+                let (h, b) = match hi {
+                    Bound::Inclusive(b) => (']', b),
+                    Bound::Exclusive(b) => (')', b),
+                    Bound::Open => (')', f64::INFINITY),
+                };
+                format!("in {l}{}, {}{h}", n(a), n(b))
+            }
+        };
+        if self.or_zero {
+            format!("0 or {range}")
+        } else {
+            range
+        }
+    }
 }
 
 /// A declared default value (`None`: the key has no value unless given).
@@ -60,6 +151,40 @@ pub struct Param {
     pub default_text: &'static str,
     pub rule: &'static str,
     pub meaning: &'static str,
+    /// The numeric range the rule states (`Range::ANY`: none beyond finite).
+    pub range: Range,
+}
+
+impl Param {
+    /// `≥ x`.
+    pub const fn min(mut self, x: f64) -> Param {
+        self.range.min = Bound::Inclusive(x);
+        self
+    }
+
+    /// `> x`.
+    pub const fn above(mut self, x: f64) -> Param {
+        self.range.min = Bound::Exclusive(x);
+        self
+    }
+
+    /// `≤ x`.
+    pub const fn max(mut self, x: f64) -> Param {
+        self.range.max = Bound::Inclusive(x);
+        self
+    }
+
+    /// `< x`.
+    pub const fn below(mut self, x: f64) -> Param {
+        self.range.max = Bound::Exclusive(x);
+        self
+    }
+
+    /// 0 is accepted besides the range.
+    pub const fn or_zero(mut self) -> Param {
+        self.range.or_zero = true;
+        self
+    }
 }
 
 /// One section of keys (`plate.*`; `""`: the top-level keys).
@@ -85,7 +210,7 @@ const fn p(
     rule: &'static str,
     meaning: &'static str,
 ) -> Param {
-    Param { key, ty, type_text, unit, default, default_text, rule, meaning }
+    Param { key, ty, type_text, unit, default, default_text, rule, meaning, range: Range::ANY }
 }
 
 /// Every section, in the reference's order.
@@ -97,18 +222,18 @@ pub const SECTIONS: &[Section] = &[
         after: "",
         params: &[
             p("plate.inner_radius", Ty::Double, "double", "m", Value::Double(0.075), "0.075", "> 0, < `plate.outer_radius`; r_i/r_a ≥ 1e-6; (r_a − r_i)/r_a ≥ 1e-3", "inner radius r_i"),
-            p("plate.outer_radius", Ty::Double, "double", "m", Value::Double(0.15), "0.15", "> 0", "outer radius r_a"),
-            p("plate.thickness", Ty::Double, "double", "m", Value::Double(0.01), "0.01", "> 0", "thickness h"),
-            p("plate.density", Ty::Double, "double", "kg/m³", Value::Double(7850.0), "7850", "> 0", "mass density ρ"),
-            p("plate.youngs_modulus", Ty::Double, "double", "Pa", Value::Double(210000000000.0), "2.1e11", "> 0", "Young's modulus E"),
-            p("plate.shear_modulus", Ty::Double, "double", "Pa", Value::None, "—", "> 0; gives ν = E/(2G) − 1 (paper 4.1), which must lie in (−1, 0.5), i.e. G > E/3; not together with `plate.poisson_ratio`", "shear modulus G, as the paper's parameter"),
+            p("plate.outer_radius", Ty::Double, "double", "m", Value::Double(0.15), "0.15", "> 0", "outer radius r_a").above(0.0),
+            p("plate.thickness", Ty::Double, "double", "m", Value::Double(0.01), "0.01", "> 0", "thickness h").above(0.0),
+            p("plate.density", Ty::Double, "double", "kg/m³", Value::Double(7850.0), "7850", "> 0", "mass density ρ").above(0.0),
+            p("plate.youngs_modulus", Ty::Double, "double", "Pa", Value::Double(210000000000.0), "2.1e11", "> 0", "Young's modulus E").above(0.0),
+            p("plate.shear_modulus", Ty::Double, "double", "Pa", Value::None, "—", "> 0; gives ν = E/(2G) − 1 (paper 4.1), which must lie in (−1, 0.5), i.e. G > E/3; not together with `plate.poisson_ratio`", "shear modulus G, as the paper's parameter").above(0.0),
             p("plate.poisson_ratio", Ty::Double, "double", "—", Value::Double(0.3), "0.3 (when neither is given)", "in (−1, 0.5) exclusive; not together with `plate.shear_modulus`", "Poisson ratio ν"),
             p("plate.inner_boundary", Ty::String, "string", "—", Value::Str("clamped"), "`clamped`", "`free`, `supported` or `clamped`", "boundary condition at r_i (`boundaryConditionRI`)"),
             p("plate.outer_boundary", Ty::String, "string", "—", Value::Str("free"), "`free`", "`free`, `supported` or `clamped`", "boundary condition at r_a (`boundaryConditionRA`)"),
             p("plate.nodal_diameters", Ty::IntegerArray, "integer array", "—", Value::Integers(&[0, 1, 2, 3, 4, 5, 6, 7]), "[0, 1, 2, 3, 4, 5, 6, 7]", "non-empty, each 0 ≤ k ≤ 200, distinct", "nodal diameter numbers k to include"),
             p("plate.nodal_circles", Ty::IntegerArray, "integer array", "—", Value::Integers(&[0, 1]), "[0, 1]", "non-empty, each 0 ≤ l ≤ 50, distinct", "nodal circle numbers l to include"),
             p("plate.damping", Ty::DoubleArray, "double array", "—", Value::Doubles(&[0.0]), "[0.0]", "each in [0, 1); length 1 (all modes) or n (one per mode, in `modes` order)", "modal damping ratios ζ"),
-            p("plate.radial_splines", Ty::String, "`auto` or integer", "—", Value::Str("auto"), "`auto`", "`auto`, or an integer ≤ 400 and at least `min_radial_splines` (below)", "cubic B-splines of the radial discretisation, before boundary conditions: `auto` chooses per nodal-diameter number k the count whose estimated relative frequency error of the requested l is at most `plate.frequency_tolerance` (docs/convergence.md; `modes --json` reports it per k); an integer fixes the count for every k"),
+            p("plate.radial_splines", Ty::AutoOrInteger, "`auto` or integer", "—", Value::Str("auto"), "`auto`", "`auto`, or an integer ≤ 400 and at least `min_radial_splines` (below)", "cubic B-splines of the radial discretisation, before boundary conditions: `auto` chooses per nodal-diameter number k the count whose estimated relative frequency error of the requested l is at most `plate.frequency_tolerance` (docs/convergence.md; `modes --json` reports it per k); an integer fixes the count for every k"),
             p("plate.frequency_tolerance", Ty::Double, "double", "—", Value::Double(1e-6), "1e-6", "in [1e-9, 1e-2]", "relative frequency error the `auto` radial spline count reaches for every requested ⟨k, l⟩ (estimated by Richardson extrapolation; a count above 400 needed is an error naming this key)"),
             p("plate.centrifugal_stiffening", Ty::Bool, "bool", "—", Value::Bool(false), "false", "—", "the membrane prestress of the spinning annulus (Lamé, ∝ Ω²) stiffens the plate: geometric stiffness Ω(t)²G_k in the time integration (every integrator, `stability`) and in `campbell`, critical speeds (docs/rotor_dynamics.md)"),
             p("plate.in_plane_inner", Ty::String, "string", "—", Value::Str("auto"), "`auto`", "`auto`, `fixed` or `free`", "in-plane condition at r_i for the prestress: `fixed` u(r_i) = 0 (hub), `free` σ_r(r_i) = 0; `auto`: fixed when `plate.inner_boundary` is clamped or supported, free when free"),
@@ -147,8 +272,8 @@ pub const SECTIONS: &[Section] = &[
         after: "",
         params: &[
             p("joint.speed", Ty::Double, "double", "rad/s", Value::Double(0.0), "0", "finite, \\|Ω\\| ≤ `limits.max_speed`", "commanded speed Ω; held from t = 0 and the plate starts at it"),
-            p("joint.max_acceleration", Ty::Double, "double", "rad/s²", Value::Double(50.0), "50", "> 0", "acceleration limit of the drive"),
-            p("joint.max_torque", Ty::Double, "double", "N·m", Value::None, "none (stiff drive)", "> 0 when given", "torque limit of the drive; omitted: the joint follows its command kinematically"),
+            p("joint.max_acceleration", Ty::Double, "double", "rad/s²", Value::Double(50.0), "50", "> 0", "acceleration limit of the drive").above(0.0),
+            p("joint.max_torque", Ty::Double, "double", "N·m", Value::None, "none (stiff drive)", "> 0 when given", "torque limit of the drive; omitted: the joint follows its command kinematically").above(0.0),
             p("joint.initial_position", Ty::Double, "double", "rad", Value::Double(0.0), "0", "finite", "initial joint angle χ(0)"),
         ],
     },
@@ -179,14 +304,14 @@ pub const SECTIONS: &[Section] = &[
         before: "",
         after: "",
         params: &[
-            p("simulation.rate_hz", Ty::Double, "double", "Hz", Value::Double(1000.0), "1000", "> 0, ≤ 1e6", "fixed step and output rate"),
-            p("simulation.substeps", Ty::Integer, "integer", "—", Value::Integer(1), "1", "1 ..= 10000", "integration sub-steps per output step"),
+            p("simulation.rate_hz", Ty::Double, "double", "Hz", Value::Double(1000.0), "1000", "≥ 1e-3, ≤ 1e6", "fixed step and output rate").min(1e-3).max(1e6),
+            p("simulation.substeps", Ty::Integer, "integer", "—", Value::Integer(1), "1", "1 ..= 10000", "integration sub-steps per output step").min(1.0).max(10000.0),
             p("simulation.integrator", Ty::String, "string", "—", Value::Str("exponential"), "`exponential`", "`exponential`, `implicit_midpoint` or `rk4`", "time integration scheme (exact exponential per mode for held loads; A-stable energy-conserving implicit midpoint; classical Runge–Kutta 4, sub-stepping below its stability limit)"),
             p("simulation.coordinates", Ty::String, "string", "—", Value::Str("ale"), "`ale`", "`ale` or `lagrangian`", "modal amplitudes integrated in the non-rotating frame (ALE, eq. 20) or in the rotating plate frame"),
-            p("simulation.realtime_factor", Ty::Double, "double", "—", Value::Double(1.0), "1", "≥ 0", "1 = wall clock, 0 = as fast as possible (the node only)"),
-            p("simulation.publish_divisor", Ty::Integer, "integer", "—", Value::Integer(1), "1", "≥ 1", "publish every n-th step (the node only)"),
-            p("simulation.rk4_step_limit", Ty::Double, "double", "—", Value::Double(0.2), "0.2", "> 0, ≤ 2.5", "`rk4` sub-steps itself so that h·λ_max stays below this; its amplitude error per step is (hω)⁶/144 (the brake-squeal scene uses 0.1)"),
-            p("simulation.midpoint_step_limit", Ty::Double, "double", "—", Value::Double(0.5), "0.5", "> 0, ≤ 1e6", "`implicit_midpoint` sub-steps itself so that h·λ_max stays below this: the fastest mode's frequency is then within 1 − 2·atan(x/2)/x (2.0 % at 0.5), slower ones within (hω)²/12; a huge value accepts unresolved modes (A-stable, they ring without numerical damping)"),
+            p("simulation.realtime_factor", Ty::Double, "double", "—", Value::Double(1.0), "1", "0, or in [1e-6, 1e6]", "1 = wall clock, 0 = as fast as possible (the node only; can be set while it runs)").min(1e-6).max(1e6).or_zero(),
+            p("simulation.publish_divisor", Ty::Integer, "integer", "—", Value::Integer(1), "1", "≥ 1", "publish every n-th step (the node only)").min(1.0).max(4294967295.0),
+            p("simulation.rk4_step_limit", Ty::Double, "double", "—", Value::Double(0.2), "0.2", "> 0, ≤ 2.5", "`rk4` sub-steps itself so that h·λ_max stays below this; its amplitude error per step is (hω)⁶/144 (the brake-squeal scene uses 0.1)").above(0.0).max(super::MAX_RK4_STEP_LIMIT),
+            p("simulation.midpoint_step_limit", Ty::Double, "double", "—", Value::Double(0.5), "0.5", "> 0, ≤ 1e6", "`implicit_midpoint` sub-steps itself so that h·λ_max stays below this: the fastest mode's frequency is then within 1 − 2·atan(x/2)/x (2.0 % at 0.5), slower ones within (hω)²/12; a huge value accepts unresolved modes (A-stable, they ring without numerical damping)").above(0.0).max(super::MAX_MIDPOINT_STEP_LIMIT),
         ],
     },
     Section {
@@ -195,10 +320,10 @@ pub const SECTIONS: &[Section] = &[
         before: "",
         after: "",
         params: &[
-            p("limits.max_force", Ty::Double, "double", "N", Value::Double(10000000.0), "1e7", "> 0", "larger forces (per node, magnitude) are rejected as absurd"),
-            p("limits.max_moment", Ty::Double, "double", "N·m", Value::Double(1000000.0), "1e6", "> 0", "larger moments (per node, magnitude) are rejected as absurd"),
-            p("limits.max_speed", Ty::Double, "double", "rad/s", Value::Double(10000.0), "1e4", "> 0", "larger joint speeds are rejected"),
-            p("limits.max_deflection_thicknesses", Ty::Double, "double", "—", Value::Double(1000.0), "1e3", "> 0", "divergence guard: a modal amplitude beyond this many plate thicknesses stops the run"),
+            p("limits.max_force", Ty::Double, "double", "N", Value::Double(10000000.0), "1e7", "> 0", "larger forces (per node, magnitude) are rejected as absurd").above(0.0),
+            p("limits.max_moment", Ty::Double, "double", "N·m", Value::Double(1000000.0), "1e6", "> 0", "larger moments (per node, magnitude) are rejected as absurd").above(0.0),
+            p("limits.max_speed", Ty::Double, "double", "rad/s", Value::Double(10000.0), "1e4", "> 0, ≤ 1e6", "larger joint speeds are rejected (also the speeds of `stability`)").above(0.0).max(1e6),
+            p("limits.max_deflection_thicknesses", Ty::Double, "double", "—", Value::Double(1000.0), "1e3", "> 0", "divergence guard: a modal amplitude beyond this many plate thicknesses stops the run").above(0.0),
         ],
     },
     Section {
@@ -210,17 +335,17 @@ pub const SECTIONS: &[Section] = &[
             p("pads.ale_nodes", Ty::IntegerArray, "integer array", "—", Value::Integers(&[]), "[]", "each an existing ALE node (from 1), distinct", "contact points: at each a pad presses on each face of the disc"),
             p("pads.contact_pad", Ty::IntegerArray, "integer array", "—", Value::None, "all 1", "same length as `pads.ale_nodes`; pads numbered 1..P without gaps", "the pad each contact point belongs to (a pad shares one clamp force)"),
             p("pads.clamp_force", Ty::DoubleArray, "double array", "N", Value::Doubles(&[0.0]), "[0]", "each ≥ 0 and ≤ `limits.max_force`; 1 value (all pads) or one per pad", "clamp force per pad at t = 0: the force each face is pressed with, shared by the pad's contact points (the command `set_pad_clamp_force` changes it)"),
-            p("pads.contact_stiffness", Ty::Double, "double", "N/m", Value::Double(5000000.0), "5e6", "> 0", "axial stiffness k_c per contact point and face"),
-            p("pads.contact_damping", Ty::Double, "double", "N·s/m", Value::Double(0.0), "0", "≥ 0", "axial damping c_c per contact point and face (on the gap-closing rate ∂w/∂t at the fixed point)"),
+            p("pads.contact_stiffness", Ty::Double, "double", "N/m", Value::Double(5000000.0), "5e6", "> 0", "axial stiffness k_c per contact point and face").above(0.0),
+            p("pads.contact_damping", Ty::Double, "double", "N·s/m", Value::Double(0.0), "0", "≥ 0", "axial damping c_c per contact point and face (on the gap-closing rate ∂w/∂t at the fixed point)").min(0.0),
             p("pads.friction_coefficient", Ty::Double, "double", "—", Value::Double(0.4), "0.4", "≥ 0, ≤ 2", "μ: friction μN per face against the sliding direction"),
             p("pads.lift_off", Ty::Bool, "bool", "—", Value::Bool(false), "false", "—", "a contact that would pull is released (N ≥ 0)"),
             p("pads.follower_friction", Ty::Bool, "bool", "—", Value::Bool(true), "true", "—", "friction lies in the deformed surface (follower forces, the squeal mechanism)"),
             p("pads.caliper", Ty::String, "string", "—", Value::Str("floating"), "`floating`", "`floating` or `fixed`", "`floating`: each face's pad is a rigid backing plate pressed with the clamp force (a force, as from a hydraulic piston); `fixed`: the caliper stays where the clamp force puts it on an undeformed disc"),
             p("pads.contact_surface", Ty::String, "string", "—", Value::Str("faces"), "`faces`", "`faces` or `mid_plane`", "`faces`: each pad's friction acts on its face (z = ±h/2) against the sliding velocity of the face point — rotation, the vibration's in-plane −z∇(Dw/Dt) and normal Ω ∂w/∂θ — regularised Coulomb, so the two faces' normal-force difference makes a couple (docs/scenes.md); `mid_plane`: at the mid-plane node along −sign Ω e_θ (the paper's model)"),
             p("pads.static_friction_coefficient", Ty::Double, "double", "—", Value::None, "not given (constant μ)", "≥ 0, ≤ 2; only with `pads.contact_surface: faces`", "μ_s of the speed-dependent friction μ(v) = μ + (μ_s − μ) e^(−v/v_S), v the face's sliding speed (a falling μ(v), μ_s > μ, feeds energy into the vibration; docs/scenes.md)"),
-            p("pads.stribeck_speed", Ty::Double, "double", "m/s", Value::Double(1.0), "1", "> 0", "v_S of that law"),
-            p("pads.mass", Ty::Double, "double", "kg", Value::Double(0.0), "0", "≥ 0, finite; > 0 needs `simulation.integrator: rk4`", "mass m_p of each face's pad (lining and backing plate), moving axially between its contact springs k_c, c_c and the caliper: the pad's compression and rate are state, in series with the residual flexibility when `plate.residual_flexibility` (docs/scenes.md, \"Pad mass\"); 0: massless pads (the backing force balances the contacts at every instant)"),
-            p("pads.backing_stiffness", Ty::Double, "double", "N/m", Value::None, "not given", "> 0, finite; required with `pads.mass` > 0 and `pads.caliper: fixed`, refused otherwise", "k_b of the fixed caliper behind each massive pad: the backing force is N₀ − k_b (x − N₀/(n k_c)), x the pad's compression of its contact springs"),
+            p("pads.stribeck_speed", Ty::Double, "double", "m/s", Value::Double(1.0), "1", "> 0", "v_S of that law").above(0.0),
+            p("pads.mass", Ty::Double, "double", "kg", Value::Double(0.0), "0", "≥ 0, finite; > 0 needs `simulation.integrator: rk4`", "mass m_p of each face's pad (lining and backing plate), moving axially between its contact springs k_c, c_c and the caliper: the pad's compression and rate are state, in series with the residual flexibility when `plate.residual_flexibility` (docs/scenes.md, \"Pad mass\"); 0: massless pads (the backing force balances the contacts at every instant)").min(0.0),
+            p("pads.backing_stiffness", Ty::Double, "double", "N/m", Value::None, "not given", "> 0, finite; required with `pads.mass` > 0 and `pads.caliper: fixed`, refused otherwise", "k_b of the fixed caliper behind each massive pad: the backing force is N₀ − k_b (x − N₀/(n k_c)), x the pad's compression of its contact springs").above(0.0),
         ],
     },
     Section {
@@ -233,8 +358,8 @@ pub const SECTIONS: &[Section] = &[
             p("calipers.arc_deg", Ty::Double, "double", "deg", Value::Double(60.0), "60", "> 0; calipers × arc ≤ 360", "angular extent of each pad"),
             p("calipers.inner_radius", Ty::Double, "double", "m", Value::None, "required", "plate.inner_radius ≤ r < plate.outer_radius", "inner radius of the pads"),
             p("calipers.outer_radius", Ty::Double, "double", "m", Value::None, "required", "> calipers.inner_radius, ≤ plate.outer_radius", "outer radius of the pads"),
-            p("calipers.points_radial", Ty::Integer, "integer", "—", Value::Integer(1), "1", "≥ 1", "contact points across the radius: rings of equal area, each point at its ring's mean friction radius (uniform pressure)"),
-            p("calipers.points_circumferential", Ty::Integer, "integer", "—", Value::Integer(6), "6", "≥ 1; all points together ≤ 400", "contact points along the arc, at the centres of equal sub-arcs"),
+            p("calipers.points_radial", Ty::Integer, "integer", "—", Value::Integer(1), "1", "≥ 1", "contact points across the radius: rings of equal area, each point at its ring's mean friction radius (uniform pressure)").min(1.0),
+            p("calipers.points_circumferential", Ty::Integer, "integer", "—", Value::Integer(6), "6", "≥ 1; all points together ≤ 400", "contact points along the arc, at the centres of equal sub-arcs").min(1.0),
         ],
     },
     Section {
@@ -246,10 +371,10 @@ pub const SECTIONS: &[Section] = &[
             p("tool.ale_node", Ty::Integer, "integer", "—", Value::Integer(0), "0 (no tool)", "an existing ALE node (from 1) at ξ_r = 1 (the rim)", "where the feed force acts"),
             p("tool.depth_of_cut", Ty::Double, "double", "m", Value::Double(0.002), "0.002", "> 0, < r_a − r_i", "radial depth of cut = chip width b"),
             p("tool.feed_rate", Ty::Double, "double", "m/s", Value::Double(0.002), "0.002 (120 mm/min)", "\\|v\\| ≤ 1", "feed along −z at t = 0 (the command `set_tool_feed` changes it; negative retracts)"),
-            p("tool.start_clearance", Ty::Double, "double", "m", Value::Double(0.0), "0", "≥ 0", "gap between the tool tip and the +z face at t = 0"),
-            p("tool.stiffness", Ty::Double, "double", "N/m", Value::Double(20000000.0), "2e7", "> 0", "spring between tool holder and tip"),
-            p("tool.damping", Ty::Double, "double", "N·s/m", Value::Double(2000.0), "2e3", "≥ 0", "damper between tool holder and tip (no tip mass)"),
-            p("tool.specific_force", Ty::Double, "double", "Pa", Value::Double(351000000.0), "3.51e8", "> 0", "k_f1.1 of eq. (21): 351 N/mm² for a 1 mm × 1 mm chip"),
+            p("tool.start_clearance", Ty::Double, "double", "m", Value::Double(0.0), "0", "≥ 0", "gap between the tool tip and the +z face at t = 0").min(0.0),
+            p("tool.stiffness", Ty::Double, "double", "N/m", Value::Double(20000000.0), "2e7", "> 0", "spring between tool holder and tip").above(0.0),
+            p("tool.damping", Ty::Double, "double", "N·s/m", Value::Double(2000.0), "2e3", "≥ 0", "damper between tool holder and tip (no tip mass)").min(0.0),
+            p("tool.specific_force", Ty::Double, "double", "Pa", Value::Double(351000000.0), "3.51e8", "> 0", "k_f1.1 of eq. (21): 351 N/mm² for a 1 mm × 1 mm chip").above(0.0),
             p("tool.force_exponent", Ty::Double, "double", "—", Value::Double(0.7013), "0.7013", "≥ 0, < 1", "m_f of eq. (21)"),
         ],
     },
@@ -273,8 +398,8 @@ F = `links.mean_force` + `links.cyclic_force` · cos(ψ − `links.cyclic_phase`
         after: "",
         params: &[
             p("springs.ale_nodes", Ty::IntegerArray, "integer array", "—", Value::Integers(&[]), "[]", "each an existing ALE node (from 1), distinct", "where the springs act"),
-            p("springs.stiffness", Ty::Double, "double", "N/m", Value::Double(0.0), "0", "≥ 0", "stiffness k_s of each spring"),
-            p("springs.damping", Ty::Double, "double", "N·s/m", Value::Double(0.0), "0", "≥ 0", "damping c_s of each spring"),
+            p("springs.stiffness", Ty::Double, "double", "N/m", Value::Double(0.0), "0", "≥ 0", "stiffness k_s of each spring").min(0.0),
+            p("springs.damping", Ty::Double, "double", "N·s/m", Value::Double(0.0), "0", "≥ 0", "damping c_s of each spring").min(0.0),
         ],
     },
     Section {
@@ -296,16 +421,17 @@ F = `links.mean_force` + `links.cyclic_force` · cos(ψ − `links.cyclic_phase`
             p("ros.frame_prefix", Ty::String, "string", "—", Value::Str(""), "\"\"", "prefix of every frame and joint name; letters, digits, `_`, `/`, `-`, `.`; not starting with `/`", ""),
             p("ros.world_frame", Ty::String, "string", "—", Value::Str("world"), "\"world\"", "parent of plate_base in /tf_static (not prefixed); non-empty, same characters", ""),
             p("ros.publish_clock", Ty::Bool, "bool", "—", Value::Bool(false), "false", "publish /clock and stamp outputs with the node's own simulated time; refused together with use_sim_time: true (that node follows another clock)", ""),
-            p("ros.wrench_timeout", Ty::Double, "double", "s", Value::Double(0.0), "0.0", "s of simulated time after which a wrench not renewed drops to zero; 0 = hold forever; finite, >= 0", ""),
+            p("ros.wrench_timeout", Ty::Double, "double", "s", Value::Double(0.0), "0.0", "s of simulated time after which a wrench not renewed drops to zero; 0 = hold forever; finite, >= 0", "").min(0.0),
+            p("ros.max_clock_jump", Ty::Double, "double", "s", Value::Double(1.0), "1.0", "with use_sim_time: a /clock message more than this many s of simulated time ahead of the previous one is a jump: the node re-anchors its stamps at the new time instead of stepping through the gap (logged and counted, WARN on /diagnostics; docs/ros.md, Time); finite, > 0, <= 1e9", "").above(0.0).max(1e9),
             p("ros.start_paused", Ty::Bool, "bool", "—", Value::Bool(false), "false", "start paused (resume with ~/set_paused, advance with ~/step)", ""),
-            p("ros.diagnostics_period", Ty::Double, "double", "s", Value::Double(1.0), "1.0", "s of wall time between /diagnostics messages; finite, > 0", ""),
-            p("ros.reject_log_period", Ty::Double, "double", "s", Value::Double(1.0), "1.0", "s of wall time between log lines about rejected inputs of one kind; finite, >= 0", ""),
+            p("ros.diagnostics_period", Ty::Double, "double", "s", Value::Double(1.0), "1.0", "s of wall time between /diagnostics messages; finite, > 0, <= 1e6", "").above(0.0).max(1e6),
+            p("ros.reject_log_period", Ty::Double, "double", "s", Value::Double(1.0), "1.0", "s of wall time between log lines about rejected inputs of one kind; finite, >= 0, <= 1e6", "").min(0.0).max(1e6),
             p("ros.service_mapping", Ty::String, "string", "—", Value::Str("enhanced"), "\"enhanced\"", "request/reply mapping of all services: enhanced (rmw_fastrtps, the Jazzy default), cyclone (rmw_cyclonedds_cpp) or basic", ""),
             p("ros.input_reception", Ty::String, "string", "—", Value::Str("on_arrival"), "\"on_arrival\"", "how the node reads input datagrams: `on_arrival` (as they come), or `step_aligned` (at step boundaries while the input topics bring more than 2.5 samples a step: less CPU with many per-topic inputs, more step-period jitter; docs/ros.md)", ""),
-            p("ros.marker_rate_hz", Ty::Double, "double", "Hz", Value::Double(30.0), "30.0", "`~/plate_marker` (the deformed plate for RViz/Foxglove) per second, decimated from the loop (every round(rate_hz / this) steps); 0 = off; finite, >= 0, <= simulation.rate_hz", ""),
-            p("ros.marker_rings", Ty::Integer, "integer", "—", Value::Integer(8), "8", "radial cells of the marker's mesh; 1 ..= 200, rings × sectors <= 20000", ""),
-            p("ros.marker_sectors", Ty::Integer, "integer", "—", Value::Integer(128), "128", "angular cells of the marker's mesh (2 triangles each); 8 ..= 4096", ""),
-            p("ros.marker_scale", Ty::String, "string or double", "—", Value::Str("auto"), "\"auto\"", "magnification of the drawn deflection: `auto` (the largest of the last second drawn as 5 % of the outer radius) or a finite number > 0", ""),
+            p("ros.marker_rate_hz", Ty::Double, "double", "Hz", Value::Double(30.0), "30.0", "`~/plate_marker` (the deformed plate for RViz/Foxglove) per second, decimated from the loop (every round(rate_hz / this) steps); 0 = off; finite, >= 0, <= simulation.rate_hz", "").min(0.0),
+            p("ros.marker_rings", Ty::Integer, "integer", "—", Value::Integer(8), "8", "radial cells of the marker's mesh; 1 ..= 200, rings × sectors <= 20000", "").min(1.0).max(200.0),
+            p("ros.marker_sectors", Ty::Integer, "integer", "—", Value::Integer(128), "128", "angular cells of the marker's mesh (2 triangles each); 8 ..= 4096", "").min(8.0).max(4096.0),
+            p("ros.marker_scale", Ty::AutoOrDouble, "string or double", "—", Value::Str("auto"), "\"auto\"", "magnification of the drawn deflection: `auto` (the largest of the last second drawn as 5 % of the outer radius) or a finite number > 0", "").above(0.0),
         ],
     },
 ];

@@ -11,6 +11,7 @@
 
 use std::f64::consts::FRAC_PI_2;
 
+use super::check::suggest;
 use super::raw::{positive, read_choice, Reader};
 use super::{
     Boundary, Config, ConfigError, Coordinates, InitialConfig, IntegratorKind, JointConfig, LimitsConfig, LoadsConfig, NodePosition,
@@ -45,6 +46,7 @@ const MIN_RELATIVE_WIDTH: f64 = 1e-3;
 pub(super) fn config_from_params(params: &Params) -> Result<Config, ConfigError> {
     let known = known_keys();
     check_unknown_keys(params, &known)?;
+    super::check::check_params(params)?;
     let r = Reader::new(params, &known);
 
     let plate = read_plate(&r)?;
@@ -81,49 +83,6 @@ fn check_unknown_keys(params: &Params, known: &[&str]) -> Result<(), ConfigError
     Ok(())
 }
 
-/// The known key a typo most likely meant: a close spelling, the same name
-/// in another section (`simulation.speed` → `joint.speed`), or a known name
-/// the given one abbreviates (`plate.poisson` → `plate.poisson_ratio`).
-fn suggest(key: &str, known: &[&str]) -> Option<String> {
-    let lower = key.to_lowercase();
-    let best = known.iter().map(|k| (levenshtein(&lower, k), *k)).min_by_key(|(d, _)| *d);
-    if let Some((d, k)) = best {
-        if d <= (k.chars().count() / 6).max(2) {
-            return Some(k.to_string());
-        }
-    }
-    let (section, last) = match lower.rsplit_once('.') {
-        Some((s, l)) => (s, l),
-        None => ("", lower.as_str()),
-    };
-    let last_of = |k: &str| k.rsplit_once('.').map_or(k, |(_, l)| l).to_string();
-    let section_of = |k: &str| k.rsplit_once('.').map_or("", |(s, _)| s).to_string();
-    if let Some(k) = known.iter().find(|k| last_of(k) == last) {
-        return Some(k.to_string());
-    }
-    if last.chars().count() >= 4 {
-        if let Some(k) = known.iter().find(|k| section_of(k) == section && last_of(k).starts_with(last)) {
-            return Some(k.to_string());
-        }
-    }
-    None
-}
-
-fn levenshtein(a: &str, b: &str) -> usize {
-    let a: Vec<char> = a.chars().collect();
-    let b: Vec<char> = b.chars().collect();
-    let mut prev: Vec<usize> = (0..=b.len()).collect();
-    let mut cur = vec![0; b.len() + 1];
-    for i in 1..=a.len() {
-        cur[0] = i;
-        for j in 1..=b.len() {
-            let cost = usize::from(a[i - 1] != b[j - 1]);
-            cur[j] = (prev[j] + 1).min(cur[j - 1] + 1).min(prev[j - 1] + cost);
-        }
-        std::mem::swap(&mut prev, &mut cur);
-    }
-    prev[b.len()]
-}
 
 // ---- plate -------------------------------------------------------------------
 
@@ -454,32 +413,22 @@ fn read_reference(r: &Reader) -> Result<ReferenceConfig, ConfigError> {
     })
 }
 
+/// Types, ranges and defaults of these keys are the table's (`config::check`
+/// ran before); only the choices are read here.
 fn read_simulation(r: &Reader) -> Result<SimulationConfig, ConfigError> {
     let d = SimulationConfig::default();
-    let rate_hz = r.positive("simulation.rate_hz", d.rate_hz)?;
-    if rate_hz > 1e6 {
-        return Err(ConfigError::AboveMaximum { key: "simulation.rate_hz".into(), value: rate_hz, max: 1e6 });
-    }
-    let substeps = r.u32_in("simulation.substeps", d.substeps, 1, 10_000)?;
+    let rate_hz = r.declared_f64("simulation.rate_hz")?;
+    let substeps = r.declared_u32("simulation.substeps")?;
     let integrator = read_choice(r, "simulation.integrator", d.integrator.name(), INTEGRATORS, IntegratorKind::from_name)?;
     let coordinates = read_choice(r, "simulation.coordinates", "ale", COORDINATES, |s| match s {
         "ale" => Some(Coordinates::Ale),
         "lagrangian" => Some(Coordinates::Lagrangian),
         _ => None,
     })?;
-    let realtime_factor = r.f64("simulation.realtime_factor", d.realtime_factor)?;
-    if realtime_factor < 0.0 {
-        return Err(ConfigError::Negative { key: "simulation.realtime_factor".into(), value: realtime_factor });
-    }
-    let publish_divisor = r.u32_in("simulation.publish_divisor", d.publish_divisor, 1, u32::MAX)?;
-    let rk4_step_limit = r.positive("simulation.rk4_step_limit", d.rk4_step_limit)?;
-    if rk4_step_limit > super::MAX_RK4_STEP_LIMIT {
-        return Err(ConfigError::AboveMaximum { key: "simulation.rk4_step_limit".into(), value: rk4_step_limit, max: super::MAX_RK4_STEP_LIMIT });
-    }
-    let midpoint_step_limit = r.positive("simulation.midpoint_step_limit", d.midpoint_step_limit)?;
-    if midpoint_step_limit > super::MAX_MIDPOINT_STEP_LIMIT {
-        return Err(ConfigError::AboveMaximum { key: "simulation.midpoint_step_limit".into(), value: midpoint_step_limit, max: super::MAX_MIDPOINT_STEP_LIMIT });
-    }
+    let realtime_factor = r.declared_f64("simulation.realtime_factor")?;
+    let publish_divisor = r.declared_u32("simulation.publish_divisor")?;
+    let rk4_step_limit = r.declared_f64("simulation.rk4_step_limit")?;
+    let midpoint_step_limit = r.declared_f64("simulation.midpoint_step_limit")?;
     Ok(SimulationConfig { rate_hz, substeps, integrator, coordinates, realtime_factor, publish_divisor, rk4_step_limit, midpoint_step_limit })
 }
 

@@ -44,8 +44,9 @@ impl StepClock {
     }
 
     /// Stamps from an external `/clock` (`use_sim_time: true`).
-    pub fn following(dt: f64) -> Self {
-        StepClock { sim: false, dt, total_steps: 0, follow: Some(ClockFollower::new(dt)) }
+    /// `max_jump`: `ros.max_clock_jump`, s ([`ClockFollower::with_max_jump`]).
+    pub fn following(dt: f64, max_jump: f64) -> Self {
+        StepClock { sim: false, dt, total_steps: 0, follow: Some(ClockFollower::new(dt).with_max_jump(max_jump)) }
     }
 
     /// The external clock being followed, if any.
@@ -93,6 +94,9 @@ impl StepClock {
     }
 }
 
+/// The longest step period of a paced loop (a year): longer ones are held at it.
+pub const MAX_PERIOD: Duration = Duration::from_secs(365 * 24 * 3600);
+
 /// Deadlines of a fixed-rate loop. When the loop falls more than one period
 /// behind it does not try to catch up with a burst: it counts an overrun and
 /// restarts the schedule from now.
@@ -106,8 +110,18 @@ pub struct Pacer {
 
 impl Pacer {
     /// `dt` simulated seconds per step, `realtime_factor` as in the config.
+    /// Any pair of numbers gives a period: the declared ranges keep it within
+    /// a day or so, and a period beyond [`MAX_PERIOD`] (or not a number) is
+    /// held at it rather than overflowing a `Duration` or `Instant`.
     pub fn new(dt: f64, realtime_factor: f64, now: Instant) -> Self {
-        let period = (realtime_factor > 0.0).then(|| Duration::from_secs_f64(dt / realtime_factor));
+        let period = (realtime_factor > 0.0).then(|| {
+            let p = dt / realtime_factor;
+            if p.is_nan() {
+                MAX_PERIOD
+            } else {
+                Duration::try_from_secs_f64(p.max(0.0)).map_or(MAX_PERIOD, |d| d.min(MAX_PERIOD))
+            }
+        });
         Pacer { period, next: now, overruns: 0 }
     }
 
@@ -168,7 +182,7 @@ mod tests {
 
     #[test]
     fn a_followed_clock_stamps_each_step_on_its_grid() {
-        let mut c = StepClock::following(1e-3);
+        let mut c = StepClock::following(1e-3, 1.0);
         c.follower_mut().unwrap().observe(2_000_000_000);
         c.follower_mut().unwrap().observe(2_003_000_000);
         assert_eq!(c.follower().unwrap().due(), 3);

@@ -12,7 +12,13 @@
 //! grid, never ahead of the clock. While the node itself is paused (or has
 //! diverged) the clock's advance is skipped rather than owed, so a resume
 //! does not race to catch up. A clock that goes back behind the last stamp
-//! (a bag played in a loop) starts a new origin at its new time.
+//! (a bag played in a loop) starts a new origin at its new time. A clock
+//! that jumps forward, further ahead of its previous message than
+//! `ros.max_clock_jump` (a bag played from a later start, a simulator that
+//! skipped), is not worked off step by step either: the follower re-anchors
+//! at the new time (the plate's state is kept, the stamps continue from
+//! there), and counts the jump; the node logs it and reports it on
+//! /diagnostics (WARN).
 //!
 //! Pure bookkeeping, no I/O: the node feeds it the clock's messages, the
 //! loop asks what is due.
@@ -26,6 +32,9 @@ pub enum ClockUpdate {
     Forward,
     /// Behind the last stamp: a new origin at this time.
     Backwards,
+    /// More than the jump limit ahead of the previous message: a new origin
+    /// at this time; `gap_ns` is the advance that was not stepped through.
+    JumpedForward { gap_ns: i64 },
 }
 
 /// Follows an external clock; see the module documentation.
@@ -39,12 +48,33 @@ pub struct ClockFollower {
     /// Steps taken or skipped since the origin.
     steps: u64,
     jumps_back: u64,
+    /// Largest forward advance between two messages that is stepped through (ns).
+    max_jump_ns: i64,
+    jumps_forward: u64,
 }
 
 impl ClockFollower {
     /// `dt`: the plate's step, s.
     pub fn new(dt: f64) -> Self {
-        ClockFollower { dt_ns: dt * 1e9, origin: None, latest: 0, steps: 0, jumps_back: 0 }
+        ClockFollower {
+            dt_ns: dt * 1e9,
+            origin: None,
+            latest: 0,
+            steps: 0,
+            jumps_back: 0,
+            max_jump_ns: i64::MAX,
+            jumps_forward: 0,
+        }
+    }
+
+    /// A forward advance of more than `max_jump` s between two messages
+    /// re-anchors instead of owing its steps (`ros.max_clock_jump`; a value
+    /// that is not a positive number leaves the limit off).
+    pub fn with_max_jump(mut self, max_jump: f64) -> Self {
+        if max_jump > 0.0 {
+            self.max_jump_ns = (max_jump * 1e9).min(i64::MAX as f64) as i64;
+        }
+        self
     }
 
     /// A `/clock` message with time `t_ns`.
@@ -58,6 +88,12 @@ impl ClockFollower {
                 self.rebase(t_ns);
                 self.jumps_back += 1;
                 ClockUpdate::Backwards
+            }
+            Some(_) if t_ns.saturating_sub(self.latest) > self.max_jump_ns => {
+                let gap_ns = t_ns.saturating_sub(self.latest);
+                self.rebase(t_ns);
+                self.jumps_forward += 1;
+                ClockUpdate::JumpedForward { gap_ns }
             }
             Some(_) => {
                 self.latest = t_ns;
@@ -78,7 +114,9 @@ impl ClockFollower {
     fn steps_to_latest(&self) -> u64 {
         match self.origin {
             None => 0,
-            Some(o) => ((self.latest - o) as f64 / self.dt_ns + 1e-6).floor().max(0.0) as u64,
+            Some(o) => (self.latest.saturating_sub(o) as f64 / self.dt_ns + 1e-6)
+                .floor()
+                .max(0.0) as u64,
         }
     }
 
@@ -99,7 +137,9 @@ impl ClockFollower {
 
     /// The stamp of the current state: `origin + steps·dt` (0 before any clock).
     pub fn stamp_ns(&self) -> i64 {
-        self.origin.unwrap_or(0) + (self.steps as f64 * self.dt_ns).round() as i64
+        self.origin
+            .unwrap_or(0)
+            .saturating_add((self.steps as f64 * self.dt_ns).round() as i64)
     }
 
     /// Whether a clock message has been seen.
@@ -110,6 +150,11 @@ impl ClockFollower {
     /// How often the clock went back behind the last stamp.
     pub fn jumps_back(&self) -> u64 {
         self.jumps_back
+    }
+
+    /// How often the clock jumped forward beyond the limit (re-anchored).
+    pub fn jumps_forward(&self) -> u64 {
+        self.jumps_forward
     }
 }
 
@@ -178,5 +223,45 @@ mod tests {
         assert_eq!((f.due(), f.stamp_ns(), f.jumps_back()), (0, 5 * MS, 1));
         f.observe(7 * MS);
         assert_eq!(f.due(), 2);
+    }
+
+    #[test]
+    fn a_jump_beyond_the_limit_re_anchors_instead_of_owing_its_steps() {
+        let mut f = ClockFollower::new(1e-3).with_max_jump(1.0);
+        f.observe(0);
+        f.observe(500 * MS);
+        assert_eq!(
+            f.due(),
+            500,
+            "an advance within the limit is stepped through"
+        );
+        (0..500).for_each(|_| f.stepped());
+        // 1e6 s ahead: 1e9 steps would be owed; none are, the stamps follow the clock.
+        let t = 1_000_000 * 1_000 * MS;
+        assert_eq!(
+            f.observe(t),
+            ClockUpdate::JumpedForward {
+                gap_ns: t - 500 * MS
+            }
+        );
+        assert_eq!((f.due(), f.stamp_ns(), f.jumps_forward()), (0, t, 1));
+        f.observe(t + 3 * MS);
+        assert_eq!(f.due(), 3);
+        // Just within the limit: stepped through.
+        f.observe(t + 3 * MS + 1_000 * MS);
+        assert_eq!((f.due(), f.jumps_forward()), (1003, 1));
+    }
+
+    #[test]
+    fn extreme_clock_times_neither_overflow_nor_owe_absurd_steps() {
+        let mut f = ClockFollower::new(1e-3).with_max_jump(1.0);
+        f.observe(i64::MIN);
+        assert_eq!(
+            f.observe(i64::MAX),
+            ClockUpdate::JumpedForward { gap_ns: i64::MAX }
+        );
+        assert_eq!(f.due(), 0);
+        assert_eq!(f.observe(i64::MIN), ClockUpdate::Backwards);
+        assert_eq!(f.due(), 0);
     }
 }

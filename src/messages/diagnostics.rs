@@ -116,6 +116,9 @@ pub struct LoopReport {
     pub ros_time: Time,
     pub rate_hz: f64,
     pub realtime_factor: f64,
+    /// With use_sim_time: /clock jumps forward re-anchored, in total and since the last report.
+    pub clock_jumps: Option<u64>,
+    pub new_clock_jumps: u64,
     pub publish_failures: u64,
     /// `~/plate_marker` messages skipped because the previous one was still being built.
     pub markers_skipped: u64,
@@ -148,6 +151,10 @@ pub fn simulation_status(node_name: &str, r: &LoopReport) -> DiagnosticStatus {
     let (level, message) = match (&r.diverged, r.paused) {
         (Some(why), _) => (DiagnosticStatus::ERROR, format!("diverged: {why}")),
         (None, true) => (DiagnosticStatus::OK, "paused".to_string()),
+        (None, false) if r.new_clock_jumps > 0 => (
+            DiagnosticStatus::WARN,
+            format!("/clock jumped forward {} time(s) beyond ros.max_clock_jump: stamps re-anchored without stepping through", r.new_clock_jumps),
+        ),
         (None, false) if r.new_overruns > 0 => {
             (DiagnosticStatus::WARN, format!("{} overruns: the loop fell behind real time", r.new_overruns))
         }
@@ -171,6 +178,9 @@ pub fn simulation_status(node_name: &str, r: &LoopReport) -> DiagnosticStatus {
         kv("publish_failures", r.publish_failures.to_string()),
         kv("markers_skipped", r.markers_skipped.to_string()),
     ];
+    if let Some(j) = r.clock_jumps {
+        values.push(kv("clock_jumps_forward", j.to_string()));
+    }
     values.extend(r.timing.iter().map(|(k, v)| kv(k, v.clone())));
     DiagnosticStatus { level, name: format!("{node_name}: simulation"), message, hardware_id: node_name.to_string(), values }
 }
@@ -249,6 +259,8 @@ mod tests {
             ros_time: Time::from_nanos(10_000_000),
             rate_hz: 1000.0,
             realtime_factor: 1.0,
+            clock_jumps: None,
+            new_clock_jumps: 0,
             publish_failures: 0,
             markers_skipped: 0,
             timing: vec![("steps_in_period".into(), "10".into())],
@@ -265,6 +277,21 @@ mod tests {
         let s = simulation_status("/n", &r);
         assert_eq!((s.level, s.name.as_str()), (DiagnosticStatus::ERROR, "/n: simulation"));
         assert!(s.values.iter().any(|v| v.key == "steps_in_period"));
+    }
+
+    #[test]
+    fn a_clock_jump_forward_warns_once_and_is_counted() {
+        let mut r = report();
+        r.clock_jumps = Some(1);
+        r.new_clock_jumps = 1;
+        let s = simulation_status("/n", &r);
+        assert_eq!(s.level, DiagnosticStatus::WARN);
+        assert!(s.message.contains("ros.max_clock_jump"), "{}", s.message);
+        assert!(s.values.contains(&KeyValue { key: "clock_jumps_forward".into(), value: "1".into() }));
+        r.new_clock_jumps = 0;
+        let s = simulation_status("/n", &r);
+        assert_eq!(s.level, DiagnosticStatus::OK, "the next report is OK, the count stays");
+        assert!(s.values.contains(&KeyValue { key: "clock_jumps_forward".into(), value: "1".into() }));
     }
 
     #[test]

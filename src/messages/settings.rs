@@ -26,6 +26,9 @@ pub struct RosSettings {
     pub use_sim_time: bool,
     /// s; 0 = never.
     pub wrench_timeout: f64,
+    /// `ros.max_clock_jump`, s: a larger forward step of the followed
+    /// `/clock` re-anchors the stamps instead of being stepped through.
+    pub max_clock_jump: f64,
     pub start_paused: bool,
     pub diagnostics_period: f64,
     pub reject_log_period: f64,
@@ -45,6 +48,7 @@ impl Default for RosSettings {
             sim_time: false,
             use_sim_time: false,
             wrench_timeout: 0.0,
+            max_clock_jump: 1.0,
             start_paused: false,
             diagnostics_period: 1.0,
             reject_log_period: 1.0,
@@ -87,6 +91,9 @@ impl RosSettings {
             if name.starts_with("ros.") && table::find(name).is_none() {
                 let known = table::keys("ros");
                 return Err(err(name, format!("unknown parameter (the ros.* keys are {})", known.join(", "))));
+            }
+            if name.starts_with("ros.") || name == "use_sim_time" {
+                crate::config::check(name, params.get(name).expect("iterated")).map_err(|e| err(name, e.to_string()))?;
             }
         }
         let string = |key: &str| -> Result<Option<String>, SettingsError> {
@@ -134,23 +141,18 @@ impl RosSettings {
         }
         s.sim_time = publish_clock;
         s.use_sim_time = use_sim_time;
+        // Types and ranges: `config::check` above (the table's declaration).
         if let Some(t) = double("ros.wrench_timeout")? {
-            if !t.is_finite() || t < 0.0 {
-                return Err(err("ros.wrench_timeout", format!("{t} must be finite and >= 0 (0 = hold wrenches until replaced)")));
-            }
             s.wrench_timeout = t;
+        }
+        if let Some(j) = double("ros.max_clock_jump")? {
+            s.max_clock_jump = j;
         }
         s.start_paused = boolean("ros.start_paused")?.unwrap_or(false);
         if let Some(p) = double("ros.diagnostics_period")? {
-            if !p.is_finite() || p <= 0.0 {
-                return Err(err("ros.diagnostics_period", format!("{p} must be finite and > 0")));
-            }
             s.diagnostics_period = p;
         }
         if let Some(p) = double("ros.reject_log_period")? {
-            if !p.is_finite() || p < 0.0 {
-                return Err(err("ros.reject_log_period", format!("{p} must be finite and >= 0")));
-            }
             s.reject_log_period = p;
         }
         s.marker = read_marker(params)?;
@@ -186,6 +188,7 @@ impl RosSettings {
             ("ros.frame_prefix", ParamValue::String(self.frame_prefix.clone())),
             ("ros.world_frame", ParamValue::String(self.world_frame.clone())),
             ("ros.wrench_timeout", ParamValue::Double(self.wrench_timeout)),
+            ("ros.max_clock_jump", ParamValue::Double(self.max_clock_jump)),
             ("ros.start_paused", ParamValue::Bool(self.start_paused)),
             ("ros.diagnostics_period", ParamValue::Double(self.diagnostics_period)),
             ("ros.reject_log_period", ParamValue::Double(self.reject_log_period)),

@@ -289,6 +289,7 @@ fn loop_settings(setup: &NodeSetup) -> LoopSettings {
         start_paused: settings.start_paused,
         sim_time: settings.sim_time,
         follow_clock: settings.use_sim_time,
+        max_clock_jump: settings.max_clock_jump,
         wrench_timeout: settings.wrench_timeout,
         diagnostics_period: Duration::from_secs_f64(settings.diagnostics_period),
         node_name: setup.names.fully_qualified_node_name(),

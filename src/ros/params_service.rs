@@ -22,8 +22,8 @@ use std::collections::BTreeMap;
 
 /// Keys that `set_parameters` may change while the node runs, with their rule.
 pub const RUNTIME_KEYS: &[(&str, &str)] = &[
-    ("simulation.realtime_factor", "finite and >= 0 (0 = as fast as possible)"),
-    ("ros.wrench_timeout", "finite and >= 0 s (0 = hold wrenches until replaced)"),
+    ("simulation.realtime_factor", "a double: 0 (as fast as possible) or in [1e-6, 1e6]"),
+    ("ros.wrench_timeout", "a double, finite and >= 0 s (0 = hold wrenches until replaced)"),
 ];
 
 pub use super::services::RuntimeChange;
@@ -187,31 +187,29 @@ impl ParamStore {
         self.check(name, value.into())
     }
 
-    /// Check one assignment without applying it.
+    /// Check one assignment without applying it: declared by this node, one
+    /// of [`RUNTIME_KEYS`], and through `config::check` (the declared type
+    /// and range, the same check as the parameter file's and `-p`'s).
     fn check(&self, name: &str, value: RosValue) -> Result<(ParamValue, RuntimeChange), String> {
-        let Some(current) = self.values.get(name) else {
+        if !self.values.contains_key(name) {
             return Err(format!("parameter `{name}` is not declared by this node"));
-        };
-        let Some((_, rule)) = RUNTIME_KEYS.iter().find(|(k, _)| *k == name) else {
+        }
+        if !RUNTIME_KEYS.iter().any(|(k, _)| *k == name) {
             return Err(format!(
                 "parameter `{name}` is read only: it is read at start-up; restart the node with `-p {name}:=VALUE` (run-time changes are possible for {})",
                 RUNTIME_KEYS.iter().map(|(k, _)| *k).collect::<Vec<_>>().join(", ")
             ));
-        };
-        let x = match from_ros_value(value) {
-            Some(ParamValue::Double(x)) => x,
-            Some(ParamValue::Integer(i)) => i as f64,
-            Some(other) => return Err(format!("`{name}` is a {}, not a {}", current.type_name(), other.type_name())),
-            None => return Err(format!("`{name}` cannot be unset or given as a byte array")),
-        };
-        if !x.is_finite() || x < 0.0 {
-            return Err(format!("`{name}` = {x}: must be {rule}"));
         }
-        let change = match name {
-            "simulation.realtime_factor" => RuntimeChange::RealtimeFactor(x),
-            _ => RuntimeChange::WrenchTimeout(x),
+        let Some(value) = from_ros_value(value) else {
+            return Err(format!("`{name}` cannot be unset or given as a byte array"));
         };
-        Ok((ParamValue::Double(x), change))
+        crate::config::check(name, &value).map_err(|e| e.to_string())?;
+        let change = match (name, &value) {
+            ("simulation.realtime_factor", ParamValue::Double(x)) => RuntimeChange::RealtimeFactor(*x),
+            ("ros.wrench_timeout", ParamValue::Double(x)) => RuntimeChange::WrenchTimeout(*x),
+            _ => return Err(format!("`{name}`: {} is not a run-time value of this key", value.type_name())),
+        };
+        Ok((value, change))
     }
 
     /// `set_parameters`: each assignment on its own.
@@ -374,8 +372,8 @@ mod tests {
         let (r, c) = st.set(vec![
             param("a", RosValue::Double(2.0)),
             param("zzz", RosValue::Double(2.0)),
+            param("simulation.realtime_factor", RosValue::Double(0.0)),
             param("simulation.realtime_factor", RosValue::Integer(0)),
-            param("simulation.realtime_factor", RosValue::Double(-1.0)),
             param("simulation.realtime_factor", RosValue::String("fast".into())),
         ]);
         assert!(!r[0].successful && r[0].reason.contains("read only") && r[0].reason.contains("-p a:="));

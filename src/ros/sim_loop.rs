@@ -69,6 +69,8 @@ pub struct LoopSettings {
     pub sim_time: bool,
     /// `use_sim_time`: step as an external `/clock` advances (`Command::Clock`).
     pub follow_clock: bool,
+    /// `ros.max_clock_jump`, s (with `follow_clock`).
+    pub max_clock_jump: f64,
     pub wrench_timeout: f64,
     pub diagnostics_period: Duration,
     /// `/ns/node`, for diagnostics names.
@@ -97,6 +99,7 @@ pub struct SimLoop {
     next_diagnostics: Instant,
     rejected_at_last_report: u64,
     overruns_at_last_report: u64,
+    clock_jumps_at_last_report: u64,
     /// `run --record`: every published message also goes to the bag writer.
     recorder: Option<Recorder>,
     dropped_at_last_report: u64,
@@ -127,7 +130,7 @@ impl SimLoop {
         let now = Instant::now();
         let dt = sim.dt();
         SimLoop {
-            clock: if settings.follow_clock { StepClock::following(dt) } else { StepClock::new(settings.sim_time, dt) },
+            clock: if settings.follow_clock { StepClock::following(dt, settings.max_clock_jump) } else { StepClock::new(settings.sim_time, dt) },
             pacer: Pacer::new(dt, settings.realtime_factor, now),
             stale: StaleWrenches::new(settings.wrench_timeout, sim.n_ale_nodes(), sim.n_lagrange_nodes()),
             paused: settings.start_paused,
@@ -145,6 +148,7 @@ impl SimLoop {
             next_diagnostics: now,
             rejected_at_last_report: 0,
             overruns_at_last_report: 0,
+            clock_jumps_at_last_report: 0,
             recorder: None,
             dropped_at_last_report: 0,
             stop: false,
@@ -402,14 +406,9 @@ impl SimLoop {
                     self.step_requests.push_back((n, reply));
                 }
             }
-            Command::Runtime(RuntimeChange::RealtimeFactor(f)) => {
-                self.settings.realtime_factor = f;
-                self.pacer.set_realtime_factor(self.sim.dt(), f, Instant::now());
-                self.logger.info(&format!("simulation.realtime_factor set to {f}"));
-            }
-            Command::Runtime(RuntimeChange::WrenchTimeout(t)) => {
-                self.stale.set_timeout(t);
-                self.logger.info(&format!("ros.wrench_timeout set to {t} s"));
+            Command::Runtime(change) => {
+                let line = apply_runtime(change, &mut self.settings.realtime_factor, &mut self.pacer, &mut self.stale, self.sim.dt(), Instant::now());
+                self.logger.info(&line);
             }
             Command::Clock(t_ns) => self.follow_clock(t_ns),
             Command::Status(reply) => {
@@ -437,6 +436,13 @@ impl SimLoop {
             ClockUpdate::Backwards => self.logger.warn(&format!(
                 "/clock went back to t = {} s: stamps follow it from there (the plate's state is kept)",
                 t_ns as f64 * 1e-9
+            )),
+            ClockUpdate::JumpedForward { gap_ns } => self.logger.warn(&format!(
+                "/clock jumped {} s ahead to t = {} s, beyond ros.max_clock_jump = {} s: stamps re-anchored there without stepping through the gap (the plate's state is kept; {} jump(s) so far)",
+                gap_ns as f64 * 1e-9,
+                t_ns as f64 * 1e-9,
+                self.settings.max_clock_jump,
+                f.jumps_forward()
             )),
             ClockUpdate::Forward => {}
         }
@@ -565,11 +571,14 @@ impl SimLoop {
             ros_time: self.clock.sim_time(),
             rate_hz: 1.0 / self.sim.dt(),
             realtime_factor: self.settings.realtime_factor,
+            clock_jumps: self.clock.follower().map(|f| f.jumps_forward()),
+            new_clock_jumps: self.clock.follower().map_or(0, |f| f.jumps_forward() - self.clock_jumps_at_last_report),
             publish_failures: self.publish_failures,
             markers_skipped: self.marker.as_ref().map_or(0, |m| m.skipped),
             timing: self.timing.report(now),
         };
         self.overruns_at_last_report = overruns;
+        self.clock_jumps_at_last_report = self.clock.follower().map_or(0, |f| f.jumps_forward());
         let rejected = self.stats.rejected_total();
         let new_rejected = rejected - self.rejected_at_last_report;
         self.rejected_at_last_report = rejected;
@@ -594,6 +603,24 @@ impl SimLoop {
         }
         if self.pubs.diagnostics.publish(msg).is_err() {
             self.publish_failures += 1;
+        }
+    }
+}
+
+/// Apply an accepted run-time parameter change (checked by the parameter
+/// service through `config::check`) to the loop's pacing and wrench
+/// timeout; the log line it makes. Every accepted value keeps the loop
+/// stepping (`tests/parameter_services_cannot_stop_the_node.rs`).
+pub fn apply_runtime(change: RuntimeChange, realtime_factor: &mut f64, pacer: &mut Pacer, stale: &mut StaleWrenches, dt: f64, now: Instant) -> String {
+    match change {
+        RuntimeChange::RealtimeFactor(f) => {
+            *realtime_factor = f;
+            pacer.set_realtime_factor(dt, f, now);
+            format!("simulation.realtime_factor set to {f}")
+        }
+        RuntimeChange::WrenchTimeout(t) => {
+            stale.set_timeout(t);
+            format!("ros.wrench_timeout set to {t} s")
         }
     }
 }

@@ -7,3 +7,4 @@ pub mod scene_files;
 pub mod squeal;
 pub mod library_plate;
 pub mod fourth_order;
+pub mod bounded_run;

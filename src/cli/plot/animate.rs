@@ -6,13 +6,18 @@
 //! the deflection w on the fixed map of [`crate::colour_map`], ALE node
 //! frames as squares, Lagrangian ones as circles turning with the plate) and
 //! a side view seen from −y (every grid point at x = r cos φ, z = scale·w).
-//! The colour reference is the largest |w| of the whole run; the side view's
+//! The colour reference is the largest |w| of the frames; the side view's
 //! magnification draws it as [`SIDE_FRACTION`] of r_a unless `--scale` says.
 //! w = Σ q_i w_i(r, φ) from the CSV's Lagrangian amplitudes `q1…qN` and the
 //! plate model of the params file (the same modes as the run).
 //!
 //! Frame count = round(duration × fps) with duration = the run's time span ×
 //! `--slowdown`; the first frame is the first row, the last frame the last.
+//! The work is bounded before it starts: at most `--max-frames` frames
+//! (default [`DEFAULT_MAX_FRAMES`]), the refusal giving the estimate; only
+//! the frames' rows are evaluated (the colour reference is the largest |w|
+//! of the frames), so a CSV of 10^6 rows costs its reading, not 10^6 grid
+//! evaluations.
 
 use super::render::{ensure_fonts, FONT};
 use super::{CsvData, Size};
@@ -21,6 +26,11 @@ use crate::config::Config;
 use crate::model::PlateModel;
 use plotters::prelude::*;
 use std::path::Path;
+
+/// `--max-frames` unless given.
+pub const DEFAULT_MAX_FRAMES: usize = 10_000;
+/// Rendering time of a frame (960×480 GIF, release build, one core: 0.07 s measured), for estimates.
+pub const FRAME_SECONDS: f64 = 0.08;
 
 /// The largest |w| of the run is drawn this fraction of r_a high in the side view.
 pub const SIDE_FRACTION: f64 = 0.1;
@@ -32,6 +42,8 @@ const SECTORS: usize = 360;
 #[derive(Debug, Clone)]
 pub struct Animation {
     pub fps: u32,
+    /// Refuse more frames than this (`--max-frames`).
+    pub max_frames: usize,
     /// Animation seconds per simulated second.
     pub slowdown: f64,
     /// Side-view magnification; None: auto.
@@ -90,19 +102,19 @@ impl Grid {
     }
 }
 
-/// The Lagrangian amplitudes of every row: columns q1…qN.
-fn amplitudes(data: &CsvData, n: usize) -> CliResult<Vec<Vec<f64>>> {
+/// The Lagrangian amplitudes of the rows `rows`: columns q1…qN.
+fn amplitudes(data: &CsvData, n: usize, rows: &[usize]) -> CliResult<Vec<Vec<f64>>> {
     let cols: Vec<&[f64]> = (1..=n).map(|i| data.column(&format!("q{i}"))).collect::<CliResult<_>>().map_err(|e| {
         CliError::Usage(format!("{e} (the params file has {n} modes: is it the scene of this run?)"))
     })?;
     if data.header.iter().any(|h| h == &format!("q{}", n + 1)) {
         return Err(CliError::Usage(format!("{} has more modal columns than the {n} modes of the params file: is it the scene of this run?", data.path.display())));
     }
-    Ok((0..data.columns[0].len()).map(|row| cols.iter().map(|c| c[row]).collect()).collect())
+    Ok(rows.iter().map(|&row| cols.iter().map(|c| c[row]).collect()).collect())
 }
 
 /// Rows of the frames: round(span × slowdown × fps) frames, first and last rows included.
-pub fn frame_rows(times: &[f64], fps: u32, slowdown: f64) -> CliResult<Vec<usize>> {
+pub fn frame_rows(times: &[f64], fps: u32, slowdown: f64, max_frames: usize) -> CliResult<Vec<usize>> {
     let (t0, t1) = (times[0], *times.last().unwrap());
     let n = ((t1 - t0) * slowdown * fps as f64).round();
     if n.is_nan() || n < 2.0 {
@@ -111,8 +123,11 @@ pub fn frame_rows(times: &[f64], fps: u32, slowdown: f64) -> CliResult<Vec<usize
             t1 - t0
         )));
     }
-    if n > 100_000.0 {
-        return Err(CliError::Usage(format!("{n} frames is more than 100000: lower --fps or --slowdown")));
+    if n > max_frames as f64 {
+        return Err(CliError::Usage(format!(
+            "{n} frames is more than --max-frames {max_frames} (about {:.0} s of rendering at ~{FRAME_SECONDS} s a frame): lower --fps or --slowdown, or raise --max-frames",
+            n * FRAME_SECONDS
+        )));
     }
     let n = n as usize;
     let mut rows = Vec::with_capacity(n);
@@ -128,12 +143,15 @@ pub fn frame_rows(times: &[f64], fps: u32, slowdown: f64) -> CliResult<Vec<usize
 }
 
 /// Render the animation of `data` (a `simulate` CSV of `config`'s scene) to `out`.
+/// `progress(done, total)` is called with 0 done before any work, then after each frame.
 pub fn animate(data: &CsvData, config: &Config, anim: &Animation, out: &Path, mut progress: impl FnMut(usize, usize)) -> CliResult<AnimationInfo> {
     let model = PlateModel::new(&config.plate).map_err(|e| CliError::Usage(format!("the params file's plate: {e}")))?;
-    let q = amplitudes(data, model.n_modes())?;
     let times = data.column("time")?;
     let chi = data.column("joint_position")?;
-    let rows = frame_rows(times, anim.fps, anim.slowdown)?;
+    // The work is the frames' (bounded by --max-frames), not the rows'.
+    let rows = frame_rows(times, anim.fps, anim.slowdown, anim.max_frames)?;
+    progress(0, rows.len());
+    let q = amplitudes(data, model.n_modes(), &rows)?;
     let grid = Grid::new(&model);
     let mut w = vec![0.0; grid.radii.len() * SECTORS];
     let mut w_ref: f64 = 0.0;
@@ -150,8 +168,8 @@ pub fn animate(data: &CsvData, config: &Config, anim: &Animation, out: &Path, mu
     let view = View { model: &model, grid: &grid, config, w_ref, scale, px_per_m, top_centre, width, height };
     let mut sink = FrameSink::open(out, anim, width, height)?;
     for (k, &row) in rows.iter().enumerate() {
-        grid.deflection(&q[row], &mut w);
-        let frame = view.frame(&w, &q[row], chi[row], times[row])?;
+        grid.deflection(&q[k], &mut w);
+        let frame = view.frame(&w, &q[k], chi[row], times[row])?;
         sink.push(frame)?;
         progress(k + 1, rows.len());
     }

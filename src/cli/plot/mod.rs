@@ -165,7 +165,10 @@ pub enum PlotCommand {
         scale: Option<f64>,
         #[arg(long, default_value = "960x480")]
         size: Size,
-        /// No progress bar.
+        /// Refuse an animation of more frames than this (the refusal gives the estimate).
+        #[arg(long, default_value_t = animate::DEFAULT_MAX_FRAMES)]
+        max_frames: usize,
+        /// No progress bar, no estimate.
         #[arg(long)]
         quiet: bool,
     },
@@ -226,7 +229,7 @@ pub fn main(cmd: PlotCommand) -> CliResult<()> {
             let (t, triangles) = plot_marker(&bag, at, &out, size)?;
             eprintln!("{}: the marker logged at {:.3} s, {triangles} triangles", out.display(), t as f64 * 1e-9);
         }
-        PlotCommand::Animate { csv, params, out, fps, slowdown, scale, size, quiet } => {
+        PlotCommand::Animate { csv, params, out, fps, slowdown, scale, size, max_frames, quiet } => {
             if fps == 0 || fps > 100 {
                 return Err(CliError::Usage(format!("--fps {fps}: must be 1 ..= 100")));
             }
@@ -236,8 +239,13 @@ pub fn main(cmd: PlotCommand) -> CliResult<()> {
             let data = CsvData::read(&csv)?;
             let config = super::load_config(&params)?;
             let bar = if quiet { indicatif::ProgressBar::hidden() } else { indicatif::ProgressBar::new(0) };
-            let anim = Animation { fps, slowdown, scale, size };
+            let anim = Animation { fps, max_frames, slowdown, scale, size };
+            let mut estimated = quiet;
             let info = animate(&data, &config, &anim, &out, |done, total| {
+                if !estimated {
+                    eprintln!("{}: {total} frames from {} rows, about {:.0} s", out.display(), data.columns[0].len(), total as f64 * animate::FRAME_SECONDS);
+                    estimated = true;
+                }
                 bar.set_length(total as u64);
                 bar.set_position(done as u64);
             })?;

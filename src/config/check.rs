@@ -1,0 +1,149 @@
+//! The one check of a parameter value against its declaration
+//! ([`super::table`]): known key, declared type (strict, as rclcpp's: an
+//! integer is not a double), every double finite, every number in the
+//! declared range. Every source of a value goes through it: the parameter
+//! file and `-p` (`Config::from_params`, `RosSettings::from_params`) and the
+//! node's parameter services (`ros/params_service.rs`), so nothing the
+//! start-up path refuses can arrive by a service. Rules between keys
+//! (`plate.inner_radius` < `plate.outer_radius`, …) stay with their section
+//! in `validate.rs`.
+
+use super::table::{self, Bound, Param, Ty};
+use super::{ConfigError, ParamValue, Params};
+
+/// Check `value` for `key`: the key is declared, the value has its type and
+/// lies in its range. The error names the key (`key[i]` for an array element).
+pub fn check(key: &str, value: &ParamValue) -> Result<&'static Param, ConfigError> {
+    let Some(param) = table::find(key) else {
+        let known: Vec<&str> = table::params().map(|p| p.key).collect();
+        return Err(ConfigError::UnknownKey {
+            key: key.to_string(),
+            suggestion: suggest(key, &known),
+        });
+    };
+    let wrong = || ConfigError::WrongType {
+        key: key.to_string(),
+        expected: param.ty.expected(),
+        found: format!("{} {value}", value.type_name()),
+    };
+    let empty = value.array_len() == Some(0);
+    match (param.ty, value) {
+        (Ty::Bool, ParamValue::Bool(_)) | (Ty::String, ParamValue::String(_)) => Ok(param),
+        (Ty::AutoOrInteger | Ty::AutoOrDouble, ParamValue::String(_)) => Ok(param),
+        (Ty::Integer | Ty::AutoOrInteger, ParamValue::Integer(i)) => {
+            in_range(param, key, *i as f64).map(|_| param)
+        }
+        (Ty::Double | Ty::AutoOrDouble, ParamValue::Double(x)) => {
+            in_range(param, key, *x).map(|_| param)
+        }
+        (Ty::IntegerArray | Ty::DoubleArray | Ty::StringArray, _) if empty => Ok(param),
+        (Ty::StringArray, ParamValue::StringArray(_)) => Ok(param),
+        (Ty::IntegerArray, ParamValue::IntegerArray(v)) => v
+            .iter()
+            .enumerate()
+            .try_for_each(|(i, &x)| in_range(param, &format!("{key}[{i}]"), x as f64))
+            .map(|_| param),
+        (Ty::DoubleArray, ParamValue::DoubleArray(v)) => v
+            .iter()
+            .enumerate()
+            .try_for_each(|(i, &x)| in_range(param, &format!("{key}[{i}]"), x))
+            .map(|_| param),
+        _ => Err(wrong()),
+    }
+}
+
+/// Check every value of a parameter set ([`check`]).
+pub fn check_params(params: &Params) -> Result<(), ConfigError> {
+    params
+        .iter()
+        .try_for_each(|(key, value)| check(key, value).map(|_| ()))
+}
+
+/// A text value (file, `-p`) for a key declared double (or double array)
+/// written as an integer (`rate_hz: 1000`, `[0, 0, -100]`) is read as the
+/// double it spells; a typed value (a parameter service's) is not converted.
+pub fn read_as_declared(key: &str, value: ParamValue) -> ParamValue {
+    match (table::find(key).map(|p| p.ty), value) {
+        (Some(Ty::Double | Ty::AutoOrDouble), ParamValue::Integer(i)) => {
+            ParamValue::Double(i as f64)
+        }
+        (Some(Ty::DoubleArray), ParamValue::IntegerArray(v)) => {
+            ParamValue::DoubleArray(v.into_iter().map(|i| i as f64).collect())
+        }
+        (_, value) => value,
+    }
+}
+
+fn in_range(param: &Param, key: &str, x: f64) -> Result<(), ConfigError> {
+    if !x.is_finite() {
+        return Err(ConfigError::NonFinite {
+            key: key.to_string(),
+        });
+    }
+    let r = param.range;
+    if r.contains(x) {
+        return Ok(());
+    }
+    let key = key.to_string();
+    let min = match r.min {
+        Bound::Open => f64::NEG_INFINITY,
+        Bound::Inclusive(m) | Bound::Exclusive(m) => m,
+    };
+    let zero_allowed = r.or_zero || r.min == Bound::Inclusive(0.0);
+    Err(match r.max {
+        Bound::Inclusive(max) | Bound::Exclusive(max) if x >= max => {
+            ConfigError::AboveMaximum { key, value: x, max }
+        }
+        _ if x < 0.0 && zero_allowed => ConfigError::Negative { key, value: x },
+        _ if x <= 0.0 && min >= 0.0 && !zero_allowed => ConfigError::NotPositive { key, value: x },
+        _ => ConfigError::OutOfRange {
+            key,
+            value: x,
+            rule: r.text(),
+        },
+    })
+}
+
+/// The known key a typo most likely meant: a close spelling, the same name
+/// in another section (`simulation.speed` → `joint.speed`), or a known name
+/// the given one abbreviates (`plate.poisson` → `plate.poisson_ratio`).
+pub(super) fn suggest(key: &str, known: &[&str]) -> Option<String> {
+    let lower = key.to_lowercase();
+    let best = known.iter().map(|k| (levenshtein(&lower, k), *k)).min_by_key(|(d, _)| *d);
+    if let Some((d, k)) = best {
+        if d <= (k.chars().count() / 6).max(2) {
+            return Some(k.to_string());
+        }
+    }
+    let (section, last) = match lower.rsplit_once('.') {
+        Some((s, l)) => (s, l),
+        None => ("", lower.as_str()),
+    };
+    let last_of = |k: &str| k.rsplit_once('.').map_or(k, |(_, l)| l).to_string();
+    let section_of = |k: &str| k.rsplit_once('.').map_or("", |(s, _)| s).to_string();
+    if let Some(k) = known.iter().find(|k| last_of(k) == last) {
+        return Some(k.to_string());
+    }
+    if last.chars().count() >= 4 {
+        if let Some(k) = known.iter().find(|k| section_of(k) == section && last_of(k).starts_with(last)) {
+            return Some(k.to_string());
+        }
+    }
+    None
+}
+
+fn levenshtein(a: &str, b: &str) -> usize {
+    let a: Vec<char> = a.chars().collect();
+    let b: Vec<char> = b.chars().collect();
+    let mut prev: Vec<usize> = (0..=b.len()).collect();
+    let mut cur = vec![0; b.len() + 1];
+    for i in 1..=a.len() {
+        cur[0] = i;
+        for j in 1..=b.len() {
+            let cost = usize::from(a[i - 1] != b[j - 1]);
+            cur[j] = (prev[j] + 1).min(cur[j - 1] + 1).min(prev[j - 1] + cost);
+        }
+        std::mem::swap(&mut prev, &mut cur);
+    }
+    prev[b.len()]
+}
