@@ -41,8 +41,10 @@ Parameters (--ros-args -p name:=value):
 All commanded pads are one annular_plate/msg/PadClampForces on
 <target>/pad_clamp_forces per tick, so they change together before one step
 of the simulation; its header stamp comes back as ModalAmplitudes.input_stamp
-(the command-to-state latency printed). Topics and QoS (all rclpy defaults:
-reliable, volatile, depth 10):
+(the command-to-state latency printed). Topics and QoS (reliable, volatile;
+the two whose every sample counts for the summary with depth 1000, one
+second of the node's 1-kHz states, so that none is dropped while Python
+catches up; the others rclpy's default depth 10):
     <target>/pad_clamp_forces  annular_plate/msg/PadClampForces    (published)
     <target>/pad_states        annular_plate/msg/PadStates         (subscribed)
     <target>/modal_amplitudes  annular_plate/msg/ModalAmplitudes   (subscribed)
@@ -75,9 +77,9 @@ class BrakeLoad(Node):
         rate = float(p("rate", 100.0).value)
 
         self.pub = self.create_publisher(PadClampForces, f"{self.target}/pad_clamp_forces", 10)
-        self.create_subscription(PadStates, f"{self.target}/pad_states", self.on_pads, 10)
+        self.create_subscription(PadStates, f"{self.target}/pad_states", self.on_pads, 1000)
         self.create_subscription(ModalAmplitudes, f"{self.target}/modal_amplitudes", self.on_modal, 10)
-        self.create_subscription(JointState, "/joint_states", self.on_joint, 10)
+        self.create_subscription(JointState, "/joint_states", self.on_joint, 1000)
         self.pad_states = None
         self.modal = None
         self.speed = float("nan")
@@ -94,8 +96,13 @@ class BrakeLoad(Node):
             f"braking {self.target}: pads {self.pads}, {self.peak} N, "
             f"ramp {self.ramp} s, hold {self.hold} s, release {self.release} s")
 
+    def elapsed(self):
+        return 0.0 if self.start is None else (self.get_clock().now() - self.start).nanoseconds * 1e-9
+
     def on_pads(self, msg):
+        # The summary's largest brake torque is over every state, not the ticks.
         self.pad_states = msg
+        self.max_brake = max(self.max_brake, -sum(msg.friction_torque))
 
     def on_modal(self, msg):
         self.modal = msg
@@ -103,6 +110,8 @@ class BrakeLoad(Node):
     def on_joint(self, msg):
         if msg.velocity:
             self.speed = msg.velocity[0]
+            if self.speed < self.min_speed[0]:  # the minimum over every state
+                self.min_speed = (self.speed, self.elapsed())
         if msg.effort:
             self.effort = msg.effort[0]
 
@@ -145,10 +154,6 @@ class BrakeLoad(Node):
         t = (now - self.start).nanoseconds * 1e-9
         f = self.force(t)
         self.command(f)
-        if self.speed == self.speed and self.speed < self.min_speed[0]:
-            self.min_speed = (self.speed, t)
-        if self.pad_states is not None:
-            self.max_brake = max(self.max_brake, -sum(self.pad_states.friction_torque))
         if self.modal is not None and self.modal.q_ale:
             self.max_q = max(self.max_q, max(abs(q) for q in self.modal.q_ale))
         moved = self.printed_speed is None or abs(self.speed - self.printed_speed) > 0.5

@@ -9,7 +9,8 @@
 //!
 //! * a command line starts, after optional `NAME=value` words, with
 //!   `annular_plate` or `target/release/annular_plate`; a trailing `\`
-//!   continues it on the next line; ` # …` is a comment;
+//!   continues it on the next line; ` # …` is a comment; a trailing `&`
+//!   (started in the background) is dropped;
 //! * it runs through `sh -c` in a fresh directory that has the repository's
 //!   `config/` and `docs/` (so outputs land there, not in the repository),
 //!   with both names resolving to the binary under test;
@@ -82,7 +83,10 @@ fn commands(markdown: &str) -> Vec<DocCommand> {
 
 /// The words after the `NAME=value` prefix, if the program is annular_plate.
 fn program(text: &str) -> Option<Vec<&str>> {
-    let words: Vec<&str> = strip_comment(text).split_whitespace().collect();
+    let mut words: Vec<&str> = strip_comment(text).split_whitespace().collect();
+    if words.last() == Some(&"&") {
+        words.pop(); // started in the background: the node, run as the others
+    }
     let first = words.iter().position(|w| !(w.contains('=') && !w.starts_with('-')))?;
     matches!(words[first], "annular_plate" | "target/release/annular_plate").then(|| words[first..].to_vec())
 }

@@ -171,7 +171,8 @@ fn parameter_services_at(mtu: u32, domain: u16) {
     // ros2 param set: accepted and refused, with the reasons.
     check(out["set_good"] == json!([{"ok": true, "reason": ""}, {"ok": true, "reason": ""}]), format!("set_parameters of the run-time keys: {}", out["set_good"]));
     let refused = out["set_refused"].as_array().cloned().unwrap_or_default();
-    let reasons = ["read only", "must be", "not a", "not declared"];
+    // Each refusal names the key and the rule it breaks.
+    let reasons = ["read only", "simulation.realtime_factor = -1 must not be negative", "ros.wrench_timeout must be a double", "not declared"];
     check(refused.len() == 4, format!("set_parameters of four bad values: {refused:?}"));
     for (r, why) in refused.iter().zip(reasons) {
         check(r["ok"] == false && r["reason"].as_str().unwrap_or_default().contains(why), format!("set_parameters refused with `{why}`: {r}"));

@@ -151,6 +151,16 @@ impl Drop for Netns {
     }
 }
 
+/// A thread that reads `r` to its end (a child's stdout or stderr) so the
+/// child never blocks on a full pipe; join it for the text.
+pub fn read_in_background<R: Read + Send + 'static>(mut r: R) -> std::thread::JoinHandle<String> {
+    std::thread::spawn(move || {
+        let mut s = String::new();
+        let _ = r.read_to_string(&mut s);
+        s
+    })
+}
+
 pub fn temp_dir() -> PathBuf {
     let d = repo().join("target/ros-wire-tests");
     std::fs::create_dir_all(&d).expect("create target/ros-wire-tests");
@@ -247,18 +257,8 @@ pub fn peer(ns: &Netns, node: &NodeProcess, scenario: &str, node_name: &str, arg
         .stdout(Stdio::piped())
         .stderr(Stdio::piped());
     let mut child = cmd.spawn().expect("cannot start the peer");
-    let mut stdout = child.stdout.take().expect("piped");
-    let mut stderr = child.stderr.take().expect("piped");
-    let out_thread = std::thread::spawn(move || {
-        let mut s = String::new();
-        let _ = stdout.read_to_string(&mut s);
-        s
-    });
-    let err_thread = std::thread::spawn(move || {
-        let mut s = String::new();
-        let _ = stderr.read_to_string(&mut s);
-        s
-    });
+    let out_thread = read_in_background(child.stdout.take().expect("piped"));
+    let err_thread = read_in_background(child.stderr.take().expect("piped"));
     let end = Instant::now() + Duration::from_secs(120);
     let status = loop {
         if let Ok(Some(s)) = child.try_wait() {

@@ -16,9 +16,8 @@
 
 #![allow(dead_code)]
 
-use crate::harness::{repo, Netns, NodeProcess};
+use crate::harness::{read_in_background, repo, Netns, NodeProcess};
 use std::ffi::OsStr;
-use std::io::Read;
 use std::path::PathBuf;
 use std::process::{Command, ExitStatus, Stdio};
 use std::sync::OnceLock;
@@ -94,18 +93,8 @@ pub fn run_python(ns: &Netns, domain: u16, args: &[&OsStr], timeout: Duration) -
     cmd.stdin(Stdio::null()).stdout(Stdio::piped()).stderr(Stdio::piped());
     let t0 = Instant::now();
     let mut child = cmd.spawn().expect("cannot start bash for the rclpy peer");
-    let mut stdout = child.stdout.take().expect("piped");
-    let mut stderr = child.stderr.take().expect("piped");
-    let out_thread = std::thread::spawn(move || {
-        let mut s = String::new();
-        let _ = stdout.read_to_string(&mut s);
-        s
-    });
-    let err_thread = std::thread::spawn(move || {
-        let mut s = String::new();
-        let _ = stderr.read_to_string(&mut s);
-        s
-    });
+    let out_thread = read_in_background(child.stdout.take().expect("piped"));
+    let err_thread = read_in_background(child.stderr.take().expect("piped"));
     let end = t0 + timeout;
     let status = loop {
         if let Ok(Some(s)) = child.try_wait() {
