@@ -6,18 +6,37 @@ use annular_plate::dynamics::Simulation;
 use criterion::{criterion_group, criterion_main, Criterion};
 
 /// The lathe disc (30 modes unless changed) at 100 m/min with one ALE rim load.
-fn lathe(integrator: IntegratorKind, coords: Coordinates, kmax: u32, lmax: u32, rate: f64) -> Simulation {
+fn lathe(
+    integrator: IntegratorKind,
+    coords: Coordinates,
+    kmax: u32,
+    lmax: u32,
+    rate: f64,
+) -> Simulation {
     lathe_with(integrator, coords, kmax, lmax, rate, |_| {})
 }
 
-fn lathe_with(integrator: IntegratorKind, coords: Coordinates, kmax: u32, lmax: u32, rate: f64, extra: impl Fn(&mut Config)) -> Simulation {
+fn lathe_with(
+    integrator: IntegratorKind,
+    coords: Coordinates,
+    kmax: u32,
+    lmax: u32,
+    rate: f64,
+    extra: impl Fn(&mut Config),
+) -> Simulation {
     let mut c = Config::default();
     c.plate.nodal_diameters = (0..=kmax).collect();
     c.plate.nodal_circles = (0..=lmax).collect();
     c.plate.damping = vec![0.02];
     c.joint.speed = 100.0 / 60.0 / 0.15;
-    c.nodes.ale.push(NodePosition { radial: 1.0, angular: 0.0 });
-    c.loads.ale.push(WrenchConfig { force: [0.0, 50.0, -300.0], moment: [0.0; 3] });
+    c.nodes.ale.push(NodePosition {
+        radial: 1.0,
+        angular: 0.0,
+    });
+    c.loads.ale.push(WrenchConfig {
+        force: [0.0, 50.0, -300.0],
+        moment: [0.0; 3],
+    });
     c.simulation.integrator = integrator;
     c.simulation.coordinates = coords;
     c.simulation.rate_hz = rate;
@@ -35,7 +54,10 @@ fn steps(c: &mut Criterion) {
         for (kmax, lmax) in [(7, 1), (2, 0), (20, 3)] {
             let mut sim = lathe(integrator, coords, kmax, lmax, 10_000.0);
             let n = sim.model().n_modes();
-            c.bench_function(&format!("step/{}/{:?}/{n}_modes", integrator.name(), coords).to_lowercase(), |b| b.iter(|| sim.step().unwrap()));
+            c.bench_function(
+                &format!("step/{}/{:?}/{n}_modes", integrator.name(), coords).to_lowercase(),
+                |b| b.iter(|| sim.step().unwrap()),
+            );
         }
     }
     // RK4 sub-steps itself: at 10 kHz the 18.8 kHz mode needs ~59 substeps.
@@ -46,25 +68,55 @@ fn steps(c: &mut Criterion) {
     let effects: [(&str, fn(&mut Config)); 4] = [
         ("fixed_base", |_| {}),
         ("gravity", |c| c.gravity = [0.0, 0.0, -9.81]),
-        ("off_axis_rotation", |c| c.reference.angular_velocity = [2.0, 1.0, 0.0]),
+        ("off_axis_rotation", |c| {
+            c.reference.angular_velocity = [2.0, 1.0, 0.0]
+        }),
         ("follower_loads", |c| c.loads.follower = true),
     ];
     for (name, apply) in effects {
-        let mut sim = lathe_with(IntegratorKind::Exponential, Coordinates::Ale, 7, 1, 10_000.0, apply);
-        c.bench_function(&format!("effects/{name}"), |b| b.iter(|| sim.step().unwrap()));
+        let mut sim = lathe_with(
+            IntegratorKind::Exponential,
+            Coordinates::Ale,
+            7,
+            1,
+            10_000.0,
+            apply,
+        );
+        c.bench_function(&format!("effects/{name}"), |b| {
+            b.iter(|| sim.step().unwrap())
+        });
     }
 
     // Centrifugal stiffening: at constant speed the per-k block
     // propagators are cached; in a spin-up (a slow ramp at 1 rad/s², so the
     // speed changes every substep for the whole run) they are rebuilt every substep.
     let stiff = |c: &mut Config| c.centrifugal.stiffening = true;
-    let mut sim = lathe_with(IntegratorKind::Exponential, Coordinates::Ale, 7, 1, 10_000.0, stiff);
-    c.bench_function("effects/centrifugal_stiffening", |b| b.iter(|| sim.step().unwrap()));
-    for (name, stiffening) in [("effects/spin_up", false), ("effects/spin_up_centrifugal_stiffening", true)] {
-        let mut sim = lathe_with(IntegratorKind::Exponential, Coordinates::Ale, 7, 1, 10_000.0, |c| {
-            c.centrifugal.stiffening = stiffening;
-            c.joint.max_acceleration = 1.0;
-        });
+    let mut sim = lathe_with(
+        IntegratorKind::Exponential,
+        Coordinates::Ale,
+        7,
+        1,
+        10_000.0,
+        stiff,
+    );
+    c.bench_function("effects/centrifugal_stiffening", |b| {
+        b.iter(|| sim.step().unwrap())
+    });
+    for (name, stiffening) in [
+        ("effects/spin_up", false),
+        ("effects/spin_up_centrifugal_stiffening", true),
+    ] {
+        let mut sim = lathe_with(
+            IntegratorKind::Exponential,
+            Coordinates::Ale,
+            7,
+            1,
+            10_000.0,
+            |c| {
+                c.centrifugal.stiffening = stiffening;
+                c.joint.max_acceleration = 1.0;
+            },
+        );
         sim.set_speed_command(5000.0).unwrap();
         c.bench_function(name, |b| b.iter(|| sim.step().unwrap()));
     }
@@ -73,7 +125,13 @@ fn steps(c: &mut Criterion) {
     group.sample_size(10);
     group.bench_function("lathe_30_modes_5.5s_at_10kHz_exponential", |b| {
         b.iter(|| {
-            let mut sim = lathe(IntegratorKind::Exponential, Coordinates::Ale, 7, 1, 10_000.0);
+            let mut sim = lathe(
+                IntegratorKind::Exponential,
+                Coordinates::Ale,
+                7,
+                1,
+                10_000.0,
+            );
             for _ in 0..55_000 {
                 sim.step().unwrap();
             }

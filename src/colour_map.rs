@@ -12,8 +12,16 @@ pub const POSITIVE: [f32; 3] = [0.706, 0.016, 0.150];
 
 /// The colour of `t = w / w_ref`, clamped to [−1, 1] (non-finite: grey).
 pub fn rgb(t: f64) -> [f32; 3] {
-    let t = if t.is_finite() { t.clamp(-1.0, 1.0) } else { 0.0 };
-    let (end, u) = if t < 0.0 { (NEGATIVE, -t as f32) } else { (POSITIVE, t as f32) };
+    let t = if t.is_finite() {
+        t.clamp(-1.0, 1.0)
+    } else {
+        0.0
+    };
+    let (end, u) = if t < 0.0 {
+        (NEGATIVE, -t as f32)
+    } else {
+        (POSITIVE, t as f32)
+    };
     std::array::from_fn(|i| ZERO[i] * (1.0 - u) + end[i] * u)
 }
 

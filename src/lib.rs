@@ -4,16 +4,16 @@
 //!
 //! Layers, data flowing one way: [`config`] → [`model`] → [`dynamics`] → `ros` / `cli`.
 
+#[cfg(feature = "ros")]
+pub mod bag;
 #[cfg(feature = "cli")]
 pub mod cli;
 pub mod colour_map;
 pub mod config;
 pub mod dynamics;
-pub mod model;
-pub mod study;
 #[cfg(feature = "ros")]
 pub mod messages;
+pub mod model;
 #[cfg(feature = "ros")]
 pub mod ros;
-#[cfg(feature = "ros")]
-pub mod bag;
+pub mod study;

@@ -4,14 +4,18 @@ use annular_plate::cli;
 use annular_plate::dynamics::Simulation;
 use anyhow::Context;
 use clap::{Parser, Subcommand};
+use signal_hook::consts::{SIGINT, SIGTERM};
 use std::io::{BufWriter, IsTerminal, Write};
 use std::path::PathBuf;
 use std::sync::atomic::AtomicBool;
 use std::sync::Arc;
-use signal_hook::consts::{SIGINT, SIGTERM};
 
 #[derive(Parser)]
-#[command(name = "annular_plate", version, about = "A rotating annular Kirchhoff plate as a ROS 2 node (DLR FlexibleBodies AnnularPlate)")]
+#[command(
+    name = "annular_plate",
+    version,
+    about = "A rotating annular Kirchhoff plate as a ROS 2 node (DLR FlexibleBodies AnnularPlate)"
+)]
 struct Cli {
     #[command(subcommand)]
     command: Option<Command>,
@@ -97,10 +101,16 @@ enum BagCommand {
 /// opens /dev/null read-write in its place (a shell's `>/dev/null` opens it
 /// write-only), and writes to it succeed without a trace.
 fn stdout_was_closed() -> bool {
-    let null = std::fs::read_link("/proc/self/fd/1").is_ok_and(|p| p == std::path::Path::new("/dev/null"));
+    let null =
+        std::fs::read_link("/proc/self/fd/1").is_ok_and(|p| p == std::path::Path::new("/dev/null"));
     let flags = std::fs::read_to_string("/proc/self/fdinfo/1")
         .ok()
-        .and_then(|t| t.lines().find_map(|l| l.strip_prefix("flags:").and_then(|v| u32::from_str_radix(v.trim(), 8).ok())));
+        .and_then(|t| {
+            t.lines().find_map(|l| {
+                l.strip_prefix("flags:")
+                    .and_then(|v| u32::from_str_radix(v.trim(), 8).ok())
+            })
+        });
     null && flags.is_some_and(|f| f & 0o3 == 0o2)
 }
 
@@ -139,26 +149,46 @@ fn is_broken_pipe(e: &anyhow::Error) -> bool {
 fn run() -> anyhow::Result<()> {
     // `ros2 run` and launch files append `--ros-args ...`: split it off before clap.
     let args: Vec<String> = std::env::args().collect();
-    let split = args.iter().position(|a| a == "--ros-args").unwrap_or(args.len());
+    let split = args
+        .iter()
+        .position(|a| a == "--ros-args")
+        .unwrap_or(args.len());
     let (own, ros_args) = args.split_at(split);
     let cli = Cli::parse_from(own);
     match cli.command {
         None => run_node(None, ros_args, None),
-        Some(Command::Run { file, record, ros_args: mut extra }) => {
+        Some(Command::Run {
+            file,
+            record,
+            ros_args: mut extra,
+        }) => {
             extra.extend_from_slice(ros_args);
             run_node(file, &extra, record)
         }
-        Some(Command::Modes { file, json, overrides }) => {
+        Some(Command::Modes {
+            file,
+            json,
+            overrides,
+        }) => {
             let config = cli::load_config_with(&file, &overrides)?;
-            let model = annular_plate::model::PlateModel::new(&config.plate).with_context(|| format!("{}", file.display()))?;
+            let model = annular_plate::model::PlateModel::new(&config.plate)
+                .with_context(|| format!("{}", file.display()))?;
             let stdout = std::io::stdout();
             cli::modes::write(&model, json, &mut stdout.lock())?;
             Ok(())
         }
-        Some(Command::Bag { what: BagCommand::Repair { dir } }) => {
-            match annular_plate::bag::repair::repair(&dir).with_context(|| format!("bag repair {}", dir.display()))? {
+        Some(Command::Bag {
+            what: BagCommand::Repair { dir },
+        }) => {
+            match annular_plate::bag::repair::repair(&dir)
+                .with_context(|| format!("bag repair {}", dir.display()))?
+            {
                 annular_plate::bag::repair::Repair::AlreadyComplete { files } => {
-                    eprintln!("{}: {} .mcap file(s), each complete or repaired before: nothing to repair", dir.display(), files.len())
+                    eprintln!(
+                        "{}: {} .mcap file(s), each complete or repaired before: nothing to repair",
+                        dir.display(),
+                        files.len()
+                    )
                 }
                 annular_plate::bag::repair::Repair::Repaired { repaired } => {
                     for (source, summary) in &repaired {
@@ -179,9 +209,24 @@ fn run() -> anyhow::Result<()> {
         Some(Command::Study(args)) => Ok(cli::study::main(args)?),
         Some(Command::Campbell(args)) => Ok(cli::campbell::main(args)?),
         Some(Command::Stability(args)) => Ok(cli::stability::main(args)?),
-        Some(Command::Simulate { file, duration, csv, bag, output_rate, allow_aliasing, quiet, overrides }) => {
-            anyhow::ensure!(csv.is_some() || bag.is_some(), "simulate writes --csv OUT, --bag DIR or both: give at least one");
-            anyhow::ensure!(duration.is_finite() && duration >= 0.0, "--duration must be a finite number ≥ 0 s, got {duration}");
+        Some(Command::Simulate {
+            file,
+            duration,
+            csv,
+            bag,
+            output_rate,
+            allow_aliasing,
+            quiet,
+            overrides,
+        }) => {
+            anyhow::ensure!(
+                csv.is_some() || bag.is_some(),
+                "simulate writes --csv OUT, --bag DIR or both: give at least one"
+            );
+            anyhow::ensure!(
+                duration.is_finite() && duration >= 0.0,
+                "--duration must be a finite number ≥ 0 s, got {duration}"
+            );
             let config = cli::load_config_with(&file, &overrides)?;
             let dt = 1.0 / config.simulation.rate_hz;
             anyhow::ensure!(
@@ -192,7 +237,8 @@ fn run() -> anyhow::Result<()> {
             let rate_hz = config.simulation.rate_hz;
             let mut sim = Simulation::new(config).with_context(|| format!("{}", file.display()))?;
             if output_rate.is_some() {
-                cli::simulate::check_output_rate(&sim, rate_hz / every as f64, allow_aliasing).with_context(|| format!("{}", file.display()))?;
+                cli::simulate::check_output_rate(&sim, rate_hz / every as f64, allow_aliasing)
+                    .with_context(|| format!("{}", file.display()))?;
             }
             let show = !quiet && std::io::stderr().is_terminal();
             let bar = indicatif::ProgressBar::new(1000);
@@ -209,23 +255,43 @@ fn run() -> anyhow::Result<()> {
                     if stdout_was_closed() {
                         anyhow::bail!("--csv -: stdout is closed (the process started without it), nothing to write the CSV to; give --csv FILE or redirect stdout");
                     }
-                    let fd = std::io::stdout().as_fd().try_clone_to_owned().context("--csv -: stdout is closed, nothing to write the CSV to")?;
-                    Some(Box::new(BufWriter::with_capacity(1 << 18, std::fs::File::from(fd))))
+                    let fd = std::io::stdout()
+                        .as_fd()
+                        .try_clone_to_owned()
+                        .context("--csv -: stdout is closed, nothing to write the CSV to")?;
+                    Some(Box::new(BufWriter::with_capacity(
+                        1 << 18,
+                        std::fs::File::from(fd),
+                    )))
                 }
-                Some(p) => Some(Box::new(BufWriter::with_capacity(1 << 18,
-                    std::fs::File::create(p).with_context(|| format!("cannot create {}", p.display()))?,
+                Some(p) => Some(Box::new(BufWriter::with_capacity(
+                    1 << 18,
+                    std::fs::File::create(p)
+                        .with_context(|| format!("cannot create {}", p.display()))?,
                 ))),
             };
-            let mut bag = bag.map(|dir| cli::record::BagOutput::create(&dir, &sim, &file, &overrides)).transpose()?;
+            let mut bag = bag
+                .map(|dir| cli::record::BagOutput::create(&dir, &sim, &file, &overrides))
+                .transpose()?;
             let record = |s: &Simulation| bag.as_mut().map_or(Ok(()), |b| b.record(s));
             // SIGINT / SIGTERM end the run after the current step and the bag is
             // finished as after a full run; a second signal ends the process at once.
             let stop = Arc::new(AtomicBool::new(false));
             for signal in [SIGINT, SIGTERM] {
-                signal_hook::flag::register_conditional_shutdown(signal, 1, Arc::clone(&stop)).context("cannot handle signals")?;
-                signal_hook::flag::register(signal, Arc::clone(&stop)).context("cannot handle signals")?;
+                signal_hook::flag::register_conditional_shutdown(signal, 1, Arc::clone(&stop))
+                    .context("cannot handle signals")?;
+                signal_hook::flag::register(signal, Arc::clone(&stop))
+                    .context("cannot handle signals")?;
             }
-            let result = cli::simulate::run_with(&mut sim, duration, every, out.as_deref_mut(), record, progress, &stop);
+            let result = cli::simulate::run_with(
+                &mut sim,
+                duration,
+                every,
+                out.as_deref_mut(),
+                record,
+                progress,
+                &stop,
+            );
             bar.finish_and_clear();
             drop(out);
             let bag_line = bag.map(|b| b.finish()).transpose()?;
@@ -234,10 +300,17 @@ fn run() -> anyhow::Result<()> {
                 if let Some(line) = bag_line {
                     eprintln!("{line}");
                 }
-                return Err(cli::error::CliError::Interrupted { time: sim.time(), steps }.into());
+                return Err(cli::error::CliError::Interrupted {
+                    time: sim.time(),
+                    steps,
+                }
+                .into());
             }
             if !quiet {
-                eprintln!("{steps} steps, {duration} s simulated in {:.3} s wall", started.elapsed().as_secs_f64());
+                eprintln!(
+                    "{steps} steps, {duration} s simulated in {:.3} s wall",
+                    started.elapsed().as_secs_f64()
+                );
                 if let Some(line) = bag_line {
                     eprintln!("{line}");
                 }
@@ -247,6 +320,10 @@ fn run() -> anyhow::Result<()> {
     }
 }
 
-fn run_node(file: Option<PathBuf>, ros_args: &[String], record: Option<PathBuf>) -> anyhow::Result<()> {
+fn run_node(
+    file: Option<PathBuf>,
+    ros_args: &[String],
+    record: Option<PathBuf>,
+) -> anyhow::Result<()> {
     Ok(annular_plate::ros::run_node(file, ros_args, record)?)
 }

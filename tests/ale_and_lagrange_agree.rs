@@ -45,7 +45,13 @@ fn spin_up_scene() -> Config {
     c
 }
 
-fn spin_up_run(c: Config, integrator: IntegratorKind, coords: Coordinates, rate: f64, steps: usize) -> (Vec<Vec<f64>>, Vec<Vec<f64>>) {
+fn spin_up_run(
+    c: Config,
+    integrator: IntegratorKind,
+    coords: Coordinates,
+    rate: f64,
+    steps: usize,
+) -> (Vec<Vec<f64>>, Vec<Vec<f64>>) {
     let mut sim = Simulation::new(integrated(c, integrator, coords, rate)).unwrap();
     sim.set_speed_command(600.0).unwrap();
     let (mut ale, mut lag) = (vec![], vec![]);
@@ -54,15 +60,35 @@ fn spin_up_run(c: Config, integrator: IntegratorKind, coords: Coordinates, rate:
         ale.push(sim.q_ale().to_vec());
         lag.push(sim.q_lagrange().to_vec());
     }
-    assert!((sim.joint().velocity - 600.0).abs() < 1e-9, "spin-up did not reach the command: {}", sim.joint().velocity);
+    assert!(
+        (sim.joint().velocity - 600.0).abs() < 1e-9,
+        "spin-up did not reach the command: {}",
+        sim.joint().velocity
+    );
     (ale, lag)
 }
 
 #[test]
 fn exponential_integrator_agrees_to_round_off_at_constant_speed() {
     let steps = 2000;
-    let (ale_a, lag_a) = run(integrated(constant_speed_scene(), IntegratorKind::Exponential, Coordinates::Ale, 1000.0), steps);
-    let (ale_l, lag_l) = run(integrated(constant_speed_scene(), IntegratorKind::Exponential, Coordinates::Lagrangian, 1000.0), steps);
+    let (ale_a, lag_a) = run(
+        integrated(
+            constant_speed_scene(),
+            IntegratorKind::Exponential,
+            Coordinates::Ale,
+            1000.0,
+        ),
+        steps,
+    );
+    let (ale_l, lag_l) = run(
+        integrated(
+            constant_speed_scene(),
+            IntegratorKind::Exponential,
+            Coordinates::Lagrangian,
+            1000.0,
+        ),
+        steps,
+    );
     let d_ale = history_difference(&ale_a, &ale_l);
     let d_lag = history_difference(&lag_a, &lag_l);
     println!("constant speed, exponential: ALE {d_ale:e}, Lagrangian {d_lag:e}");
@@ -75,8 +101,20 @@ fn exponential_integrator_agrees_to_round_off_at_constant_speed() {
 
 #[test]
 fn exponential_integrator_agrees_to_round_off_through_a_critical_speed() {
-    let (ale_a, lag_a) = spin_up_run(spin_up_scene(), IntegratorKind::Exponential, Coordinates::Ale, 1000.0, 500);
-    let (ale_l, lag_l) = spin_up_run(spin_up_scene(), IntegratorKind::Exponential, Coordinates::Lagrangian, 1000.0, 500);
+    let (ale_a, lag_a) = spin_up_run(
+        spin_up_scene(),
+        IntegratorKind::Exponential,
+        Coordinates::Ale,
+        1000.0,
+        500,
+    );
+    let (ale_l, lag_l) = spin_up_run(
+        spin_up_scene(),
+        IntegratorKind::Exponential,
+        Coordinates::Lagrangian,
+        1000.0,
+        500,
+    );
     let d = history_difference(&ale_a, &ale_l).max(history_difference(&lag_a, &lag_l));
     println!("spin-up, exponential: {d:e}");
     assert!(d < 1e-11);
@@ -91,18 +129,40 @@ fn rk4_on_the_ale_equations_and_on_the_lagrangian_ones_converge_to_one_motion_in
     // From 20 kHz up RK4 takes one micro-step per step here (h·λ_max ≤ 0.2), so
     // the rate sets its step. Measured: 2.2e-6, 1.3e-7, 8.4e-9 (ratio ≈ 16: fourth order).
     let mut finest_ale = vec![];
-    let d = assert_fourth_order("spin-up, rk4 ALE vs rk4 Lagrangian", &[20_000.0, 40_000.0, 80_000.0], |rate| {
-        let steps = (0.4 * rate) as usize; // 400 → 600 rad/s
-        let (ale_a, lag_a) = spin_up_run(spin_up_scene(), IntegratorKind::Rk4, Coordinates::Ale, rate, steps);
-        let (ale_l, lag_l) = spin_up_run(spin_up_scene(), IntegratorKind::Rk4, Coordinates::Lagrangian, rate, steps);
-        let d = history_difference(&ale_a, &ale_l).max(history_difference(&lag_a, &lag_l));
-        finest_ale = ale_a;
-        d
-    });
+    let d = assert_fourth_order(
+        "spin-up, rk4 ALE vs rk4 Lagrangian",
+        &[20_000.0, 40_000.0, 80_000.0],
+        |rate| {
+            let steps = (0.4 * rate) as usize; // 400 → 600 rad/s
+            let (ale_a, lag_a) = spin_up_run(
+                spin_up_scene(),
+                IntegratorKind::Rk4,
+                Coordinates::Ale,
+                rate,
+                steps,
+            );
+            let (ale_l, lag_l) = spin_up_run(
+                spin_up_scene(),
+                IntegratorKind::Rk4,
+                Coordinates::Lagrangian,
+                rate,
+                steps,
+            );
+            let d = history_difference(&ale_a, &ale_l).max(history_difference(&lag_a, &lag_l));
+            finest_ale = ale_a;
+            d
+        },
+    );
     assert!(d < 1.5e-8, "{d:e}");
     // The exponential integrator lies on the same motion; its own error in a
     // spin-up is the O(kαh²) phase of the held load (2.7e-8 at 40 kHz, ÷4 per halving).
-    let (ale_e, _) = spin_up_run(spin_up_scene(), IntegratorKind::Exponential, Coordinates::Ale, 80_000.0, 32_000);
+    let (ale_e, _) = spin_up_run(
+        spin_up_scene(),
+        IntegratorKind::Exponential,
+        Coordinates::Ale,
+        80_000.0,
+        32_000,
+    );
     let d_e = history_difference(&finest_ale, &ale_e);
     println!("spin-up, rk4 ALE vs exponential at 80 kHz: {d_e:e}");
     assert!(d_e < 2e-8, "{d_e:e}");
@@ -112,13 +172,31 @@ fn rk4_on_the_ale_equations_and_on_the_lagrangian_ones_converge_to_one_motion_in
 fn implicit_midpoint_descriptions_converge_to_each_other_at_second_order() {
     let diff_at = |rate: f64| {
         let steps = (0.4 * rate) as usize;
-        let (a, _) = spin_up_run(spin_up_scene(), IntegratorKind::ImplicitMidpoint, Coordinates::Ale, rate, steps);
-        let (l, _) = spin_up_run(spin_up_scene(), IntegratorKind::ImplicitMidpoint, Coordinates::Lagrangian, rate, steps);
+        let (a, _) = spin_up_run(
+            spin_up_scene(),
+            IntegratorKind::ImplicitMidpoint,
+            Coordinates::Ale,
+            rate,
+            steps,
+        );
+        let (l, _) = spin_up_run(
+            spin_up_scene(),
+            IntegratorKind::ImplicitMidpoint,
+            Coordinates::Lagrangian,
+            rate,
+            steps,
+        );
         history_difference(&a[a.len() - 1..], &l[l.len() - 1..])
     };
     let (d1, d2) = (diff_at(10_000.0), diff_at(20_000.0));
-    println!("implicit midpoint ALE vs Lagrangian: {d1:e} at 10 kHz, {d2:e} at 20 kHz, ratio {}", d1 / d2);
-    assert!(d1 / d2 > 3.0 && d1 / d2 < 5.0, "not second order: {d1:e} → {d2:e}");
+    println!(
+        "implicit midpoint ALE vs Lagrangian: {d1:e} at 10 kHz, {d2:e} at 20 kHz, ratio {}",
+        d1 / d2
+    );
+    assert!(
+        d1 / d2 > 3.0 && d1 / d2 < 5.0,
+        "not second order: {d1:e} → {d2:e}"
+    );
 }
 
 /// The spin-up scene with centrifugal stiffening: Ω(t)²G_k couples ⟨k, 0⟩
@@ -134,13 +212,33 @@ fn stiffened_spin_up_scene() -> Config {
 fn with_centrifugal_stiffening_the_exponential_integrator_agrees_to_round_off_in_a_spin_up() {
     // G_k is the same block for the cos and sin families, so it commutes with
     // R(kχ): the ALE equations carry the same −Ω²M⁻¹G_k q̄ as the Lagrangian ones.
-    let (ale_a, lag_a) = spin_up_run(stiffened_spin_up_scene(), IntegratorKind::Exponential, Coordinates::Ale, 1000.0, 500);
-    let (ale_l, lag_l) = spin_up_run(stiffened_spin_up_scene(), IntegratorKind::Exponential, Coordinates::Lagrangian, 1000.0, 500);
+    let (ale_a, lag_a) = spin_up_run(
+        stiffened_spin_up_scene(),
+        IntegratorKind::Exponential,
+        Coordinates::Ale,
+        1000.0,
+        500,
+    );
+    let (ale_l, lag_l) = spin_up_run(
+        stiffened_spin_up_scene(),
+        IntegratorKind::Exponential,
+        Coordinates::Lagrangian,
+        1000.0,
+        500,
+    );
     let d = history_difference(&ale_a, &ale_l).max(history_difference(&lag_a, &lag_l));
     // Not vacuous: the stiffening changes the motion.
-    let (ale_u, _) = spin_up_run(spin_up_scene_with_circles(), IntegratorKind::Exponential, Coordinates::Ale, 1000.0, 500);
+    let (ale_u, _) = spin_up_run(
+        spin_up_scene_with_circles(),
+        IntegratorKind::Exponential,
+        Coordinates::Ale,
+        1000.0,
+        500,
+    );
     let effect = history_difference(&ale_u, &ale_a);
-    println!("stiffened spin-up, exponential ALE vs Lagrangian: {d:e}; stiffened vs not: {effect:e}");
+    println!(
+        "stiffened spin-up, exponential ALE vs Lagrangian: {d:e}; stiffened vs not: {effect:e}"
+    );
     assert!(d < 1e-11, "{d:e}");
     assert!(effect > 1e-2, "{effect:e}");
 }
@@ -156,31 +254,63 @@ fn spin_up_scene_with_circles() -> Config {
 /// motion; the exponential integrator (Ω² held at its substep mean) converges
 /// to it at second order.
 #[test]
-fn with_centrifugal_stiffening_rk4_descriptions_converge_and_the_exponential_follows_at_second_order() {
+fn with_centrifugal_stiffening_rk4_descriptions_converge_and_the_exponential_follows_at_second_order(
+) {
     let mut reference = vec![];
     // From 60 kHz up RK4 takes one inner step per step (h·λ_max ≤ 0.2, λ_max
     // with ⟨3, 1⟩ and the stiffening ≈ 1.2e4 1/s), so the rate sets its step.
-    assert_fourth_order("stiffened spin-up, rk4 ALE vs Lagrangian", &[60_000.0, 120_000.0, 240_000.0], |rate| {
-        let steps = (0.4 * rate) as usize;
-        let (ale_a, lag_a) = spin_up_run(stiffened_spin_up_scene(), IntegratorKind::Rk4, Coordinates::Ale, rate, steps);
-        let (ale_l, lag_l) = spin_up_run(stiffened_spin_up_scene(), IntegratorKind::Rk4, Coordinates::Lagrangian, rate, steps);
-        let d = history_difference(&ale_a, &ale_l).max(history_difference(&lag_a, &lag_l));
-        let inner = {
-            let mut sim = Simulation::new(integrated(stiffened_spin_up_scene(), IntegratorKind::Rk4, Coordinates::Ale, rate)).unwrap();
-            sim.step().unwrap();
-            sim.inner_substeps()
-        };
-        println!("stiffened spin-up at {rate} Hz: {inner} inner steps");
-        reference = ale_a;
-        d
-    });
+    assert_fourth_order(
+        "stiffened spin-up, rk4 ALE vs Lagrangian",
+        &[60_000.0, 120_000.0, 240_000.0],
+        |rate| {
+            let steps = (0.4 * rate) as usize;
+            let (ale_a, lag_a) = spin_up_run(
+                stiffened_spin_up_scene(),
+                IntegratorKind::Rk4,
+                Coordinates::Ale,
+                rate,
+                steps,
+            );
+            let (ale_l, lag_l) = spin_up_run(
+                stiffened_spin_up_scene(),
+                IntegratorKind::Rk4,
+                Coordinates::Lagrangian,
+                rate,
+                steps,
+            );
+            let d = history_difference(&ale_a, &ale_l).max(history_difference(&lag_a, &lag_l));
+            let inner = {
+                let mut sim = Simulation::new(integrated(
+                    stiffened_spin_up_scene(),
+                    IntegratorKind::Rk4,
+                    Coordinates::Ale,
+                    rate,
+                ))
+                .unwrap();
+                sim.step().unwrap();
+                sim.inner_substeps()
+            };
+            println!("stiffened spin-up at {rate} Hz: {inner} inner steps");
+            reference = ale_a;
+            d
+        },
+    );
     // The exponential integrator against the finest RK4, on the final state.
     let exp_at = |rate: f64| {
         let steps = (0.4 * rate) as usize;
-        let (ale_e, _) = spin_up_run(stiffened_spin_up_scene(), IntegratorKind::Exponential, Coordinates::Ale, rate, steps);
+        let (ale_e, _) = spin_up_run(
+            stiffened_spin_up_scene(),
+            IntegratorKind::Exponential,
+            Coordinates::Ale,
+            rate,
+            steps,
+        );
         history_difference(&ale_e[steps - 1..], &reference[reference.len() - 1..])
     };
     let (e1, e2) = (exp_at(10_000.0), exp_at(20_000.0));
     println!("stiffened spin-up, exponential vs rk4 at 240 kHz: {e1:e} at 10 kHz, {e2:e} at 20 kHz (ratio {})", e1 / e2);
-    assert!(e1 / e2 > 3.0 && e1 / e2 < 5.0, "not second order: {e1:e} → {e2:e}");
+    assert!(
+        e1 / e2 > 3.0 && e1 / e2 < 5.0,
+        "not second order: {e1:e} → {e2:e}"
+    );
 }

@@ -30,7 +30,11 @@ fn sources() -> BTreeMap<String, String> {
             if p.is_dir() {
                 walk(root, &p, out);
             } else if p.extension().is_some_and(|x| x == "rs") {
-                let rel = p.strip_prefix(root).unwrap().to_string_lossy().replace('\\', "/");
+                let rel = p
+                    .strip_prefix(root)
+                    .unwrap()
+                    .to_string_lossy()
+                    .replace('\\', "/");
                 out.insert(rel, std::fs::read_to_string(&p).unwrap());
             }
         }
@@ -47,10 +51,18 @@ fn is_ident_char(c: char) -> bool {
 
 /// Whether `text` defines `name` (see the module docs).
 fn defines(text: &str, name: &str) -> bool {
-    const KEYWORDS: [&str; 8] = ["fn", "struct", "enum", "trait", "const", "static", "type", "mod"];
+    const KEYWORDS: [&str; 8] = [
+        "fn", "struct", "enum", "trait", "const", "static", "type", "mod",
+    ];
     for line in text.lines() {
-        let words: Vec<&str> = line.split(|c: char| !is_ident_char(c)).filter(|w| !w.is_empty()).collect();
-        if words.windows(2).any(|w| KEYWORDS.contains(&w[0]) && w[1] == name) {
+        let words: Vec<&str> = line
+            .split(|c: char| !is_ident_char(c))
+            .filter(|w| !w.is_empty())
+            .collect();
+        if words
+            .windows(2)
+            .any(|w| KEYWORDS.contains(&w[0]) && w[1] == name)
+        {
             return true;
         }
         // a field or a variant: `[pub[(..)]] name` then `:`, `,`, `(`, `{` or the line's end
@@ -58,13 +70,17 @@ fn defines(text: &str, name: &str) -> bool {
         if let Some(r) = rest.strip_prefix("pub") {
             let r = r.trim_start();
             rest = match r.strip_prefix('(') {
-                Some(r) => r.split_once(')').map_or("", |(_, after)| after.trim_start()),
+                Some(r) => r
+                    .split_once(')')
+                    .map_or("", |(_, after)| after.trim_start()),
                 None => r,
             };
         }
         if let Some(after) = rest.strip_prefix(name) {
             let after = after.trim_start();
-            if after.is_empty() || after.starts_with([':', ',', '(', '{']) && !after.starts_with("::") {
+            if after.is_empty()
+                || after.starts_with([':', ',', '(', '{']) && !after.starts_with("::")
+            {
                 return true;
             }
         }
@@ -76,7 +92,11 @@ fn defines(text: &str, name: &str) -> bool {
 fn resolve<'a>(sources: &'a BTreeMap<String, String>, cited: &str) -> Vec<&'a str> {
     sources
         .keys()
-        .filter(|p| *p == cited || (p.starts_with("src/") && (p.ends_with(&format!("/{cited}")) || **p == format!("src/{cited}"))))
+        .filter(|p| {
+            *p == cited
+                || (p.starts_with("src/")
+                    && (p.ends_with(&format!("/{cited}")) || **p == format!("src/{cited}")))
+        })
         .map(String::as_str)
         .collect()
 }
@@ -85,7 +105,13 @@ fn resolve<'a>(sources: &'a BTreeMap<String, String>, cited: &str) -> Vec<&'a st
 /// (a path, a call, snake_case with an underscore, or CamelCase).
 fn name_of(span: &str) -> Option<Vec<&str>> {
     let head = span.split('(').next().unwrap();
-    if head.is_empty() || !head.split("::").all(|s| !s.is_empty() && s.chars().all(is_ident_char) && !s.starts_with(|c: char| c.is_ascii_digit())) {
+    if head.is_empty()
+        || !head.split("::").all(|s| {
+            !s.is_empty()
+                && s.chars().all(is_ident_char)
+                && !s.starts_with(|c: char| c.is_ascii_digit())
+        })
+    {
         return None;
     }
     if span.contains('(') && !span.ends_with(')') {
@@ -93,7 +119,10 @@ fn name_of(span: &str) -> Option<Vec<&str>> {
     }
     let segments: Vec<&str> = head.split("::").collect();
     let last = segments[segments.len() - 1];
-    let looks = segments.len() > 1 || span.contains('(') || last.contains('_') || last.starts_with(|c: char| c.is_ascii_uppercase());
+    let looks = segments.len() > 1
+        || span.contains('(')
+        || last.contains('_')
+        || last.starts_with(|c: char| c.is_ascii_uppercase());
     looks.then_some(segments)
 }
 
@@ -127,7 +156,10 @@ fn segments(prose: &str) -> Vec<String> {
     let mut current = String::new();
     for line in prose.lines() {
         let t = line.trim_start();
-        let starts_item = t.starts_with("- ") || t.starts_with('|') || t.split_once(". ").is_some_and(|(n, _)| !n.is_empty() && n.chars().all(|c| c.is_ascii_digit()));
+        let starts_item = t.starts_with("- ")
+            || t.starts_with('|')
+            || t.split_once(". ")
+                .is_some_and(|(n, _)| !n.is_empty() && n.chars().all(|c| c.is_ascii_digit()));
         if t.is_empty() || starts_item {
             if !current.trim().is_empty() {
                 out.push(std::mem::take(&mut current));
@@ -143,23 +175,35 @@ fn segments(prose: &str) -> Vec<String> {
 
 fn check(doc_path: &str) -> Vec<String> {
     let sources = sources();
-    let in_src = |name: &str| sources.iter().any(|(p, t)| p.starts_with("src/") && defines(t, name));
+    let in_src = |name: &str| {
+        sources
+            .iter()
+            .any(|(p, t)| p.starts_with("src/") && defines(t, name))
+    };
     let doc = std::fs::read_to_string(repo().join(doc_path)).unwrap();
     let (prose, blocks) = split_code(&doc);
     let mut problems = Vec::new();
 
     // Code examples: the functions they show, and the modules whose `build` they register.
     for b in &blocks {
-        let words: Vec<&str> = b.split(|c: char| !is_ident_char(c)).filter(|w| !w.is_empty()).collect();
+        let words: Vec<&str> = b
+            .split(|c: char| !is_ident_char(c))
+            .filter(|w| !w.is_empty())
+            .collect();
         for w in words.windows(2).filter(|w| w[0] == "fn") {
             if !in_src(w[1]) {
-                problems.push(format!("code example: fn {} is defined nowhere in src/", w[1]));
+                problems.push(format!(
+                    "code example: fn {} is defined nowhere in src/",
+                    w[1]
+                ));
             }
         }
         for (i, _) in b.match_indices("::build") {
             let module = b[..i].rsplit(|c: char| !is_ident_char(c)).next().unwrap();
             if resolve(&sources, &format!("{module}.rs")).is_empty() {
-                problems.push(format!("code example: {module}::build, but there is no {module}.rs"));
+                problems.push(format!(
+                    "code example: {module}::build, but there is no {module}.rs"
+                ));
             }
         }
     }
@@ -176,38 +220,59 @@ fn check(doc_path: &str) -> Vec<String> {
                 files.extend(found);
             } else if s.ends_with('/') && !s.contains(' ') && !s.starts_with('~') {
                 let dir = s.trim_end_matches('/');
-                if !sources.keys().any(|p| p.contains(&format!("/{dir}/")) || p.starts_with(&format!("{dir}/"))) {
+                if !sources
+                    .keys()
+                    .any(|p| p.contains(&format!("/{dir}/")) || p.starts_with(&format!("{dir}/")))
+                {
                     problems.push(format!("`{s}`: no such directory"));
                 }
             }
         }
-        let numbered_step = seg.trim_start().split_once(". ").is_some_and(|(n, _)| n.chars().all(|c| c.is_ascii_digit()));
+        let numbered_step = seg
+            .trim_start()
+            .split_once(". ")
+            .is_some_and(|(n, _)| n.chars().all(|c| c.is_ascii_digit()));
         for s in &cited {
             if EXTERNAL.contains(s) {
                 continue;
             }
             let Some(segments) = name_of(s) else { continue };
-            let pool = |name: &str| in_src(name) || files.iter().any(|f| defines(&sources[*f], name));
-            if let Some(missing) = segments.iter().find(|n| !["crate", "self", "super"].contains(n) && !pool(n)) {
+            let pool =
+                |name: &str| in_src(name) || files.iter().any(|f| defines(&sources[*f], name));
+            if let Some(missing) = segments
+                .iter()
+                .find(|n| !["crate", "self", "super"].contains(n) && !pool(n))
+            {
                 problems.push(format!("`{s}`: `{missing}` is defined nowhere in src/"));
                 continue;
             }
             // A function placed in a walk step's file is defined there.
             let last = segments[segments.len() - 1];
             let function = last.starts_with(|c: char| c.is_ascii_lowercase());
-            if numbered_step && function && !files.is_empty() && !files.iter().any(|f| defines(&sources[*f], last)) {
-                problems.push(format!("`{s}` is not defined in the step's file(s) {files:?}: {}", seg.trim()));
+            if numbered_step
+                && function
+                && !files.is_empty()
+                && !files.iter().any(|f| defines(&sources[*f], last))
+            {
+                problems.push(format!(
+                    "`{s}` is not defined in the step's file(s) {files:?}: {}",
+                    seg.trim()
+                ));
             }
         }
         // "`name` in `file.rs`"
         for (i, _) in seg.match_indices("` in `") {
             let name = seg[..i].rsplit('`').next().unwrap();
             let file = seg[i + 6..].split('`').next().unwrap();
-            let (Some(segments), true) = (name_of(name), file.ends_with(".rs")) else { continue };
+            let (Some(segments), true) = (name_of(name), file.ends_with(".rs")) else {
+                continue;
+            };
             let found = resolve(&sources, file);
             let last = segments[segments.len() - 1];
             if !found.is_empty() && !found.iter().any(|f| defines(&sources[*f], last)) {
-                problems.push(format!("`{name}` is said to be in `{file}`, which does not define it"));
+                problems.push(format!(
+                    "`{name}` is said to be in `{file}`, which does not define it"
+                ));
             }
         }
     }
@@ -217,7 +282,11 @@ fn check(doc_path: &str) -> Vec<String> {
 #[test]
 fn every_name_docs_architecture_md_cites_exists() {
     let problems = check("docs/architecture.md");
-    assert!(problems.is_empty(), "docs/architecture.md is out of date:\n{}", problems.join("\n"));
+    assert!(
+        problems.is_empty(),
+        "docs/architecture.md is out of date:\n{}",
+        problems.join("\n")
+    );
 }
 
 #[test]
@@ -225,11 +294,20 @@ fn the_check_catches_a_stale_name() {
     // What the document once said: a function that no longer exists, and one in the wrong file.
     let sources = sources();
     assert!(!sources.values().any(|t| defines(t, "spawn_input")));
-    assert!(defines(&sources["src/config/load_model_sections.rs"], "read_springs"));
+    assert!(defines(
+        &sources["src/config/load_model_sections.rs"],
+        "read_springs"
+    ));
     assert!(!defines(&sources["src/config/validate.rs"], "read_springs"));
-    assert!(defines(&sources["src/config/mod.rs"], "springs"), "a field counts as defined");
+    assert!(
+        defines(&sources["src/config/mod.rs"], "springs"),
+        "a field counts as defined"
+    );
     assert_eq!(name_of("node_wrench(kind, j)"), Some(vec!["node_wrench"]));
-    assert_eq!(name_of("Simulation::set_tool_feed"), Some(vec!["Simulation", "set_tool_feed"]));
+    assert_eq!(
+        name_of("Simulation::set_tool_feed"),
+        Some(vec!["Simulation", "set_tool_feed"])
+    );
     assert_eq!(name_of("plate"), None, "a plain word is not a code name");
     assert_eq!(name_of("~/ale_<j>/wrench"), None);
 }

@@ -31,11 +31,15 @@ const PER_STEP: [&str; 4] = ["/clock", "/joint_states", "/tf", MODAL];
 
 /// The design example with a tilted spin axis (so /tf_static is not the identity).
 fn scene() -> PathBuf {
-    let text = std::fs::read_to_string(repo().join("config/design_example.yaml")).expect("config/design_example.yaml");
+    let text = std::fs::read_to_string(repo().join("config/design_example.yaml"))
+        .expect("config/design_example.yaml");
     let d = repo().join("target/bag-tests");
     std::fs::create_dir_all(&d).unwrap();
     let p = d.join("design_example_tilted.yaml");
-    write_atomically(&p, &format!("{}\n    reference:\n      tilt: {TILT}\n", text.trim_end()));
+    write_atomically(
+        &p,
+        &format!("{}\n    reference:\n      tilt: {TILT}\n", text.trim_end()),
+    );
     p
 }
 
@@ -43,7 +47,8 @@ fn scene() -> PathBuf {
 /// name of its own and renames it into place, so no test reads a half-written file.
 fn write_atomically(path: &Path, text: &str) {
     std::fs::create_dir_all(path.parent().unwrap()).unwrap();
-    let tmp = path.with_extension(format!("tmp{:?}", std::thread::current().id()).replace(['(', ')'], ""));
+    let tmp = path
+        .with_extension(format!("tmp{:?}", std::thread::current().id()).replace(['(', ')'], ""));
     std::fs::write(&tmp, text).unwrap();
     std::fs::rename(&tmp, path).unwrap();
 }
@@ -60,7 +65,10 @@ fn simulate(scene: &Path, extra: &[&std::ffi::OsStr]) -> std::process::Output {
 
 /// Equal up to the last bit or two (JSON and CSV numbers are printed shortest-round-trip).
 fn same(a: f64, b: f64, what: &str) {
-    assert!((a - b).abs() <= 4.5e-16 * a.abs().max(b.abs()), "{what}: bag {a} vs expected {b}");
+    assert!(
+        (a - b).abs() <= 4.5e-16 * a.abs().max(b.abs()),
+        "{what}: bag {a} vs expected {b}"
+    );
 }
 
 fn same_all(a: &[f64], b: &[f64], what: &str) {
@@ -71,7 +79,11 @@ fn same_all(a: &[f64], b: &[f64], what: &str) {
 }
 
 fn u64s(v: &Value) -> Vec<u64> {
-    v.as_array().unwrap_or_else(|| panic!("not an array: {v:.200}")).iter().map(|x| x.as_u64().expect("integer")).collect()
+    v.as_array()
+        .unwrap_or_else(|| panic!("not an array: {v:.200}"))
+        .iter()
+        .map(|x| x.as_u64().expect("integer"))
+        .collect()
 }
 
 struct Csv {
@@ -84,26 +96,48 @@ impl Csv {
         let text = std::fs::read_to_string(p).unwrap();
         let mut lines = text.lines();
         let cols = lines.next().unwrap().split(',').map(String::from).collect();
-        let rows = lines.map(|l| l.split(',').map(|x| x.parse().unwrap()).collect()).collect();
+        let rows = lines
+            .map(|l| l.split(',').map(|x| x.parse().unwrap()).collect())
+            .collect();
         Csv { cols, rows }
     }
     fn col(&self, row: usize, name: &str) -> f64 {
-        self.rows[row][self.cols.iter().position(|c| c == name).unwrap_or_else(|| panic!("no column {name}"))]
+        self.rows[row][self
+            .cols
+            .iter()
+            .position(|c| c == name)
+            .unwrap_or_else(|| panic!("no column {name}"))]
     }
     fn cols_starting(&self, row: usize, prefix: &str, n: usize) -> Vec<f64> {
-        (1..=n).map(|i| self.col(row, &format!("{prefix}{i}"))).collect()
+        (1..=n)
+            .map(|i| self.col(row, &format!("{prefix}{i}")))
+            .collect()
     }
 }
 
 fn transform<'a>(tf: &'a Value, child: &str) -> &'a Value {
-    tf["transforms"].as_array().unwrap().iter().find(|t| t["child_frame_id"] == child).unwrap_or_else(|| panic!("no {child}"))
+    tf["transforms"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|t| t["child_frame_id"] == child)
+        .unwrap_or_else(|| panic!("no {child}"))
 }
 
 fn pose(t: &Value) -> ([f64; 3], [f64; 4]) {
     let tr = &t["transform"];
     (
-        [f(tr, "translation.x"), f(tr, "translation.y"), f(tr, "translation.z")],
-        [f(tr, "rotation.x"), f(tr, "rotation.y"), f(tr, "rotation.z"), f(tr, "rotation.w")],
+        [
+            f(tr, "translation.x"),
+            f(tr, "translation.y"),
+            f(tr, "translation.z"),
+        ],
+        [
+            f(tr, "rotation.x"),
+            f(tr, "rotation.y"),
+            f(tr, "rotation.z"),
+            f(tr, "rotation.w"),
+        ],
     )
 }
 
@@ -112,11 +146,38 @@ fn a_simulate_bag_holds_the_node_topics_with_the_runs_values() {
     let scene = scene();
     let bag = fresh_dir("simulate_bag");
     let csv = repo().join("target/bag-tests/simulate_bag.csv");
-    let out = simulate(&scene, &["--csv".as_ref(), csv.as_os_str(), "--bag".as_ref(), bag.as_os_str()]);
-    assert!(out.status.success(), "simulate --bag failed: {}", String::from_utf8_lossy(&out.stderr));
+    let out = simulate(
+        &scene,
+        &[
+            "--csv".as_ref(),
+            csv.as_os_str(),
+            "--bag".as_ref(),
+            bag.as_os_str(),
+        ],
+    );
+    assert!(
+        out.status.success(),
+        "simulate --bag failed: {}",
+        String::from_utf8_lossy(&out.stderr)
+    );
 
-    let d = read_bag(&bag, "rosbags", &[MODAL, "/joint_states", "/tf", "/tf_static", "/diagnostics", "/clock"]);
-    assert_eq!(d["undecodable"], serde_json::json!([]), "every message decodes");
+    let d = read_bag(
+        &bag,
+        "rosbags",
+        &[
+            MODAL,
+            "/joint_states",
+            "/tf",
+            "/tf_static",
+            "/diagnostics",
+            "/clock",
+        ],
+    );
+    assert_eq!(
+        d["undecodable"],
+        serde_json::json!([]),
+        "every message decodes"
+    );
 
     // Topics and types (rosbags' view of the bag).
     let expected_types = [
@@ -124,7 +185,10 @@ fn a_simulate_bag_holds_the_node_topics_with_the_runs_values() {
         ("/joint_states", "sensor_msgs/msg/JointState"),
         ("/tf", "tf2_msgs/msg/TFMessage"),
         (MODAL, "annular_plate/msg/ModalAmplitudes"),
-        ("/annular_plate/plate_marker", "visualization_msgs/msg/MarkerArray"),
+        (
+            "/annular_plate/plate_marker",
+            "visualization_msgs/msg/MarkerArray",
+        ),
         ("/diagnostics", "diagnostic_msgs/msg/DiagnosticArray"),
         ("/clock", "rosgraph_msgs/msg/Clock"),
     ];
@@ -132,7 +196,10 @@ fn a_simulate_bag_holds_the_node_topics_with_the_runs_values() {
     assert_eq!(conns.len(), expected_types.len(), "{conns:?}");
     let n_diag = (STEPS / 1000 + 1) as u64;
     for (topic, ty) in expected_types {
-        let c = conns.iter().find(|c| c["topic"] == topic).unwrap_or_else(|| panic!("no connection {topic}"));
+        let c = conns
+            .iter()
+            .find(|c| c["topic"] == topic)
+            .unwrap_or_else(|| panic!("no connection {topic}"));
         assert_eq!(c["msgtype"], ty);
         assert_eq!(c["serialization_format"], "cdr");
         assert_eq!(c["msgdef_format"], "MSG");
@@ -143,8 +210,16 @@ fn a_simulate_bag_holds_the_node_topics_with_the_runs_values() {
             "/annular_plate/plate_marker" => STEPS / 33 + 1,
             _ => STEPS + 1,
         };
-        assert_eq!(c["msgcount"].as_u64(), Some(want), "{topic} count in the bag's index");
-        assert_eq!(d["topics"][topic]["count"].as_u64(), Some(want), "{topic}: messages read");
+        assert_eq!(
+            c["msgcount"].as_u64(),
+            Some(want),
+            "{topic} count in the bag's index"
+        );
+        assert_eq!(
+            d["topics"][topic]["count"].as_u64(),
+            Some(want),
+            "{topic}: messages read"
+        );
         let q = &c["qos"][0];
         assert_eq!(q["reliability"], "reliable", "{topic}");
         assert_eq!(q["history"], "keep_last", "{topic}");
@@ -154,7 +229,14 @@ fn a_simulate_bag_holds_the_node_topics_with_the_runs_values() {
             "/clock" | "/annular_plate/plate_marker" => ("volatile", 1),
             _ => ("volatile", 10),
         };
-        assert_eq!((q["durability"].as_str().unwrap(), q["depth"].as_u64().unwrap()), (durability, depth), "{topic} QoS");
+        assert_eq!(
+            (
+                q["durability"].as_str().unwrap(),
+                q["depth"].as_u64().unwrap()
+            ),
+            (durability, depth),
+            "{topic} QoS"
+        );
     }
 
     // metadata.yaml as written.
@@ -163,8 +245,14 @@ fn a_simulate_bag_holds_the_node_topics_with_the_runs_values() {
     assert_eq!(m["storage_identifier"], "mcap");
     assert_eq!(m["ros_distro"], "jazzy");
     assert_eq!(m["starting_time"]["nanoseconds_since_epoch"], 0);
-    assert_eq!(m["duration"]["nanoseconds"].as_u64(), Some(STEPS * 1_000_000));
-    assert_eq!(m["message_count"].as_u64(), Some(4 * (STEPS + 1) + 1 + n_diag + STEPS / 33 + 1));
+    assert_eq!(
+        m["duration"]["nanoseconds"].as_u64(),
+        Some(STEPS * 1_000_000)
+    );
+    assert_eq!(
+        m["message_count"].as_u64(),
+        Some(4 * (STEPS + 1) + 1 + n_diag + STEPS / 33 + 1)
+    );
     let file = format!("{}_0.mcap", bag.file_name().unwrap().to_string_lossy());
     assert_eq!(m["relative_file_paths"], serde_json::json!([file]));
     assert!(bag.join(&file).is_file());
@@ -172,7 +260,10 @@ fn a_simulate_bag_holds_the_node_topics_with_the_runs_values() {
     for t in m["topics_with_message_count"].as_array().unwrap() {
         let name = t["topic_metadata"]["name"].as_str().unwrap();
         assert_eq!(t["message_count"], d["topics"][name]["count"], "{name}");
-        assert!(t["topic_metadata"]["offered_qos_profiles"].as_str().unwrap().starts_with("- history: keep_last\n"));
+        assert!(t["topic_metadata"]["offered_qos_profiles"]
+            .as_str()
+            .unwrap()
+            .starts_with("- history: keep_last\n"));
     }
 
     // Times: simulated, from 0, 1 ms per step; log time = stamp; modal step = index.
@@ -182,9 +273,15 @@ fn a_simulate_bag_holds_the_node_topics_with_the_runs_values() {
         assert_eq!(u64s(&t["log_times"]), ms, "{topic} log times");
         assert_eq!(u64s(&t["stamps"]), ms, "{topic} stamps");
     }
-    assert_eq!(u64s(&d["topics"][MODAL]["steps"]), (0..=STEPS).collect::<Vec<_>>());
+    assert_eq!(
+        u64s(&d["topics"][MODAL]["steps"]),
+        (0..=STEPS).collect::<Vec<_>>()
+    );
     assert_eq!(u64s(&d["topics"]["/tf_static"]["log_times"]), vec![0]);
-    assert_eq!(u64s(&d["topics"]["/diagnostics"]["log_times"]), (0..n_diag).map(|k| k * 1_000_000_000).collect::<Vec<_>>());
+    assert_eq!(
+        u64s(&d["topics"]["/diagnostics"]["log_times"]),
+        (0..n_diag).map(|k| k * 1_000_000_000).collect::<Vec<_>>()
+    );
 
     // Values: the CSV of the same run, and the in-process Simulation.
     let csv = Csv::read(&csv);
@@ -202,13 +299,33 @@ fn a_simulate_bag_holds_the_node_topics_with_the_runs_values() {
         }
         let (js, mo, tf) = (&joints[k], &modal[k], &tfs[k]);
         assert_eq!(js["name"], serde_json::json!(["plate_joint"]));
-        same(floats(&js["position"])[0], csv.col(k, "joint_position"), "joint position vs CSV");
-        same(floats(&js["velocity"])[0], csv.col(k, "joint_velocity"), "joint velocity vs CSV");
+        same(
+            floats(&js["position"])[0],
+            csv.col(k, "joint_position"),
+            "joint position vs CSV",
+        );
+        same(
+            floats(&js["velocity"])[0],
+            csv.col(k, "joint_velocity"),
+            "joint velocity vs CSV",
+        );
         same(floats(&js["effort"])[0], sim.joint().effort, "joint effort");
         same(f(mo, "sim_time"), csv.col(k, "time"), "sim_time vs CSV");
-        same_all(&floats(&mo["q_lagrange"]), &csv.cols_starting(k, "q", n), "q_lagrange vs CSV");
-        same_all(&floats(&mo["q_ale"]), &csv.cols_starting(k, "qale", n), "q_ale vs CSV");
-        same_all(&floats(&mo["q_dot_lagrange"]), sim.q_dot_lagrange(), "q_dot_lagrange");
+        same_all(
+            &floats(&mo["q_lagrange"]),
+            &csv.cols_starting(k, "q", n),
+            "q_lagrange vs CSV",
+        );
+        same_all(
+            &floats(&mo["q_ale"]),
+            &csv.cols_starting(k, "qale", n),
+            "q_ale vs CSV",
+        );
+        same_all(
+            &floats(&mo["q_dot_lagrange"]),
+            sim.q_dot_lagrange(),
+            "q_dot_lagrange",
+        );
         same_all(&floats(&mo["q_dot_ale"]), sim.q_dot_ale(), "q_dot_ale");
         max_q = max_q.max(floats(&mo["q_ale"]).iter().fold(0.0, |a, q| a.max(q.abs())));
         if k == 0 {
@@ -227,41 +344,97 @@ fn a_simulate_bag_holds_the_node_topics_with_the_runs_values() {
         let half = 0.5 * sim.rotor_angle();
         same_all(&r, &[0.0, 0.0, half.sin(), half.cos()], "rotor rotation");
     }
-    assert!(max_q > 1e-7, "the load deforms the plate (max |q_ale| = {max_q})");
+    assert!(
+        max_q > 1e-7,
+        "the load deforms the plate (max |q_ale| = {max_q})"
+    );
 
     let st = &d["topics"]["/tf_static"]["messages"][0]["transforms"];
     assert_eq!(st.as_array().unwrap().len(), 1);
-    assert_eq!((st[0]["header"]["frame_id"].as_str(), st[0]["child_frame_id"].as_str()), (Some("world"), Some("plate_base")));
+    assert_eq!(
+        (
+            st[0]["header"]["frame_id"].as_str(),
+            st[0]["child_frame_id"].as_str()
+        ),
+        (Some("world"), Some("plate_base"))
+    );
     let (_, r) = pose(&st[0]);
-    same_all(&r, &[(0.5 * TILT).sin(), 0.0, 0.0, (0.5 * TILT).cos()], "tf_static rotation (tilt)");
+    same_all(
+        &r,
+        &[(0.5 * TILT).sin(), 0.0, 0.0, (0.5 * TILT).cos()],
+        "tf_static rotation (tilt)",
+    );
 
     let diags = d["topics"]["/diagnostics"]["messages"].as_array().unwrap();
     for (i, dm) in diags.iter().enumerate() {
-        let names: Vec<&str> = dm["status"].as_array().unwrap().iter().map(|s| s["name"].as_str().unwrap()).collect();
-        assert_eq!(names, vec!["/annular_plate: simulation", "/annular_plate: inputs"]);
-        let step = dm["status"][0]["values"].as_array().unwrap().iter().find(|v| v["key"] == "step").unwrap();
-        assert_eq!(step["value"].as_str(), Some((i as u64 * 1000).to_string().as_str()));
+        let names: Vec<&str> = dm["status"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|s| s["name"].as_str().unwrap())
+            .collect();
+        assert_eq!(
+            names,
+            vec!["/annular_plate: simulation", "/annular_plate: inputs"]
+        );
+        let step = dm["status"][0]["values"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .find(|v| v["key"] == "step")
+            .unwrap();
+        assert_eq!(
+            step["value"].as_str(),
+            Some((i as u64 * 1000).to_string().as_str())
+        );
     }
 
     // The second reader: mcap + mcap-ros2-support on the .mcap file.
     let m2 = read_bag(&bag, "mcap", &[]);
     assert_eq!(m2["undecodable"], serde_json::json!([]));
     assert_eq!(m2["header"]["profile"], "ros2");
-    assert!(m2["metadata_records"].as_array().unwrap().iter().any(|r| r["name"] == "rosbag2"));
+    assert!(m2["metadata_records"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .any(|r| r["name"] == "rosbag2"));
     for (topic, ty) in expected_types {
         let c = &m2["channels"][topic];
-        assert_eq!((c["message_encoding"].as_str(), c["schema"].as_str()), (Some("cdr"), Some(ty)), "{topic}");
-        assert!(c["metadata"]["offered_qos_profiles"].as_str().unwrap().contains("reliability: reliable"));
-        assert_eq!(m2["topics"][topic]["count"], d["topics"][topic]["count"], "{topic}");
-        assert_eq!(m2["topics"][topic]["log_times"], d["topics"][topic]["log_times"], "{topic}");
-        assert_eq!(m2["topics"][topic]["last"], d["topics"][topic]["last"], "{topic}: both readers decode the same");
+        assert_eq!(
+            (c["message_encoding"].as_str(), c["schema"].as_str()),
+            (Some("cdr"), Some(ty)),
+            "{topic}"
+        );
+        assert!(c["metadata"]["offered_qos_profiles"]
+            .as_str()
+            .unwrap()
+            .contains("reliability: reliable"));
+        assert_eq!(
+            m2["topics"][topic]["count"], d["topics"][topic]["count"],
+            "{topic}"
+        );
+        assert_eq!(
+            m2["topics"][topic]["log_times"], d["topics"][topic]["log_times"],
+            "{topic}"
+        );
+        assert_eq!(
+            m2["topics"][topic]["last"], d["topics"][topic]["last"],
+            "{topic}: both readers decode the same"
+        );
     }
     for s in m2["schemas"].as_object().unwrap().values() {
         assert_eq!(s["encoding"], "ros2msg");
     }
-    let schema = m2["schemas"].as_object().unwrap().values().find(|s| s["name"] == "annular_plate/msg/ModalAmplitudes").unwrap();
+    let schema = m2["schemas"]
+        .as_object()
+        .unwrap()
+        .values()
+        .find(|s| s["name"] == "annular_plate/msg/ModalAmplitudes")
+        .unwrap();
     let text = schema["data"].as_str().unwrap();
-    assert!(text.starts_with(&std::fs::read_to_string(repo().join("msg/ModalAmplitudes.msg")).unwrap()));
+    assert!(
+        text.starts_with(&std::fs::read_to_string(repo().join("msg/ModalAmplitudes.msg")).unwrap())
+    );
     assert!(text.contains("\n================================================================================\nMSG: std_msgs/Header\n"));
 }
 
@@ -283,7 +456,11 @@ fn simulate_refuses_an_existing_bag_and_needs_an_output() {
     // --bag alone (no CSV) is enough.
     let bag = fresh_dir("simulate_bag_only");
     let out = simulate(&scene, &["--bag".as_ref(), bag.as_os_str()]);
-    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
     assert!(bag.join("metadata.yaml").is_file());
 }
 
@@ -294,9 +471,15 @@ fn simulate_refuses_an_existing_bag_and_needs_an_output() {
 /// as target/bag-tests/`name`.
 fn clamped_bench(name: &str) -> PathBuf {
     let text = std::fs::read_to_string(repo().join("config/brake_bench.yaml")).unwrap();
-    assert!(text.contains("clamp_force: [0.0]"), "the bench starts unclamped");
+    assert!(
+        text.contains("clamp_force: [0.0]"),
+        "the bench starts unclamped"
+    );
     let bench = repo().join("target/bag-tests").join(name);
-    write_atomically(&bench, &text.replace("clamp_force: [0.0]", "clamp_force: [5000.0]"));
+    write_atomically(
+        &bench,
+        &text.replace("clamp_force: [0.0]", "clamp_force: [5000.0]"),
+    );
     bench
 }
 
@@ -309,41 +492,98 @@ fn a_simulate_bag_of_a_scene_with_load_models_holds_their_states() {
             bench,
             "/annular_plate/pad_states",
             "annular_plate/msg/PadStates",
-            [("clamp_force", "pad1_clamp_force"), ("normal_force", "pad1_normal_force"), ("friction_torque", "pad1_friction_torque")],
+            [
+                ("clamp_force", "pad1_clamp_force"),
+                ("normal_force", "pad1_normal_force"),
+                ("friction_torque", "pad1_friction_torque"),
+            ],
         ),
         (
             lathe,
             "/annular_plate/tool_state",
             "annular_plate/msg/ToolState",
-            [("tip_z", "tool_tip_z"), ("chip_thickness", "tool_chip_thickness"), ("feed_force", "tool_feed_force")],
+            [
+                ("tip_z", "tool_tip_z"),
+                ("chip_thickness", "tool_chip_thickness"),
+                ("feed_force", "tool_feed_force"),
+            ],
         ),
     ] {
         let name = scene.file_stem().unwrap().to_string_lossy().to_string();
         let bag = fresh_dir(&format!("simulate_models_{name}"));
         let csv = repo().join(format!("target/bag-tests/simulate_models_{name}.csv"));
-        let out = simulate(&scene, &["--csv".as_ref(), csv.as_os_str(), "--bag".as_ref(), bag.as_os_str()]);
-        assert!(out.status.success(), "{name}: {}", String::from_utf8_lossy(&out.stderr));
+        let out = simulate(
+            &scene,
+            &[
+                "--csv".as_ref(),
+                csv.as_os_str(),
+                "--bag".as_ref(),
+                bag.as_os_str(),
+            ],
+        );
+        assert!(
+            out.status.success(),
+            "{name}: {}",
+            String::from_utf8_lossy(&out.stderr)
+        );
         let d = read_bag(&bag, "rosbags", &[topic]);
         assert_eq!(d["undecodable"], serde_json::json!([]), "{name}");
         let conns = d["connections"].as_array().unwrap();
-        let c = conns.iter().find(|c| c["topic"] == topic).unwrap_or_else(|| panic!("{name}: no {topic} in {conns:?}"));
+        let c = conns
+            .iter()
+            .find(|c| c["topic"] == topic)
+            .unwrap_or_else(|| panic!("{name}: no {topic} in {conns:?}"));
         assert_eq!(c["msgtype"], ty);
-        assert_eq!((c["qos"][0]["reliability"].as_str(), c["qos"][0]["depth"].as_u64()), (Some("reliable"), Some(10)));
-        assert!(!conns.iter().any(|c| c["topic"].as_str().unwrap().ends_with(if ty.ends_with("PadStates") { "tool_state" } else { "pad_states" })));
+        assert_eq!(
+            (
+                c["qos"][0]["reliability"].as_str(),
+                c["qos"][0]["depth"].as_u64()
+            ),
+            (Some("reliable"), Some(10))
+        );
+        assert!(
+            !conns.iter().any(|c| c["topic"].as_str().unwrap().ends_with(
+                if ty.ends_with("PadStates") {
+                    "tool_state"
+                } else {
+                    "pad_states"
+                }
+            ))
+        );
         let t = &d["topics"][topic];
-        assert_eq!(u64s(&t["steps"]), (0..=STEPS).collect::<Vec<_>>(), "{name}: one per step");
-        assert_eq!(u64s(&t["log_times"]), (0..=STEPS).map(|k| k * 1_000_000).collect::<Vec<_>>(), "{name}: log times");
+        assert_eq!(
+            u64s(&t["steps"]),
+            (0..=STEPS).collect::<Vec<_>>(),
+            "{name}: one per step"
+        );
+        assert_eq!(
+            u64s(&t["log_times"]),
+            (0..=STEPS).map(|k| k * 1_000_000).collect::<Vec<_>>(),
+            "{name}: log times"
+        );
         let csv = Csv::read(&csv);
         let msgs = t["messages"].as_array().unwrap();
         assert_eq!(msgs.len(), csv.rows.len());
         for (k, m) in msgs.iter().enumerate() {
             for (field, col) in columns {
-                let v = if m[field].is_array() { floats(&m[field])[0] } else { f(m, field) };
-                same(v, csv.col(k, col), &format!("{name} step {k}: {field} vs the CSV's {col}"));
+                let v = if m[field].is_array() {
+                    floats(&m[field])[0]
+                } else {
+                    f(m, field)
+                };
+                same(
+                    v,
+                    csv.col(k, col),
+                    &format!("{name} step {k}: {field} vs the CSV's {col}"),
+                );
             }
         }
         let last = msgs.last().unwrap();
-        let moving = if ty.ends_with("PadStates") { floats(&last["friction_torque"])[0].abs() } else { f(last, "feed_force") };
+        let moving = if ty.ends_with("PadStates") {
+            floats(&last["friction_torque"])[0].abs()
+        } else {
+            f(last, "feed_force")
+        };
         assert!(moving > 10.0, "{name}: the load model acts ({moving})");
     }
 }
@@ -359,21 +599,49 @@ fn a_simulate_bag_of_massive_pads_holds_their_compressions() {
         let bag = fresh_dir(&format!("simulate_massive_pads_{mass}"));
         let csv = repo().join(format!("target/bag-tests/simulate_massive_pads_{mass}.csv"));
         let p = format!("pads.mass:={mass}");
-        let out = simulate(&bench, &["--csv".as_ref(), csv.as_os_str(), "--bag".as_ref(), bag.as_os_str(), "-p".as_ref(), p.as_ref()]);
-        assert!(out.status.success(), "m_p = {mass}: {}", String::from_utf8_lossy(&out.stderr));
+        let out = simulate(
+            &bench,
+            &[
+                "--csv".as_ref(),
+                csv.as_os_str(),
+                "--bag".as_ref(),
+                bag.as_os_str(),
+                "-p".as_ref(),
+                p.as_ref(),
+            ],
+        );
+        assert!(
+            out.status.success(),
+            "m_p = {mass}: {}",
+            String::from_utf8_lossy(&out.stderr)
+        );
         let d = read_bag(&bag, "rosbags", &[topic]);
         assert_eq!(d["undecodable"], serde_json::json!([]));
         let msgs = d["topics"][topic]["messages"].as_array().unwrap();
         let csv = Csv::read(&csv);
         assert_eq!(msgs.len(), csv.rows.len());
         for (k, m) in msgs.iter().enumerate() {
-            let (top, bottom) = (floats(&m["pad_compression_top"]), floats(&m["pad_compression_bottom"]));
+            let (top, bottom) = (
+                floats(&m["pad_compression_top"]),
+                floats(&m["pad_compression_bottom"]),
+            );
             if mass == "0.0" {
-                assert!(top.is_empty() && bottom.is_empty(), "massless pads: no compressions ({top:?})");
+                assert!(
+                    top.is_empty() && bottom.is_empty(),
+                    "massless pads: no compressions ({top:?})"
+                );
                 continue;
             }
-            same(top[0], csv.col(k, "pad1_top_compression"), &format!("step {k}: top compression"));
-            same(bottom[0], csv.col(k, "pad1_bottom_compression"), &format!("step {k}: bottom compression"));
+            same(
+                top[0],
+                csv.col(k, "pad1_top_compression"),
+                &format!("step {k}: top compression"),
+            );
+            same(
+                bottom[0],
+                csv.col(k, "pad1_bottom_compression"),
+                &format!("step {k}: bottom compression"),
+            );
         }
         if mass == "0.3" {
             // At rest x₀ = N₀/(n k_c) with the bench's 3 contacts at 2e7 N/m.

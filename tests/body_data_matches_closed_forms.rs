@@ -17,7 +17,12 @@ fn plate(inner: Boundary, outer: Boundary) -> PlateConfig {
 /// ∫∫ f(r, φ) r dr dφ over the annulus by tensor Gauss–Legendre (radial, 40 points
 /// per 20 cells) × trapezoid in φ (exact for trigonometric polynomials).
 fn integrate(c: &PlateConfig, f: impl Fn(f64, f64) -> f64) -> f64 {
-    let gl = [(-0.861_136_311_594_052_6, 0.347_854_845_137_453_9), (-0.339_981_043_584_856_3, 0.652_145_154_862_546_1), (0.339_981_043_584_856_3, 0.652_145_154_862_546_1), (0.861_136_311_594_052_6, 0.347_854_845_137_453_9)];
+    let gl = [
+        (-0.861_136_311_594_052_6, 0.347_854_845_137_453_9),
+        (-0.339_981_043_584_856_3, 0.652_145_154_862_546_1),
+        (0.339_981_043_584_856_3, 0.652_145_154_862_546_1),
+        (0.861_136_311_594_052_6, 0.347_854_845_137_453_9),
+    ];
     let cells = 60;
     let n_phi = 64;
     let (a, b) = (c.inner_radius, c.outer_radius);
@@ -65,7 +70,11 @@ fn mass_and_inertia_match_the_annulus_closed_form() {
 
 #[test]
 fn coupling_terms_are_non_zero_only_for_their_nodal_diameters_and_match_quadrature() {
-    for (inner, outer) in [(Boundary::Clamped, Boundary::Free), (Boundary::Supported, Boundary::Free), (Boundary::Free, Boundary::Clamped)] {
+    for (inner, outer) in [
+        (Boundary::Clamped, Boundary::Free),
+        (Boundary::Supported, Boundary::Free),
+        (Boundary::Free, Boundary::Clamped),
+    ] {
         let c = plate(inner, outer);
         let model = PlateModel::new(&c).unwrap();
         let b = model.body();
@@ -74,25 +83,46 @@ fn coupling_terms_are_non_zero_only_for_their_nodal_diameters_and_match_quadratu
             let ct = b.translational_coupling(i);
             let cr = b.rotational_coupling(i);
             // Independent: ∫ ρh w_i dA and ∫ ρh (c × w_i e_z) dA = ρh ∫ (y w, −x w, 0) dA.
-            let s = |f: &dyn Fn(f64, f64) -> f64| integrate(&c, |r, phi| rho_h * model.mode_shape(i, r, phi).w * f(r, phi));
+            let s = |f: &dyn Fn(f64, f64) -> f64| {
+                integrate(&c, |r, phi| {
+                    rho_h * model.mode_shape(i, r, phi).w * f(r, phi)
+                })
+            };
             let qt = s(&|_, _| 1.0);
             let qx = s(&|r, phi| r * phi.cos());
             let qy = s(&|r, phi| r * phi.sin());
             let scale = mode.modal_mass / c.outer_radius.min(1.0);
-            assert!((ct[2] - qt).abs() < 1e-9 * scale, "C_t mode {i}: {} vs {qt}", ct[2]);
-            assert!((cr[0] - qy).abs() < 1e-9 * scale && (cr[1] + qx).abs() < 1e-9 * scale, "C_r mode {i}");
+            assert!(
+                (ct[2] - qt).abs() < 1e-9 * scale,
+                "C_t mode {i}: {} vs {qt}",
+                ct[2]
+            );
+            assert!(
+                (cr[0] - qy).abs() < 1e-9 * scale && (cr[1] + qx).abs() < 1e-9 * scale,
+                "C_r mode {i}"
+            );
             assert_eq!(ct[0], 0.0);
             assert_eq!(ct[1], 0.0);
             assert_eq!(cr[2], 0.0);
             match mode.k {
                 0 => {
-                    assert!(ct[2].abs() > 1e-3 * mode.modal_mass, "k = 0 mode {i} must couple to translation");
+                    assert!(
+                        ct[2].abs() > 1e-3 * mode.modal_mass,
+                        "k = 0 mode {i} must couple to translation"
+                    );
                     assert_eq!(cr, [0.0; 3]);
                 }
                 1 => {
                     assert_eq!(ct[2], 0.0);
-                    let expected_axis = if mode.shape == AngularShape::Cos { 1 } else { 0 };
-                    assert!(cr[expected_axis].abs() > 1e-3 * mode.modal_mass * c.inner_radius, "k = 1 mode {i} must couple to rotation");
+                    let expected_axis = if mode.shape == AngularShape::Cos {
+                        1
+                    } else {
+                        0
+                    };
+                    assert!(
+                        cr[expected_axis].abs() > 1e-3 * mode.modal_mass * c.inner_radius,
+                        "k = 1 mode {i} must couple to rotation"
+                    );
                 }
                 _ => {
                     assert_eq!(ct, [0.0; 3]);
@@ -110,12 +140,24 @@ fn modal_mass_and_stiffness_match_quadrature_of_the_energies() {
     let rho_h = c.density * c.thickness;
     for (i, mode) in model.modes().iter().enumerate() {
         let mm = integrate(&c, |r, phi| rho_h * model.mode_shape(i, r, phi).w.powi(2));
-        assert!((mm - mode.modal_mass).abs() < 1e-9 * mm, "modal mass {i}: {mm} vs {}", mode.modal_mass);
-        assert!((model.body().modal_stiffness[i] - mode.modal_mass * mode.omega.powi(2)).abs() < 1e-12 * model.body().modal_stiffness[i]);
+        assert!(
+            (mm - mode.modal_mass).abs() < 1e-9 * mm,
+            "modal mass {i}: {mm} vs {}",
+            mode.modal_mass
+        );
+        assert!(
+            (model.body().modal_stiffness[i] - mode.modal_mass * mode.omega.powi(2)).abs()
+                < 1e-12 * model.body().modal_stiffness[i]
+        );
         // Mass-orthogonality of distinct modes.
         for j in 0..i {
-            let mij = integrate(&c, |r, phi| rho_h * model.mode_shape(i, r, phi).w * model.mode_shape(j, r, phi).w);
-            assert!(mij.abs() < 1e-9 * mode.modal_mass, "modes {i} and {j} not M-orthogonal: {mij}");
+            let mij = integrate(&c, |r, phi| {
+                rho_h * model.mode_shape(i, r, phi).w * model.mode_shape(j, r, phi).w
+            });
+            assert!(
+                mij.abs() < 1e-9 * mode.modal_mass,
+                "modes {i} and {j} not M-orthogonal: {mij}"
+            );
         }
     }
 }
@@ -149,8 +191,10 @@ fn shape_derivatives_and_the_displacement_field_are_consistent() {
     let q: Vec<f64> = (0..n).map(|i| 1e-4 / (1.0 + i as f64)).collect();
     let (r, phi, eps) = (0.11, 0.7, 1e-6);
     let s = model.deflection(&q, r, phi);
-    let wr = (model.deflection(&q, r + eps, phi).w - model.deflection(&q, r - eps, phi).w) / (2.0 * eps);
-    let wp = (model.deflection(&q, r, phi + eps).w - model.deflection(&q, r, phi - eps).w) / (2.0 * eps);
+    let wr =
+        (model.deflection(&q, r + eps, phi).w - model.deflection(&q, r - eps, phi).w) / (2.0 * eps);
+    let wp =
+        (model.deflection(&q, r, phi + eps).w - model.deflection(&q, r, phi - eps).w) / (2.0 * eps);
     assert!((s.w_r - wr).abs() < 1e-6 * s.w_r.abs().max(1e-6));
     assert!((s.w_phi - wp).abs() < 1e-6 * s.w_phi.abs().max(1e-6));
     // Eq. (13): a fibre at height z rotates with the slope: u = −z ∇w, u_z = w.

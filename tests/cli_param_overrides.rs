@@ -16,7 +16,11 @@ fn run(args: &[&str]) -> Output {
 
 fn ok(args: &[&str]) -> String {
     let out = run(args);
-    assert!(out.status.success(), "{args:?}: {}", String::from_utf8_lossy(&out.stderr));
+    assert!(
+        out.status.success(),
+        "{args:?}: {}",
+        String::from_utf8_lossy(&out.stderr)
+    );
     String::from_utf8(out.stdout).unwrap()
 }
 
@@ -41,13 +45,28 @@ fn edited(name: &str, from: &str, to: &str) -> PathBuf {
 fn modes_with_an_override_equal_modes_of_the_edited_file() {
     let bench = scene_files::path("brake_bench.yaml");
     let file = edited("thin.yaml", "thickness: 0.0181", "thickness: 0.012");
-    let by_p = ok(&["modes", bench.to_str().unwrap(), "--json", "-p", "plate.thickness:=0.012"]);
+    let by_p = ok(&[
+        "modes",
+        bench.to_str().unwrap(),
+        "--json",
+        "-p",
+        "plate.thickness:=0.012",
+    ]);
     let by_file = ok(&["modes", file.to_str().unwrap(), "--json"]);
     let plain = ok(&["modes", bench.to_str().unwrap(), "--json"]);
     assert_eq!(by_p, by_file);
     assert_ne!(by_p, plain, "the override changed the frequencies");
-    let fewer = ok(&["modes", bench.to_str().unwrap(), "--json", "--param", "plate.nodal_diameters:=[0, 1]"]);
-    assert!(fewer.len() < plain.len(), "fewer nodal diameters, fewer modes");
+    let fewer = ok(&[
+        "modes",
+        bench.to_str().unwrap(),
+        "--json",
+        "--param",
+        "plate.nodal_diameters:=[0, 1]",
+    ]);
+    assert!(
+        fewer.len() < plain.len(),
+        "fewer nodal diameters, fewer modes"
+    );
 }
 
 #[test]
@@ -55,7 +74,12 @@ fn simulate_with_an_override_equals_simulate_of_the_edited_file() {
     let bench = scene_files::path("brake_bench.yaml");
     let file = edited("fast.yaml", "speed: 25.0", "speed: 40.0");
     let common = ["--duration", "0.01", "--csv", "-", "--quiet"];
-    let mut a = vec!["simulate", bench.to_str().unwrap(), "-p", "joint.speed:=40.0"];
+    let mut a = vec![
+        "simulate",
+        bench.to_str().unwrap(),
+        "-p",
+        "joint.speed:=40.0",
+    ];
     a.extend(common);
     let mut b = vec!["simulate", file.to_str().unwrap()];
     b.extend(common);
@@ -67,15 +91,49 @@ fn simulate_with_an_override_equals_simulate_of_the_edited_file() {
 #[test]
 fn campbell_and_stability_with_an_override_equal_the_edited_file() {
     let bench = scene_files::path("brake_bench.yaml");
-    let file = edited("stiffened.yaml", "    plate:\n", "    plate:\n      centrifugal_stiffening: true\n");
-    let by_p = ok(&["campbell", bench.to_str().unwrap(), "--speeds", "0:8000:5", "--json", "-p", "plate.centrifugal_stiffening:=true"]);
-    let by_file = ok(&["campbell", file.to_str().unwrap(), "--speeds", "0:8000:5", "--json"]);
-    let plain = ok(&["campbell", bench.to_str().unwrap(), "--speeds", "0:8000:5", "--json"]);
+    let file = edited(
+        "stiffened.yaml",
+        "    plate:\n",
+        "    plate:\n      centrifugal_stiffening: true\n",
+    );
+    let by_p = ok(&[
+        "campbell",
+        bench.to_str().unwrap(),
+        "--speeds",
+        "0:8000:5",
+        "--json",
+        "-p",
+        "plate.centrifugal_stiffening:=true",
+    ]);
+    let by_file = ok(&[
+        "campbell",
+        file.to_str().unwrap(),
+        "--speeds",
+        "0:8000:5",
+        "--json",
+    ]);
+    let plain = ok(&[
+        "campbell",
+        bench.to_str().unwrap(),
+        "--speeds",
+        "0:8000:5",
+        "--json",
+    ]);
     assert_eq!(by_p, by_file);
     assert_ne!(by_p, plain, "the override stiffened the plate");
     let squeal = scene_files::path("brake_squeal.yaml");
     let map = |extra: &[&str]| {
-        let mut a = vec!["stability", squeal.to_str().unwrap(), "--mu", "0.3:0.6:4", "--speeds", "3:3:1", "--json", "--threads", "1"];
+        let mut a = vec![
+            "stability",
+            squeal.to_str().unwrap(),
+            "--mu",
+            "0.3:0.6:4",
+            "--speeds",
+            "3:3:1",
+            "--json",
+            "--threads",
+            "1",
+        ];
         a.extend(extra);
         ok(&a)
     };
@@ -84,8 +142,14 @@ fn campbell_and_stability_with_an_override_equal_the_edited_file() {
         v["threshold_mu"][0].as_f64().unwrap()
     };
     // docs/scenes.md: 0.418980 with the pads in series with the residual, 0.417442 modal.
-    let (series, modal) = (threshold(map(&[])), threshold(map(&["-p", "plate.residual_flexibility:=false"])));
-    assert!((series - 0.418980).abs() < 5e-6 && (modal - 0.417442).abs() < 5e-6, "thresholds: {series}, {modal}");
+    let (series, modal) = (
+        threshold(map(&[])),
+        threshold(map(&["-p", "plate.residual_flexibility:=false"])),
+    );
+    assert!(
+        (series - 0.418980).abs() < 5e-6 && (modal - 0.417442).abs() < 5e-6,
+        "thresholds: {series}, {modal}"
+    );
 }
 
 #[test]
@@ -94,10 +158,22 @@ fn bad_overrides_are_refused_naming_the_key_or_the_form() {
     let b = bench.to_str().unwrap();
     let e = refused(&["modes", b, "-p", "plate.thickness:=-1"]);
     assert!(e.contains("plate.thickness"), "{e}");
-    let e = refused(&["simulate", b, "--duration", "0.01", "--csv", "-", "-p", "joint.speed"]);
+    let e = refused(&[
+        "simulate",
+        b,
+        "--duration",
+        "0.01",
+        "--csv",
+        "-",
+        "-p",
+        "joint.speed",
+    ]);
     assert!(e.contains("expected NAME:=VALUE"), "{e}");
     let e = refused(&["study", b, "--quick", "-p", "plate.no_such_key:=1"]);
     assert!(e.contains("plate.no_such_key"), "{e}");
     let e = refused(&["study", "--quick", "-p", "plate.thickness:=0.01"]);
-    assert!(e.contains("FILE") || e.contains("file"), "-p needs a file to override: {e}");
+    assert!(
+        e.contains("FILE") || e.contains("file"),
+        "-p needs a file to override: {e}"
+    );
 }

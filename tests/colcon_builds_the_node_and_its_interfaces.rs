@@ -19,7 +19,12 @@ use std::process::{Command, Stdio};
 use std::time::Instant;
 
 fn sh(script: &str) -> std::process::Output {
-    Command::new("bash").arg("-c").arg(script).stdin(Stdio::null()).output().expect("cannot run bash")
+    Command::new("bash")
+        .arg("-c")
+        .arg(script)
+        .stdin(Stdio::null())
+        .output()
+        .expect("cannot run bash")
 }
 
 #[test]
@@ -39,29 +44,64 @@ fn colcon_build_installs_the_node_built_by_cargo_with_the_interfaces_launch_file
         ws = ws.display()
     ));
     let seconds = t0.elapsed().as_secs_f64();
-    let log = format!("{}{}", String::from_utf8_lossy(&build.stdout), String::from_utf8_lossy(&build.stderr));
-    assert!(build.status.success(), "colcon build failed ({}):\n{log}", build.status);
+    let log = format!(
+        "{}{}",
+        String::from_utf8_lossy(&build.stdout),
+        String::from_utf8_lossy(&build.stderr)
+    );
+    assert!(
+        build.status.success(),
+        "colcon build failed ({}):\n{log}",
+        build.status
+    );
     // cargo's "Compiling name vX.Y.Z" (not Python's "Compiling '…py'…" of the install step).
-    let compiled = log.lines().filter(|l| l.trim_start().starts_with("Compiling ") && !l.contains('\'') && l.contains(" v")).count();
+    let compiled = log
+        .lines()
+        .filter(|l| {
+            l.trim_start().starts_with("Compiling ") && !l.contains('\'') && l.contains(" v")
+        })
+        .count();
     println!(
         "colcon build (node and interfaces) took {seconds:.1} s; cargo compiled {compiled} crates{}",
         if compiled == 0 { " (the node was up to date in target/)" } else { "" }
     );
-    assert!(log.contains("cargo build --release: the annular_plate node"), "colcon ran cargo:\n{log}");
+    assert!(
+        log.contains("cargo build --release: the annular_plate node"),
+        "colcon ran cargo:\n{log}"
+    );
 
     let install = ws.join("install/annular_plate");
     let node = install.join("lib/annular_plate/annular_plate");
-    assert!(node.exists(), "no {} after colcon build:\n{log}", node.display());
+    assert!(
+        node.exists(),
+        "no {} after colcon build:\n{log}",
+        node.display()
+    );
     assert_eq!(
         std::fs::read(&node).unwrap(),
         std::fs::read(repo().join("target/release/annular_plate")).unwrap(),
         "the installed node is the one cargo built in target/release"
     );
-    let help = Command::new(&node).arg("--help").output().expect("run the installed node");
-    assert!(help.status.success(), "installed `annular_plate --help`: {}", String::from_utf8_lossy(&help.stderr));
+    let help = Command::new(&node)
+        .arg("--help")
+        .output()
+        .expect("run the installed node");
+    assert!(
+        help.status.success(),
+        "installed `annular_plate --help`: {}",
+        String::from_utf8_lossy(&help.stderr)
+    );
     // The installed node on the installed scene.
-    let modes = Command::new(&node).arg("modes").arg(install.join("share/annular_plate/config/brake_bench.yaml")).output().expect("run the installed node");
-    assert!(modes.status.success(), "installed `annular_plate modes` on the installed scene: {}", String::from_utf8_lossy(&modes.stderr));
+    let modes = Command::new(&node)
+        .arg("modes")
+        .arg(install.join("share/annular_plate/config/brake_bench.yaml"))
+        .output()
+        .expect("run the installed node");
+    assert!(
+        modes.status.success(),
+        "installed `annular_plate modes` on the installed scene: {}",
+        String::from_utf8_lossy(&modes.stderr)
+    );
     assert!(!modes.stdout.is_empty());
     for f in [
         "lib/annular_plate/brake_load_example.py",
@@ -83,6 +123,13 @@ print(Step.Request(steps=3).steps, PadClampForces().pad)'"#,
         venv = venv.display(),
         ws = ws.display()
     ));
-    assert!(import.status.success(), "the installed interfaces do not import: {}", String::from_utf8_lossy(&import.stderr));
-    assert_eq!(String::from_utf8_lossy(&import.stdout).trim(), "3 array('I')");
+    assert!(
+        import.status.success(),
+        "the installed interfaces do not import: {}",
+        String::from_utf8_lossy(&import.stderr)
+    );
+    assert_eq!(
+        String::from_utf8_lossy(&import.stdout).trim(),
+        "3 array('I')"
+    );
 }

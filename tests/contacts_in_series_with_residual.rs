@@ -43,7 +43,10 @@ fn clamped_bench(caliper: Caliper, stiffness: f64, residual: bool) -> Config {
     c.joint.speed = 0.0;
     c.plate.damping = vec![0.5];
     c.plate.residual_flexibility = residual;
-    c.loads.lagrange = vec![WrenchConfig { force: [0.0, 0.0, RIM_FORCE], moment: [0.0; 3] }];
+    c.loads.lagrange = vec![WrenchConfig {
+        force: [0.0, 0.0, RIM_FORCE],
+        moment: [0.0; 3],
+    }];
     let p = c.pads.as_mut().unwrap();
     p.caliper = caliper;
     p.clamp_force = vec![5000.0];
@@ -61,9 +64,23 @@ struct Exact {
 
 fn exact_clamp(c: &Config) -> Exact {
     let pl = &c.plate;
-    let d = annular_plate::model::bending_rigidity(pl.youngs_modulus, pl.thickness, pl.poisson_ratio);
-    assert_eq!((pl.inner_boundary, pl.outer_boundary), (annular_plate::config::Boundary::Supported, annular_plate::config::Boundary::Free));
-    let plate = StaticAnnulus::new(pl.inner_radius, pl.outer_radius, pl.poisson_ratio, d, Edge::Supported, Edge::Free);
+    let d =
+        annular_plate::model::bending_rigidity(pl.youngs_modulus, pl.thickness, pl.poisson_ratio);
+    assert_eq!(
+        (pl.inner_boundary, pl.outer_boundary),
+        (
+            annular_plate::config::Boundary::Supported,
+            annular_plate::config::Boundary::Free
+        )
+    );
+    let plate = StaticAnnulus::new(
+        pl.inner_radius,
+        pl.outer_radius,
+        pl.poisson_ratio,
+        d,
+        Edge::Supported,
+        Edge::Free,
+    );
     let radius = |xi: f64| pl.inner_radius + xi * (pl.outer_radius - pl.inner_radius);
     // Green's function: deflection at (r, θ) per unit force at (r0, θ0); the
     // fitted tail only under the load (elsewhere the direct sum has converged).
@@ -76,21 +93,43 @@ fn exact_clamp(c: &Config) -> Exact {
         }
     };
     let pads = c.pads.as_ref().unwrap();
-    let pts: Vec<(f64, f64)> = pads.contacts.iter().map(|k| c.nodes.ale[k.node]).map(|p| (radius(p.radial), TAU * p.angular)).collect();
+    let pts: Vec<(f64, f64)> = pads
+        .contacts
+        .iter()
+        .map(|k| c.nodes.ale[k.node])
+        .map(|p| (radius(p.radial), TAU * p.angular))
+        .collect();
     let load = c.nodes.lagrange[0];
     let (rl, tl) = (radius(load.radial), TAU * load.angular);
     let n = pts.len();
-    let e: Vec<Vec<f64>> = pts.iter().map(|&(r, t)| pts.iter().map(|&(r0, t0)| green(r0, t0, r, t)).collect()).collect();
+    let e: Vec<Vec<f64>> = pts
+        .iter()
+        .map(|&(r, t)| pts.iter().map(|&(r0, t0)| green(r0, t0, r, t)).collect())
+        .collect();
     let e_load: Vec<f64> = pts.iter().map(|&(r, t)| green(rl, tl, r, t)).collect();
     // Contact law F = −K w: K = 2k_c I (fixed), 2k_c (I − 1/n) (floating, one pad).
     let k = 2.0 * pads.contact_stiffness;
     let kmat = |i: usize, j: usize| match pads.caliper {
-        Caliper::Fixed => if i == j { k } else { 0.0 },
+        Caliper::Fixed => {
+            if i == j {
+                k
+            } else {
+                0.0
+            }
+        }
         Caliper::Floating => k * ((i == j) as u8 as f64 - 1.0 / n as f64),
     };
     // (I + K E) F = −K e_load P, by Gaussian elimination (n = 3).
-    let mut a: Vec<Vec<f64>> = (0..n).map(|i| (0..n).map(|j| (i == j) as u8 as f64 + (0..n).map(|m| kmat(i, m) * e[m][j]).sum::<f64>()).collect()).collect();
-    let mut b: Vec<f64> = (0..n).map(|i| -(0..n).map(|m| kmat(i, m) * e_load[m]).sum::<f64>() * RIM_FORCE).collect();
+    let mut a: Vec<Vec<f64>> = (0..n)
+        .map(|i| {
+            (0..n)
+                .map(|j| (i == j) as u8 as f64 + (0..n).map(|m| kmat(i, m) * e[m][j]).sum::<f64>())
+                .collect()
+        })
+        .collect();
+    let mut b: Vec<f64> = (0..n)
+        .map(|i| -(0..n).map(|m| kmat(i, m) * e_load[m]).sum::<f64>() * RIM_FORCE)
+        .collect();
     for col in 0..n {
         for row in col + 1..n {
             let f = a[row][col] / a[col][col];
@@ -102,10 +141,18 @@ fn exact_clamp(c: &Config) -> Exact {
     }
     let mut force = vec![0.0; n];
     for row in (0..n).rev() {
-        force[row] = (b[row] - (row + 1..n).map(|j| a[row][j] * force[j]).sum::<f64>()) / a[row][row];
+        force[row] =
+            (b[row] - (row + 1..n).map(|j| a[row][j] * force[j]).sum::<f64>()) / a[row][row];
     }
-    let w = (0..n).map(|i| (0..n).map(|j| e[i][j] * force[j]).sum::<f64>() + e_load[i] * RIM_FORCE).collect();
-    let w_load = pts.iter().zip(&force).map(|(&(r0, t0), f)| green(r0, t0, rl, tl) * f).sum::<f64>() + green(rl, tl, rl, tl) * RIM_FORCE;
+    let w = (0..n)
+        .map(|i| (0..n).map(|j| e[i][j] * force[j]).sum::<f64>() + e_load[i] * RIM_FORCE)
+        .collect();
+    let w_load = pts
+        .iter()
+        .zip(&force)
+        .map(|(&(r0, t0), f)| green(r0, t0, rl, tl) * f)
+        .sum::<f64>()
+        + green(rl, tl, rl, tl) * RIM_FORCE;
     Exact { w, force, w_load }
 }
 
@@ -113,9 +160,20 @@ fn exact_clamp(c: &Config) -> Exact {
 fn settle(c: Config, seconds: f64) -> (Vec<f64>, Vec<f64>, f64) {
     let mut sim = Simulation::new(c).unwrap();
     let read = |sim: &Simulation| {
-        let nodes: Vec<usize> = sim.config().pads.as_ref().unwrap().contacts.iter().map(|k| k.node).collect();
+        let nodes: Vec<usize> = sim
+            .config()
+            .pads
+            .as_ref()
+            .unwrap()
+            .contacts
+            .iter()
+            .map(|k| k.node)
+            .collect();
         let w: Vec<f64> = nodes.iter().map(|&j| sim.ale_node(j).uz).collect();
-        let f: Vec<f64> = nodes.iter().map(|&j| sim.ale_model_wrench(j).force[2]).collect();
+        let f: Vec<f64> = nodes
+            .iter()
+            .map(|&j| sim.ale_model_wrench(j).force[2])
+            .collect();
         (w, f, sim.lagrange_node(0).uz)
     };
     let steps = (seconds / sim.dt()).round() as usize;
@@ -128,13 +186,21 @@ fn settle(c: Config, seconds: f64) -> (Vec<f64>, Vec<f64>, f64) {
     }
     let after = read(&sim);
     // Settled: the last quarter changed nothing visible.
-    assert!((after.2 - before.2).abs() < 1e-9 * after.2.abs(), "not settled: {} vs {}", before.2, after.2);
+    assert!(
+        (after.2 - before.2).abs() < 1e-9 * after.2.abs(),
+        "not settled: {} vs {}",
+        before.2,
+        after.2
+    );
     after
 }
 
 fn relative(a: &[f64], b: &[f64]) -> f64 {
     let scale = b.iter().fold(0.0f64, |m, v| m.max(v.abs()));
-    a.iter().zip(b).fold(0.0f64, |m, (x, y)| m.max((x - y).abs())) / scale
+    a.iter()
+        .zip(b)
+        .fold(0.0f64, |m, (x, y)| m.max((x - y).abs()))
+        / scale
 }
 
 #[test]
@@ -145,11 +211,22 @@ fn static_clamp_of_the_brake_bench_matches_the_exact_plate_with_contact_springs(
         let (w, f, wl) = settle(c.clone(), 0.3);
         let (w0, f0, wl0) = settle(clamped_bench(caliper, 2.0e7, false), 0.3);
         println!("{caliper:?} caliper, k_c = 2e7 N/m, rim force {RIM_FORCE} N:");
-        println!("  exact:              w = {:?} m, F = {:?} N, w under the force {:.6e} m", exact.w, exact.force, exact.w_load);
+        println!(
+            "  exact:              w = {:?} m, F = {:?} N, w under the force {:.6e} m",
+            exact.w, exact.force, exact.w_load
+        );
         println!("  with the residual:  w = {w:?}, F = {f:?}, {wl:.6e}");
         println!("  modal only:         w = {w0:?}, F = {f0:?}, {wl0:.6e}");
-        let errors = [relative(&w, &exact.w), relative(&f, &exact.force), ((wl - exact.w_load) / exact.w_load).abs()];
-        let errors0 = [relative(&w0, &exact.w), relative(&f0, &exact.force), ((wl0 - exact.w_load) / exact.w_load).abs()];
+        let errors = [
+            relative(&w, &exact.w),
+            relative(&f, &exact.force),
+            ((wl - exact.w_load) / exact.w_load).abs(),
+        ];
+        let errors0 = [
+            relative(&w0, &exact.w),
+            relative(&f0, &exact.force),
+            ((wl0 - exact.w_load) / exact.w_load).abs(),
+        ];
         println!("  relative errors (contact w, contact F, w under the force): with {errors:?}, modal only {errors0:?}");
         for (e, e0) in errors.iter().zip(&errors0) {
             assert!(*e < 1e-3, "{caliper:?}: with the correction {errors:?}");
@@ -167,7 +244,8 @@ fn squeal(residual: bool) -> Config {
 
 fn threshold(c: &Config) -> f64 {
     let sim = Simulation::new(c.clone()).unwrap();
-    stability::friction_threshold(sim.scene(), c.joint.speed, 2.0).expect("the scene squeals below μ = 2")
+    stability::friction_threshold(sim.scene(), c.joint.speed, 2.0)
+        .expect("the scene squeals below μ = 2")
 }
 
 #[test]
@@ -191,20 +269,38 @@ fn squeal_threshold_with_the_series_contacts_matches_the_ring_closed_form() {
         let r = sim.scene().ale_nodes[0].radius;
         let speed = c.joint.speed;
         let mut closed_form = f64::INFINITY;
-        for m in model.modes().iter().filter(|m| m.shape == annular_plate::model::AngularShape::Cos) {
+        for m in model
+            .modes()
+            .iter()
+            .filter(|m| m.shape == annular_plate::model::AngularShape::Cos)
+        {
             let k = m.k as f64;
-            let gamma: f64 = nodes.iter().map(|&d| g.between(nodes[0], d, 0.0) * (k * (sim.scene().ale_nodes[d].angle - sim.scene().ale_nodes[nodes[0]].angle)).cos()).sum();
+            let gamma: f64 = nodes
+                .iter()
+                .map(|&d| {
+                    g.between(nodes[0], d, 0.0)
+                        * (k * (sim.scene().ale_nodes[d].angle
+                            - sim.scene().ale_nodes[nodes[0]].angle))
+                            .cos()
+                })
+                .sum();
             let factor = 1.0 / (1.0 + 2.0 * pads.contact_stiffness * gamma);
             let rr = model.radial_shapes()[m.radial].value(r);
-            let omega_p = (m.omega * m.omega + factor * pads.contact_stiffness * n * rr * rr / m.modal_mass).sqrt();
+            let omega_p = (m.omega * m.omega
+                + factor * pads.contact_stiffness * n * rr * rr / m.modal_mass)
+                .sqrt();
             let d = factor * contact_damping * n * rr * rr;
-            let mu = r * ((2.0 * m.damping * m.omega * m.modal_mass + d) * omega_p + d * k * speed) / (clamp * k * rr * rr);
+            let mu = r * ((2.0 * m.damping * m.omega * m.modal_mass + d) * omega_p + d * k * speed)
+                / (clamp * k * rr * rr);
             println!("c_c = {contact_damping}: ⟨k = {}⟩: γ_k = {gamma:.4e} m/N, spring factor {factor:.5}, f_p = {:.2} Hz, closed-form μ_c = {mu:.6}", m.k, omega_p / TAU);
             closed_form = closed_form.min(mu);
         }
         let eig = stability::friction_threshold(sim.scene(), speed, 2.0).unwrap();
         println!("c_c = {contact_damping}: threshold μ_c with the residual: eigenvalues {eig:.9}, closed form {closed_form:.9}");
-        assert!((eig - closed_form).abs() < 1e-6 * closed_form, "{eig} vs {closed_form}");
+        assert!(
+            (eig - closed_form).abs() < 1e-6 * closed_form,
+            "{eig} vs {closed_form}"
+        );
     }
     // The values documented in docs/residual_flexibility.md and docs/scenes.md.
     assert!((without - 0.300).abs() < 5e-4, "{without}");
@@ -226,13 +322,21 @@ fn with_the_correction_the_simulated_squeal_grows_at_the_eigenvalue_rate() {
         let (rate, slope) = (g.rate, g.simulated);
         println!("with the residual, μ = {factor} μ_c = {mu:.5}: ⟨k = {}⟩ at {:.2} Hz, eigenvalue Re λ = {rate:.6} 1/s, simulated {slope:.6} 1/s", g.k, g.omega / TAU);
         assert_eq!(rate > 0.0, factor > 1.0);
-        assert_eq!(slope > 0.0, factor > 1.0, "the simulation disagrees with the eigenvalues about stability");
-        assert!((slope - rate).abs() < 2e-2 * rate.abs(), "growth rate: simulated {slope} vs eigenvalue {rate}");
+        assert_eq!(
+            slope > 0.0,
+            factor > 1.0,
+            "the simulation disagrees with the eigenvalues about stability"
+        );
+        assert!(
+            (slope - rate).abs() < 2e-2 * rate.abs(),
+            "growth rate: simulated {slope} vs eigenvalue {rate}"
+        );
     }
 }
 
 #[test]
-fn a_stiff_contact_in_series_with_the_residual_has_a_bounded_coupling_and_settles_on_the_exact_clamp() {
+fn a_stiff_contact_in_series_with_the_residual_has_a_bounded_coupling_and_settles_on_the_exact_clamp(
+) {
     // Coupling rate of the pads, (1/s)², against k_c: without the residual it
     // grows like k_c; in series with G it is bounded by G⁻¹.
     let rate = |k: f64, residual: bool| {
@@ -243,7 +347,10 @@ fn a_stiff_contact_in_series_with_the_residual_has_a_bounded_coupling_and_settle
     let (with, without) = (rate(stiff, true), rate(stiff, false));
     let stiffer = rate(1e14, true);
     println!("pad coupling rate at k_c = 1e12 N/m: with the residual {with:.4e} 1/s, without {without:.4e} 1/s; at 1e14 with {stiffer:.4e}, at 2e7 with {:.4e}", rate(2e7, true));
-    assert!((with - stiffer).abs() < 1e-2 * with, "bounded by G⁻¹, not by k_c: {with} vs {stiffer}");
+    assert!(
+        (with - stiffer).abs() < 1e-2 * with,
+        "bounded by G⁻¹, not by k_c: {with} vs {stiffer}"
+    );
     assert!(without > 30.0 * with);
     // RK4 re-evaluates the pads per stage and takes the inner substeps the
     // coupling needs to stay stable (docs/hard_cases.md): a contact this stiff
@@ -262,8 +369,15 @@ fn a_stiff_contact_in_series_with_the_residual_has_a_bounded_coupling_and_settle
     assert!(n_without > 10 * n_with);
     let exact = exact_clamp(&c);
     let (w, f, wl) = settle(c, 0.1);
-    let errors = [relative(&w, &exact.w), relative(&f, &exact.force), ((wl - exact.w_load) / exact.w_load).abs()];
-    println!("k_c = 1e12: exact w = {:?}, F = {:?}; simulated w = {w:?}, F = {f:?}; errors {errors:?}", exact.w, exact.force);
+    let errors = [
+        relative(&w, &exact.w),
+        relative(&f, &exact.force),
+        ((wl - exact.w_load) / exact.w_load).abs(),
+    ];
+    println!(
+        "k_c = 1e12: exact w = {:?}, F = {:?}; simulated w = {w:?}, F = {f:?}; errors {errors:?}",
+        exact.w, exact.force
+    );
     for e in errors {
         assert!(e < 1e-3, "{errors:?}");
     }
@@ -285,10 +399,29 @@ fn the_lathe_tool_pressed_into_a_disc_at_rest_matches_the_exact_plate() {
     let tool = c.tool.clone().unwrap();
     let pl = c.plate.clone();
     let holder = 0.5 * pl.thickness - tool.feed_rate * feed_time;
-    let d = annular_plate::model::bending_rigidity(pl.youngs_modulus, pl.thickness, pl.poisson_ratio);
-    let plate = StaticAnnulus::new(pl.inner_radius, pl.outer_radius, pl.poisson_ratio, d, Edge::Clamped, Edge::Free);
-    let compliance = plate.series(pl.outer_radius, 1.0, pl.outer_radius, 0.0, K_EXACT).value();
-    let law = |chip: f64| if chip > 0.0 { tool.specific_force * tool.depth_of_cut * chip.powf(1.0 - tool.force_exponent) * 1e-3f64.powf(tool.force_exponent) } else { 0.0 };
+    let d =
+        annular_plate::model::bending_rigidity(pl.youngs_modulus, pl.thickness, pl.poisson_ratio);
+    let plate = StaticAnnulus::new(
+        pl.inner_radius,
+        pl.outer_radius,
+        pl.poisson_ratio,
+        d,
+        Edge::Clamped,
+        Edge::Free,
+    );
+    let compliance = plate
+        .series(pl.outer_radius, 1.0, pl.outer_radius, 0.0, K_EXACT)
+        .value();
+    let law = |chip: f64| {
+        if chip > 0.0 {
+            tool.specific_force
+                * tool.depth_of_cut
+                * chip.powf(1.0 - tool.force_exponent)
+                * 1e-3f64.powf(tool.force_exponent)
+        } else {
+            0.0
+        }
+    };
     let (mut lo, mut hi) = (0.0, law(0.5 * pl.thickness - holder));
     for _ in 0..200 {
         let f = 0.5 * (lo + hi);
@@ -315,9 +448,20 @@ fn the_lathe_tool_pressed_into_a_disc_at_rest_matches_the_exact_plate() {
     };
     let ((f, w), (f0, w0)) = (run(true), run(false));
     println!("tool 0.1 mm into the disc at rest: exact f = {f_exact:.6} N, w = {w_exact:.6e} m (C = {compliance:.6e} m/N)");
-    println!("  with the residual: f = {f:.6} N ({:.1e}), w = {w:.6e} m ({:.1e})", (f - f_exact) / f_exact, (w - w_exact) / w_exact);
-    println!("  modal only:        f = {f0:.6} N ({:.1e}), w = {w0:.6e} m ({:.1e})", (f0 - f_exact) / f_exact, (w0 - w_exact) / w_exact);
+    println!(
+        "  with the residual: f = {f:.6} N ({:.1e}), w = {w:.6e} m ({:.1e})",
+        (f - f_exact) / f_exact,
+        (w - w_exact) / w_exact
+    );
+    println!(
+        "  modal only:        f = {f0:.6} N ({:.1e}), w = {w0:.6e} m ({:.1e})",
+        (f0 - f_exact) / f_exact,
+        (w0 - w_exact) / w_exact
+    );
     assert!(((f - f_exact) / f_exact).abs() < 1e-4 && ((w - w_exact) / w_exact).abs() < 1e-3);
-    assert!(((w0 - w_exact) / w_exact).abs() > 0.01, "the 30 modes alone are stiffer under the rim load");
+    assert!(
+        ((w0 - w_exact) / w_exact).abs() > 0.01,
+        "the 30 modes alone are stiffer under the rim load"
+    );
     assert!((f0 - f_exact).abs() > 10.0 * (f - f_exact).abs());
 }

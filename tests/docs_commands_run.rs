@@ -70,7 +70,10 @@ fn commands(markdown: &str) -> Vec<DocCommand> {
                 c.text.push_str(text);
                 c
             }
-            None => DocCommand { line: i + 1, text: text.to_string() },
+            None => DocCommand {
+                line: i + 1,
+                text: text.to_string(),
+            },
         };
         if continued {
             pending = Some(joined);
@@ -87,8 +90,14 @@ fn program(text: &str) -> Option<Vec<&str>> {
     if words.last() == Some(&"&") {
         words.pop(); // started in the background: the node, run as the others
     }
-    let first = words.iter().position(|w| !(w.contains('=') && !w.starts_with('-')))?;
-    matches!(words[first], "annular_plate" | "target/release/annular_plate").then(|| words[first..].to_vec())
+    let first = words
+        .iter()
+        .position(|w| !(w.contains('=') && !w.starts_with('-')))?;
+    matches!(
+        words[first],
+        "annular_plate" | "target/release/annular_plate"
+    )
+    .then(|| words[first..].to_vec())
 }
 
 fn strip_comment(text: &str) -> &str {
@@ -101,7 +110,10 @@ fn strip_comment(text: &str) -> &str {
 
 /// The line as the test runs it (the documented rules above).
 fn shortened(text: &str) -> String {
-    let mut words: Vec<String> = strip_comment(text).split_whitespace().map(str::to_string).collect();
+    let mut words: Vec<String> = strip_comment(text)
+        .split_whitespace()
+        .map(str::to_string)
+        .collect();
     for i in 0..words.len().saturating_sub(1) {
         if words[i] == "--duration" {
             if let Ok(d) = words[i + 1].parse::<f64>() {
@@ -112,7 +124,9 @@ fn shortened(text: &str) -> String {
         }
     }
     if let Some(p) = words.iter().position(|w| w.ends_with("annular_plate")) {
-        if words.get(p + 1).map(String::as_str) == Some("study") && !words.iter().any(|w| w == "--quick") {
+        if words.get(p + 1).map(String::as_str) == Some("study")
+            && !words.iter().any(|w| w == "--quick")
+        {
             words.insert(p + 2, "--quick".into());
         }
     }
@@ -122,7 +136,10 @@ fn shortened(text: &str) -> String {
 /// Whether the line starts the node (`run`, or no subcommand).
 fn starts_the_node(text: &str) -> bool {
     let words = program(text).expect("a command line");
-    matches!(words.get(1).copied(), None | Some("run") | Some("--ros-args"))
+    matches!(
+        words.get(1).copied(),
+        None | Some("run") | Some("--ros-args")
+    )
 }
 
 /// A fresh directory with config/ and docs/ and the two names of the binary.
@@ -140,40 +157,75 @@ fn workdir(name: &str) -> PathBuf {
 }
 
 fn path_with(dir: &Path) -> String {
-    format!("{}:{}", dir.join("bin").display(), std::env::var("PATH").unwrap_or_default())
+    format!(
+        "{}:{}",
+        dir.join("bin").display(),
+        std::env::var("PATH").unwrap_or_default()
+    )
 }
 
 /// Run one offline command; Err with what it printed.
 fn run_offline(dir: &Path, line: &str) -> Result<(), String> {
-    let out = Command::new("sh").arg("-c").arg(line).current_dir(dir).env("PATH", path_with(dir)).output().map_err(|e| e.to_string())?;
+    let out = Command::new("sh")
+        .arg("-c")
+        .arg(line)
+        .current_dir(dir)
+        .env("PATH", path_with(dir))
+        .output()
+        .map_err(|e| e.to_string())?;
     if out.status.success() {
         Ok(())
     } else {
-        Err(format!("{}\nstdout: {}\nstderr: {}", out.status, String::from_utf8_lossy(&out.stdout), String::from_utf8_lossy(&out.stderr)))
+        Err(format!(
+            "{}\nstdout: {}\nstderr: {}",
+            out.status,
+            String::from_utf8_lossy(&out.stdout),
+            String::from_utf8_lossy(&out.stderr)
+        ))
     }
 }
 
 /// Start the node, wait until it is up, stop it with SIGINT: Err with its log.
 fn run_node(dir: &Path, line: &str, id: usize) -> Result<(), String> {
     let words = program(line).unwrap();
-    let env: Vec<(&str, &str)> = strip_comment(line).split_whitespace().take_while(|w| w.contains('=') && !w.starts_with('-')).filter_map(|w| w.split_once('=')).collect();
+    let env: Vec<(&str, &str)> = strip_comment(line)
+        .split_whitespace()
+        .take_while(|w| w.contains('=') && !w.starts_with('-'))
+        .filter_map(|w| w.split_once('='))
+        .collect();
     let log = dir.join(format!("node_{id}.log"));
     let file = std::fs::File::create(&log).unwrap();
     let mut cmd = Command::new("unshare");
-    cmd.args(["-n", "sh", "-c", "ip link set lo up && exec \"$0\" \"$@\"", BIN]).args(&words[1..]);
-    cmd.current_dir(dir).env("PATH", path_with(dir)).stdin(Stdio::null()).stdout(file.try_clone().unwrap()).stderr(file);
+    cmd.args([
+        "-n",
+        "sh",
+        "-c",
+        "ip link set lo up && exec \"$0\" \"$@\"",
+        BIN,
+    ])
+    .args(&words[1..]);
+    cmd.current_dir(dir)
+        .env("PATH", path_with(dir))
+        .stdin(Stdio::null())
+        .stdout(file.try_clone().unwrap())
+        .stderr(file);
     if !env.iter().any(|(k, _)| *k == "ROS_DOMAIN_ID") {
         cmd.env("ROS_DOMAIN_ID", "42");
     }
     for (k, v) in &env {
         cmd.env(k, v);
     }
-    let mut child = cmd.spawn().map_err(|e| format!("cannot start unshare (root, util-linux, iproute2 needed): {e}"))?;
+    let mut child = cmd
+        .spawn()
+        .map_err(|e| format!("cannot start unshare (root, util-linux, iproute2 needed): {e}"))?;
     let read = || std::fs::read_to_string(&log).unwrap_or_default();
     let started = Instant::now();
     while !read().contains(" up on ROS_DOMAIN_ID") {
         if let Some(status) = child.try_wait().unwrap() {
-            return Err(format!("the node ended before it was up: {status}\n{}", read()));
+            return Err(format!(
+                "the node ended before it was up: {status}\n{}",
+                read()
+            ));
         }
         if started.elapsed() > Duration::from_secs(60) {
             let _ = child.kill();
@@ -187,7 +239,11 @@ fn run_node(dir: &Path, line: &str, id: usize) -> Result<(), String> {
     let stop = Instant::now();
     loop {
         if let Some(status) = child.try_wait().unwrap() {
-            return if status.success() { Ok(()) } else { Err(format!("exit {status} after SIGINT\n{}", read())) };
+            return if status.success() {
+                Ok(())
+            } else {
+                Err(format!("exit {status} after SIGINT\n{}", read()))
+            };
         }
         if stop.elapsed() > Duration::from_secs(10) {
             let _ = child.kill();
@@ -228,17 +284,36 @@ fn every_documented_command_runs() {
         for (i, c) in cmds.iter().enumerate() {
             let line = shortened(&c.text);
             let started = Instant::now();
-            let result = if starts_the_node(&c.text) { run_node(&dir, &c.text, i) } else { run_offline(&dir, &line) };
-            println!("{}:{}: {line}  ({:.1} s, {})", doc.strip_prefix(repo()).unwrap().display(), c.line, started.elapsed().as_secs_f64(), if result.is_ok() { "ok" } else { "FAILED" });
+            let result = if starts_the_node(&c.text) {
+                run_node(&dir, &c.text, i)
+            } else {
+                run_offline(&dir, &line)
+            };
+            println!(
+                "{}:{}: {line}  ({:.1} s, {})",
+                doc.strip_prefix(repo()).unwrap().display(),
+                c.line,
+                started.elapsed().as_secs_f64(),
+                if result.is_ok() { "ok" } else { "FAILED" }
+            );
             ran += 1;
             if let Err(e) = result {
-                failures.push(format!("{}:{}: `{}`\n{e}", doc.strip_prefix(repo()).unwrap().display(), c.line, c.text));
+                failures.push(format!(
+                    "{}:{}: `{}`\n{e}",
+                    doc.strip_prefix(repo()).unwrap().display(),
+                    c.line,
+                    c.text
+                ));
             }
         }
         let _ = std::fs::remove_dir_all(&dir);
     }
     assert!(ran >= 10, "only {ran} documented commands found");
-    assert!(failures.is_empty(), "documented commands that fail:\n\n{}", failures.join("\n\n"));
+    assert!(
+        failures.is_empty(),
+        "documented commands that fail:\n\n{}",
+        failures.join("\n\n")
+    );
 }
 
 #[test]
@@ -247,9 +322,18 @@ fn the_rules_find_and_shorten_what_they_should() {
     let c = commands(md);
     assert_eq!(c.len(), 3, "{c:?}");
     assert_eq!(c[0].line, 3);
-    assert_eq!(shortened(&c[0].text), "annular_plate simulate config/lathe.yaml --duration 0.2 --csv a.csv");
+    assert_eq!(
+        shortened(&c[0].text),
+        "annular_plate simulate config/lathe.yaml --duration 0.2 --csv a.csv"
+    );
     assert!(starts_the_node(&c[1].text) && c[1].text.ends_with("-r __node:=disc"));
     assert!(!starts_the_node(&c[0].text));
-    assert_eq!(shortened(&c[2].text), "annular_plate study --quick config/lathe.yaml --plot p.png");
-    assert_eq!(shortened("annular_plate simulate x.yaml --duration 0.05"), "annular_plate simulate x.yaml --duration 0.05");
+    assert_eq!(
+        shortened(&c[2].text),
+        "annular_plate study --quick config/lathe.yaml --plot p.png"
+    );
+    assert_eq!(
+        shortened("annular_plate simulate x.yaml --duration 0.05"),
+        "annular_plate simulate x.yaml --duration 0.05"
+    );
 }

@@ -16,7 +16,10 @@ fn files() -> Vec<PathBuf> {
             let p = e.unwrap().path();
             if p.is_dir() {
                 walk(&p, out);
-            } else if matches!(p.extension().and_then(|x| x.to_str()), Some("rs" | "md" | "py" | "sh")) {
+            } else if matches!(
+                p.extension().and_then(|x| x.to_str()),
+                Some("rs" | "md" | "py" | "sh")
+            ) {
                 out.push(p);
             }
         }
@@ -37,7 +40,12 @@ fn hits(bad: impl Fn(&str) -> bool) -> Vec<String> {
         let text = std::fs::read_to_string(&f).unwrap();
         for (i, line) in text.lines().enumerate() {
             if bad(line) {
-                out.push(format!("{}:{}: {}", f.strip_prefix(repo()).unwrap().display(), i + 1, line.trim()));
+                out.push(format!(
+                    "{}:{}: {}",
+                    f.strip_prefix(repo()).unwrap().display(),
+                    i + 1,
+                    line.trim()
+                ));
             }
         }
     }
@@ -57,8 +65,17 @@ fn has_word(line: &str, word: &str) -> bool {
 fn no_session_diaries_agents_or_load_narratives() {
     // Technical uses a reader would need would be listed here; there are none.
     const ALLOWED: [&str; 0] = [];
-    let found = hits(|l| ["session", "agent", "load average"].iter().any(|w| has_word(l, w)) && !ALLOWED.iter().any(|a| l.contains(a)));
-    assert!(found.is_empty(), "narrative of how the project was made:\n{}", found.join("\n"));
+    let found = hits(|l| {
+        ["session", "agent", "load average"]
+            .iter()
+            .any(|w| has_word(l, w))
+            && !ALLOWED.iter().any(|a| l.contains(a))
+    });
+    assert!(
+        found.is_empty(),
+        "narrative of how the project was made:\n{}",
+        found.join("\n")
+    );
 }
 
 #[test]
@@ -66,11 +83,17 @@ fn no_references_to_issue_numbers() {
     let found = hits(|l| {
         let lower = l.to_lowercase();
         lower.match_indices("issue").any(|(i, _)| {
-            let rest = lower[i + 5..].trim_start_matches('s').trim_start_matches([' ', '#']);
+            let rest = lower[i + 5..]
+                .trim_start_matches('s')
+                .trim_start_matches([' ', '#']);
             rest.starts_with(|c: char| c.is_ascii_digit())
         })
     });
-    assert!(found.is_empty(), "\"issue N\" points at a tracker the reader cannot see:\n{}", found.join("\n"));
+    assert!(
+        found.is_empty(),
+        "\"issue N\" points at a tracker the reader cannot see:\n{}",
+        found.join("\n")
+    );
 }
 
 #[test]
@@ -81,22 +104,42 @@ fn no_dates_of_runs() {
             && w[..2] == *b"20"
             && w[4] == b'-'
             && w[7] == b'-'
-            && [0, 1, 2, 3, 5, 6, 8, 9].iter().all(|&i| w[i].is_ascii_digit())
+            && [0, 1, 2, 3, 5, 6, 8, 9]
+                .iter()
+                .all(|&i| w[i].is_ascii_digit())
     };
     let found = hits(|l| l.as_bytes().windows(10).any(is_date));
-    assert!(found.is_empty(), "dates belong in commit messages:\n{}", found.join("\n"));
+    assert!(
+        found.is_empty(),
+        "dates belong in commit messages:\n{}",
+        found.join("\n")
+    );
 }
 
 #[test]
 fn the_readme_is_a_manual_of_readable_length() {
     let text = std::fs::read_to_string(repo().join("README.md")).unwrap();
     let lines = text.lines().count();
-    assert!(lines <= 250, "README.md has {lines} lines; details belong in docs/");
-    for section in ["## Quick start", "## Drive the running node", "## The command line", "## Scenes", "## Configuration", "## License"] {
+    assert!(
+        lines <= 250,
+        "README.md has {lines} lines; details belong in docs/"
+    );
+    for section in [
+        "## Quick start",
+        "## Drive the running node",
+        "## The command line",
+        "## Scenes",
+        "## Configuration",
+        "## License",
+    ] {
         assert!(text.contains(section), "README.md lacks `{section}`");
     }
     // The rclpy route without a ROS installation, and the docs with the figures.
-    for link in ["docs/ros.md#use-from-python-without-a-ros-installation", "docs/accuracy.md", "docs/performance.md"] {
+    for link in [
+        "docs/ros.md#use-from-python-without-a-ros-installation",
+        "docs/accuracy.md",
+        "docs/performance.md",
+    ] {
         assert!(text.contains(link), "README.md does not link {link}");
     }
 }

@@ -9,7 +9,11 @@ use annular_plate::dynamics::{Simulation, Wrench};
 use std::f64::consts::PI;
 use support::scenes::*;
 
-fn free_vibration_energy_drift(integrator: IntegratorKind, coordinates: Coordinates, steps: usize) -> (f64, f64) {
+fn free_vibration_energy_drift(
+    integrator: IntegratorKind,
+    coordinates: Coordinates,
+    steps: usize,
+) -> (f64, f64) {
     let mut c = integrated(lathe(), integrator, coordinates, 1000.0);
     c.plate.damping = vec![0.0];
     c.joint.speed = 100.0;
@@ -45,18 +49,29 @@ fn undamped_free_vibration_keeps_its_energy_over_a_million_steps() {
         (IntegratorKind::ImplicitMidpoint, Coordinates::Ale),
     ] {
         let (drift, e0) = free_vibration_energy_drift(integrator, coords, 1_000_000);
-        println!("{integrator:?}/{coords:?}: E0 = {e0:e} J, max relative drift over 1e6 steps {drift:e}");
+        println!(
+            "{integrator:?}/{coords:?}: E0 = {e0:e} J, max relative drift over 1e6 steps {drift:e}"
+        );
         assert!(drift < 1e-9, "{integrator:?}/{coords:?}: {drift:e}");
     }
 }
 
 #[test]
 fn rk4_never_gains_energy_in_free_vibration() {
-    let mut c = integrated(lathe(), IntegratorKind::Rk4, Coordinates::Lagrangian, 1000.0);
+    let mut c = integrated(
+        lathe(),
+        IntegratorKind::Rk4,
+        Coordinates::Lagrangian,
+        1000.0,
+    );
     c.plate.damping = vec![0.0];
     let mut sim = Simulation::new(c).unwrap();
     let mut state = sim.state().clone();
-    state.q.iter_mut().enumerate().for_each(|(i, q)| *q = 1e-6 * (1.0 + i as f64 % 3.0));
+    state
+        .q
+        .iter_mut()
+        .enumerate()
+        .for_each(|(i, q)| *q = 1e-6 * (1.0 + i as f64 % 3.0));
     state.rederive(sim.scene());
     sim.restore(state);
     let mut e = sim.modal_energy();
@@ -67,8 +82,14 @@ fn rk4_never_gains_energy_in_free_vibration() {
         assert!(e1 <= e * (1.0 + 1e-13), "energy grew: {e} → {e1}");
         e = e1;
     }
-    println!("rk4 ({} substeps per step): energy {e0:e} → {e:e} J over 200 steps", sim.inner_substeps());
-    assert!(e > 0.9 * e0, "rk4 as a reference must not damp strongly: {e0:e} → {e:e}");
+    println!(
+        "rk4 ({} substeps per step): energy {e0:e} → {e:e} J over 200 steps",
+        sim.inner_substeps()
+    );
+    assert!(
+        e > 0.9 * e0,
+        "rk4 as a reference must not damp strongly: {e0:e} → {e:e}"
+    );
 }
 
 /// Annulus polar inertia, closed form.
@@ -85,10 +106,16 @@ fn braking_torque_decelerates_the_plate_as_a_rigid_annulus() {
     let mut c = lathe();
     c.joint.speed = 50.0;
     c.joint.max_torque = Some(1.0);
-    c.nodes.ale.push(NodePosition { radial: 1.0, angular: 0.25 });
+    c.nodes.ale.push(NodePosition {
+        radial: 1.0,
+        angular: 0.25,
+    });
     // At θ = 90° the tangential direction of +Ω is −x: a +x force brakes.
     let f = 40.0;
-    c.loads.ale.push(WrenchConfig { force: [f, 0.0, 0.0], moment: [0.0; 3] });
+    c.loads.ale.push(WrenchConfig {
+        force: [f, 0.0, 0.0],
+        moment: [0.0; 3],
+    });
     let j = polar_inertia(&c);
     let r = c.plate.outer_radius;
     let mut sim = Simulation::new(c).unwrap();
@@ -103,11 +130,17 @@ fn braking_torque_decelerates_the_plate_as_a_rigid_annulus() {
     let expected_speed = 50.0 + alpha * t_end;
     let expected_angle = 50.0 * t_end + 0.5 * alpha * t_end * t_end;
     let jo = sim.joint();
-    println!("Ω = {} (expect {expected_speed}), χ = {} (expect {expected_angle}), effort {}", jo.velocity, jo.position, jo.effort);
+    println!(
+        "Ω = {} (expect {expected_speed}), χ = {} (expect {expected_angle}), effort {}",
+        jo.velocity, jo.position, jo.effort
+    );
     assert!((jo.velocity - expected_speed).abs() < 1e-10 * 50.0);
     assert!((jo.position - expected_angle).abs() < 1e-10 * expected_angle);
     assert_eq!(jo.effort, 1.0);
-    assert!(sim.q_lagrange().iter().all(|q| *q == 0.0), "in-plane loads must not excite the transverse modes");
+    assert!(
+        sim.q_lagrange().iter().all(|q| *q == 0.0),
+        "in-plane loads must not excite the transverse modes"
+    );
 }
 
 #[test]
@@ -123,9 +156,19 @@ fn stiff_drive_effort_is_the_newton_euler_torque() {
     // with a braking tangential wrench the drive also supplies that torque
     sim.set_speed_command(sim.joint().velocity).unwrap();
     let mut c2 = lathe();
-    c2.nodes.ale.push(NodePosition { radial: 0.5, angular: 0.0 });
+    c2.nodes.ale.push(NodePosition {
+        radial: 0.5,
+        angular: 0.0,
+    });
     let mut sim2 = Simulation::new(c2).unwrap();
-    sim2.set_ale_wrench(0, Wrench { force: [0.0, -30.0, 0.0], moment: [0.0, 0.0, 2.0] }).unwrap();
+    sim2.set_ale_wrench(
+        0,
+        Wrench {
+            force: [0.0, -30.0, 0.0],
+            moment: [0.0, 0.0, 2.0],
+        },
+    )
+    .unwrap();
     sim2.step().unwrap();
     let r = 0.075 + 0.5 * 0.075;
     assert!((sim2.joint().effort - (30.0 * r - 2.0)).abs() < 1e-12);

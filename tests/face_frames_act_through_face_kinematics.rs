@@ -8,7 +8,9 @@
 
 mod support;
 
-use annular_plate::config::{Config, Coordinates, IntegratorKind, NodePosition, Surface, WrenchConfig};
+use annular_plate::config::{
+    Config, Coordinates, IntegratorKind, NodePosition, Surface, WrenchConfig,
+};
 use annular_plate::dynamics::Simulation;
 use annular_plate::model::PlateModel;
 use support::scenes::*;
@@ -18,7 +20,10 @@ fn gradient(model: &PlateModel, i: usize, r: f64, phi: f64) -> [f64; 2] {
     let (x, y) = (r * phi.cos(), r * phi.sin());
     let w = |x: f64, y: f64| model.mode_shape(i, x.hypot(y), y.atan2(x)).w;
     let e = 1e-6;
-    [(w(x + e, y) - w(x - e, y)) / (2.0 * e), (w(x, y + e) - w(x, y - e)) / (2.0 * e)]
+    [
+        (w(x + e, y) - w(x - e, y)) / (2.0 * e),
+        (w(x, y + e) - w(x, y - e)) / (2.0 * e),
+    ]
 }
 
 /// A thin disc at rest, heavily damped, with a held wrench at a face node:
@@ -27,10 +32,21 @@ fn static_scene(surface: Surface, force: [f64; 3]) -> Config {
     let mut c = thin_disc(vec![0, 1, 2, 3]);
     c.plate.damping = vec![0.5];
     c.joint.speed = 0.0;
-    c.nodes.lagrange.push(NodePosition { radial: 0.8, angular: 0.1 });
+    c.nodes.lagrange.push(NodePosition {
+        radial: 0.8,
+        angular: 0.1,
+    });
     c.nodes.lagrange_surface = vec![surface];
-    c.loads.lagrange.push(WrenchConfig { force, moment: [0.0; 3] });
-    integrated(c, IntegratorKind::Exponential, Coordinates::Lagrangian, 1000.0)
+    c.loads.lagrange.push(WrenchConfig {
+        force,
+        moment: [0.0; 3],
+    });
+    integrated(
+        c,
+        IntegratorKind::Exponential,
+        Coordinates::Lagrangian,
+        1000.0,
+    )
 }
 
 fn settle(c: Config) -> Simulation {
@@ -64,7 +80,10 @@ fn an_in_plane_force_on_a_face_bends_the_plate_by_minus_z_f_dot_grad_w() {
         println!("{surface:?}: static amplitudes within {:e} of −z F·∇w_i / K_i (largest {scale:e}, face share {largest_face_share:e})", worst);
         assert!(worst < 1e-6 * scale, "{worst:e} vs {scale:e}");
         // Not vacuous: the face's couple is a visible part of the response.
-        assert!(largest_face_share > 0.2 * scale, "{largest_face_share:e} vs {scale:e}");
+        assert!(
+            largest_face_share > 0.2 * scale,
+            "{largest_face_share:e} vs {scale:e}"
+        );
     }
 }
 
@@ -72,9 +91,15 @@ fn an_in_plane_force_on_a_face_bends_the_plate_by_minus_z_f_dot_grad_w() {
 fn opposite_faces_with_equal_in_plane_forces_do_not_bend_the_plate() {
     // Equal in-plane forces on both faces are a membrane load: no bending.
     let mut c = static_scene(Surface::Top, [300.0, -200.0, 0.0]);
-    c.nodes.lagrange.push(NodePosition { radial: 0.8, angular: 0.1 });
+    c.nodes.lagrange.push(NodePosition {
+        radial: 0.8,
+        angular: 0.1,
+    });
     c.nodes.lagrange_surface.push(Surface::Bottom);
-    c.loads.lagrange.push(WrenchConfig { force: [300.0, -200.0, 0.0], moment: [0.0; 3] });
+    c.loads.lagrange.push(WrenchConfig {
+        force: [300.0, -200.0, 0.0],
+        moment: [0.0; 3],
+    });
     let both = settle(c);
     let top = settle(static_scene(Surface::Top, [300.0, -200.0, 0.0]));
     let scale = top.q_lagrange().iter().fold(0.0f64, |m, q| m.max(q.abs()));
@@ -101,10 +126,17 @@ fn a_face_frame_s_pose_is_the_displaced_face_point() {
     // node's 40 N transverse force (plate.residual_flexibility; tested in
     // tests/residual_flexibility_static.rs): only the modal part is face kinematics.
     let residual = sim.residual_deflection(sim.n_ale_nodes());
-    let expected = [r * phi.cos() - z * g[0], r * phi.sin() - z * g[1], z + w + residual];
+    let expected = [
+        r * phi.cos() - z * g[0],
+        r * phi.sin() - z * g[1],
+        z + w + residual,
+    ];
     let got = sim.lagrange_node_pose(0).translation;
     for a in 0..3 {
-        assert!((got[a] - expected[a]).abs() < 1e-12 + 1e-7 * (z * g[0].hypot(g[1])), "axis {a}: {got:?} vs {expected:?}");
+        assert!(
+            (got[a] - expected[a]).abs() < 1e-12 + 1e-7 * (z * g[0].hypot(g[1])),
+            "axis {a}: {got:?} vs {expected:?}"
+        );
     }
     // The in-plane shift is there (not a mid-plane pose).
     assert!((got[0] - r * phi.cos()).abs() > 1e-3 * (z * g[0].hypot(g[1])));
@@ -123,7 +155,13 @@ fn face_scene(surfaces: [Surface; 2]) -> Config {
 }
 
 fn history(c: Config, coordinates: Coordinates) -> Vec<f64> {
-    let mut sim = Simulation::new(integrated(c, IntegratorKind::Exponential, coordinates, 1000.0)).unwrap();
+    let mut sim = Simulation::new(integrated(
+        c,
+        IntegratorKind::Exponential,
+        coordinates,
+        1000.0,
+    ))
+    .unwrap();
     let mut out = Vec::new();
     for _ in 0..2000 {
         sim.step().unwrap();
@@ -155,11 +193,29 @@ fn surfaces_are_read_from_the_file_and_bad_ones_are_refused_naming_the_key() {
     };
     let c = Config::from_yaml_str(&file("[top, bottom]"), "annular_plate").unwrap();
     assert_eq!(c.nodes.ale_surface, vec![Surface::Top, Surface::Bottom]);
-    assert_eq!(Config::from_yaml_str(&file("[]"), "annular_plate").unwrap().nodes.ale_surface, vec![Surface::Mid; 2]);
-    let e = Config::from_yaml_str(&file("[top]"), "annular_plate").unwrap_err().to_string();
-    assert!(e.contains("nodes.ale_surface") && e.contains("nodes.ale_radial"), "{e}");
-    let e = Config::from_yaml_str(&file("[top, side]"), "annular_plate").unwrap_err().to_string();
-    assert!(e.contains("nodes.ale_surface[1]") && e.contains("side"), "{e}");
-    let e = Config::from_yaml_str(&file("[1.0, 2.0]"), "annular_plate").unwrap_err().to_string();
+    assert_eq!(
+        Config::from_yaml_str(&file("[]"), "annular_plate")
+            .unwrap()
+            .nodes
+            .ale_surface,
+        vec![Surface::Mid; 2]
+    );
+    let e = Config::from_yaml_str(&file("[top]"), "annular_plate")
+        .unwrap_err()
+        .to_string();
+    assert!(
+        e.contains("nodes.ale_surface") && e.contains("nodes.ale_radial"),
+        "{e}"
+    );
+    let e = Config::from_yaml_str(&file("[top, side]"), "annular_plate")
+        .unwrap_err()
+        .to_string();
+    assert!(
+        e.contains("nodes.ale_surface[1]") && e.contains("side"),
+        "{e}"
+    );
+    let e = Config::from_yaml_str(&file("[1.0, 2.0]"), "annular_plate")
+        .unwrap_err()
+        .to_string();
     assert!(e.contains("nodes.ale_surface"), "{e}");
 }

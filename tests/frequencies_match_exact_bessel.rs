@@ -37,7 +37,13 @@ fn plate_config(
     ls: &[u32],
     material: Material,
 ) -> PlateConfig {
-    library_plate::annulus_config((ratio * OUTER_RADIUS, OUTER_RADIUS), (inner, outer), ks, ls, material)
+    library_plate::annulus_config(
+        (ratio * OUTER_RADIUS, OUTER_RADIUS),
+        (inner, outer),
+        ks,
+        ls,
+        material,
+    )
 }
 
 fn distinct_sorted(v: impl Iterator<Item = u32>) -> Vec<u32> {

@@ -56,14 +56,23 @@ fn library_model(
     entries: &[Entry],
     nu: f64,
 ) -> PlateModel {
-    let m = Material { poisson_ratio: nu, ..material() };
+    let m = Material {
+        poisson_ratio: nu,
+        ..material()
+    };
     let mut ks: Vec<u32> = entries.iter().map(|e| e.0).collect();
     ks.sort_unstable();
     ks.dedup();
     let mut ls: Vec<u32> = entries.iter().map(|e| e.1).collect();
     ls.sort_unstable();
     ls.dedup();
-    let cfg = library_plate::annulus_config((ratio * OUTER_RADIUS, OUTER_RADIUS), (inner, outer), &ks, &ls, m);
+    let cfg = library_plate::annulus_config(
+        (ratio * OUTER_RADIUS, OUTER_RADIUS),
+        (inner, outer),
+        &ks,
+        &ls,
+        m,
+    );
     PlateModel::new(&cfg).expect("library model")
 }
 

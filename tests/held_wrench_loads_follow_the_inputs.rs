@@ -15,14 +15,29 @@ fn scene(integrator: IntegratorKind, coordinates: Coordinates) -> Config {
     c.simulation.integrator = integrator;
     c.simulation.coordinates = coordinates;
     c.simulation.rate_hz = 10_000.0;
-    c.nodes.ale.push(NodePosition { radial: 1.0, angular: 0.0 });
-    c.nodes.lagrange.push(NodePosition { radial: 0.5, angular: 0.5 });
-    c.loads.ale.push(WrenchConfig { force: [0.0, 30.0, -100.0], moment: [0.0; 3] });
+    c.nodes.ale.push(NodePosition {
+        radial: 1.0,
+        angular: 0.0,
+    });
+    c.nodes.lagrange.push(NodePosition {
+        radial: 0.5,
+        angular: 0.5,
+    });
+    c.loads.ale.push(WrenchConfig {
+        force: [0.0, 30.0, -100.0],
+        moment: [0.0; 3],
+    });
     c
 }
 
-const NEW_ALE: Wrench = Wrench { force: [0.0, 10.0, 250.0], moment: [0.5, 0.0, 0.0] };
-const NEW_LAGRANGE: Wrench = Wrench { force: [0.0, 0.0, -40.0], moment: [0.0, 0.2, 0.0] };
+const NEW_ALE: Wrench = Wrench {
+    force: [0.0, 10.0, 250.0],
+    moment: [0.5, 0.0, 0.0],
+};
+const NEW_LAGRANGE: Wrench = Wrench {
+    force: [0.0, 0.0, -40.0],
+    moment: [0.0, 0.2, 0.0],
+};
 
 /// q̄ after 20 steps under the file's wrench, then 20 under `then` (None: the file's wrench kept).
 fn run(sim: &mut Simulation, then: Option<(Wrench, Wrench)>) -> Vec<f64> {
@@ -41,7 +56,11 @@ fn run(sim: &mut Simulation, then: Option<(Wrench, Wrench)>) -> Vec<f64> {
 
 #[test]
 fn a_changed_wrench_acts_from_the_next_step() {
-    for integrator in [IntegratorKind::Exponential, IntegratorKind::ImplicitMidpoint, IntegratorKind::Rk4] {
+    for integrator in [
+        IntegratorKind::Exponential,
+        IntegratorKind::ImplicitMidpoint,
+        IntegratorKind::Rk4,
+    ] {
         for coords in [Coordinates::Ale, Coordinates::Lagrangian] {
             let mut changed = Simulation::new(scene(integrator, coords)).unwrap();
             let q_changed = run(&mut changed, Some((NEW_ALE, NEW_LAGRANGE)));
@@ -62,7 +81,11 @@ fn a_changed_wrench_acts_from_the_next_step() {
 
             let mut kept = Simulation::new(scene(integrator, coords)).unwrap();
             let q_kept = run(&mut kept, None);
-            let moved = q_changed.iter().zip(&q_kept).map(|(a, b)| (a - b).abs()).fold(0.0, f64::max);
+            let moved = q_changed
+                .iter()
+                .zip(&q_kept)
+                .map(|(a, b)| (a - b).abs())
+                .fold(0.0, f64::max);
             let scale = q_kept.iter().map(|v| v.abs()).fold(0.0, f64::max);
             assert!(moved > 1e-3 * scale, "{integrator:?}/{coords:?}: the new wrenches changed q̄ by only {moved:e} (scale {scale:e})");
         }

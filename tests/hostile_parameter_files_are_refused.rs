@@ -10,24 +10,40 @@ use annular_plate::model::PlateModel;
 const NODE: &str = "annular_plate";
 
 fn with_plate(lines: &str) -> Result<Config, ConfigError> {
-    Config::from_yaml_str(&format!("annular_plate:\n  ros__parameters:\n    plate:\n{lines}"), NODE)
+    Config::from_yaml_str(
+        &format!("annular_plate:\n  ros__parameters:\n    plate:\n{lines}"),
+        NODE,
+    )
 }
 
 #[test]
 fn nesting_a_hundred_thousand_deep_is_refused_before_parsing_naming_the_line() {
     let d = 100_000;
-    let text = format!("annular_plate:\n  ros__parameters:\n    plate:\n      damping: {}{}\n", "[".repeat(d), "]".repeat(d));
+    let text = format!(
+        "annular_plate:\n  ros__parameters:\n    plate:\n      damping: {}{}\n",
+        "[".repeat(d),
+        "]".repeat(d)
+    );
     let e = Config::from_yaml_str(&text, NODE).unwrap_err();
     assert!(matches!(e, ConfigError::TooDeep { line: 4, .. }), "{e:?}");
-    assert!(e.to_string().contains("line 4") && e.to_string().contains("32 levels"), "{e}");
+    assert!(
+        e.to_string().contains("line 4") && e.to_string().contains("32 levels"),
+        "{e}"
+    );
     // Block nesting and `-p` overrides too.
     let mut block = String::from("annular_plate:\n  ros__parameters:\n");
     for level in 0..2_000 {
         block.push_str(&format!("{}k{level}:\n", " ".repeat(4 + 2 * level)));
     }
-    assert!(matches!(Config::from_yaml_str(&block, NODE), Err(ConfigError::TooDeep { .. })));
+    assert!(matches!(
+        Config::from_yaml_str(&block, NODE),
+        Err(ConfigError::TooDeep { .. })
+    ));
     let mut p = Params::new();
-    assert!(matches!(p.set_override("plate.damping", &"[".repeat(5_000)), Err(ConfigError::TooDeep { .. })));
+    assert!(matches!(
+        p.set_override("plate.damping", &"[".repeat(5_000)),
+        Err(ConfigError::TooDeep { .. })
+    ));
     // What a real file nests is far from the limit.
     assert!(with_plate("      damping: [0.02]\n      nodal_circles: [0, 1]\n").is_ok());
 }
@@ -35,12 +51,22 @@ fn nesting_a_hundred_thousand_deep_is_refused_before_parsing_naming_the_line() {
 #[test]
 fn a_file_beyond_the_size_limit_is_refused_before_it_is_read() {
     let path = std::env::temp_dir().join(format!("annular_plate_big_{}.yaml", std::process::id()));
-    let mut text = String::from("annular_plate:\n  ros__parameters:\n    plate:\n      thickness: 0.01\n");
+    let mut text =
+        String::from("annular_plate:\n  ros__parameters:\n    plate:\n      thickness: 0.01\n");
     text.push_str(&"# padding\n".repeat(120_000));
     std::fs::write(&path, &text).unwrap();
     let e = Config::from_params_file(&path, NODE).unwrap_err();
     std::fs::remove_file(&path).unwrap();
-    assert!(matches!(e, ConfigError::TooLarge { limit: 1_048_576, .. }), "{e:?}");
+    assert!(
+        matches!(
+            e,
+            ConfigError::TooLarge {
+                limit: 1_048_576,
+                ..
+            }
+        ),
+        "{e:?}"
+    );
 }
 
 #[test]
@@ -52,14 +78,26 @@ fn extreme_finite_material_values_are_refused_naming_their_keys() {
         ("youngs_modulus: 1.0e-308", "plate.youngs_modulus"),
         ("thickness: 5.0e-324", "plate.thickness"),
         ("thickness: 1.0e+100", "plate.thickness"),
-        ("outer_radius: 1.0e+200\n      inner_radius: 1.0e+199", "plate.outer_radius"),
-        ("outer_radius: 1.0e-200\n      inner_radius: 1.0e-201", "plate.outer_radius"),
+        (
+            "outer_radius: 1.0e+200\n      inner_radius: 1.0e+199",
+            "plate.outer_radius",
+        ),
+        (
+            "outer_radius: 1.0e-200\n      inner_radius: 1.0e-201",
+            "plate.outer_radius",
+        ),
     ];
     for (line, key) in cases {
         let e = with_plate(&format!("      {line}\n")).expect_err(line);
         let text = e.to_string();
-        assert!(text.contains(key), "{line}: the refusal does not name {key}: {text}");
-        assert!(!text.contains("Pivot") && !text.contains("NaN"), "{line}: internal text in {text}");
+        assert!(
+            text.contains(key),
+            "{line}: the refusal does not name {key}: {text}"
+        );
+        assert!(
+            !text.contains("Pivot") && !text.contains("NaN"),
+            "{line}: internal text in {text}"
+        );
     }
 }
 
@@ -76,6 +114,11 @@ fn accepted_materials_build_a_model() {
     for plate in plates {
         let c = with_plate(plate).unwrap_or_else(|e| panic!("{plate}: {e}"));
         let m = PlateModel::new(&c.plate).unwrap_or_else(|e| panic!("{plate}: {e}"));
-        assert!(m.modes().iter().all(|m| m.omega.is_finite() && m.omega > 0.0), "{plate}");
+        assert!(
+            m.modes()
+                .iter()
+                .all(|m| m.omega.is_finite() && m.omega > 0.0),
+            "{plate}"
+        );
     }
 }

@@ -41,15 +41,30 @@ unsafe impl GlobalAlloc for Counting {
 static GLOBAL: Counting = Counting;
 
 fn scene(name: &str) -> Config {
-    Config::from_params_file(&Path::new(env!("CARGO_MANIFEST_DIR")).join("config").join(name), "annular_plate").unwrap()
+    Config::from_params_file(
+        &Path::new(env!("CARGO_MANIFEST_DIR"))
+            .join("config")
+            .join(name),
+        "annular_plate",
+    )
+    .unwrap()
 }
 
 #[test]
 fn stepping_the_scenes_with_changing_commands_allocates_nothing() {
     WATCHED.with(|w| w.set(true));
     // The squeal scene also with friction on the faces and μ(v) (below its threshold).
-    for (name, faces) in [("brake_squeal_paper.yaml", false), ("brake_squeal.yaml", true), ("lathe.yaml", false), ("swash_plate.yaml", false)] {
-        for integrator in [IntegratorKind::Rk4, IntegratorKind::Exponential, IntegratorKind::ImplicitMidpoint] {
+    for (name, faces) in [
+        ("brake_squeal_paper.yaml", false),
+        ("brake_squeal.yaml", true),
+        ("lathe.yaml", false),
+        ("swash_plate.yaml", false),
+    ] {
+        for integrator in [
+            IntegratorKind::Rk4,
+            IntegratorKind::Exponential,
+            IntegratorKind::ImplicitMidpoint,
+        ] {
             let mut c = scene(name);
             if faces {
                 let pads = c.pads.as_mut().unwrap();
@@ -74,17 +89,32 @@ fn stepping_the_scenes_with_changing_commands_allocates_nothing() {
                         sim.set_tool_feed(0.002 + 1e-6 * s as f64).unwrap();
                     }
                     sim.step().unwrap();
-                    std::hint::black_box((sim.q_ale()[0], sim.pad_output(0), sim.tool_output(), sim.link_force(0), sim.ale_model_wrench(0)));
+                    std::hint::black_box((
+                        sim.q_ale()[0],
+                        sim.pad_output(0),
+                        sim.tool_output(),
+                        sim.link_force(0),
+                        sim.ale_model_wrench(0),
+                    ));
                 }
                 let after = ALLOCATIONS.load(Ordering::SeqCst);
-                assert_eq!(after - before, 0, "{name} {integrator:?}/{coords:?} allocated {} times in 300 steps", after - before);
+                assert_eq!(
+                    after - before,
+                    0,
+                    "{name} {integrator:?}/{coords:?} allocated {} times in 300 steps",
+                    after - before
+                );
                 // After a reset the steps reuse the buffers too.
                 sim.reset();
                 let before = ALLOCATIONS.load(Ordering::SeqCst);
                 for _ in 0..10 {
                     sim.step().unwrap();
                 }
-                assert_eq!(ALLOCATIONS.load(Ordering::SeqCst) - before, 0, "{name}: steps after a reset allocated");
+                assert_eq!(
+                    ALLOCATIONS.load(Ordering::SeqCst) - before,
+                    0,
+                    "{name}: steps after a reset allocated"
+                );
             }
         }
     }

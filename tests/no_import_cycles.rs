@@ -21,7 +21,19 @@ const LAYERS: &[(&str, &[&str])] = &[
     ("messages", &["config", "colour_map", "model", "dynamics"]),
     ("bag", &["config", "model", "dynamics", "messages"]),
     ("ros", &["config", "model", "dynamics", "messages", "bag"]),
-    ("cli", &["config", "colour_map", "model", "dynamics", "study", "messages", "bag", "ros"]),
+    (
+        "cli",
+        &[
+            "config",
+            "colour_map",
+            "model",
+            "dynamics",
+            "study",
+            "messages",
+            "bag",
+            "ros",
+        ],
+    ),
 ];
 
 fn rust_files(dir: &Path, out: &mut Vec<PathBuf>) {
@@ -38,8 +50,14 @@ fn rust_files(dir: &Path, out: &mut Vec<PathBuf>) {
 /// `src/dynamics/load_models/pad.rs` → ["dynamics", "load_models", "pad"]; `mod.rs` → its directory.
 fn module_of(src: &Path, file: &Path) -> Vec<String> {
     let rel = file.strip_prefix(src).unwrap().with_extension("");
-    let mut parts: Vec<String> = rel.iter().map(|p| p.to_string_lossy().into_owned()).collect();
-    if parts.last().is_some_and(|p| p == "mod" || p == "lib" || p == "main") {
+    let mut parts: Vec<String> = rel
+        .iter()
+        .map(|p| p.to_string_lossy().into_owned())
+        .collect();
+    if parts
+        .last()
+        .is_some_and(|p| p == "mod" || p == "lib" || p == "main")
+    {
         parts.pop();
     }
     parts
@@ -59,24 +77,43 @@ fn paths(text: &str, here: &[String]) -> Vec<Vec<String>> {
         let mut from = 0;
         while let Some(i) = text[from..].find(start).map(|i| i + from) {
             from = i + start.len();
-            if i > 0 && (bytes[i - 1].is_ascii_alphanumeric() || bytes[i - 1] == b'_' || bytes[i - 1] == b':') {
+            if i > 0
+                && (bytes[i - 1].is_ascii_alphanumeric()
+                    || bytes[i - 1] == b'_'
+                    || bytes[i - 1] == b':')
+            {
                 continue;
             }
-            let mut base: Vec<String> = if start == "crate::" { Vec::new() } else { here[..here.len().saturating_sub(1)].to_vec() };
+            let mut base: Vec<String> = if start == "crate::" {
+                Vec::new()
+            } else {
+                here[..here.len().saturating_sub(1)].to_vec()
+            };
             let mut rest = &text[from..];
             while let Some(r) = rest.strip_prefix("super::") {
                 base.pop();
                 rest = r;
             }
-            let end = rest.find(|c: char| !(c.is_alphanumeric() || c == '_' || c == ':')).unwrap_or(rest.len());
-            let head: Vec<String> = rest[..end].split("::").filter(|s| !s.is_empty()).map(str::to_string).collect();
+            let end = rest
+                .find(|c: char| !(c.is_alphanumeric() || c == '_' || c == ':'))
+                .unwrap_or(rest.len());
+            let head: Vec<String> = rest[..end]
+                .split("::")
+                .filter(|s| !s.is_empty())
+                .map(str::to_string)
+                .collect();
             let mut full = base.clone();
             full.extend(head);
             if rest[end..].starts_with('{') {
                 let close = rest[end..].find('}').map_or(rest.len(), |c| c + end);
                 for item in rest[end + 1..close].split(',') {
                     let mut p = full.clone();
-                    p.extend(item.trim().split("::").filter(|s| !s.is_empty() && *s != "self").map(|s| s.trim().to_string()));
+                    p.extend(
+                        item.trim()
+                            .split("::")
+                            .filter(|s| !s.is_empty() && *s != "self")
+                            .map(|s| s.trim().to_string()),
+                    );
                     out.push(p);
                 }
             } else {
@@ -89,14 +126,21 @@ fn paths(text: &str, here: &[String]) -> Vec<Vec<String>> {
 
 /// The longest prefix of `path` that is a module with a file.
 fn resolve(path: &[String], modules: &BTreeSet<Vec<String>>) -> Option<Vec<String>> {
-    (1..=path.len()).rev().map(|n| path[..n].to_vec()).find(|p| modules.contains(p))
+    (1..=path.len())
+        .rev()
+        .map(|n| path[..n].to_vec())
+        .find(|p| modules.contains(p))
 }
 
 fn graph() -> BTreeMap<Vec<String>, BTreeSet<Vec<String>>> {
     let src = Path::new(env!("CARGO_MANIFEST_DIR")).join("src");
     let mut files = Vec::new();
     rust_files(&src, &mut files);
-    let modules: BTreeSet<Vec<String>> = files.iter().map(|f| module_of(&src, f)).filter(|m| !m.is_empty()).collect();
+    let modules: BTreeSet<Vec<String>> = files
+        .iter()
+        .map(|f| module_of(&src, f))
+        .filter(|m| !m.is_empty())
+        .collect();
     let mut edges: BTreeMap<Vec<String>, BTreeSet<Vec<String>>> = BTreeMap::new();
     for file in &files {
         let here = module_of(&src, file);
@@ -106,7 +150,9 @@ fn graph() -> BTreeMap<Vec<String>, BTreeSet<Vec<String>>> {
         let is_mod = file.file_name().is_some_and(|n| n == "mod.rs");
         let text = std::fs::read_to_string(file).unwrap();
         for p in paths(without_tests(&text), &here) {
-            let Some(target) = resolve(&p, &modules) else { continue };
+            let Some(target) = resolve(&p, &modules) else {
+                continue;
+            };
             let own_child = is_mod && target.len() == here.len() + 1 && target.starts_with(&here);
             if target != here && !own_child && !here.starts_with(&target) {
                 edges.entry(here.clone()).or_default().insert(target);
@@ -161,7 +207,11 @@ fn cycle(edges: &BTreeMap<Vec<String>, BTreeSet<Vec<String>>>) -> Option<Vec<Vec
 #[test]
 fn no_file_imports_another_that_imports_it_back() {
     let edges = graph();
-    assert!(edges.len() > 40, "the source tree was read ({} modules)", edges.len());
+    assert!(
+        edges.len() > 40,
+        "the source tree was read ({} modules)",
+        edges.len()
+    );
     if let Some(c) = cycle(&edges) {
         let names: Vec<String> = c.iter().map(|m| m.join("::")).collect();
         panic!("import cycle: {}", names.join(" → "));
@@ -180,7 +230,11 @@ fn data_flows_one_way_between_the_top_level_modules() {
             }
         }
     }
-    assert!(wrong.is_empty(), "against the layer order:\n{}", wrong.join("\n"));
+    assert!(
+        wrong.is_empty(),
+        "against the layer order:\n{}",
+        wrong.join("\n")
+    );
 }
 
 #[test]
@@ -194,6 +248,13 @@ fn the_reader_finds_a_planted_cycle() {
     edges.entry(m("a::z")).or_default().insert(m("a::x"));
     assert_eq!(cycle(&edges).unwrap().len(), 4);
     let here = m("dynamics::stepper");
-    let found = paths("use super::state::{JointAngle, State};\nlet x = crate::model::PlateModel::new();", &here);
-    assert!(found.contains(&m("dynamics::state::JointAngle")) && found.contains(&m("model::PlateModel::new")), "{found:?}");
+    let found = paths(
+        "use super::state::{JointAngle, State};\nlet x = crate::model::PlateModel::new();",
+        &here,
+    );
+    assert!(
+        found.contains(&m("dynamics::state::JointAngle"))
+            && found.contains(&m("model::PlateModel::new")),
+        "{found:?}"
+    );
 }

@@ -25,8 +25,12 @@ use std::time::Duration;
 
 /// Resident set size of the node, kB (/proc/PID/status).
 fn rss_kb(node: &NodeProcess) -> u64 {
-    let status = std::fs::read_to_string(format!("/proc/{}/status", node.pid())).expect("the node's /proc status");
-    let line = status.lines().find(|l| l.starts_with("VmRSS:")).expect("VmRSS");
+    let status = std::fs::read_to_string(format!("/proc/{}/status", node.pid()))
+        .expect("the node's /proc status");
+    let line = status
+        .lines()
+        .find(|l| l.starts_with("VmRSS:"))
+        .expect("VmRSS");
     line.split_whitespace().nth(1).unwrap().parse().unwrap()
 }
 
@@ -34,7 +38,13 @@ fn rss_kb(node: &NodeProcess) -> u64 {
 /// sample, then leave cleanly; as many again vanish without a goodbye.
 fn churn_round(ns: &Netns, node: &NodeProcess, peers: usize) {
     for clean in [true, false] {
-        let out = peer(ns, node, "churn", "/annular_plate", json!({"peers": peers, "clean": clean, "domain": node.domain}));
+        let out = peer(
+            ns,
+            node,
+            "churn",
+            "/annular_plate",
+            json!({"peers": peers, "clean": clean, "domain": node.domain}),
+        );
         assert_eq!(out["joined"], json!(peers), "{out}");
     }
 }
@@ -75,6 +85,12 @@ fn killed_and_departed_peers_leave_no_lasting_memory_behind() {
     // killed peers' leases overlapping) and still catch the swings that
     // changes 4 and 5 remove.
     let largest = *during.iter().max().unwrap();
-    assert!(largest * 10 <= warm * 11, "during the rounds: {warm} → {largest} kB (more than +10 %): {during:?}");
-    assert!(after * 20 <= warm * 21, "leases expired: {warm} → {after} kB (more than +5 %)");
+    assert!(
+        largest * 10 <= warm * 11,
+        "during the rounds: {warm} → {largest} kB (more than +10 %): {during:?}"
+    );
+    assert!(
+        after * 20 <= warm * 21,
+        "leases expired: {warm} → {after} kB (more than +5 %)"
+    );
 }

@@ -49,11 +49,21 @@ fn root() -> &'static Path {
 fn simulate(scene: &str, duration: f64, extra: &[&str]) -> Vec<u8> {
     let file = root().join("config").join(scene);
     let out = Command::new(env!("CARGO_BIN_EXE_annular_plate"))
-        .args(["simulate", file.to_str().unwrap(), "--duration", &duration.to_string(), "--quiet"])
+        .args([
+            "simulate",
+            file.to_str().unwrap(),
+            "--duration",
+            &duration.to_string(),
+            "--quiet",
+        ])
         .args(extra)
         .output()
         .unwrap();
-    assert!(out.status.success(), "simulate {scene}: {}", String::from_utf8_lossy(&out.stderr));
+    assert!(
+        out.status.success(),
+        "simulate {scene}: {}",
+        String::from_utf8_lossy(&out.stderr)
+    );
     out.stdout
 }
 
@@ -62,7 +72,11 @@ fn csv_summary(csv: &str) -> String {
     h.write(csv.as_bytes());
     let lines: Vec<&str> = csv.lines().collect();
     let mut s = format!("csv rows {} digest {:016x}\n", lines.len(), h.0);
-    for (i, line) in lines.iter().enumerate().filter(|(i, _)| i % ROW_SAMPLE == 0) {
+    for (i, line) in lines
+        .iter()
+        .enumerate()
+        .filter(|(i, _)| i % ROW_SAMPLE == 0)
+    {
         writeln!(s, "row {i}: {line}").unwrap();
     }
     s
@@ -88,11 +102,16 @@ fn bag_summary(dir: &Path) -> String {
         entry.1.write(&m.publish_time.to_le_bytes());
         entry.1.write(&m.data);
     }
-    topics.iter().map(|(t, (n, h))| format!("bag {t} messages {n} digest {:016x}\n", h.0)).collect()
+    topics
+        .iter()
+        .map(|(t, (n, h))| format!("bag {t} messages {n} digest {:016x}\n", h.0))
+        .collect()
 }
 
 fn golden_path(scene: &str) -> PathBuf {
-    root().join("tests/golden").join(scene.replace(".yaml", ".txt"))
+    root()
+        .join("tests/golden")
+        .join(scene.replace(".yaml", ".txt"))
 }
 
 fn summary(scene: &str, duration: f64) -> String {
@@ -102,7 +121,10 @@ fn summary(scene: &str, duration: f64) -> String {
     simulate(scene, duration, &["--bag", tmp.to_str().unwrap()]);
     let bag = bag_summary(&tmp);
     std::fs::remove_dir_all(&tmp).unwrap();
-    format!("scene {scene} duration {duration}\n{}{bag}", csv_summary(&csv))
+    format!(
+        "scene {scene} duration {duration}\n{}{bag}",
+        csv_summary(&csv)
+    )
 }
 
 #[test]
@@ -116,10 +138,22 @@ fn every_shipped_scene_writes_the_csv_and_bag_recorded_before_the_restructuring(
             std::fs::write(&path, &now).unwrap();
             continue;
         }
-        let before = std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+        let before =
+            std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
         for (i, (a, b)) in before.lines().zip(now.lines()).enumerate() {
-            assert_eq!(a, b, "{scene}: line {} of {} differs from the recorded output", i + 1, path.display());
+            assert_eq!(
+                a,
+                b,
+                "{scene}: line {} of {} differs from the recorded output",
+                i + 1,
+                path.display()
+            );
         }
-        assert_eq!(before.lines().count(), now.lines().count(), "{scene}: line count differs from {}", path.display());
+        assert_eq!(
+            before.lines().count(),
+            now.lines().count(),
+            "{scene}: line count differs from {}",
+            path.display()
+        );
     }
 }

@@ -15,7 +15,10 @@ fn interfaces() -> Vec<(String, String)> {
         for entry in std::fs::read_dir(repo().join(dir)).unwrap() {
             let path = entry.unwrap().path();
             if path.extension().is_some_and(|e| e == dir) {
-                out.push((dir.to_string(), path.file_stem().unwrap().to_string_lossy().to_string()));
+                out.push((
+                    dir.to_string(),
+                    path.file_stem().unwrap().to_string_lossy().to_string(),
+                ));
             }
         }
     }
@@ -26,14 +29,24 @@ fn interfaces() -> Vec<(String, String)> {
 #[test]
 fn every_msg_and_srv_file_is_described_and_built() {
     let package = std::fs::read_to_string(repo().join("package.xml")).unwrap();
-    let description = &package[package.find("<description>").unwrap()..package.find("</description>").unwrap()];
+    let description =
+        &package[package.find("<description>").unwrap()..package.find("</description>").unwrap()];
     let cmake = std::fs::read_to_string(repo().join("CMakeLists.txt")).unwrap();
     let all = interfaces();
     assert!(all.len() >= 7, "{all:?}");
     for (dir, name) in &all {
-        let word = |text: &str| text.split(|c: char| !c.is_alphanumeric() && c != '_').any(|w| w == name);
-        assert!(word(description), "package.xml's description does not name {dir}/{name}");
-        assert!(cmake.contains(&format!("\"{dir}/{name}.{dir}\"")), "CMakeLists.txt does not build {dir}/{name}.{dir}");
+        let word = |text: &str| {
+            text.split(|c: char| !c.is_alphanumeric() && c != '_')
+                .any(|w| w == name)
+        };
+        assert!(
+            word(description),
+            "package.xml's description does not name {dir}/{name}"
+        );
+        assert!(
+            cmake.contains(&format!("\"{dir}/{name}.{dir}\"")),
+            "CMakeLists.txt does not build {dir}/{name}.{dir}"
+        );
     }
 }
 
@@ -51,6 +64,9 @@ fn every_standard_package_the_node_speaks_is_a_dependency() {
         "visualization_msgs",
         "simulation_interfaces",
     ] {
-        assert!(package.contains(&format!("depend>{pkg}</")), "package.xml lacks a dependency on {pkg}");
+        assert!(
+            package.contains(&format!("depend>{pkg}</")),
+            "package.xml lacks a dependency on {pkg}"
+        );
     }
 }

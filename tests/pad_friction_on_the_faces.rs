@@ -4,7 +4,10 @@
 //! from the equations of motion; the eigenvalue analysis and the simulation
 //! agree on growth rates; the two descriptions agree to round-off.
 
-use annular_plate::config::{Boundary, Caliper, Config, ContactSurface, Coordinates, IntegratorKind, NodePosition, PadContact, PadsConfig};
+use annular_plate::config::{
+    Boundary, Caliper, Config, ContactSurface, Coordinates, IntegratorKind, NodePosition,
+    PadContact, PadsConfig,
+};
 use annular_plate::dynamics::{stability, Simulation};
 use annular_plate::model::AngularShape;
 
@@ -30,7 +33,10 @@ fn scene(surface: ContactSurface, mu: f64) -> Config {
     // The closed forms are the modal pads' (the contacts in series with the
     // residual flexibility: tests/contacts_in_series_with_residual.rs).
     c.plate.residual_flexibility = false;
-    c.nodes.ale.push(NodePosition { radial: 0.6, angular: 0.0 });
+    c.nodes.ale.push(NodePosition {
+        radial: 0.6,
+        angular: 0.0,
+    });
     c.joint.speed = SPEED;
     c.pads = Some(PadsConfig {
         contacts: vec![PadContact { node: 0, pad: 0 }],
@@ -84,9 +90,16 @@ fn quartic_with(mu: f64, face: bool, stribeck: (f64, f64)) -> [f64; 4] {
     let model = sim.model();
     let node = &sim.scene().ale_nodes[0];
     let r = node.radius;
-    let cos = model.modes().iter().position(|m| m.shape == AngularShape::Cos).unwrap();
+    let cos = model
+        .modes()
+        .iter()
+        .position(|m| m.shape == AngularShape::Cos)
+        .unwrap();
     let mode = &model.modes()[cos];
-    let (rr, rr_slope) = (model.radial_shapes()[mode.radial].eval(r)[0], model.radial_shapes()[mode.radial].eval(r)[1]);
+    let (rr, rr_slope) = (
+        model.radial_shapes()[mode.radial].eval(r)[0],
+        model.radial_shapes()[mode.radial].eval(r)[1],
+    );
     let (k, m, w, z) = (mode.k as f64, mode.modal_mass, mode.omega, mode.damping);
     let h = 0.0181;
     let p = CLAMP;
@@ -101,7 +114,14 @@ fn quartic_with(mu: f64, face: bool, stribeck: (f64, f64)) -> [f64; 4] {
     let gamma = 0.5 * h * h * p * mu_slope * k * k * rr * rr / (r * r * m);
     let kappa = 2.0 * STIFFNESS * rr * rr / m;
     let phi = 2.0 * mu * p * k * rr * rr / (r * m);
-    let (chi, beta) = if face { (mu * h * STIFFNESS * k * rr * rr / (r * m), 0.5 * h * h * mu * p * rr_slope * rr_slope / (SPEED * r * m)) } else { (0.0, 0.0) };
+    let (chi, beta) = if face {
+        (
+            mu * h * STIFFNESS * k * rr * rr / (r * m),
+            0.5 * h * h * mu * p * rr_slope * rr_slope / (SPEED * r * m),
+        )
+    } else {
+        (0.0, 0.0)
+    };
     let (a, b) = (s + phi + beta * k * SPEED, s + chi + gamma * k * SPEED);
     [
         2.0 * d0 + beta + gamma,
@@ -122,7 +142,10 @@ fn closed_form_threshold(face: bool) -> f64 {
 
 fn closed_form_threshold_with(face: bool, stribeck: (f64, f64)) -> f64 {
     let (mut lo, mut hi) = (0.0, 2.0);
-    assert!(hurwitz(quartic_with(lo, face, stribeck)) > 0.0 && hurwitz(quartic_with(hi, face, stribeck)) < 0.0);
+    assert!(
+        hurwitz(quartic_with(lo, face, stribeck)) > 0.0
+            && hurwitz(quartic_with(hi, face, stribeck)) < 0.0
+    );
     while hi - lo > 1e-12 {
         let mid = 0.5 * (lo + hi);
         if hurwitz(quartic_with(mid, face, stribeck)) > 0.0 {
@@ -137,7 +160,8 @@ fn closed_form_threshold_with(face: bool, stribeck: (f64, f64)) -> f64 {
 #[test]
 fn one_contact_one_pair_threshold_matches_the_routh_hurwitz_closed_form() {
     let sim = Simulation::new(scene(ContactSurface::Faces, 0.0)).unwrap();
-    let eig = stability::friction_threshold(sim.scene(), SPEED, 2.0).expect("squeals below μ = 2 with face friction");
+    let eig = stability::friction_threshold(sim.scene(), SPEED, 2.0)
+        .expect("squeals below μ = 2 with face friction");
     let closed = closed_form_threshold(true);
     println!("faces: threshold μ_c eigenvalues {eig:.9}, Routh–Hurwitz {closed:.9}");
     assert!((eig - closed).abs() < 1e-6 * closed, "{eig} vs {closed}");
@@ -176,7 +200,10 @@ fn simulated_growth_rate_of(c: Config) -> (f64, f64) {
         })
         .unwrap();
     let left: Vec<(f64, f64)> = (0..2 * n).map(|r| (u[(r, j)].re, u[(r, j)].im)).collect();
-    let peak = mode.vector[..n].iter().map(|v| v.norm()).fold(0.0, f64::max);
+    let peak = mode.vector[..n]
+        .iter()
+        .map(|v| v.norm())
+        .fold(0.0, f64::max);
     let mut state = sim.state().clone();
     for i in 0..n {
         state.q[i] = 1e-6 * mode.vector[i].re / peak;
@@ -188,13 +215,21 @@ fn simulated_growth_rate_of(c: Config) -> (f64, f64) {
     for _ in 0..1000 {
         sim.step().unwrap();
         let y: Vec<f64> = sim.q_ale().iter().chain(sim.q_dot_ale()).copied().collect();
-        let (re, im) = y.iter().zip(&left).fold((0.0, 0.0), |(re, im), (y, l)| (re + y * l.0, im + y * l.1));
+        let (re, im) = y
+            .iter()
+            .zip(&left)
+            .fold((0.0, 0.0), |(re, im), (y, l)| (re + y * l.0, im + y * l.1));
         ts.push(sim.time());
         logs.push(re.hypot(im).ln());
     }
     let k = ts.len() as f64;
     let (mt, ml) = (ts.iter().sum::<f64>() / k, logs.iter().sum::<f64>() / k);
-    let slope = ts.iter().zip(&logs).map(|(t, l)| (t - mt) * (l - ml)).sum::<f64>() / ts.iter().map(|t| (t - mt).powi(2)).sum::<f64>();
+    let slope = ts
+        .iter()
+        .zip(&logs)
+        .map(|(t, l)| (t - mt) * (l - ml))
+        .sum::<f64>()
+        / ts.iter().map(|t| (t - mt).powi(2)).sum::<f64>();
     (mode.eigenvalue.re, slope)
 }
 
@@ -207,7 +242,10 @@ fn eigenvalues_and_simulation_agree_on_growth_rates_with_face_friction() {
         println!("μ = {factor} μ_c: Re λ = {rate:.6} 1/s, simulated {slope:.6} 1/s");
         assert_eq!(rate > 0.0, factor > 1.0);
         assert_eq!(slope > 0.0, factor > 1.0);
-        assert!((slope - rate).abs() < 0.02 * rate.abs(), "simulated {slope} vs eigenvalue {rate}");
+        assert!(
+            (slope - rate).abs() < 0.02 * rate.abs(),
+            "simulated {slope} vs eigenvalue {rate}"
+        );
     }
 }
 
@@ -233,10 +271,17 @@ fn ale_and_lagrangian_descriptions_converge_to_one_motion_with_face_friction() {
         out
     };
     // Measured: 1.06e-3, 6.9e-5, 4.3e-6, 2.7e-7 (ratio ≈ 16).
-    let last = assert_fourth_order("face friction, rk4 ALE vs Lagrangian", &[20_000.0, 40_000.0, 80_000.0, 160_000.0], |rate| {
-        // max |Lagrangian − ALE| over the largest ALE value.
-        relative_difference(&run(Coordinates::Lagrangian, rate), &run(Coordinates::Ale, rate))
-    });
+    let last = assert_fourth_order(
+        "face friction, rk4 ALE vs Lagrangian",
+        &[20_000.0, 40_000.0, 80_000.0, 160_000.0],
+        |rate| {
+            // max |Lagrangian − ALE| over the largest ALE value.
+            relative_difference(
+                &run(Coordinates::Lagrangian, rate),
+                &run(Coordinates::Ale, rate),
+            )
+        },
+    );
     assert!(last < 5e-7);
 }
 
@@ -256,23 +301,38 @@ fn the_ring_of_pads_threshold_with_face_friction_matches_its_closed_form() {
     let sim = Simulation::new(c.clone()).unwrap();
     let model = sim.model();
     let pads = c.pads.as_ref().unwrap();
-    let (n, clamp, kc, h) = (pads.contacts.len() as f64, pads.clamp_force[0], pads.contact_stiffness, c.plate.thickness);
+    let (n, clamp, kc, h) = (
+        pads.contacts.len() as f64,
+        pads.clamp_force[0],
+        pads.contact_stiffness,
+        c.plate.thickness,
+    );
     let r = sim.scene().ale_nodes[0].radius;
     let speed = c.joint.speed;
     let mut closed = f64::INFINITY;
     let mut without_direction = f64::INFINITY;
-    for m in model.modes().iter().filter(|m| m.shape == AngularShape::Cos) {
+    for m in model
+        .modes()
+        .iter()
+        .filter(|m| m.shape == AngularShape::Cos)
+    {
         let [rr, slope, ..] = model.radial_shapes()[m.radial].eval(r);
         let k = m.k as f64;
         let omega_p = (m.omega * m.omega + kc * n * rr * rr / m.modal_mass).sqrt();
         let circulatory = k * rr * rr * (clamp + 0.5 * h * kc * n) / r;
         let direction = 0.25 * h * h * clamp * slope * slope * omega_p / (speed * r);
         let mu = 2.0 * m.damping * m.omega * m.modal_mass * omega_p / (circulatory - direction);
-        println!("⟨k = {}⟩: closed-form μ_c = {mu:.9} ({:.9} without the sliding direction)", m.k, 2.0 * m.damping * m.omega * m.modal_mass * omega_p / circulatory);
+        println!(
+            "⟨k = {}⟩: closed-form μ_c = {mu:.9} ({:.9} without the sliding direction)",
+            m.k,
+            2.0 * m.damping * m.omega * m.modal_mass * omega_p / circulatory
+        );
         closed = closed.min(mu);
-        without_direction = without_direction.min(2.0 * m.damping * m.omega * m.modal_mass * omega_p / circulatory);
+        without_direction =
+            without_direction.min(2.0 * m.damping * m.omega * m.modal_mass * omega_p / circulatory);
     }
-    let eig = stability::friction_threshold(sim.scene(), speed, 0.05).expect("squeals below μ = 0.05");
+    let eig =
+        stability::friction_threshold(sim.scene(), speed, 0.05).expect("squeals below μ = 0.05");
     println!("ring with face friction: threshold eigenvalues {eig:.9}, closed form {closed:.9}");
     assert!((eig - closed).abs() < 1e-6 * closed, "{eig} vs {closed}");
     // The faces' couple lowers the paper's 0.300423 about 110-fold.
@@ -296,13 +356,18 @@ fn a_falling_friction_coefficient_matches_the_closed_form_and_lowers_the_thresho
     let eig = stability::friction_threshold(sim.scene(), SPEED, 2.0).expect("squeals");
     let closed = closed_form_threshold_with(true, (excess, vs));
     let constant = closed_form_threshold(true);
-    println!("μ(v): threshold eigenvalues {eig:.9}, closed form {closed:.9}; constant μ {constant:.9}");
+    println!(
+        "μ(v): threshold eigenvalues {eig:.9}, closed form {closed:.9}; constant μ {constant:.9}"
+    );
     assert!((eig - closed).abs() < 1e-6 * closed, "{eig} vs {closed}");
     assert!(closed < constant);
     // The μ′ term itself matters (not only μ(V) > μ): without it the quartic's threshold differs.
     let v = SPEED * sim.scene().ale_nodes[0].radius;
     let mu_at_v_only = closed_form_threshold(true) - excess * (-v / vs).exp();
-    assert!((closed - mu_at_v_only).abs() > 1e-3 * closed, "{closed} vs {mu_at_v_only}");
+    assert!(
+        (closed - mu_at_v_only).abs() > 1e-3 * closed,
+        "{closed} vs {mu_at_v_only}"
+    );
     // The simulation (the nonlinear law at every RK4 stage) grows at the eigenvalue's rate.
     for factor in [0.7, 1.5] {
         let mut c = scene(ContactSurface::Faces, factor * eig);
@@ -312,7 +377,10 @@ fn a_falling_friction_coefficient_matches_the_closed_form_and_lowers_the_thresho
         let (rate, slope) = simulated_growth_rate_of(c);
         println!("μ(v), μ = {factor} μ_c: Re λ = {rate:.6} 1/s, simulated {slope:.6} 1/s");
         assert_eq!((rate > 0.0, slope > 0.0), (factor > 1.0, factor > 1.0));
-        assert!((slope - rate).abs() < 0.02 * rate.abs(), "simulated {slope} vs eigenvalue {rate}");
+        assert!(
+            (slope - rate).abs() < 0.02 * rate.abs(),
+            "simulated {slope} vs eigenvalue {rate}"
+        );
     }
 }
 
@@ -325,14 +393,45 @@ fn face_friction_keys_are_read_and_a_speed_law_without_faces_is_refused_naming_t
     };
     let c = Config::from_yaml_str(&file("      contact_surface: faces\n      static_friction_coefficient: 0.5\n      stribeck_speed: 2.0\n"), "annular_plate").unwrap();
     let p = c.pads.unwrap();
-    assert_eq!((p.contact_surface, p.static_friction_coefficient, p.stribeck_speed), (ContactSurface::Faces, Some(0.5), 2.0));
+    assert_eq!(
+        (
+            p.contact_surface,
+            p.static_friction_coefficient,
+            p.stribeck_speed
+        ),
+        (ContactSurface::Faces, Some(0.5), 2.0)
+    );
     let c = Config::from_yaml_str(&file(""), "annular_plate").unwrap();
     // `faces` is the default; `mid_plane` reproduces the paper.
-    assert_eq!((c.pads.as_ref().unwrap().contact_surface, c.pads.as_ref().unwrap().static_friction_coefficient), (ContactSurface::Faces, None));
-    let e = Config::from_yaml_str(&file("      contact_surface: mid_plane\n      static_friction_coefficient: 0.5\n"), "annular_plate").unwrap_err().to_string();
-    assert!(e.contains("pads.static_friction_coefficient") && e.contains("pads.contact_surface"), "{e}");
-    let e = Config::from_yaml_str(&file("      contact_surface: rim\n"), "annular_plate").unwrap_err().to_string();
-    assert!(e.contains("pads.contact_surface") && e.contains("rim"), "{e}");
-    let e = Config::from_yaml_str(&file("      contact_surface: faces\n      stribeck_speed: 0.0\n"), "annular_plate").unwrap_err().to_string();
+    assert_eq!(
+        (
+            c.pads.as_ref().unwrap().contact_surface,
+            c.pads.as_ref().unwrap().static_friction_coefficient
+        ),
+        (ContactSurface::Faces, None)
+    );
+    let e = Config::from_yaml_str(
+        &file("      contact_surface: mid_plane\n      static_friction_coefficient: 0.5\n"),
+        "annular_plate",
+    )
+    .unwrap_err()
+    .to_string();
+    assert!(
+        e.contains("pads.static_friction_coefficient") && e.contains("pads.contact_surface"),
+        "{e}"
+    );
+    let e = Config::from_yaml_str(&file("      contact_surface: rim\n"), "annular_plate")
+        .unwrap_err()
+        .to_string();
+    assert!(
+        e.contains("pads.contact_surface") && e.contains("rim"),
+        "{e}"
+    );
+    let e = Config::from_yaml_str(
+        &file("      contact_surface: faces\n      stribeck_speed: 0.0\n"),
+        "annular_plate",
+    )
+    .unwrap_err()
+    .to_string();
     assert!(e.contains("pads.stribeck_speed"), "{e}");
 }

@@ -5,7 +5,10 @@
 //! thresholds as the mass vanishes; the two descriptions agree; bad input is
 //! refused naming the key.
 
-use annular_plate::config::{Boundary, Caliper, Config, ContactSurface, Coordinates, IntegratorKind, NodePosition, PadContact, PadsConfig};
+use annular_plate::config::{
+    Boundary, Caliper, Config, ContactSurface, Coordinates, IntegratorKind, NodePosition,
+    PadContact, PadsConfig,
+};
 use annular_plate::dynamics::load_models::Pads;
 use annular_plate::dynamics::{stability, Simulation};
 use annular_plate::model::AngularShape;
@@ -37,11 +40,16 @@ fn scene(caliper: Caliper, mass: f64, backing: Option<f64>, mu: f64, angles: &[f
     c.plate.damping = vec![1e-4];
     c.plate.residual_flexibility = false;
     for &a in angles {
-        c.nodes.ale.push(NodePosition { radial: 0.6, angular: a });
+        c.nodes.ale.push(NodePosition {
+            radial: 0.6,
+            angular: a,
+        });
     }
     c.joint.speed = SPEED;
     c.pads = Some(PadsConfig {
-        contacts: (0..angles.len()).map(|node| PadContact { node, pad: 0 }).collect(),
+        contacts: (0..angles.len())
+            .map(|node| PadContact { node, pad: 0 })
+            .collect(),
         clamp_force: vec![CLAMP],
         contact_stiffness: STIFFNESS,
         contact_damping: DAMPING,
@@ -76,9 +84,21 @@ struct Pair {
 fn pair(sim: &Simulation) -> Pair {
     let model = sim.model();
     let r = sim.scene().ale_nodes[0].radius;
-    let mode = model.modes().iter().find(|m| m.shape == AngularShape::Cos).unwrap();
+    let mode = model
+        .modes()
+        .iter()
+        .find(|m| m.shape == AngularShape::Cos)
+        .unwrap();
     let [rr, slope, ..] = model.radial_shapes()[mode.radial].eval(r);
-    Pair { rr, slope, k: mode.k as f64, m: mode.modal_mass, w: mode.omega, z: mode.damping, r }
+    Pair {
+        rr,
+        slope,
+        k: mode.k as f64,
+        m: mode.modal_mass,
+        w: mode.omega,
+        z: mode.damping,
+        r,
+    }
 }
 
 /// (a) Without speed and friction, one contact at θ = 0 on the cos mode
@@ -101,12 +121,25 @@ fn one_pad_on_one_mode_pair_has_the_frequencies_of_its_characteristic_polynomial
         let p = pair(&sim);
         let (kc, kb, mp) = (STIFFNESS, backing.unwrap_or(0.0), PAD_MASS);
         let disc = p.m * p.w * p.w + 2.0 * kc * p.rr * p.rr;
-        let (a2, a1, a0) = (p.m * mp, p.m * (kc + kb) + mp * disc, disc * (kc + kb) - 2.0 * kc * kc * p.rr * p.rr);
+        let (a2, a1, a0) = (
+            p.m * mp,
+            p.m * (kc + kb) + mp * disc,
+            disc * (kc + kb) - 2.0 * kc * kc * p.rr * p.rr,
+        );
         let root = (a1 * a1 - 4.0 * a2 * a0).sqrt();
-        let s = [(-a1 + root) / (2.0 * a2), (-a1 - root) / (2.0 * a2), -(kc + kb) / mp, -p.w * p.w];
+        let s = [
+            (-a1 + root) / (2.0 * a2),
+            (-a1 - root) / (2.0 * a2),
+            -(kc + kb) / mp,
+            -p.w * p.w,
+        ];
         let mut expected: Vec<f64> = s.iter().map(|s| (-s).sqrt()).collect();
         expected.sort_by(f64::total_cmp);
-        let mut got: Vec<f64> = stability::eigenvalues(sim.scene(), 0.0, 0.0, &[CLAMP]).iter().filter(|l| l.im > 0.0).map(|l| l.im).collect();
+        let mut got: Vec<f64> = stability::eigenvalues(sim.scene(), 0.0, 0.0, &[CLAMP])
+            .iter()
+            .filter(|l| l.im > 0.0)
+            .map(|l| l.im)
+            .collect();
         got.sort_by(f64::total_cmp);
         println!("{caliper:?}: frequencies {got:?} rad/s, closed form {expected:?}");
         assert_eq!(got.len(), 4);
@@ -131,8 +164,18 @@ fn own_growth_rate(sim: &Simulation, mu: f64, backing: f64) -> f64 {
     // In series with the residual compliance γ = G(0, 0) at the contact the
     // net force (k_c (ξ_b − ξ_t − 2w) + …) is divided by 1 + 2k_c γ: k_c and
     // c_c act as k_c/(1 + 2k_c γ), c_c/(1 + 2k_c γ) (not k_b).
-    let series = sim.scene().residual.as_ref().map_or(1.0, |g| 1.0 + 2.0 * STIFFNESS * g.between(0, 0, 0.0));
-    let (h, pre, kc, mp, cc) = (0.0181, CLAMP, STIFFNESS / series, PAD_MASS, DAMPING / series);
+    let series = sim
+        .scene()
+        .residual
+        .as_ref()
+        .map_or(1.0, |g| 1.0 + 2.0 * STIFFNESS * g.between(0, 0, 0.0));
+    let (h, pre, kc, mp, cc) = (
+        0.0181,
+        CLAMP,
+        STIFFNESS / series,
+        PAD_MASS,
+        DAMPING / series,
+    );
     let eps = cc / kc;
     let (k, m) = (p.k, p.m);
     let k0 = p.w * p.w - k * k * SPEED * SPEED;
@@ -170,14 +213,21 @@ fn own_growth_rate(sim: &Simulation, mu: f64, backing: f64) -> f64 {
     a[(5, 3)] = cc * p.rr / mp;
     // Balanced (s q, q̇), s² the largest stiffness entry: the same
     // eigenvalues with blocks of one magnitude, so Re λ keeps its digits.
-    let scale = (0..3).map(|i| a[(3 + i, i)].abs()).fold(1.0, f64::max).sqrt();
+    let scale = (0..3)
+        .map(|i| a[(3 + i, i)].abs())
+        .fold(1.0, f64::max)
+        .sqrt();
     for i in 0..3 {
         for j in 0..3 {
             a[(i, 3 + j)] *= scale;
             a[(3 + i, j)] /= scale;
         }
     }
-    a.eigenvalues().unwrap().iter().map(|l| l.re).fold(f64::NEG_INFINITY, f64::max)
+    a.eigenvalues()
+        .unwrap()
+        .iter()
+        .map(|l| l.re)
+        .fold(f64::NEG_INFINITY, f64::max)
 }
 
 fn own_threshold(sim: &Simulation, backing: f64) -> f64 {
@@ -205,22 +255,30 @@ fn in_series(mut c: Config) -> Config {
 const DESCRIPTIONS: [fn(Config) -> Config; 2] = [|c| c, in_series];
 
 /// The fixed caliper (with its backing stiffness) and the floating one.
-const CALIPERS: [(Caliper, Option<f64>); 2] = [(Caliper::Fixed, Some(BACKING)), (Caliper::Floating, None)];
+const CALIPERS: [(Caliper, Option<f64>); 2] =
+    [(Caliper::Fixed, Some(BACKING)), (Caliper::Floating, None)];
 
 /// Each caliper with each description.
-fn calipers_and_descriptions() -> impl Iterator<Item = ((Caliper, Option<f64>), fn(Config) -> Config)> {
-    CALIPERS.into_iter().flat_map(|c| DESCRIPTIONS.map(|d| (c, d)))
+fn calipers_and_descriptions(
+) -> impl Iterator<Item = ((Caliper, Option<f64>), fn(Config) -> Config)> {
+    CALIPERS
+        .into_iter()
+        .flat_map(|c| DESCRIPTIONS.map(|d| (c, d)))
 }
 
 #[test]
 fn the_friction_threshold_with_pad_mass_matches_the_tests_own_eigen_solve() {
     for ((caliper, backing), series) in calipers_and_descriptions() {
         let sim = Simulation::new(series(scene(caliper, PAD_MASS, backing, 0.0, &[0.0]))).unwrap();
-        let eig = stability::friction_threshold(sim.scene(), SPEED, 20.0).expect("squeals below μ = 20");
+        let eig =
+            stability::friction_threshold(sim.scene(), SPEED, 20.0).expect("squeals below μ = 20");
         let own = own_threshold(&sim, backing.unwrap_or(0.0));
         let massless = Simulation::new(series(scene(caliper, 0.0, None, 0.0, &[0.0]))).unwrap();
         let without = stability::friction_threshold(massless.scene(), SPEED, 50.0);
-        println!("{caliper:?}, in series {}, m_p = {PAD_MASS} kg: threshold", sim.scene().residual.is_some());
+        println!(
+            "{caliper:?}, in series {}, m_p = {PAD_MASS} kg: threshold",
+            sim.scene().residual.is_some()
+        );
         println!("  μ_c {eig:.9}, own 3-DOF eigen-solve {own:.9} (massless pads: {without:?})");
         assert!((eig - own).abs() < 1e-8 * own, "{eig} vs {own}");
     }
@@ -242,10 +300,15 @@ fn simulated_growth_rate(c: Config, steps: usize) -> (f64, f64) {
         let d = |i: usize| (s[i].re - mode.eigenvalue.re).hypot(s[i].im - mode.eigenvalue.im);
         d(x).total_cmp(&d(y))
     });
-    let left: Vec<(f64, f64)> = (0..len).map(|r| (u[(r, j.unwrap())].re, u[(r, j.unwrap())].im)).collect();
+    let left: Vec<(f64, f64)> = (0..len)
+        .map(|r| (u[(r, j.unwrap())].re, u[(r, j.unwrap())].im))
+        .collect();
     let (index, pads) = sim.scene().load_models.find::<Pads>().unwrap();
     let x0 = pads.rest_compression(0, CLAMP);
-    let peak = mode.vector[..n].iter().map(|v| v.norm()).fold(0.0, f64::max);
+    let peak = mode.vector[..n]
+        .iter()
+        .map(|v| v.norm())
+        .fold(0.0, f64::max);
     let scale = 1e-6 / peak;
     let mut state = sim.state().clone();
     for i in 0..n {
@@ -264,14 +327,29 @@ fn simulated_growth_rate(c: Config, steps: usize) -> (f64, f64) {
     for _ in 0..steps {
         sim.step().unwrap();
         let slot = &sim.state().load_models.slots[index];
-        let y: Vec<f64> = sim.q_ale().iter().chain(sim.q_dot_ale()).copied().chain(slot[..faces].iter().map(|x| x - x0)).chain(slot[faces..].iter().copied()).collect();
-        let (re, im) = y.iter().zip(&left).fold((0.0, 0.0), |(re, im), (y, l)| (re + y * l.0, im + y * l.1));
+        let y: Vec<f64> = sim
+            .q_ale()
+            .iter()
+            .chain(sim.q_dot_ale())
+            .copied()
+            .chain(slot[..faces].iter().map(|x| x - x0))
+            .chain(slot[faces..].iter().copied())
+            .collect();
+        let (re, im) = y
+            .iter()
+            .zip(&left)
+            .fold((0.0, 0.0), |(re, im), (y, l)| (re + y * l.0, im + y * l.1));
         ts.push(sim.time());
         logs.push(re.hypot(im).ln());
     }
     let k = ts.len() as f64;
     let (mt, ml) = (ts.iter().sum::<f64>() / k, logs.iter().sum::<f64>() / k);
-    let slope = ts.iter().zip(&logs).map(|(t, l)| (t - mt) * (l - ml)).sum::<f64>() / ts.iter().map(|t| (t - mt).powi(2)).sum::<f64>();
+    let slope = ts
+        .iter()
+        .zip(&logs)
+        .map(|(t, l)| (t - mt) * (l - ml))
+        .sum::<f64>()
+        / ts.iter().map(|t| (t - mt).powi(2)).sum::<f64>();
     (mode.eigenvalue.re, slope)
 }
 
@@ -284,11 +362,23 @@ fn eigenvalues_and_simulation_agree_on_growth_rates_with_pad_mass() {
             // At most e² of growth or decay: the fit stays in the linear range.
             let lam = stability::growth_rate(sim.scene(), SPEED, factor * mu_c, &[CLAMP]);
             let steps = (2.0 / lam.abs() * 1000.0).min(1000.0) as usize;
-            let (rate, slope) = simulated_growth_rate(series(scene(caliper, PAD_MASS, backing, factor * mu_c, &[0.0])), steps);
-            println!("{caliper:?}, in series {}, μ", sim.scene().residual.is_some());
-            println!("  μ = {factor} μ_c = {:.6}: Re λ = {rate:.6} 1/s, simulated {slope:.6} 1/s", factor * mu_c);
+            let (rate, slope) = simulated_growth_rate(
+                series(scene(caliper, PAD_MASS, backing, factor * mu_c, &[0.0])),
+                steps,
+            );
+            println!(
+                "{caliper:?}, in series {}, μ",
+                sim.scene().residual.is_some()
+            );
+            println!(
+                "  μ = {factor} μ_c = {:.6}: Re λ = {rate:.6} 1/s, simulated {slope:.6} 1/s",
+                factor * mu_c
+            );
             assert_eq!((rate > 0.0, slope > 0.0), (factor > 1.0, factor > 1.0));
-            assert!((slope - rate).abs() < 0.02 * rate.abs(), "simulated {slope} vs eigenvalue {rate}");
+            assert!(
+                (slope - rate).abs() < 0.02 * rate.abs(),
+                "simulated {slope} vs eigenvalue {rate}"
+            );
         }
     }
 }
@@ -304,11 +394,14 @@ fn vanishing_pad_mass_converges_to_the_massless_thresholds() {
 
 fn vanishing_mass_in(series: fn(Config) -> Config) {
     let angles = [-0.2, 0.0, 0.2];
-    let massless = Simulation::new(series(scene(Caliper::Floating, 0.0, None, 0.0, &angles))).unwrap();
-    let target = stability::friction_threshold(massless.scene(), SPEED, 2.0).expect("the massless floating pad squeals");
+    let massless =
+        Simulation::new(series(scene(Caliper::Floating, 0.0, None, 0.0, &angles))).unwrap();
+    let target = stability::friction_threshold(massless.scene(), SPEED, 2.0)
+        .expect("the massless floating pad squeals");
     let mut previous = f64::INFINITY;
     for mass in [1e-1, 1e-2, 1e-3, 1e-4] {
-        let sim = Simulation::new(series(scene(Caliper::Floating, mass, None, 0.0, &angles))).unwrap();
+        let sim =
+            Simulation::new(series(scene(Caliper::Floating, mass, None, 0.0, &angles))).unwrap();
         let mu = stability::friction_threshold(sim.scene(), SPEED, 2.0).unwrap();
         let d = (mu - target).abs() / target;
         println!("floating, in series {}, m_p = {mass:e} kg: μ_c = {mu:.9} (massless {target:.9}, relative difference {d:e})", sim.scene().residual.is_some());
@@ -343,7 +436,14 @@ fn ale_and_lagrangian_descriptions_converge_to_one_motion_with_massive_pads() {
 }
 
 fn descriptions_converge_in(series: fn(Config) -> Config) {
-    let sim = Simulation::new(series(scene(Caliper::Fixed, PAD_MASS, Some(BACKING), 0.0, &[0.0]))).unwrap();
+    let sim = Simulation::new(series(scene(
+        Caliper::Fixed,
+        PAD_MASS,
+        Some(BACKING),
+        0.0,
+        &[0.0],
+    )))
+    .unwrap();
     let mu = 1.5 * stability::friction_threshold(sim.scene(), SPEED, 2.0).unwrap();
     let run = |coordinates: Coordinates, rate: f64| {
         let mut c = series(scene(Caliper::Fixed, PAD_MASS, Some(BACKING), mu, &[0.0]));
@@ -358,14 +458,22 @@ fn descriptions_converge_in(series: fn(Config) -> Config) {
         for _ in 0..(0.05 * rate) as usize {
             sim.step().unwrap();
             out.extend_from_slice(sim.q_ale());
-            out.extend(sim.state().load_models.slots[0].iter().map(|x| x * 0.1)); // pad travel on the amplitudes' scale
+            out.extend(sim.state().load_models.slots[0].iter().map(|x| x * 0.1));
+            // pad travel on the amplitudes' scale
         }
         out
     };
-    let last = assert_fourth_order("massive pads, rk4 ALE vs Lagrangian", &[20_000.0, 40_000.0, 80_000.0, 160_000.0], |rate| {
-        // max |Lagrangian − ALE| over the largest ALE value.
-        relative_difference(&run(Coordinates::Lagrangian, rate), &run(Coordinates::Ale, rate))
-    });
+    let last = assert_fourth_order(
+        "massive pads, rk4 ALE vs Lagrangian",
+        &[20_000.0, 40_000.0, 80_000.0, 160_000.0],
+        |rate| {
+            // max |Lagrangian − ALE| over the largest ALE value.
+            relative_difference(
+                &run(Coordinates::Lagrangian, rate),
+                &run(Coordinates::Ale, rate),
+            )
+        },
+    );
     assert!(last < 5e-7);
 }
 
@@ -378,39 +486,77 @@ fn bad_pad_mass_data_is_refused_naming_the_key() {
         )
     };
     let c = Config::from_yaml_str(&file("      mass: 0.3\n"), "annular_plate").unwrap();
-    assert_eq!((c.pads.as_ref().unwrap().mass, c.pads.as_ref().unwrap().backing_stiffness), (0.3, None));
-    let c = Config::from_yaml_str(&file("      mass: 0.3\n      caliper: fixed\n      backing_stiffness: 1.0e8\n"), "annular_plate").unwrap();
+    assert_eq!(
+        (
+            c.pads.as_ref().unwrap().mass,
+            c.pads.as_ref().unwrap().backing_stiffness
+        ),
+        (0.3, None)
+    );
+    let c = Config::from_yaml_str(
+        &file("      mass: 0.3\n      caliper: fixed\n      backing_stiffness: 1.0e8\n"),
+        "annular_plate",
+    )
+    .unwrap();
     assert_eq!(c.pads.unwrap().backing_stiffness, Some(1.0e8));
     let refused = |extra: &str, needles: &[&str]| {
-        let e = Config::from_yaml_str(&file(extra), "annular_plate").unwrap_err().to_string();
+        let e = Config::from_yaml_str(&file(extra), "annular_plate")
+            .unwrap_err()
+            .to_string();
         assert!(needles.iter().all(|n| e.contains(n)), "{extra:?}: {e}");
     };
     refused("      mass: -0.1\n", &["pads.mass"]);
     refused("      mass: .nan\n", &["pads.mass"]);
     refused("      mass: .inf\n", &["pads.mass"]);
-    refused("      mass: 0.3\n      caliper: fixed\n", &["pads.backing_stiffness", "pads.caliper: fixed"]);
-    refused("      mass: 0.3\n      backing_stiffness: 1.0e8\n", &["pads.backing_stiffness", "floating"]);
-    refused("      backing_stiffness: 1.0e8\n", &["pads.backing_stiffness", "pads.mass"]);
-    refused("      mass: 0.3\n      caliper: fixed\n      backing_stiffness: 0.0\n", &["pads.backing_stiffness"]);
-    refused("      mass: 0.3\n      caliper: fixed\n      backing_stiffness: -5.0\n", &["pads.backing_stiffness"]);
+    refused(
+        "      mass: 0.3\n      caliper: fixed\n",
+        &["pads.backing_stiffness", "pads.caliper: fixed"],
+    );
+    refused(
+        "      mass: 0.3\n      backing_stiffness: 1.0e8\n",
+        &["pads.backing_stiffness", "floating"],
+    );
+    refused(
+        "      backing_stiffness: 1.0e8\n",
+        &["pads.backing_stiffness", "pads.mass"],
+    );
+    refused(
+        "      mass: 0.3\n      caliper: fixed\n      backing_stiffness: 0.0\n",
+        &["pads.backing_stiffness"],
+    );
+    refused(
+        "      mass: 0.3\n      caliper: fixed\n      backing_stiffness: -5.0\n",
+        &["pads.backing_stiffness"],
+    );
     let other = |plate: &str, integrator: &str| {
         format!(
             "annular_plate:\n  ros__parameters:\n    plate:\n      residual_flexibility: {plate}\n    simulation:\n      integrator: {integrator}\n    nodes:\n      ale_radial: [0.6]\n      ale_angular: [0.0]\n    pads:\n      ale_nodes: [1]\n      mass: 0.3\n"
         )
     };
     for integrator in ["exponential", "implicit_midpoint"] {
-        let e = Config::from_yaml_str(&other("false", integrator), "annular_plate").unwrap_err().to_string();
-        assert!(e.contains("pads.mass") && e.contains("simulation.integrator: rk4"), "{e}");
+        let e = Config::from_yaml_str(&other("false", integrator), "annular_plate")
+            .unwrap_err()
+            .to_string();
+        assert!(
+            e.contains("pads.mass") && e.contains("simulation.integrator: rk4"),
+            "{e}"
+        );
     }
     // In series with the residual flexibility (the default) massive pads are accepted.
-    assert_eq!(Config::from_yaml_str(&other("true", "rk4"), "annular_plate").unwrap().pads.unwrap().mass, 0.3);
+    assert_eq!(
+        Config::from_yaml_str(&other("true", "rk4"), "annular_plate")
+            .unwrap()
+            .pads
+            .unwrap()
+            .mass,
+        0.3
+    );
     // A configuration built in code is refused by the simulation, naming the key.
     let mut c = scene(Caliper::Floating, PAD_MASS, None, 0.3, &[0.0]);
     c.simulation.integrator = IntegratorKind::Exponential;
     let e = Simulation::new(c).err().expect("refused").to_string();
     assert!(e.contains("pads.mass") && e.contains("rk4"), "{e}");
 }
-
 
 /// The shipped squeal scene (config/brake_squeal.yaml) with modal pads
 /// (`plate.residual_flexibility: false`, which massive pads need) and pad
@@ -422,36 +568,72 @@ fn the_shipped_squeal_scene_thresholds_with_pad_mass() {
     c.plate.residual_flexibility = false;
     let speed = c.joint.speed;
     let massless = Simulation::new(c.clone()).unwrap();
-    let target = stability::friction_threshold(massless.scene(), speed, 2.0).expect("the shipped scene squeals below μ = 2");
-    let f0 = stability::critical_mode(massless.scene(), speed, target, &c.pads.as_ref().unwrap().clamp_force).eigenvalue.im / std::f64::consts::TAU;
+    let target = stability::friction_threshold(massless.scene(), speed, 2.0)
+        .expect("the shipped scene squeals below μ = 2");
+    let f0 = stability::critical_mode(
+        massless.scene(),
+        speed,
+        target,
+        &c.pads.as_ref().unwrap().clamp_force,
+    )
+    .eigenvalue
+    .im / std::f64::consts::TAU;
     println!("massless: μ_c = {target:.6}, {f0:.1} Hz");
     for mass in [1e-4, 0.1, 0.2, 0.3, 0.5, 1.0] {
         let mut m = c.clone();
         m.pads.as_mut().unwrap().mass = mass;
         let sim = Simulation::new(m.clone()).unwrap();
         let mu = stability::friction_threshold(sim.scene(), speed, 2.0);
-        let f = mu.map(|mu| stability::critical_mode(sim.scene(), speed, mu, &m.pads.as_ref().unwrap().clamp_force).eigenvalue.im / std::f64::consts::TAU);
-        let rate = stability::growth_rate(sim.scene(), speed, 0.5, &m.pads.as_ref().unwrap().clamp_force);
+        let f = mu.map(|mu| {
+            stability::critical_mode(
+                sim.scene(),
+                speed,
+                mu,
+                &m.pads.as_ref().unwrap().clamp_force,
+            )
+            .eigenvalue
+            .im / std::f64::consts::TAU
+        });
+        let rate = stability::growth_rate(
+            sim.scene(),
+            speed,
+            0.5,
+            &m.pads.as_ref().unwrap().clamp_force,
+        );
         println!("m_p = {mass} kg: μ_c = {mu:?}, {f:?} Hz; Re λ at μ = 0.5: {rate:.3} 1/s");
         if mass == 1e-4 {
             let mu = mu.unwrap();
-            assert!((mu - target).abs() < 1e-3 * target, "{mu} vs massless {target}");
+            assert!(
+                (mu - target).abs() < 1e-3 * target,
+                "{mu} vs massless {target}"
+            );
         }
         // The 18 points round the whole disc: Σ_c w_c = 0 for every k ≥ 1 mode,
         // so a rigid pad's axial motion is not excited and the mass has no effect.
-        assert!((mu.unwrap() - target).abs() < 1e-9 * target, "{mu:?} vs massless {target}");
+        assert!(
+            (mu.unwrap() - target).abs() < 1e-9 * target,
+            "{mu:?} vs massless {target}"
+        );
     }
     // The shipped file as it is, in series with the residual flexibility:
     // the ring again leaves the threshold to the massless one.
     let shipped = support::scene_files::load("brake_squeal.yaml");
     let clamp = shipped.pads.as_ref().unwrap().clamp_force.clone();
-    let massless = stability::friction_threshold(Simulation::new(shipped.clone()).unwrap().scene(), speed, 2.0).unwrap();
+    let massless = stability::friction_threshold(
+        Simulation::new(shipped.clone()).unwrap().scene(),
+        speed,
+        2.0,
+    )
+    .unwrap();
     let mut heavy = shipped.clone();
     heavy.pads.as_mut().unwrap().mass = 0.3;
     let sim = Simulation::new(heavy).unwrap();
     let mu = stability::friction_threshold(sim.scene(), speed, 2.0).unwrap();
     println!("in series, m_p = 0.3 kg: μ_c = {mu:.9} (massless {massless:.9}); Re λ at μ = 0.5: {:.3} 1/s", stability::growth_rate(sim.scene(), speed, 0.5, &clamp));
-    assert!((mu - massless).abs() < 1e-9 * massless, "{mu} vs massless {massless}");
+    assert!(
+        (mu - massless).abs() < 1e-9 * massless,
+        "{mu} vs massless {massless}"
+    );
     // The same pad data on a 60° arc (the 18 points at the centres of equal
     // sub-arcs about θ = 0): there the pad's axial motion couples.
     for (caliper, backing) in [(Caliper::Floating, None), (Caliper::Fixed, Some(2.0e8))] {
@@ -468,16 +650,28 @@ fn the_shipped_squeal_scene_thresholds_with_pad_mass() {
             m.pads.as_mut().unwrap().backing_stiffness = if mass > 0.0 { backing } else { None };
             let sim = Simulation::new(m).unwrap();
             let mu = stability::friction_threshold(sim.scene(), speed, 5.0);
-            let f = mu.map(|mu| stability::critical_mode(sim.scene(), speed, mu, &clamp).eigenvalue.im / std::f64::consts::TAU);
-            println!("60° arc, {caliper:?} (k_b {backing:?}), m_p = {mass} kg: μ_c = {mu:?}, {f:?} Hz");
+            let f = mu.map(|mu| {
+                stability::critical_mode(sim.scene(), speed, mu, &clamp)
+                    .eigenvalue
+                    .im
+                    / std::f64::consts::TAU
+            });
+            println!(
+                "60° arc, {caliper:?} (k_b {backing:?}), m_p = {mass} kg: μ_c = {mu:?}, {f:?} Hz"
+            );
             if mass == 0.0 {
                 massless_mu = mu;
             }
             if mass == 1e-4 && caliper == Caliper::Floating {
                 match (mu, massless_mu) {
-                    (Some(mu), Some(target)) => assert!((mu - target).abs() < 1e-3 * target, "{mu} vs massless {target}"),
+                    (Some(mu), Some(target)) => assert!(
+                        (mu - target).abs() < 1e-3 * target,
+                        "{mu} vs massless {target}"
+                    ),
                     (None, None) => {}
-                    other => panic!("m_p → 0 does not give the massless floating caliper: {other:?}"),
+                    other => {
+                        panic!("m_p → 0 does not give the massless floating caliper: {other:?}")
+                    }
                 }
             }
         }
@@ -492,22 +686,46 @@ fn simulate_writes_the_massive_pads_compressions() {
         let out = std::process::Command::new(env!("CARGO_BIN_EXE_annular_plate"))
             .arg("simulate")
             .arg(support::scene_files::path("brake_squeal.yaml"))
-            .args(["--duration", "0", "--csv", "-", "--quiet", "-p", "plate.residual_flexibility:=false"])
+            .args([
+                "--duration",
+                "0",
+                "--csv",
+                "-",
+                "--quiet",
+                "-p",
+                "plate.residual_flexibility:=false",
+            ])
             .args(extra)
             .output()
             .unwrap();
-        assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+        assert!(
+            out.status.success(),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
         String::from_utf8(out.stdout).unwrap()
     };
     let text = run(&["-p", "pads.mass:=0.3"]);
     let mut lines = text.lines();
     let header: Vec<&str> = lines.next().unwrap().split(',').collect();
-    let row: Vec<f64> = lines.next().unwrap().split(',').map(|v| v.parse().unwrap()).collect();
+    let row: Vec<f64> = lines
+        .next()
+        .unwrap()
+        .split(',')
+        .map(|v| v.parse().unwrap())
+        .collect();
     let x0 = 5000.0 / (18.0 * 2.78e6);
     for name in ["pad1_top_compression", "pad1_bottom_compression"] {
-        let i = header.iter().position(|h| *h == name).unwrap_or_else(|| panic!("no {name} in {header:?}"));
+        let i = header
+            .iter()
+            .position(|h| *h == name)
+            .unwrap_or_else(|| panic!("no {name} in {header:?}"));
         assert_eq!(annular_plate::cli::simulate::column_unit(name), Some("m"));
-        assert!((row[i] - x0).abs() < 1e-15, "{name} = {} vs x₀ = {x0}", row[i]);
+        assert!(
+            (row[i] - x0).abs() < 1e-15,
+            "{name} = {} vs x₀ = {x0}",
+            row[i]
+        );
     }
     assert!(!run(&[]).lines().next().unwrap().contains("compression"));
 }

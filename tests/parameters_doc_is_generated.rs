@@ -18,10 +18,20 @@ const END: &str = "<!-- generated from src/config/table.rs: end -->";
 fn generated_block(file: &str, generated: &str) {
     let path = Path::new(env!("CARGO_MANIFEST_DIR")).join(file);
     let text = std::fs::read_to_string(&path).unwrap();
-    let start = text.find(BEGIN).unwrap_or_else(|| panic!("{file} has no `{}` marker", BEGIN.trim())) + BEGIN.len();
-    let end = text[start..].find(END).unwrap_or_else(|| panic!("{file} has no end marker")) + start;
+    let start = text
+        .find(BEGIN)
+        .unwrap_or_else(|| panic!("{file} has no `{}` marker", BEGIN.trim()))
+        + BEGIN.len();
+    let end = text[start..]
+        .find(END)
+        .unwrap_or_else(|| panic!("{file} has no end marker"))
+        + start;
     if std::env::var_os("UPDATE_DOCS").is_some() {
-        std::fs::write(&path, format!("{}{generated}{}", &text[..start], &text[end..])).unwrap();
+        std::fs::write(
+            &path,
+            format!("{}{generated}{}", &text[..start], &text[end..]),
+        )
+        .unwrap();
         return;
     }
     let now = &text[start..end];
@@ -48,7 +58,11 @@ fn every_key_is_declared_once() {
     unique.sort();
     unique.dedup();
     assert_eq!(unique.len(), keys.len(), "a key is declared twice");
-    assert_eq!(Config::known_keys(), keys, "the validator accepts exactly the declared keys");
+    assert_eq!(
+        Config::known_keys(),
+        keys,
+        "the validator accepts exactly the declared keys"
+    );
 }
 
 /// The base a section's default is checked on: a shipped scene that switches
@@ -80,16 +94,29 @@ fn every_declared_default_is_what_leaving_the_key_out_yields() {
     for section in table::SECTIONS {
         let base = base_for(section.name);
         for p in section.params {
-            let Some(value) = p.default.to_param() else { continue };
+            let Some(value) = p.default.to_param() else {
+                continue;
+            };
             if base.get(p.key).is_some() {
                 continue; // the scene sets it: its default is not what the scene runs
             }
             let mut with = base.clone();
             with.set(p.key, value).unwrap();
             if section.name == "ros" || p.key == "use_sim_time" {
-                assert_eq!(RosSettings::from_params(&with).unwrap(), RosSettings::from_params(&base).unwrap(), "{}", p.key);
+                assert_eq!(
+                    RosSettings::from_params(&with).unwrap(),
+                    RosSettings::from_params(&base).unwrap(),
+                    "{}",
+                    p.key
+                );
             } else {
-                assert_eq!(Config::from_params(&with).unwrap(), Config::from_params(&base).unwrap(), "{}: the declared default {:?} is not the default", p.key, p.default);
+                assert_eq!(
+                    Config::from_params(&with).unwrap(),
+                    Config::from_params(&base).unwrap(),
+                    "{}: the declared default {:?} is not the default",
+                    p.key,
+                    p.default
+                );
             }
             checked += 1;
         }
@@ -97,6 +124,11 @@ fn every_declared_default_is_what_leaving_the_key_out_yields() {
     assert!(checked >= 50, "{checked} defaults checked");
     // A default that is not the default is found: the check can fail.
     let mut wrong = Params::new();
-    wrong.set("plate.thickness", Value::Double(0.02).to_param().unwrap()).unwrap();
-    assert_ne!(Config::from_params(&wrong).unwrap(), Config::from_params(&Params::new()).unwrap());
+    wrong
+        .set("plate.thickness", Value::Double(0.02).to_param().unwrap())
+        .unwrap();
+    assert_ne!(
+        Config::from_params(&wrong).unwrap(),
+        Config::from_params(&Params::new()).unwrap()
+    );
 }

@@ -133,7 +133,12 @@ fn simulate_to_a_closed_stdout_fails() {
     );
     // Redirected to /dev/null on purpose: written, exit 0.
     let status = std::process::Command::new("sh")
-        .args(["-c", "exec \"$0\" simulate \"$1\" --duration 0.01 --csv - --quiet >/dev/null", BIN, SCENE])
+        .args([
+            "-c",
+            "exec \"$0\" simulate \"$1\" --duration 0.01 --csv - --quiet >/dev/null",
+            BIN,
+            SCENE,
+        ])
         .status()
         .unwrap();
     assert!(status.success());

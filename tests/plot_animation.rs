@@ -44,12 +44,22 @@ fn simulated_csv() -> PathBuf {
 fn frames(gif: &Path) -> Vec<image::RgbaImage> {
     let file = std::io::BufReader::new(std::fs::File::open(gif).unwrap());
     let decoder = image::codecs::gif::GifDecoder::new(file).unwrap();
-    decoder.into_frames().collect_frames().unwrap().into_iter().map(|f| f.into_buffer()).collect()
+    decoder
+        .into_frames()
+        .collect_frames()
+        .unwrap()
+        .into_iter()
+        .map(|f| f.into_buffer())
+        .collect()
 }
 
 /// The documented colour map (docs/ros.md), written out here, as 8-bit RGB.
 fn documented_colour(t: f64) -> [f64; 3] {
-    let (blue, grey, red) = ([0.230, 0.299, 0.754], [0.865, 0.865, 0.865], [0.706, 0.016, 0.150]);
+    let (blue, grey, red) = (
+        [0.230, 0.299, 0.754],
+        [0.865, 0.865, 0.865],
+        [0.706, 0.016, 0.150],
+    );
     let t = t.clamp(-1.0, 1.0);
     let (end, u) = if t < 0.0 { (blue, -t) } else { (red, t) };
     std::array::from_fn(|i| 255.0 * (grey[i] + (end[i] - grey[i]) * u))
@@ -61,25 +71,52 @@ fn frames_follow_the_run_and_colour_the_deflection_of_the_model() {
     let data = CsvData::read(&csv).unwrap();
     let config = Config::from_params_file(&scene(), "/annular_plate").unwrap();
     let out = dir().join("animate_swash.gif");
-    let anim = Animation { fps: 20, max_frames: 10_000, slowdown: 1.0, scale: None, size: Size { width: 480, height: 260 } };
+    let anim = Animation {
+        fps: 20,
+        max_frames: 10_000,
+        slowdown: 1.0,
+        scale: None,
+        size: Size {
+            width: 480,
+            height: 260,
+        },
+    };
     let mut calls = 0;
-    let info = animate(&data, &config, &anim, &out, |done, _| calls += usize::from(done > 0)).unwrap();
+    let info = animate(&data, &config, &anim, &out, |done, _| {
+        calls += usize::from(done > 0)
+    })
+    .unwrap();
     let decoded = frames(&out);
     // Duration × fps: 0.3 s × 20 (and one call with 0 done before the first frame).
     assert_eq!((info.frames, decoded.len(), calls), (6, 6, 6));
     let rows = data.columns[0].len();
-    assert_eq!((info.rows[0], *info.rows.last().unwrap()), (0, rows - 1), "first and last frames are the first and last rows");
+    assert_eq!(
+        (info.rows[0], *info.rows.last().unwrap()),
+        (0, rows - 1),
+        "first and last frames are the first and last rows"
+    );
     if std::env::var_os("ANIM_DUMP").is_some() {
-        decoded.last().unwrap().save(dir().join("animate_last.png")).unwrap();
+        decoded
+            .last()
+            .unwrap()
+            .save(dir().join("animate_last.png"))
+            .unwrap();
     }
 
     let model = PlateModel::new(&config.plate).unwrap();
-    let q_of = |row: usize| -> Vec<f64> { (1..=model.n_modes()).map(|i| data.column(&format!("q{i}")).unwrap()[row]).collect() };
+    let q_of = |row: usize| -> Vec<f64> {
+        (1..=model.n_modes())
+            .map(|i| data.column(&format!("q{i}")).unwrap()[row])
+            .collect()
+    };
     let chi = data.column("joint_position").unwrap();
     let (ri, ra) = (model.plate().inner_radius, model.plate().outer_radius);
     let (cx, cy) = info.top_centre;
     let pixel = |img: &image::RgbaImage, r: f64, space: f64| {
-        let (px, py) = (cx + r * space.cos() * info.px_per_m, cy - r * space.sin() * info.px_per_m);
+        let (px, py) = (
+            cx + r * space.cos() * info.px_per_m,
+            cy - r * space.sin() * info.px_per_m,
+        );
         let p = img.get_pixel(px as u32, py as u32);
         [p[0] as f64, p[1] as f64, p[2] as f64]
     };
@@ -91,8 +128,14 @@ fn frames_follow_the_run_and_colour_the_deflection_of_the_model() {
         let lag = config.nodes.lagrange.iter().map(|p| (p, chi));
         ale.chain(lag)
             .map(|(p, turn)| {
-                let (r, a) = (model.radius_at(p.radial), std::f64::consts::TAU * p.angular + turn);
-                (cx + r * a.cos() * info.px_per_m, cy - r * a.sin() * info.px_per_m)
+                let (r, a) = (
+                    model.radius_at(p.radial),
+                    std::f64::consts::TAU * p.angular + turn,
+                );
+                (
+                    cx + r * a.cos() * info.px_per_m,
+                    cy - r * a.sin() * info.px_per_m,
+                )
             })
             .collect()
     };
@@ -104,7 +147,10 @@ fn frames_follow_the_run_and_colour_the_deflection_of_the_model() {
             let r = ri + (ra - ri) * ring as f64 / 8.0;
             for k in 0..48 {
                 let space = std::f64::consts::TAU * (k as f64 + 0.25) / 48.0;
-                let (px, py) = (cx + r * space.cos() * info.px_per_m, cy - r * space.sin() * info.px_per_m);
+                let (px, py) = (
+                    cx + r * space.cos() * info.px_per_m,
+                    cy - r * space.sin() * info.px_per_m,
+                );
                 if nodes.iter().any(|(x, y)| (x - px).hypot(y - py) < 9.0) {
                     continue;
                 }
@@ -113,9 +159,16 @@ fn frames_follow_the_run_and_colour_the_deflection_of_the_model() {
                 let want = documented_colour(w / info.w_ref);
                 // GIF palette quantization and the nearest grid cell: a few levels.
                 let off = (0..3).map(|i| (got[i] - want[i]).abs()).fold(0.0, f64::max);
-                assert!(off <= 24.0, "r = {r}, φ = {space}: pixel {got:?}, w/w_ref = {} wants {want:?}", w / info.w_ref);
+                assert!(
+                    off <= 24.0,
+                    "r = {r}, φ = {space}: pixel {got:?}, w/w_ref = {} wants {want:?}",
+                    w / info.w_ref
+                );
                 checked += 1;
-                if std::ptr::eq(img, last) && w.abs() > 0.3 * info.w_ref && pixel(first, r, space) != got {
+                if std::ptr::eq(img, last)
+                    && w.abs() > 0.3 * info.w_ref
+                    && pixel(first, r, space) != got
+                {
                     changed += 1;
                 }
             }
@@ -123,7 +176,10 @@ fn frames_follow_the_run_and_colour_the_deflection_of_the_model() {
     }
     println!("{checked} of 672 sample points checked (first and last frame); {changed} changed where |w| > 0.3 w_ref (w_ref {:e} m)", info.w_ref);
     assert!(checked >= 600, "{checked}");
-    assert!(changed >= 20, "the picture changes where the plate deflects: {changed}");
+    assert!(
+        changed >= 20,
+        "the picture changes where the plate deflects: {changed}"
+    );
     // At rest the plate is flat: every disc pixel of the first frame is the map's grey.
     assert!(q_first.iter().all(|q| *q == 0.0));
     let grey = documented_colour(0.0);
@@ -136,7 +192,11 @@ fn frames_follow_the_run_and_colour_the_deflection_of_the_model() {
     }
     // Outside the disc and below the caption nothing moves.
     for (x, y) in [(2u32, 250u32), (235, 250), (120, 40)] {
-        assert_eq!(first.get_pixel(x, y), last.get_pixel(x, y), "background at ({x}, {y})");
+        assert_eq!(
+            first.get_pixel(x, y),
+            last.get_pixel(x, y),
+            "background at ({x}, {y})"
+        );
     }
 }
 
@@ -145,14 +205,46 @@ fn frame_count_is_duration_times_fps_and_mp4_without_ffmpeg_names_the_remedy() {
     let csv = simulated_csv();
     let data = CsvData::read(&csv).unwrap();
     let config = Config::from_params_file(&scene(), "/annular_plate").unwrap();
-    let small = Size { width: 200, height: 120 };
+    let small = Size {
+        width: 200,
+        height: 120,
+    };
     for (fps, slowdown, want) in [(10, 1.0, 3), (25, 2.0, 15)] {
         let out = dir().join(format!("animate_{fps}_{slowdown}.gif"));
-        let info = animate(&data, &config, &Animation { fps, max_frames: 10_000, slowdown, scale: Some(20.0), size: small }, &out, |_, _| {}).unwrap();
-        assert_eq!((info.frames, frames(&out).len(), info.scale), (want, want, 20.0));
+        let info = animate(
+            &data,
+            &config,
+            &Animation {
+                fps,
+                max_frames: 10_000,
+                slowdown,
+                scale: Some(20.0),
+                size: small,
+            },
+            &out,
+            |_, _| {},
+        )
+        .unwrap();
+        assert_eq!(
+            (info.frames, frames(&out).len(), info.scale),
+            (want, want, 20.0)
+        );
     }
     // Too short for two frames: refused with the numbers and the remedy.
-    let err = animate(&data, &config, &Animation { fps: 3, max_frames: 10_000, slowdown: 1.0, scale: None, size: small }, &dir().join("x.gif"), |_, _| {}).unwrap_err();
+    let err = animate(
+        &data,
+        &config,
+        &Animation {
+            fps: 3,
+            max_frames: 10_000,
+            slowdown: 1.0,
+            scale: None,
+            size: small,
+        },
+        &dir().join("x.gif"),
+        |_, _| {},
+    )
+    .unwrap_err();
     assert!(err.to_string().contains("--slowdown"), "{err}");
     // MP4 goes through ffmpeg; without it the error says what to do.
     let out = Command::new(env!("CARGO_BIN_EXE_annular_plate"))
@@ -165,5 +257,8 @@ fn frame_count_is_duration_times_fps_and_mp4_without_ffmpeg_names_the_remedy() {
         .output()
         .unwrap();
     let text = String::from_utf8_lossy(&out.stderr);
-    assert!(!out.status.success() && text.contains("ffmpeg") && text.contains(".gif"), "{text}");
+    assert!(
+        !out.status.success() && text.contains("ffmpeg") && text.contains(".gif"),
+        "{text}"
+    );
 }

@@ -15,31 +15,68 @@ fn names(list: &[&str]) -> Vec<String> {
 
 #[test]
 fn every_column_of_every_shipped_scene_has_a_unit() {
-    for file in ["brake_bench.yaml", "brake_squeal.yaml", "brake_squeal_paper.yaml", "design_example.yaml", "lathe.yaml", "swash_plate.yaml"] {
+    for file in [
+        "brake_bench.yaml",
+        "brake_squeal.yaml",
+        "brake_squeal_paper.yaml",
+        "design_example.yaml",
+        "lathe.yaml",
+        "swash_plate.yaml",
+    ] {
         let out = Command::new(env!("CARGO_BIN_EXE_annular_plate"))
             .arg("simulate")
             .arg(scene_files::path(file))
             .args(["--duration", "0", "--csv", "-", "--quiet"])
             .output()
             .unwrap();
-        assert!(out.status.success(), "{file}: {}", String::from_utf8_lossy(&out.stderr));
+        assert!(
+            out.status.success(),
+            "{file}: {}",
+            String::from_utf8_lossy(&out.stderr)
+        );
         let text = String::from_utf8(out.stdout).unwrap();
         let header = text.lines().next().unwrap();
         for column in header.split(',') {
-            assert!(column_unit(column).is_some(), "{file}: column {column} has no unit");
+            assert!(
+                column_unit(column).is_some(),
+                "{file}: column {column} has no unit"
+            );
         }
     }
 }
 
 #[test]
 fn scene_columns_are_labelled_with_their_units() {
-    assert_eq!(auto_ylabel(&names(&["pad1_normal_force", "pad1_clamp_force"])), "pad1_normal_force, pad1_clamp_force (N)");
-    assert_eq!(auto_ylabel(&names(&["pad1_friction_torque", "joint_effort"])), "pad1_friction_torque, joint_effort (N·m)");
-    assert_eq!(auto_ylabel(&names(&["joint_effort", "pad1_normal_force"])), "joint_effort (N·m), pad1_normal_force (N)");
-    assert_eq!(auto_ylabel(&names(&["tool_tip_z", "tool_chip_thickness"])), "tool_tip_z, tool_chip_thickness (m)");
-    assert_eq!(auto_ylabel(&names(&["tool_feed_force"])), "tool_feed_force (N)");
-    assert_eq!(auto_ylabel(&names(&["qale2"])), "ALE modal amplitude (m)", "the named labels stay");
-    assert_eq!(auto_ylabel(&names(&["my_column", "tool_feed_force"])), "my_column, tool_feed_force (N)", "a foreign column stays bare");
+    assert_eq!(
+        auto_ylabel(&names(&["pad1_normal_force", "pad1_clamp_force"])),
+        "pad1_normal_force, pad1_clamp_force (N)"
+    );
+    assert_eq!(
+        auto_ylabel(&names(&["pad1_friction_torque", "joint_effort"])),
+        "pad1_friction_torque, joint_effort (N·m)"
+    );
+    assert_eq!(
+        auto_ylabel(&names(&["joint_effort", "pad1_normal_force"])),
+        "joint_effort (N·m), pad1_normal_force (N)"
+    );
+    assert_eq!(
+        auto_ylabel(&names(&["tool_tip_z", "tool_chip_thickness"])),
+        "tool_tip_z, tool_chip_thickness (m)"
+    );
+    assert_eq!(
+        auto_ylabel(&names(&["tool_feed_force"])),
+        "tool_feed_force (N)"
+    );
+    assert_eq!(
+        auto_ylabel(&names(&["qale2"])),
+        "ALE modal amplitude (m)",
+        "the named labels stay"
+    );
+    assert_eq!(
+        auto_ylabel(&names(&["my_column", "tool_feed_force"])),
+        "my_column, tool_feed_force (N)",
+        "a foreign column stays bare"
+    );
     assert_eq!(column_unit("pad"), None);
     assert_eq!(column_unit("q"), None);
     assert_eq!(column_unit("padx_normal_force"), None);

@@ -25,12 +25,15 @@ fn dir() -> PathBuf {
 }
 
 fn png(path: &std::path::Path) -> image::RgbImage {
-    image::open(path).unwrap_or_else(|e| panic!("{} is not a readable PNG: {e}", path.display())).to_rgb8()
+    image::open(path)
+        .unwrap_or_else(|e| panic!("{} is not a readable PNG: {e}", path.display()))
+        .to_rgb8()
 }
 
 fn svg_root_size(path: &std::path::Path) -> (String, (u32, u32)) {
     let text = std::fs::read_to_string(path).unwrap();
-    let doc = roxmltree::Document::parse(&text).unwrap_or_else(|e| panic!("{} is not well-formed XML: {e}", path.display()));
+    let doc = roxmltree::Document::parse(&text)
+        .unwrap_or_else(|e| panic!("{} is not well-formed XML: {e}", path.display()));
     let root = doc.root_element();
     assert_eq!(root.tag_name().name(), "svg");
     let w: u32 = root.attribute("width").unwrap().parse().unwrap();
@@ -44,11 +47,20 @@ fn svg_root_size(path: &std::path::Path) -> (String, (u32, u32)) {
 fn history_csv(name: &str) -> (PathBuf, Vec<f64>, Vec<f64>, Vec<f64>) {
     let n = 120;
     let t: Vec<f64> = (0..n).map(|i| i as f64 * 1e-3).collect();
-    let a: Vec<f64> = t.iter().map(|&t| 2e-6 * (-20.0 * t).exp() * (TAU * 25.0 * t).sin()).collect();
-    let b: Vec<f64> = t.iter().map(|&t| -1.5e-6 + 0.4e-6 * (TAU * 10.0 * t).cos()).collect();
+    let a: Vec<f64> = t
+        .iter()
+        .map(|&t| 2e-6 * (-20.0 * t).exp() * (TAU * 25.0 * t).sin())
+        .collect();
+    let b: Vec<f64> = t
+        .iter()
+        .map(|&t| -1.5e-6 + 0.4e-6 * (TAU * 10.0 * t).cos())
+        .collect();
     let mut text = String::from("time,joint_position,joint_velocity,q1,qale1\n");
     for i in 0..n {
-        text.push_str(&format!("{},{},{},{:e},{:e}\n", t[i], 0.0, 11.1, a[i], b[i]));
+        text.push_str(&format!(
+            "{},{},{},{:e},{:e}\n",
+            t[i], 0.0, 11.1, a[i], b[i]
+        ));
     }
     let p = dir().join(format!("{name}.csv"));
     std::fs::write(&p, text).unwrap();
@@ -60,14 +72,26 @@ fn csv_history_svg_polylines_follow_the_data() {
     let (csv, t, a, b) = history_csv("svg_case");
     let data = CsvData::read(&csv).unwrap();
     let out = dir().join("history.svg");
-    let size = Size { width: 900, height: 700 };
-    let plot = CsvPlot { data: &data, x: "time", panels: vec![vec!["q1".into()], vec!["qale1".into()]], ylabels: vec![], title: Some("test".into()) };
+    let size = Size {
+        width: 900,
+        height: 700,
+    };
+    let plot = CsvPlot {
+        data: &data,
+        x: "time",
+        panels: vec![vec!["q1".into()], vec!["qale1".into()]],
+        ylabels: vec![],
+        title: Some("test".into()),
+    };
     let panels = plot.render(&out, size).unwrap();
     assert_eq!(panels.len(), 2);
     let (text, dims) = svg_root_size(&out);
     assert_eq!(dims, (900, 700));
     let doc = roxmltree::Document::parse(&text).unwrap();
-    let color = format!("#{:02X}{:02X}{:02X}", PALETTE[0].0, PALETTE[0].1, PALETTE[0].2);
+    let color = format!(
+        "#{:02X}{:02X}{:02X}",
+        PALETTE[0].0, PALETTE[0].1, PALETTE[0].2
+    );
     // The data curves: polylines in the first series colour with a vertex per data point.
     let curves: Vec<Vec<(f64, f64)>> = doc
         .descendants()
@@ -95,10 +119,17 @@ fn csv_history_svg_polylines_follow_the_data() {
         let top = curve.iter().map(|p| p.1).fold(f64::INFINITY, f64::min);
         let bottom = curve.iter().map(|p| p.1).fold(0.0, f64::max);
         let height = (panel.y_px.1 - panel.y_px.0) as f64;
-        assert!(top - panel.y_px.0 as f64 <= 0.06 * height && panel.y_px.1 as f64 - bottom <= 0.06 * height, "curve fills its panel");
+        assert!(
+            top - panel.y_px.0 as f64 <= 0.06 * height
+                && panel.y_px.1 as f64 - bottom <= 0.06 * height,
+            "curve fills its panel"
+        );
     }
     // plotters rounds each coordinate to a whole pixel
-    assert!(worst <= 1.0, "a vertex is {worst} px from where the data puts it");
+    assert!(
+        worst <= 1.0,
+        "a vertex is {worst} px from where the data puts it"
+    );
 }
 
 #[test]
@@ -106,8 +137,17 @@ fn csv_history_png_has_the_curve_colour_at_the_data_points() {
     let (csv, t, a, _) = history_csv("png_case");
     let data = CsvData::read(&csv).unwrap();
     let out = dir().join("history.png");
-    let size = Size { width: 800, height: 500 };
-    let plot = CsvPlot { data: &data, x: "time", panels: vec![vec!["q1".into()]], ylabels: vec![], title: None };
+    let size = Size {
+        width: 800,
+        height: 500,
+    };
+    let plot = CsvPlot {
+        data: &data,
+        x: "time",
+        panels: vec![vec!["q1".into()]],
+        ylabels: vec![],
+        title: None,
+    };
     let panel = plot.render(&out, size).unwrap().remove(0);
     let img = png(&out);
     assert_eq!(img.dimensions(), (800, 500));
@@ -117,14 +157,27 @@ fn csv_history_png_has_the_curve_colour_at_the_data_points() {
         (-1..=1).any(|dx| {
             (-1..=1).any(|dy| {
                 let p = img.get_pixel((x + dx) as u32, (y + dy) as u32);
-                (p[0] as i32 - c.0 as i32).abs() < 20 && (p[1] as i32 - c.1 as i32).abs() < 20 && (p[2] as i32 - c.2 as i32).abs() < 20
+                (p[0] as i32 - c.0 as i32).abs() < 20
+                    && (p[1] as i32 - c.1 as i32).abs() < 20
+                    && (p[2] as i32 - c.2 as i32).abs() < 20
             })
         })
     };
-    let misses: Vec<(f64, f64, (f64, f64))> = t.iter().zip(&a).map(|(ti, vi)| (*ti, *vi, panel.to_px(*ti, *vi))).filter(|(_, _, (x, y))| !near(*x, *y)).collect();
-    assert!(misses.is_empty(), "every data point lies on the drawn curve; off it: {misses:?}");
+    let misses: Vec<(f64, f64, (f64, f64))> = t
+        .iter()
+        .zip(&a)
+        .map(|(ti, vi)| (*ti, *vi, panel.to_px(*ti, *vi)))
+        .filter(|(_, _, (x, y))| !near(*x, *y))
+        .collect();
+    assert!(
+        misses.is_empty(),
+        "every data point lies on the drawn curve; off it: {misses:?}"
+    );
     // and the curve's colour appears nowhere far from the data (sampled off the curve: mid-panel above the peak)
-    let (x, y) = panel.to_px(0.1, panel.y_range.0 + 0.9 * (panel.y_range.1 - panel.y_range.0));
+    let (x, y) = panel.to_px(
+        0.1,
+        panel.y_range.0 + 0.9 * (panel.y_range.1 - panel.y_range.0),
+    );
     assert!(!near(x, y), "no curve where there is no data");
 }
 
@@ -134,13 +187,27 @@ fn csv_columns_expand_patterns_and_unknown_columns_are_named() {
     let data = CsvData::read(&csv).unwrap();
     assert_eq!(data.expand("q*").unwrap(), vec!["q1", "qale1"]);
     assert_eq!(data.expand("qale*").unwrap(), vec!["qale1"]);
-    assert_eq!(data.expand("joint_*,q1").unwrap(), vec!["joint_position", "joint_velocity", "q1"]);
+    assert_eq!(
+        data.expand("joint_*,q1").unwrap(),
+        vec!["joint_position", "joint_velocity", "q1"]
+    );
     let e = data.expand("q1,q9").unwrap_err().to_string();
-    assert!(e.contains("\"q9\"") && e.contains("columns_case.csv") && e.contains("qale1"), "{e}");
+    assert!(
+        e.contains("\"q9\"") && e.contains("columns_case.csv") && e.contains("qale1"),
+        "{e}"
+    );
     let e = data.expand("zz*").unwrap_err().to_string();
     assert!(e.contains("zz*"), "{e}");
-    let names: Vec<String> = ["time", "q1", "q2", "q3", "q4", "qale1", "qale2", "ale1_uz", "ale2_uz", "ale3_uz"].iter().map(|s| s.to_string()).collect();
-    assert_eq!(plot::summarize_names(&names), "time, q1..q4, qale1, qale2, ale1_uz..ale3_uz");
+    let names: Vec<String> = [
+        "time", "q1", "q2", "q3", "q4", "qale1", "qale2", "ale1_uz", "ale2_uz", "ale3_uz",
+    ]
+    .iter()
+    .map(|s| s.to_string())
+    .collect();
+    assert_eq!(
+        plot::summarize_names(&names),
+        "time, q1..q4, qale1, qale2, ale1_uz..ale3_uz"
+    );
 }
 
 #[test]
@@ -149,31 +216,104 @@ fn bad_plot_input_is_named_with_a_non_zero_exit() {
     let out = dir().join("x.png");
     let run = |args: &[&str]| {
         let o = Command::new(BIN).args(args).output().unwrap();
-        (o.status.success(), String::from_utf8_lossy(&o.stderr).to_string())
+        (
+            o.status.success(),
+            String::from_utf8_lossy(&o.stderr).to_string(),
+        )
     };
     let csv = csv.to_str().unwrap();
-    let (ok, err) = run(&["plot", "csv", csv, "--columns", "q1,nope", "--out", out.to_str().unwrap()]);
+    let (ok, err) = run(&[
+        "plot",
+        "csv",
+        csv,
+        "--columns",
+        "q1,nope",
+        "--out",
+        out.to_str().unwrap(),
+    ]);
     assert!(!ok && err.contains("unknown column \"nope\""), "{err}");
-    let (ok, err) = run(&["plot", "csv", "/nonexistent/run.csv", "--columns", "q1", "--out", out.to_str().unwrap()]);
-    assert!(!ok && err.contains("cannot read /nonexistent/run.csv"), "{err}");
+    let (ok, err) = run(&[
+        "plot",
+        "csv",
+        "/nonexistent/run.csv",
+        "--columns",
+        "q1",
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert!(
+        !ok && err.contains("cannot read /nonexistent/run.csv"),
+        "{err}"
+    );
     let (ok, err) = run(&["plot", "csv", csv, "--columns", "q1", "--out", "/tmp/x.gif"]);
     assert!(!ok && err.contains(".png or .svg"), "{err}");
-    let (ok, err) = run(&["plot", "csv", csv, "--columns", "q1", "--out", "/nonexistent_dir/x.png"]);
-    assert!(!ok && err.contains("/nonexistent_dir") && err.contains("does not exist"), "{err}");
+    let (ok, err) = run(&[
+        "plot",
+        "csv",
+        csv,
+        "--columns",
+        "q1",
+        "--out",
+        "/nonexistent_dir/x.png",
+    ]);
+    assert!(
+        !ok && err.contains("/nonexistent_dir") && err.contains("does not exist"),
+        "{err}"
+    );
     let (ok, err) = run(&["plot", "csv", csv, "--out", out.to_str().unwrap()]);
     assert!(!ok && err.contains("--columns"), "{err}");
-    let (ok, err) = run(&["plot", "modes", "/nonexistent/p.yaml", "--out", out.to_str().unwrap()]);
+    let (ok, err) = run(&[
+        "plot",
+        "modes",
+        "/nonexistent/p.yaml",
+        "--out",
+        out.to_str().unwrap(),
+    ]);
     assert!(!ok && err.contains("/nonexistent/p.yaml"), "{err}");
     let params = dir().join("lathe.yaml");
     std::fs::write(&params, "annular_plate:\n  ros__parameters:\n    plate:\n      nodal_diameters: [0, 1, 2, 3, 4, 5, 6, 7]\n      nodal_circles: [0, 1]\n").unwrap();
-    let (ok, err) = run(&["plot", "mode", params.to_str().unwrap(), "--index", "99", "--out", out.to_str().unwrap()]);
-    assert!(!ok && err.contains("--index 99") && err.contains("1..30"), "{err}");
+    let (ok, err) = run(&[
+        "plot",
+        "mode",
+        params.to_str().unwrap(),
+        "--index",
+        "99",
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert!(
+        !ok && err.contains("--index 99") && err.contains("1..30"),
+        "{err}"
+    );
     let bad_text = dir().join("bad.csv");
     std::fs::write(&bad_text, "time,q1\n0,1\n0.1,abc\n").unwrap();
-    let (ok, err) = run(&["plot", "csv", bad_text.to_str().unwrap(), "--columns", "q1", "--out", out.to_str().unwrap()]);
-    assert!(!ok && err.contains("bad.csv:3") && err.contains("q1"), "{err}");
+    let (ok, err) = run(&[
+        "plot",
+        "csv",
+        bad_text.to_str().unwrap(),
+        "--columns",
+        "q1",
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert!(
+        !ok && err.contains("bad.csv:3") && err.contains("q1"),
+        "{err}"
+    );
     // and a good call works, writing the file
-    let (ok, err) = run(&["plot", "csv", csv, "--columns", "q1", "--panel", "qale1", "--out", out.to_str().unwrap(), "--size", "640x480"]);
+    let (ok, err) = run(&[
+        "plot",
+        "csv",
+        csv,
+        "--columns",
+        "q1",
+        "--panel",
+        "qale1",
+        "--out",
+        out.to_str().unwrap(),
+        "--size",
+        "640x480",
+    ]);
     assert!(ok, "{err}");
     assert_eq!(png(&out).dimensions(), (640, 480));
 }
@@ -194,7 +334,10 @@ fn scan(img: &image::RgbImage, pts: &[(f64, f64)], closed: bool) -> (usize, usiz
             0
         }
     };
-    let cls: Vec<i8> = pts.iter().map(|&(x, y)| class(img.get_pixel(x.round() as u32, y.round() as u32))).collect();
+    let cls: Vec<i8> = pts
+        .iter()
+        .map(|&(x, y)| class(img.get_pixel(x.round() as u32, y.round() as u32)))
+        .collect();
     let mut dark_runs = 0;
     for i in 0..cls.len() {
         let prev = if i == 0 {
@@ -210,7 +353,11 @@ fn scan(img: &image::RgbImage, pts: &[(f64, f64)], closed: bool) -> (usize, usiz
             dark_runs += 1;
         }
     }
-    let signs: Vec<i8> = cls.iter().copied().filter(|c| *c == 1 || *c == -1).collect();
+    let signs: Vec<i8> = cls
+        .iter()
+        .copied()
+        .filter(|c| *c == 1 || *c == -1)
+        .collect();
     let mut changes = signs.windows(2).filter(|w| w[0] != w[1]).count();
     if closed && signs.len() > 1 && signs[0] != signs[signs.len() - 1] {
         changes += 1;
@@ -229,10 +376,16 @@ fn count_on_raster(img: &image::RgbImage, v: &TopView) -> (usize, usize) {
     let mut marks = vec![ri];
     marks.extend(v.nodal_radii.iter().copied());
     marks.push(ra);
-    let (a, b) = marks.windows(2).map(|w| (w[0], w[1])).max_by(|x, y| (x.1 - x.0).total_cmp(&(y.1 - y.0))).unwrap();
+    let (a, b) = marks
+        .windows(2)
+        .map(|w| (w[0], w[1]))
+        .max_by(|x, y| (x.1 - x.0).total_cmp(&(y.1 - y.0)))
+        .unwrap();
     let rc = 0.5 * (a + b);
     let n = (TAU * rc * v.scale * 3.0) as usize;
-    let circle: Vec<(f64, f64)> = (0..n).map(|i| v.to_px(rc, TAU * i as f64 / n as f64)).collect();
+    let circle: Vec<(f64, f64)> = (0..n)
+        .map(|i| v.to_px(rc, TAU * i as f64 / n as f64))
+        .collect();
     let (diameter_lines, circle_changes) = scan(img, &circle, true);
     // A radius through an antinode of the angular factor, from just outside the inner edge to just inside the outer one.
     let phi = match (v.shape.unwrap(), v.k) {
@@ -240,10 +393,21 @@ fn count_on_raster(img: &image::RgbImage, v: &TopView) -> (usize, usize) {
         _ => 0.0,
     };
     let m = ((ra - ri) * v.scale * 3.0) as usize;
-    let radius: Vec<(f64, f64)> = (0..=m).map(|i| ri + 4.0 * px + (ra - ri - 8.0 * px) * i as f64 / m as f64).map(|r| v.to_px(r, phi)).collect();
+    let radius: Vec<(f64, f64)> = (0..=m)
+        .map(|i| ri + 4.0 * px + (ra - ri - 8.0 * px) * i as f64 / m as f64)
+        .map(|r| v.to_px(r, phi))
+        .collect();
     let (circle_lines, radius_changes) = scan(img, &radius, false);
-    assert_eq!(diameter_lines, circle_changes, "⟨{}, {}⟩: black lines and colour changes agree around the circle", v.k, v.l);
-    assert_eq!(circle_lines, radius_changes, "⟨{}, {}⟩: black lines and colour changes agree along the radius", v.k, v.l);
+    assert_eq!(
+        diameter_lines, circle_changes,
+        "⟨{}, {}⟩: black lines and colour changes agree around the circle",
+        v.k, v.l
+    );
+    assert_eq!(
+        circle_lines, radius_changes,
+        "⟨{}, {}⟩: black lines and colour changes agree along the radius",
+        v.k, v.l
+    );
     (diameter_lines, circle_lines)
 }
 
@@ -260,15 +424,28 @@ fn mode_grid_shows_k_nodal_diameters_and_l_nodal_circles() {
     let ls = [0, 1, 2];
     for (name, config) in [("supported", fig2_plate()), ("lathe", Config::default())] {
         let out = dir().join(format!("grid_{name}.png"));
-        let size = Size { width: 5 * 260, height: 3 * 290 + 60 };
+        let size = Size {
+            width: 5 * 260,
+            height: 3 * 290 + 60,
+        };
         let views = plot::mode_grid(&config, &ks, &ls, None, &out, size).unwrap();
         let img = png(&out);
         assert_eq!(img.dimensions(), (size.width, size.height));
         assert_eq!(views.len(), ks.len() * ls.len());
         for v in &views {
             let (diameter_crossings, circles) = count_on_raster(&img, v);
-            assert_eq!(diameter_crossings, 2 * v.k as usize, "{name} ⟨{}, {}⟩: 2k crossings of nodal diameters around the disc", v.k, v.l);
-            assert_eq!(circles, v.l as usize, "{name} ⟨{}, {}⟩: l nodal circles along a radius", v.k, v.l);
+            assert_eq!(
+                diameter_crossings,
+                2 * v.k as usize,
+                "{name} ⟨{}, {}⟩: 2k crossings of nodal diameters around the disc",
+                v.k,
+                v.l
+            );
+            assert_eq!(
+                circles, v.l as usize,
+                "{name} ⟨{}, {}⟩: l nodal circles along a radius",
+                v.k, v.l
+            );
         }
     }
 }
@@ -278,9 +455,19 @@ fn free_free_grid_marks_rigid_body_motions_and_svg_is_valid() {
     let mut c = Config::default();
     c.plate.inner_boundary = Boundary::Free;
     let out = dir().join("grid_free.svg");
-    let size = Size { width: 700, height: 600 };
+    let size = Size {
+        width: 700,
+        height: 600,
+    };
     let views = plot::mode_grid(&c, &[0, 1, 2], &[0, 1], None, &out, size).unwrap();
-    assert_eq!(views.iter().filter(|v| v.mode.is_none()).map(|v| (v.k, v.l)).collect::<Vec<_>>(), vec![(0, 0), (1, 0)]);
+    assert_eq!(
+        views
+            .iter()
+            .filter(|v| v.mode.is_none())
+            .map(|v| (v.k, v.l))
+            .collect::<Vec<_>>(),
+        vec![(0, 0), (1, 0)]
+    );
     let (text, dims) = svg_root_size(&out);
     assert_eq!(dims, (700, 600));
     assert!(text.contains("rigid body"));
@@ -290,10 +477,24 @@ fn free_free_grid_marks_rigid_body_motions_and_svg_is_valid() {
 
 #[test]
 fn single_mode_picture_shows_the_nodal_pattern_in_its_top_view() {
-    for (shape, k, l) in [(AngularShape::Cos, 2, 2), (AngularShape::Sin, 3, 1), (AngularShape::Axisymmetric, 0, 1)] {
+    for (shape, k, l) in [
+        (AngularShape::Cos, 2, 2),
+        (AngularShape::Sin, 3, 1),
+        (AngularShape::Axisymmetric, 0, 1),
+    ] {
         let out = dir().join(format!("mode_{k}_{l}.png"));
-        let size = Size { width: 1200, height: 560 };
-        let view = plot::mode_picture(&fig2_plate(), ModeChoice::KL { k, l, shape }, None, &out, size).unwrap();
+        let size = Size {
+            width: 1200,
+            height: 560,
+        };
+        let view = plot::mode_picture(
+            &fig2_plate(),
+            ModeChoice::KL { k, l, shape },
+            None,
+            &out,
+            size,
+        )
+        .unwrap();
         let img = png(&out);
         assert_eq!(img.dimensions(), (1200, 560));
         assert_eq!(view.shape, Some(shape));
@@ -311,11 +512,24 @@ fn single_mode_picture_shows_the_nodal_pattern_in_its_top_view() {
                 }
             }
         }
-        assert!(red > 500 && (blue > 500 || k == 0 && l == 0), "surface drawn: {red} red, {blue} blue samples");
+        assert!(
+            red > 500 && (blue > 500 || k == 0 && l == 0),
+            "surface drawn: {red} red, {blue} blue samples"
+        );
     }
     // by index, as `modes` numbers them; SVG
     let out = dir().join("mode_index.svg");
-    let view = plot::mode_picture(&Config::default(), ModeChoice::Index(4), None, &out, Size { width: 1000, height: 480 }).unwrap();
+    let view = plot::mode_picture(
+        &Config::default(),
+        ModeChoice::Index(4),
+        None,
+        &out,
+        Size {
+            width: 1000,
+            height: 480,
+        },
+    )
+    .unwrap();
     assert_eq!((view.k, view.l), (2, 0));
     assert_eq!(svg_root_size(&out).1, (1000, 480));
 }

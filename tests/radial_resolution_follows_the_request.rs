@@ -35,7 +35,13 @@ const SAMPLED_K: [u32; 8] = [0, 1, 2, 5, 15, 30, 45, 60];
 const REQUIRED: f64 = 1e-5;
 
 fn plate(ratio: f64, inner: Boundary, outer: Boundary, ks: Vec<u32>, ls: Vec<u32>) -> PlateConfig {
-    library_plate::annulus_config((ratio * OUTER_RADIUS, OUTER_RADIUS), (inner, outer), &ks, &ls, Material::steel(THICKNESS))
+    library_plate::annulus_config(
+        (ratio * OUTER_RADIUS, OUTER_RADIUS),
+        (inner, outer),
+        &ks,
+        &ls,
+        Material::steel(THICKNESS),
+    )
 }
 
 /// Exact λ of l = 0..=L_MAX for k (rigid-body λ = 0 included), scanning up
@@ -47,10 +53,15 @@ fn plate(ratio: f64, inner: Boundary, outer: Boundary, ks: Vec<u32>, ls: Vec<u32
 /// all under- and overflow (J_60, Y_60 at λ r_i < 1) and shows a spurious
 /// sign change at λ r_a ≈ 0.08.
 fn exact_lambdas(annulus: &Annulus, k: u32, lambda_hint: f64) -> Vec<f64> {
-    let lo = (Annulus::LAMBDA_MIN_TIMES_RA / annulus.outer_radius).max(0.5 * k as f64 / annulus.outer_radius);
+    let lo = (Annulus::LAMBDA_MIN_TIMES_RA / annulus.outer_radius)
+        .max(0.5 * k as f64 / annulus.outer_radius);
     let mut lambda_max = lambda_hint * 1.02;
     loop {
-        let mut v = if annulus.has_rigid_body_mode(k) { vec![0.0] } else { Vec::new() };
+        let mut v = if annulus.has_rigid_body_mode(k) {
+            vec![0.0]
+        } else {
+            Vec::new()
+        };
         v.extend(annulus.determinant_roots(k, lo, lambda_max, annulus.default_step()));
         if v.len() > L_MAX as usize {
             return v;
@@ -61,8 +72,19 @@ fn exact_lambdas(annulus: &Annulus, k: u32, lambda_hint: f64) -> Vec<f64> {
 
 /// Relative frequency error of the library's ⟨k, l⟩ against exact, per l
 /// (None for a rigid-body l).
-fn errors_of_k(model: &PlateModel, annulus: &Annulus, material: Material, k: u32) -> Vec<Option<f64>> {
-    let omega_of = |l: u32| model.radial_shapes().iter().find(|s| s.k == k && s.l == l).map(|s| s.omega);
+fn errors_of_k(
+    model: &PlateModel,
+    annulus: &Annulus,
+    material: Material,
+    k: u32,
+) -> Vec<Option<f64>> {
+    let omega_of = |l: u32| {
+        model
+            .radial_shapes()
+            .iter()
+            .find(|s| s.k == k && s.l == l)
+            .map(|s| s.omega)
+    };
     let top = omega_of(L_MAX).expect("l = 10 is elastic");
     // ω = λ² √(D/ρh): λ of the library's top mode.
     let lambda_top = (top / material.omega(1.0)).sqrt();
@@ -81,16 +103,39 @@ fn auto_meets_1e_5_for_all_edge_pairs_and_ratios_up_to_k_60_and_l_10() {
     let material = Material::steel(THICKNESS);
     let mut problems = Vec::new();
     println!("auto, k ≤ {K_MAX} × l ≤ {L_MAX}; exact at k ∈ {SAMPLED_K:?}, all l");
-    println!("{:<30} {:>12} {:>10} {:>13} {:>11} {:>14}", "case (inner–outer, r_i/r_a)", "splines", "worst error", "at ⟨k,l⟩", "lowest", "largest est.");
+    println!(
+        "{:<30} {:>12} {:>10} {:>13} {:>11} {:>14}",
+        "case (inner–outer, r_i/r_a)",
+        "splines",
+        "worst error",
+        "at ⟨k,l⟩",
+        "lowest",
+        "largest est."
+    );
     for ratio in RATIOS {
         for inner in Boundary::ALL {
             for outer in Boundary::ALL {
-                let p = plate(ratio, inner, outer, (0..=K_MAX).collect(), (0..=L_MAX).collect());
+                let p = plate(
+                    ratio,
+                    inner,
+                    outer,
+                    (0..=K_MAX).collect(),
+                    (0..=L_MAX).collect(),
+                );
                 let model = PlateModel::new(&p).unwrap();
-                let annulus = Annulus::new(p.inner_radius, p.outer_radius, p.poisson_ratio, edge(inner), edge(outer));
+                let annulus = Annulus::new(
+                    p.inner_radius,
+                    p.outer_radius,
+                    p.poisson_ratio,
+                    edge(inner),
+                    edge(outer),
+                );
                 let (mut worst, mut at, mut lowest) = (0.0f64, (0, 0), f64::INFINITY);
                 for k in SAMPLED_K {
-                    for (l, e) in errors_of_k(&model, &annulus, material, k).into_iter().enumerate() {
+                    for (l, e) in errors_of_k(&model, &annulus, material, k)
+                        .into_iter()
+                        .enumerate()
+                    {
                         let Some(e) = e else { continue };
                         lowest = lowest.min(e);
                         if e.abs() > worst {
@@ -98,13 +143,20 @@ fn auto_meets_1e_5_for_all_edge_pairs_and_ratios_up_to_k_60_and_l_10() {
                             at = (k, l);
                         }
                         if !(e.abs() <= REQUIRED) {
-                            problems.push(format!("{}–{} {ratio}: ⟨{k},{l}⟩ off by {e:.2e}", inner.name(), outer.name()));
+                            problems.push(format!(
+                                "{}–{} {ratio}: ⟨{k},{l}⟩ off by {e:.2e}",
+                                inner.name(),
+                                outer.name()
+                            ));
                         }
                     }
                 }
                 let res = model.radial_resolution();
                 let counts: Vec<usize> = res.iter().map(|r| r.splines).collect();
-                let est = res.iter().filter_map(|r| r.estimated_error).fold(0.0, f64::max);
+                let est = res
+                    .iter()
+                    .filter_map(|r| r.estimated_error)
+                    .fold(0.0, f64::max);
                 println!(
                     "{:<30} {:>5}–{:<6} {:>10.2e} {:>13} {:>11.1e} {:>14.2e}",
                     format!("{}–{} {ratio}", inner.name(), outer.name()),
@@ -116,13 +168,14 @@ fn auto_meets_1e_5_for_all_edge_pairs_and_ratios_up_to_k_60_and_l_10() {
                     est
                 );
                 assert_eq!(res.len(), (K_MAX + 1) as usize);
-                assert!(res.iter().all(|r| r.estimated_error.is_some_and(|e| e <= p.frequency_tolerance)));
+                assert!(res.iter().all(|r| r
+                    .estimated_error
+                    .is_some_and(|e| e <= p.frequency_tolerance)));
             }
         }
     }
     assert!(problems.is_empty(), "{problems:#?}");
 }
-
 
 /// The Richardson estimate the search stops on, against the exact error of
 /// the same model: per k, the largest relative error over the requested l.
@@ -131,17 +184,36 @@ fn auto_meets_1e_5_for_all_edge_pairs_and_ratios_up_to_k_60_and_l_10() {
 #[test]
 fn the_error_estimate_tracks_the_exact_error() {
     let material = Material::steel(THICKNESS);
-    println!("{:<28} {:>9} {:>4} {:>8} {:>12} {:>12} {:>8}", "case", "tolerance", "k", "splines", "estimate", "exact", "ratio");
+    println!(
+        "{:<28} {:>9} {:>4} {:>8} {:>12} {:>12} {:>8}",
+        "case", "tolerance", "k", "splines", "estimate", "exact", "ratio"
+    );
     let mut ratios = Vec::new();
-    for (ratio, inner, outer) in [(0.5, Boundary::Clamped, Boundary::Free), (0.1, Boundary::Free, Boundary::Free), (0.9, Boundary::Supported, Boundary::Clamped)] {
-        for tolerance in [1e-4, 1e-5, 1e-6, 1e-7].into_iter().filter(|&t| t >= 1e-6 || ratio == 0.5) {
+    for (ratio, inner, outer) in [
+        (0.5, Boundary::Clamped, Boundary::Free),
+        (0.1, Boundary::Free, Boundary::Free),
+        (0.9, Boundary::Supported, Boundary::Clamped),
+    ] {
+        for tolerance in [1e-4, 1e-5, 1e-6, 1e-7]
+            .into_iter()
+            .filter(|&t| t >= 1e-6 || ratio == 0.5)
+        {
             let ks = vec![0, 2, 15, 60];
             let mut p = plate(ratio, inner, outer, ks.clone(), (0..=L_MAX).collect());
             p.frequency_tolerance = tolerance;
             let model = PlateModel::new(&p).unwrap();
-            let annulus = Annulus::new(p.inner_radius, p.outer_radius, p.poisson_ratio, edge(inner), edge(outer));
+            let annulus = Annulus::new(
+                p.inner_radius,
+                p.outer_radius,
+                p.poisson_ratio,
+                edge(inner),
+                edge(outer),
+            );
             for r in model.radial_resolution() {
-                let exact = errors_of_k(&model, &annulus, material, r.k).into_iter().flatten().fold(0.0f64, |m, e| m.max(e.abs()));
+                let exact = errors_of_k(&model, &annulus, material, r.k)
+                    .into_iter()
+                    .flatten()
+                    .fold(0.0f64, |m, e| m.max(e.abs()));
                 let estimate = r.estimated_error.unwrap();
                 println!(
                     "{:<28} {:>9.0e} {:>4} {:>8} {:>12.3e} {:>12.3e} {:>8.2}",
@@ -157,14 +229,27 @@ fn the_error_estimate_tracks_the_exact_error() {
                 // Above the round-off floor (~1e-8 at these counts) the estimate is the error.
                 if exact > 1e-8 {
                     ratios.push(exact / estimate);
-                    assert!((0.5..=2.0).contains(&(exact / estimate)), "k = {}: exact {exact:e}, estimate {estimate:e}", r.k);
+                    assert!(
+                        (0.5..=2.0).contains(&(exact / estimate)),
+                        "k = {}: exact {exact:e}, estimate {estimate:e}",
+                        r.k
+                    );
                 }
-                assert!(exact <= 2.0 * tolerance, "k = {}: exact {exact:e} above twice the tolerance {tolerance:e}", r.k);
+                assert!(
+                    exact <= 2.0 * tolerance,
+                    "k = {}: exact {exact:e} above twice the tolerance {tolerance:e}",
+                    r.k
+                );
             }
         }
     }
-    let (lo, hi) = ratios.iter().fold((f64::INFINITY, 0.0f64), |(a, b), &r| (a.min(r), b.max(r)));
-    println!("exact / estimate over {} cases: {lo:.3} … {hi:.3}", ratios.len());
+    let (lo, hi) = ratios
+        .iter()
+        .fold((f64::INFINITY, 0.0f64), |(a, b), &r| (a.min(r), b.max(r)));
+    println!(
+        "exact / estimate over {} cases: {lo:.3} … {hi:.3}",
+        ratios.len()
+    );
     assert!(ratios.len() >= 30);
 }
 
@@ -182,7 +267,11 @@ fn an_integer_fixes_the_count_for_every_k() {
     }
     // auto gives every k its own basis, and the estimate it stopped on.
     let auto = PlateModel::new(&PlateConfig::lathe_disc()).unwrap();
-    for (r, s) in auto.radial_resolution().iter().zip(auto.radial_shapes().chunks(2)) {
+    for (r, s) in auto
+        .radial_resolution()
+        .iter()
+        .zip(auto.radial_shapes().chunks(2))
+    {
         assert_eq!(s[0].k, r.k);
         assert_eq!(s[0].basis().len(), r.splines);
         assert!(r.estimated_error.unwrap() <= 1e-6);
@@ -196,28 +285,82 @@ fn a_tolerance_out_of_reach_is_an_error_naming_the_key() {
     p.nodal_diameters = vec![0];
     p.frequency_tolerance = 1e-9;
     let err = PlateModel::new(&p).unwrap_err();
-    assert!(matches!(err, ModelError::FrequencyToleranceNotReached { k: 0, splines: 400, .. }), "{err:?}");
+    assert!(
+        matches!(
+            err,
+            ModelError::FrequencyToleranceNotReached {
+                k: 0,
+                splines: 400,
+                ..
+            }
+        ),
+        "{err:?}"
+    );
     let text = err.to_string();
-    assert!(text.contains("plate.frequency_tolerance") && text.contains("400"), "{text}");
+    assert!(
+        text.contains("plate.frequency_tolerance") && text.contains("400"),
+        "{text}"
+    );
     println!("{text}");
 }
 
 #[test]
 fn the_parameters_read_auto_an_integer_or_refuse_naming_the_key() {
     use annular_plate::config::{Config, Params};
-    let read = |body: &str| Config::from_params(&Params::from_yaml_str(&format!("/**:\n  ros__parameters:\n    plate:\n{body}"), "annular_plate").unwrap());
-    assert_eq!(read("      thickness: 0.01\n").unwrap().plate.radial_splines, RadialSplines::Auto);
-    assert_eq!(read("      radial_splines: auto\n").unwrap().plate.radial_splines, RadialSplines::Auto);
-    assert_eq!(read("      radial_splines: 48\n").unwrap().plate.radial_splines, RadialSplines::Fixed(48));
-    assert_eq!(read("      frequency_tolerance: 1.0e-5\n").unwrap().plate.frequency_tolerance, 1e-5);
+    let read = |body: &str| {
+        Config::from_params(
+            &Params::from_yaml_str(
+                &format!("/**:\n  ros__parameters:\n    plate:\n{body}"),
+                "annular_plate",
+            )
+            .unwrap(),
+        )
+    };
+    assert_eq!(
+        read("      thickness: 0.01\n")
+            .unwrap()
+            .plate
+            .radial_splines,
+        RadialSplines::Auto
+    );
+    assert_eq!(
+        read("      radial_splines: auto\n")
+            .unwrap()
+            .plate
+            .radial_splines,
+        RadialSplines::Auto
+    );
+    assert_eq!(
+        read("      radial_splines: 48\n")
+            .unwrap()
+            .plate
+            .radial_splines,
+        RadialSplines::Fixed(48)
+    );
+    assert_eq!(
+        read("      frequency_tolerance: 1.0e-5\n")
+            .unwrap()
+            .plate
+            .frequency_tolerance,
+        1e-5
+    );
     for (body, key) in [
         ("      radial_splines: many\n", "plate.radial_splines"),
         ("      radial_splines: 4.5\n", "plate.radial_splines"),
         ("      radial_splines: 401\n", "plate.radial_splines"),
         ("      radial_splines: 3\n", "plate.radial_splines"),
-        ("      frequency_tolerance: 1.0e-12\n", "plate.frequency_tolerance"),
-        ("      frequency_tolerance: 0.5\n", "plate.frequency_tolerance"),
-        ("      frequency_tolerance: -1.0\n", "plate.frequency_tolerance"),
+        (
+            "      frequency_tolerance: 1.0e-12\n",
+            "plate.frequency_tolerance",
+        ),
+        (
+            "      frequency_tolerance: 0.5\n",
+            "plate.frequency_tolerance",
+        ),
+        (
+            "      frequency_tolerance: -1.0\n",
+            "plate.frequency_tolerance",
+        ),
     ] {
         let e = read(body).unwrap_err().to_string();
         assert!(e.contains(key), "{body}: {e}");
@@ -230,13 +373,26 @@ fn modes_json_reports_the_count_used_per_k() {
     std::fs::create_dir_all(&dir).unwrap();
     let file = dir.join("p.yaml");
     std::fs::write(&file, "/**:\n  ros__parameters:\n    plate:\n      nodal_diameters: [0, 30, 60]\n      nodal_circles: [0, 1, 2, 3]\n").unwrap();
-    let out = std::process::Command::new(env!("CARGO_BIN_EXE_annular_plate")).args(["modes", file.to_str().unwrap(), "--json"]).output().unwrap();
-    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_annular_plate"))
+        .args(["modes", file.to_str().unwrap(), "--json"])
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
     let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
     assert_eq!(v["radial_splines"], "auto");
     assert_eq!(v["frequency_tolerance"], 1e-6);
     let per_k = v["radial_splines_per_k"].as_array().unwrap();
-    assert_eq!(per_k.iter().map(|r| r["k"].as_u64().unwrap()).collect::<Vec<_>>(), vec![0, 30, 60]);
+    assert_eq!(
+        per_k
+            .iter()
+            .map(|r| r["k"].as_u64().unwrap())
+            .collect::<Vec<_>>(),
+        vec![0, 30, 60]
+    );
     let mut p = PlateConfig::lathe_disc();
     p.nodal_diameters = vec![0, 30, 60];
     p.nodal_circles = vec![0, 1, 2, 3];
@@ -246,8 +402,17 @@ fn modes_json_reports_the_count_used_per_k() {
         assert!(j["estimated_relative_error"].as_f64().unwrap() <= 1e-6);
     }
     // The text table says auto and the range of counts.
-    let out = std::process::Command::new(env!("CARGO_BIN_EXE_annular_plate")).args(["modes", file.to_str().unwrap()]).output().unwrap();
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_annular_plate"))
+        .args(["modes", file.to_str().unwrap()])
+        .output()
+        .unwrap();
     let text = String::from_utf8_lossy(&out.stdout);
-    assert!(text.lines().next().unwrap().contains("radial B-splines auto ("), "{text}");
+    assert!(
+        text.lines()
+            .next()
+            .unwrap()
+            .contains("radial B-splines auto ("),
+        "{text}"
+    );
     std::fs::remove_dir_all(&dir).ok();
 }

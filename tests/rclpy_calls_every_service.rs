@@ -29,8 +29,19 @@ const PAUSED: u64 = 2;
 fn the_nodes_own_and_the_simulation_interfaces_services_answer_rclpy_as_documented() {
     let ns = Netns::new();
     let node = start_node(&ns, 171, &[]);
-    let out = rclpy_peer(&ns, &node, "services", "/annular_plate", json!({"timeout": 20.0}));
-    let latencies: Vec<f64> = out["_latency"].as_object().unwrap().values().map(|v| v.as_f64().unwrap()).collect();
+    let out = rclpy_peer(
+        &ns,
+        &node,
+        "services",
+        "/annular_plate",
+        json!({"timeout": 20.0}),
+    );
+    let latencies: Vec<f64> = out["_latency"]
+        .as_object()
+        .unwrap()
+        .values()
+        .map(|v| v.as_f64().unwrap())
+        .collect();
     if let Some((n, min, p50, p90, _, max)) = quantiles(&latencies) {
         println!(
             "{n} calls, each on a fresh client: first reply min {:.1} ms, p50 {:.1} ms, p90 {:.1} ms, max {:.1} ms",
@@ -40,17 +51,44 @@ fn the_nodes_own_and_the_simulation_interfaces_services_answer_rclpy_as_document
             max * 1e3
         );
     }
-    let code = |k: &str| out[k]["result"].as_u64().unwrap_or_else(|| panic!("{k}: {}", out[k]));
+    let code = |k: &str| {
+        out[k]["result"]
+            .as_u64()
+            .unwrap_or_else(|| panic!("{k}: {}", out[k]))
+    };
     // Running.
-    assert_eq!((out["get_state_running"]["state"].as_u64(), code("get_state_running")), (Some(PLAYING), OK));
-    assert_eq!(out["step_running"]["success"], false, "~/step is refused while running: {}", out["step_running"]);
-    assert_eq!(code("step_simulation_running"), OPERATION_FAILED, "as the standard says");
+    assert_eq!(
+        (
+            out["get_state_running"]["state"].as_u64(),
+            code("get_state_running")
+        ),
+        (Some(PLAYING), OK)
+    );
+    assert_eq!(
+        out["step_running"]["success"], false,
+        "~/step is refused while running: {}",
+        out["step_running"]
+    );
+    assert_eq!(
+        code("step_simulation_running"),
+        OPERATION_FAILED,
+        "as the standard says"
+    );
     // Paused and stepped: 10 by ~/step, 15 by ~/step_simulation.
     assert_eq!(out["pause"]["success"], true);
-    assert_eq!((out["get_state_paused"]["state"].as_u64(), code("get_state_paused")), (Some(PAUSED), OK));
+    assert_eq!(
+        (
+            out["get_state_paused"]["state"].as_u64(),
+            code("get_state_paused")
+        ),
+        (Some(PAUSED), OK)
+    );
     assert_eq!(out["step"]["success"], true);
     assert_eq!(code("step_simulation"), OK, "{}", out["step_simulation"]);
-    let (s10, s25) = (out["step"]["step"].as_u64().unwrap(), out["step_after"]["step"].as_u64().unwrap());
+    let (s10, s25) = (
+        out["step"]["step"].as_u64().unwrap(),
+        out["step_after"]["step"].as_u64().unwrap(),
+    );
     assert_eq!(s25, s10 + 15, "step_simulation steps: {out}");
     assert!((out["step_after"]["sim_time"].as_f64().unwrap() - s25 as f64 * 1e-3).abs() < 1e-9);
     assert_eq!(code("set_paused_again"), ALREADY_IN_TARGET_STATE);
@@ -66,7 +104,14 @@ fn the_nodes_own_and_the_simulation_interfaces_services_answer_rclpy_as_document
     assert_eq!(out["get_state_playing"]["state"], PLAYING);
     assert_eq!(code("stop"), OK);
     assert_eq!(out["get_state_stopped"]["state"], PAUSED);
-    assert!(out["get_state_stopped"]["message"].as_str().unwrap().starts_with("step 0,"), "{}", out["get_state_stopped"]);
+    assert!(
+        out["get_state_stopped"]["message"]
+            .as_str()
+            .unwrap()
+            .starts_with("step 0,"),
+        "{}",
+        out["get_state_stopped"]
+    );
     assert_eq!(code("quit"), FEATURE_UNSUPPORTED);
     assert_eq!(out["resume"]["success"], true);
 }

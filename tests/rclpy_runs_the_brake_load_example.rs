@@ -34,10 +34,17 @@ const PADS: &str = "/annular_plate/pad_states";
 
 /// The number after `key` in the summary line.
 fn number_after(line: &str, key: &str) -> (f64, usize) {
-    let rest = &line[line.find(key).unwrap_or_else(|| panic!("no `{key}` in `{line}`")) + key.len()..];
+    let rest = &line[line
+        .find(key)
+        .unwrap_or_else(|| panic!("no `{key}` in `{line}`"))
+        + key.len()..];
     let text = rest.split_whitespace().next().unwrap();
     let decimals = text.split('.').nth(1).map_or(0, |d| d.len());
-    (text.parse().unwrap_or_else(|e| panic!("`{text}` after `{key}`: {e}")), decimals)
+    (
+        text.parse()
+            .unwrap_or_else(|e| panic!("`{text}` after `{key}`: {e}")),
+        decimals,
+    )
 }
 
 fn round_to(x: f64, decimals: usize) -> String {
@@ -51,14 +58,39 @@ fn the_brake_load_example_runs_unmodified_and_its_summary_matches_the_nodes_bag(
     let mut node = start_node_with(&ns, 181, &[OsStr::new("--record"), bag.as_os_str()], &[]);
     let script = repo().join("launch-scripts/brake_load_example.py");
     let run = run_python(&ns, 181, &[script.as_os_str()], Duration::from_secs(180));
-    let context = format!("--- example stdout\n{}\n--- example stderr\n{}\n--- node stderr\n{}", run.stdout, run.stderr, node.stderr());
-    assert!(run.success(), "the example failed or timed out ({:?}, {:.1} s):\n{context}", run.status, run.seconds);
+    let context = format!(
+        "--- example stdout\n{}\n--- example stderr\n{}\n--- node stderr\n{}",
+        run.stdout,
+        run.stderr,
+        node.stderr()
+    );
+    assert!(
+        run.success(),
+        "the example failed or timed out ({:?}, {:.1} s):\n{context}",
+        run.status,
+        run.seconds
+    );
     node.signal("INT");
-    let status = node.wait_exit(Duration::from_secs(20)).unwrap_or_else(|| panic!("the node did not stop:\n{context}"));
+    let status = node
+        .wait_exit(Duration::from_secs(20))
+        .unwrap_or_else(|| panic!("the node did not stop:\n{context}"));
     assert!(status.success(), "node exit {status}:\n{context}");
-    println!("the example ran {:.1} s; its last lines:\n{}", run.seconds, run.stdout.lines().rev().take(3).collect::<Vec<_>>().join("\n"));
+    println!(
+        "the example ran {:.1} s; its last lines:\n{}",
+        run.seconds,
+        run.stdout
+            .lines()
+            .rev()
+            .take(3)
+            .collect::<Vec<_>>()
+            .join("\n")
+    );
 
-    let summary = run.stdout.lines().find(|l| l.starts_with("minimum speed ")).unwrap_or_else(|| panic!("no summary line:\n{context}"));
+    let summary = run
+        .stdout
+        .lines()
+        .find(|l| l.starts_with("minimum speed "))
+        .unwrap_or_else(|| panic!("no summary line:\n{context}"));
     let (min_speed, speed_digits) = number_after(summary, "minimum speed ");
     let (max_brake, brake_digits) = number_after(summary, "largest brake torque ");
 
@@ -71,17 +103,46 @@ fn the_brake_load_example_runs_unmodified_and_its_summary_matches_the_nodes_bag(
         .stdin(Stdio::null())
         .output()
         .expect("cannot run tests/peer/bag_read.py");
-    assert!(out.status.success(), "bag_read.py: {}", String::from_utf8_lossy(&out.stderr));
+    assert!(
+        out.status.success(),
+        "bag_read.py: {}",
+        String::from_utf8_lossy(&out.stderr)
+    );
     let d: Value = serde_json::from_slice(&out.stdout).expect("bag_read.py prints JSON");
-    let joints = d["topics"]["/joint_states"]["messages"].as_array().expect("/joint_states in the bag");
-    let pads = d["topics"][PADS]["messages"].as_array().expect("~/pad_states in the bag");
-    let speeds: Vec<f64> = joints.iter().map(|m| m["velocity"][0].as_f64().unwrap()).collect();
-    let brakes: Vec<f64> = pads.iter().map(|m| -m["friction_torque"].as_array().unwrap().iter().map(|x| x.as_f64().unwrap()).sum::<f64>()).collect();
+    let joints = d["topics"]["/joint_states"]["messages"]
+        .as_array()
+        .expect("/joint_states in the bag");
+    let pads = d["topics"][PADS]["messages"]
+        .as_array()
+        .expect("~/pad_states in the bag");
+    let speeds: Vec<f64> = joints
+        .iter()
+        .map(|m| m["velocity"][0].as_f64().unwrap())
+        .collect();
+    let brakes: Vec<f64> = pads
+        .iter()
+        .map(|m| {
+            -m["friction_torque"]
+                .as_array()
+                .unwrap()
+                .iter()
+                .map(|x| x.as_f64().unwrap())
+                .sum::<f64>()
+        })
+        .collect();
     let bag_min = speeds.iter().cloned().fold(f64::INFINITY, f64::min);
     let bag_max_brake = brakes.iter().cloned().fold(f64::NEG_INFINITY, f64::max);
 
-    assert_eq!(round_to(bag_max_brake, brake_digits), round_to(max_brake, brake_digits), "largest brake torque: printed vs the bag's");
-    assert_eq!(round_to(bag_min, speed_digits), round_to(min_speed, speed_digits), "minimum speed: printed vs the bag's");
+    assert_eq!(
+        round_to(bag_max_brake, brake_digits),
+        round_to(max_brake, brake_digits),
+        "largest brake torque: printed vs the bag's"
+    );
+    assert_eq!(
+        round_to(bag_min, speed_digits),
+        round_to(min_speed, speed_digits),
+        "minimum speed: printed vs the bag's"
+    );
 
     // The closed form on the applied clamp forces, over simulated time.
     let (mu, r, t_max, j) = (0.4, 0.1198, 1500.0, 0.117);
@@ -105,7 +166,16 @@ fn the_brake_load_example_runs_unmodified_and_its_summary_matches_the_nodes_bag(
         pads.len()
     );
     assert_eq!(start, 25.0, "the bench starts at 25 rad/s");
-    assert!(closed > 1.0, "the default profile brakes beyond the drive's torque: closed form {closed}");
-    assert!((bag_dip / closed - 1.0).abs() <= 0.02, "the bag's dip {bag_dip} vs the closed form {closed}");
-    assert!((printed_dip / closed - 1.0).abs() <= 0.02, "the printed dip {printed_dip} vs the closed form {closed}");
+    assert!(
+        closed > 1.0,
+        "the default profile brakes beyond the drive's torque: closed form {closed}"
+    );
+    assert!(
+        (bag_dip / closed - 1.0).abs() <= 0.02,
+        "the bag's dip {bag_dip} vs the closed form {closed}"
+    );
+    assert!(
+        (printed_dip / closed - 1.0).abs() <= 0.02,
+        "the printed dip {printed_dip} vs the closed form {closed}"
+    );
 }

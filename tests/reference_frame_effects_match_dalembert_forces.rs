@@ -13,7 +13,12 @@ use support::scenes::*;
 
 /// ∫∫ f(r, θ) r dr dθ (Gauss–Legendre × trapezoid).
 fn integrate(c: &Config, f: impl Fn(f64, f64) -> f64) -> f64 {
-    let gl = [(-0.861_136_311_594_052_6, 0.347_854_845_137_453_9), (-0.339_981_043_584_856_3, 0.652_145_154_862_546_1), (0.339_981_043_584_856_3, 0.652_145_154_862_546_1), (0.861_136_311_594_052_6, 0.347_854_845_137_453_9)];
+    let gl = [
+        (-0.861_136_311_594_052_6, 0.347_854_845_137_453_9),
+        (-0.339_981_043_584_856_3, 0.652_145_154_862_546_1),
+        (0.339_981_043_584_856_3, 0.652_145_154_862_546_1),
+        (0.861_136_311_594_052_6, 0.347_854_845_137_453_9),
+    ];
     let (a, b) = (c.plate.inner_radius, c.plate.outer_radius);
     let (cells, n_phi) = (40, 48);
     let mut sum = 0.0;
@@ -43,7 +48,12 @@ fn settled(c: Config) -> Simulation {
 fn a_frame_turning_about_a_skew_axis_loads_the_resting_plate_by_its_dalembert_forces() {
     let w = Vector3::new(300.0, -200.0, 150.0);
     let g = Vector3::new(0.0, 0.0, -9.81);
-    let mut c = integrated(lathe(), IntegratorKind::Exponential, Coordinates::Lagrangian, 1000.0);
+    let mut c = integrated(
+        lathe(),
+        IntegratorKind::Exponential,
+        Coordinates::Lagrangian,
+        1000.0,
+    );
     c.plate.damping = vec![0.5];
     c.plate.nodal_diameters = vec![0, 1, 2];
     c.reference.angular_velocity = [w.x, w.y, w.z];
@@ -63,20 +73,31 @@ fn a_frame_turning_about_a_skew_axis_loads_the_resting_plate_by_its_dalembert_fo
         let k_eff = m.modal_mass * (m.omega.powi(2) - (w.x * w.x + w.y * w.y));
         let expected = f / k_eff;
         let got = sim.q_lagrange()[i];
-        println!("mode {i} ⟨{}, {}⟩ {:?}: q = {got:e}, d'Alembert {expected:e}", m.k, m.l, m.shape);
+        println!(
+            "mode {i} ⟨{}, {}⟩ {:?}: q = {got:e}, d'Alembert {expected:e}",
+            m.k, m.l, m.shape
+        );
         assert!((got - expected).abs() < 1e-9 * scale, "mode {i}");
         if m.k >= 2 {
             assert!(got.abs() < 1e-25);
         }
     }
-    assert!(sim.q_lagrange().iter().filter(|q| q.abs() > 1e-12).count() >= 3, "the test must load k = 0 and both k = 1 modes");
+    assert!(
+        sim.q_lagrange().iter().filter(|q| q.abs() > 1e-12).count() >= 3,
+        "the test must load k = 0 and both k = 1 modes"
+    );
 }
 
 #[test]
 fn a_spinning_plate_in_a_precessing_frame_carries_the_coriolis_load_in_ale_coordinates() {
     let omega = 120.0; // joint speed
     let w = Vector3::new(40.0, 25.0, 10.0);
-    let mut c = integrated(lathe(), IntegratorKind::Exponential, Coordinates::Ale, 1000.0);
+    let mut c = integrated(
+        lathe(),
+        IntegratorKind::Exponential,
+        Coordinates::Ale,
+        1000.0,
+    );
     c.plate.damping = vec![0.5];
     c.plate.nodal_diameters = vec![0, 1, 2];
     c.joint.speed = omega;
@@ -101,7 +122,10 @@ fn a_spinning_plate_in_a_precessing_frame_carries_the_coriolis_load_in_ale_coord
         match m.k {
             0 => {
                 let expected = force(i) / (m.modal_mass * (m.omega.powi(2) - soft));
-                assert!((q - expected).abs() < 1e-9 * scale, "k = 0: {q:e} vs {expected:e}");
+                assert!(
+                    (q - expected).abs() < 1e-9 * scale,
+                    "k = 0: {q:e} vs {expected:e}"
+                );
             }
             1 if m.shape == annular_plate::model::AngularShape::Cos => {
                 let j = m.partner.unwrap();
@@ -111,8 +135,14 @@ fn a_spinning_plate_in_a_precessing_frame_carries_the_coriolis_load_in_ale_coord
                 let b = 2.0 * m.damping * m.omega * omega;
                 let det = a * a + b * b;
                 let (qc, qs) = ((a * fc - b * fs) / det, (b * fc + a * fs) / det);
-                println!("k = 1: q̄ = ({q:e}, {:e}), d'Alembert ({qc:e}, {qs:e})", sim.q_ale()[j]);
-                assert!((q - qc).abs() < 1e-9 * qc.hypot(qs) && (sim.q_ale()[j] - qs).abs() < 1e-9 * qc.hypot(qs));
+                println!(
+                    "k = 1: q̄ = ({q:e}, {:e}), d'Alembert ({qc:e}, {qs:e})",
+                    sim.q_ale()[j]
+                );
+                assert!(
+                    (q - qc).abs() < 1e-9 * qc.hypot(qs)
+                        && (sim.q_ale()[j] - qs).abs() < 1e-9 * qc.hypot(qs)
+                );
                 assert!(qc.hypot(qs) > 1e-9, "the Coriolis load must be felt");
             }
             1 => {}

@@ -20,7 +20,12 @@ fn u64_at(b: &[u8], at: usize) -> usize {
 fn section_names(elf: &[u8]) -> Vec<String> {
     assert_eq!(&elf[..4], b"\x7fELF", "not an ELF file");
     assert_eq!((elf[4], elf[5]), (2, 1), "ELF64 little-endian expected");
-    let (shoff, shentsize, shnum, shstrndx) = (u64_at(elf, 0x28), u16_at(elf, 0x3A), u16_at(elf, 0x3C), u16_at(elf, 0x3E));
+    let (shoff, shentsize, shnum, shstrndx) = (
+        u64_at(elf, 0x28),
+        u16_at(elf, 0x3A),
+        u16_at(elf, 0x3C),
+        u16_at(elf, 0x3E),
+    );
     let header = |i: usize| shoff + i * shentsize;
     let strtab = u64_at(elf, header(shstrndx) + 0x18);
     (0..shnum)
@@ -41,8 +46,20 @@ fn the_release_binary_has_no_debug_sections() {
     let bin = Path::new(env!("CARGO_BIN_EXE_annular_plate"));
     let elf = std::fs::read(bin).expect("the binary");
     let names = section_names(&elf);
-    assert!(names.iter().any(|n| n == ".text"), "section table read: {names:?}");
+    assert!(
+        names.iter().any(|n| n == ".text"),
+        "section table read: {names:?}"
+    );
     let debug: Vec<_> = names.iter().filter(|n| n.starts_with(".debug_")).collect();
-    assert!(debug.is_empty(), "debug sections in {}: {debug:?}", bin.display());
-    assert!(elf.len() < 40 << 20, "{} is {} bytes", bin.display(), elf.len());
+    assert!(
+        debug.is_empty(),
+        "debug sections in {}: {debug:?}",
+        bin.display()
+    );
+    assert!(
+        elf.len() < 40 << 20,
+        "{} is {} bytes",
+        bin.display(),
+        elf.len()
+    );
 }

@@ -57,15 +57,29 @@ impl<'de> de::Deserializer<'de> for Tracer<'_> {
 
     fn deserialize_seq<V: Visitor<'de>>(self, v: V) -> Result<V::Value, Error> {
         let mut elem = None;
-        let value = v.visit_seq(OneElement { done: false, out: &mut elem })?;
+        let value = v.visit_seq(OneElement {
+            done: false,
+            out: &mut elem,
+        })?;
         *self.out = Some(Shape::Seq(Box::new(elem.expect("sequence element traced"))));
         Ok(value)
     }
 
-    fn deserialize_struct<V: Visitor<'de>>(self, name: &'static str, fields: &'static [&'static str], v: V) -> Result<V::Value, Error> {
+    fn deserialize_struct<V: Visitor<'de>>(
+        self,
+        name: &'static str,
+        fields: &'static [&'static str],
+        v: V,
+    ) -> Result<V::Value, Error> {
         let mut shapes = Vec::new();
-        let value = v.visit_seq(Fields { remaining: fields.len(), shapes: &mut shapes })?;
-        *self.out = Some(Shape::Struct(name, fields.iter().copied().zip(shapes).collect()));
+        let value = v.visit_seq(Fields {
+            remaining: fields.len(),
+            shapes: &mut shapes,
+        })?;
+        *self.out = Some(Shape::Struct(
+            name,
+            fields.iter().copied().zip(shapes).collect(),
+        ));
         Ok(value)
     }
 
@@ -86,7 +100,10 @@ struct OneElement<'a> {
 
 impl<'de> SeqAccess<'de> for OneElement<'_> {
     type Error = Error;
-    fn next_element_seed<T: DeserializeSeed<'de>>(&mut self, seed: T) -> Result<Option<T::Value>, Error> {
+    fn next_element_seed<T: DeserializeSeed<'de>>(
+        &mut self,
+        seed: T,
+    ) -> Result<Option<T::Value>, Error> {
         if self.done {
             return Ok(None);
         }
@@ -102,7 +119,10 @@ struct Fields<'a> {
 
 impl<'de> SeqAccess<'de> for Fields<'_> {
     type Error = Error;
-    fn next_element_seed<T: DeserializeSeed<'de>>(&mut self, seed: T) -> Result<Option<T::Value>, Error> {
+    fn next_element_seed<T: DeserializeSeed<'de>>(
+        &mut self,
+        seed: T,
+    ) -> Result<Option<T::Value>, Error> {
         if self.remaining == 0 {
             return Ok(None);
         }
@@ -193,19 +213,28 @@ fn parse(text: &str) -> Vec<Field> {
         }
         let mut parts = line.split_whitespace();
         let ty = parts.next().unwrap();
-        let name = parts.next().unwrap_or_else(|| panic!("no field name in `{line}`"));
+        let name = parts
+            .next()
+            .unwrap_or_else(|| panic!("no field name in `{line}`"));
         if line.contains('=') {
             continue; // a constant
         }
         let (ty, array) = match ty.strip_suffix("[]") {
             Some(t) => (t, true),
             None => {
-                assert!(!ty.contains('['), "fixed-size or bounded arrays are not used: `{line}`");
+                assert!(
+                    !ty.contains('['),
+                    "fixed-size or bounded arrays are not used: `{line}`"
+                );
                 (ty, false)
             }
         };
         assert!(!ty.contains("<="), "bounded strings are not used: `{line}`");
-        out.push(Field { ty: ty.to_string(), array, name: name.to_string() });
+        out.push(Field {
+            ty: ty.to_string(),
+            array,
+            name: name.to_string(),
+        });
     }
     out
 }
@@ -224,7 +253,10 @@ impl Definitions {
             let path = entry.unwrap().path();
             if path.extension().is_some_and(|e| e == "msg") {
                 let stem = path.file_stem().unwrap().to_string_lossy().to_string();
-                by_name.insert(format!("annular_plate/{stem}"), parse(&std::fs::read_to_string(&path).unwrap()));
+                by_name.insert(
+                    format!("annular_plate/{stem}"),
+                    parse(&std::fs::read_to_string(&path).unwrap()),
+                );
             }
         }
         for entry in std::fs::read_dir(repo().join("srv")).expect("srv/") {
@@ -232,7 +264,9 @@ impl Definitions {
             if path.extension().is_some_and(|e| e == "srv") {
                 let stem = path.file_stem().unwrap().to_string_lossy().to_string();
                 let text = std::fs::read_to_string(&path).unwrap();
-                let (req, resp) = text.split_once("\n---").unwrap_or_else(|| panic!("{} has no ---", path.display()));
+                let (req, resp) = text
+                    .split_once("\n---")
+                    .unwrap_or_else(|| panic!("{} has no ---", path.display()));
                 by_name.insert(format!("annular_plate/{stem}_Request"), parse(req));
                 by_name.insert(format!("annular_plate/{stem}_Response"), parse(resp));
             }
@@ -250,17 +284,29 @@ impl Definitions {
     }
 
     fn check(&self, full: &str, shape: &Shape, path: &str) {
-        let fields = self.by_name.get(full).unwrap_or_else(|| panic!("{path}: no definition of {full}"));
-        let Shape::Struct(struct_name, members) = shape else { panic!("{path}: {full} is not a struct in Rust") };
+        let fields = self
+            .by_name
+            .get(full)
+            .unwrap_or_else(|| panic!("{path}: no definition of {full}"));
+        let Shape::Struct(struct_name, members) = shape else {
+            panic!("{path}: {full} is not a struct in Rust")
+        };
         let base = full.rsplit('/').next().unwrap();
         assert_eq!(
-            struct_name.trim_end_matches("Request").trim_end_matches("Response"),
-            base.trim_end_matches("_Request").trim_end_matches("_Response"),
+            struct_name
+                .trim_end_matches("Request")
+                .trim_end_matches("Response"),
+            base.trim_end_matches("_Request")
+                .trim_end_matches("_Response"),
             "{path}: Rust struct name"
         );
         if fields.is_empty() {
             // ROS 2's IDL gives an empty structure one member.
-            assert_eq!(members, &vec![("structure_needs_at_least_one_member", Shape::Prim("uint8"))], "{path}: empty {full}");
+            assert_eq!(
+                members,
+                &vec![("structure_needs_at_least_one_member", Shape::Prim("uint8"))],
+                "{path}: empty {full}"
+            );
             return;
         }
         let names: Vec<&str> = members.iter().map(|(n, _)| *n).collect();
@@ -272,7 +318,10 @@ impl Definitions {
             let inner = if field.array {
                 match shape {
                     Shape::Seq(e) => e.as_ref(),
-                    other => panic!("{here}: {}[] is an array in the .msg, Rust has {other:?}", field.ty),
+                    other => panic!(
+                        "{here}: {}[] is an array in the .msg, Rust has {other:?}",
+                        field.ty
+                    ),
                 }
             } else {
                 shape
@@ -280,25 +329,30 @@ impl Definitions {
             let prim = match field.ty.as_str() {
                 "byte" => Some("uint8"),
                 "char" => Some("uint8"),
-                t @ ("bool" | "int8" | "int16" | "int32" | "int64" | "uint8" | "uint16" | "uint32" | "uint64" | "float32"
-                | "float64" | "string") => Some(t),
+                t @ ("bool" | "int8" | "int16" | "int32" | "int64" | "uint8" | "uint16"
+                | "uint32" | "uint64" | "float32" | "float64" | "string") => Some(t),
                 _ => None,
             };
             match prim {
-                Some(p) => assert_eq!(inner, &Shape::Prim(match p {
-                    "bool" => "bool",
-                    "int8" => "int8",
-                    "int16" => "int16",
-                    "int32" => "int32",
-                    "int64" => "int64",
-                    "uint8" => "uint8",
-                    "uint16" => "uint16",
-                    "uint32" => "uint32",
-                    "uint64" => "uint64",
-                    "float32" => "float32",
-                    "float64" => "float64",
-                    _ => "string",
-                }), "{here}: type {}", field.ty),
+                Some(p) => assert_eq!(
+                    inner,
+                    &Shape::Prim(match p {
+                        "bool" => "bool",
+                        "int8" => "int8",
+                        "int16" => "int16",
+                        "int32" => "int32",
+                        "int64" => "int64",
+                        "uint8" => "uint8",
+                        "uint16" => "uint16",
+                        "uint32" => "uint32",
+                        "uint64" => "uint64",
+                        "float32" => "float32",
+                        "float64" => "float64",
+                        _ => "string",
+                    }),
+                    "{here}: type {}",
+                    field.ty
+                ),
                 None => self.check(&self.resolve(pkg, &field.ty), inner, &here),
             }
         }
@@ -328,15 +382,28 @@ fn own_messages_match_msg_files() {
         check_msg::<m::ToolState>(&defs),
     ];
     // Every .msg of the package has its Rust struct.
-    let own: Vec<&String> = defs.by_name.keys().filter(|k| k.strip_prefix("annular_plate/").is_some_and(|t| !t.contains('_'))).collect();
+    let own: Vec<&String> = defs
+        .by_name
+        .keys()
+        .filter(|k| {
+            k.strip_prefix("annular_plate/")
+                .is_some_and(|t| !t.contains('_'))
+        })
+        .collect();
     let mut checked_sorted: Vec<&String> = checked.iter().collect();
     checked_sorted.sort();
-    assert_eq!(own, checked_sorted, "a msg/*.msg without a Rust struct (or the other way round)");
+    assert_eq!(
+        own, checked_sorted,
+        "a msg/*.msg without a Rust struct (or the other way round)"
+    );
     // ... and colcon generates every one of them for rclpy / rclcpp users.
     let cmake = std::fs::read_to_string(repo().join("CMakeLists.txt")).expect("CMakeLists.txt");
     for name in &own {
         let file = format!("\"msg/{}.msg\"", name.trim_start_matches("annular_plate/"));
-        assert!(cmake.contains(&file), "CMakeLists.txt's rosidl_generate_interfaces does not list {file}");
+        assert!(
+            cmake.contains(&file),
+            "CMakeLists.txt's rosidl_generate_interfaces does not list {file}"
+        );
     }
 }
 
@@ -376,10 +443,22 @@ fn simulation_interfaces_match_their_ros2_definitions() {
     check::<si::ResetSimulationResponse>(&defs, "simulation_interfaces/ResetSimulation_Response");
     check::<si::StepSimulationRequest>(&defs, "simulation_interfaces/StepSimulation_Request");
     check::<si::StepSimulationResponse>(&defs, "simulation_interfaces/StepSimulation_Response");
-    check::<si::GetSimulationStateRequest>(&defs, "simulation_interfaces/GetSimulationState_Request");
-    check::<si::GetSimulationStateResponse>(&defs, "simulation_interfaces/GetSimulationState_Response");
-    check::<si::SetSimulationStateRequest>(&defs, "simulation_interfaces/SetSimulationState_Request");
-    check::<si::SetSimulationStateResponse>(&defs, "simulation_interfaces/SetSimulationState_Response");
+    check::<si::GetSimulationStateRequest>(
+        &defs,
+        "simulation_interfaces/GetSimulationState_Request",
+    );
+    check::<si::GetSimulationStateResponse>(
+        &defs,
+        "simulation_interfaces/GetSimulationState_Response",
+    );
+    check::<si::SetSimulationStateRequest>(
+        &defs,
+        "simulation_interfaces/SetSimulationState_Request",
+    );
+    check::<si::SetSimulationStateResponse>(
+        &defs,
+        "simulation_interfaces/SetSimulationState_Response",
+    );
 }
 
 #[test]
@@ -405,9 +484,16 @@ fn bag_schemas_describe_the_wire_structs() {
     let key = |f: &Field| (f.ty.clone(), f.array, f.name.clone());
     for t in schemas::known_types() {
         let short = t.replacen("/msg/", "/", 1);
-        let want = defs.by_name.get(&short).unwrap_or_else(|| panic!("{short}: not among the checked definitions"));
+        let want = defs
+            .by_name
+            .get(&short)
+            .unwrap_or_else(|| panic!("{short}: not among the checked definitions"));
         let got = parse(schemas::own_text(&t).unwrap());
-        assert_eq!(got.iter().map(key).collect::<Vec<_>>(), want.iter().map(key).collect::<Vec<_>>(), "{t}");
+        assert_eq!(
+            got.iter().map(key).collect::<Vec<_>>(),
+            want.iter().map(key).collect::<Vec<_>>(),
+            "{t}"
+        );
     }
     let delimiter = format!("\n{}\nMSG: ", "=".repeat(80));
     let from_schema = |full: &str| {
@@ -417,19 +503,31 @@ fn bag_schemas_describe_the_wire_structs() {
         by_name.insert(full.to_string(), parse(blocks.next().unwrap()));
         for b in blocks {
             let (name, body) = b.split_once('\n').unwrap_or((b, ""));
-            assert!(by_name.insert(name.to_string(), parse(body)).is_none(), "{full}: {name} twice");
+            assert!(
+                by_name.insert(name.to_string(), parse(body)).is_none(),
+                "{full}: {name} twice"
+            );
         }
         Definitions { by_name }
     };
     let recorded = [
         ("sensor_msgs/JointState", trace::<m::JointState>()),
         ("tf2_msgs/TFMessage", trace::<m::TFMessage>()),
-        ("annular_plate/ModalAmplitudes", trace::<m::ModalAmplitudes>()),
+        (
+            "annular_plate/ModalAmplitudes",
+            trace::<m::ModalAmplitudes>(),
+        ),
         ("annular_plate/PadStates", trace::<m::PadStates>()),
         ("annular_plate/ToolState", trace::<m::ToolState>()),
         ("rosgraph_msgs/Clock", trace::<m::Clock>()),
-        ("diagnostic_msgs/DiagnosticArray", trace::<m::DiagnosticArray>()),
-        ("visualization_msgs/MarkerArray", trace::<annular_plate::messages::visualization::MarkerArray>()),
+        (
+            "diagnostic_msgs/DiagnosticArray",
+            trace::<m::DiagnosticArray>(),
+        ),
+        (
+            "visualization_msgs/MarkerArray",
+            trace::<annular_plate::messages::visualization::MarkerArray>(),
+        ),
     ];
     for (full, shape) in recorded {
         from_schema(full).check(full, &shape, full);

@@ -33,7 +33,8 @@ fn with_friction(mu: f64) -> Config {
 
 fn threshold() -> f64 {
     let sim = Simulation::new(scene()).unwrap();
-    stability::friction_threshold(sim.scene(), sim.config().joint.speed, 2.0).expect("the scene squeals below μ = 2")
+    stability::friction_threshold(sim.scene(), sim.config().joint.speed, 2.0)
+        .expect("the scene squeals below μ = 2")
 }
 
 /// The ring of n equally spaced contacts (floating caliper) decouples each
@@ -60,20 +61,34 @@ fn ring_closed_form(c: &Config) -> f64 {
     let sim = Simulation::new(c.clone()).unwrap();
     let model = sim.model();
     let pads = c.pads.as_ref().unwrap();
-    let (n, clamp, h) = (pads.contacts.len() as f64, pads.clamp_force[0], c.plate.thickness);
+    let (n, clamp, h) = (
+        pads.contacts.len() as f64,
+        pads.clamp_force[0],
+        c.plate.thickness,
+    );
     let nodes: Vec<usize> = pads.contacts.iter().map(|k| k.node).collect();
     let r = sim.scene().ale_nodes[0].radius;
     let speed = c.joint.speed;
     let mut best = f64::INFINITY;
-    for m in model.modes().iter().filter(|m| m.shape == AngularShape::Cos) {
+    for m in model
+        .modes()
+        .iter()
+        .filter(|m| m.shape == AngularShape::Cos)
+    {
         let [rr, slope, ..] = model.radial_shapes()[m.radial].eval(r);
         let (k, mass) = (m.k as f64, m.modal_mass);
         let series = sim.scene().residual.as_ref().map_or(1.0, |g| {
             let at = |d: usize| sim.scene().ale_nodes[d].angle;
-            let gamma: f64 = nodes.iter().map(|&d| g.between(nodes[0], d, 0.0) * (k * (at(d) - at(nodes[0]))).cos()).sum();
+            let gamma: f64 = nodes
+                .iter()
+                .map(|&d| g.between(nodes[0], d, 0.0) * (k * (at(d) - at(nodes[0]))).cos())
+                .sum();
             1.0 / (1.0 + 2.0 * pads.contact_stiffness * gamma)
         });
-        let (kc, cc) = (series * pads.contact_stiffness, series * pads.contact_damping);
+        let (kc, cc) = (
+            series * pads.contact_stiffness,
+            series * pads.contact_damping,
+        );
         let omega_p2 = m.omega * m.omega + kc * n * rr * rr / mass;
         let d = cc * n * rr * rr;
         // Boundary function: > 0 unstable.
@@ -103,7 +118,11 @@ fn ring_closed_form(c: &Config) -> f64 {
                 lo = mid;
             }
         }
-        println!("⟨{}, 0⟩: f_p = {:.1} Hz, closed-form μ_c = {lo:.9}", m.k, omega_p2.sqrt() / TAU);
+        println!(
+            "⟨{}, 0⟩: f_p = {:.1} Hz, closed-form μ_c = {lo:.9}",
+            m.k,
+            omega_p2.sqrt() / TAU
+        );
         best = best.min(lo);
     }
     best
@@ -115,16 +134,28 @@ fn the_threshold_is_in_the_brake_range_and_matches_the_ring_closed_form_with_fac
     let closed = ring_closed_form(&scene());
     println!("threshold μ_c: eigenvalues {eig:.9}, closed form {closed:.9}");
     assert!((eig - closed).abs() < 1e-6 * closed, "{eig} vs {closed}");
-    assert!((0.3..=0.5).contains(&eig), "squeal where brake engineers see it: μ_c = {eig}");
+    assert!(
+        (0.3..=0.5).contains(&eig),
+        "squeal where brake engineers see it: μ_c = {eig}"
+    );
     // The shipped file: the pads in series with the residual flexibility.
     let shipped = scenes::load("brake_squeal.yaml");
     assert!(shipped.plate.residual_flexibility);
     let sim = Simulation::new(shipped.clone()).unwrap();
-    let eig_series = stability::friction_threshold(sim.scene(), 3.0, 2.0).expect("the shipped scene squeals below μ = 2");
+    let eig_series = stability::friction_threshold(sim.scene(), 3.0, 2.0)
+        .expect("the shipped scene squeals below μ = 2");
     let closed_series = ring_closed_form(&shipped);
-    println!("in series with the residual: eigenvalues {eig_series:.9}, closed form {closed_series:.9}");
-    assert!((eig_series - closed_series).abs() < 1e-6 * closed_series, "{eig_series} vs {closed_series}");
-    assert!((0.3..=0.5).contains(&eig_series) && eig_series > eig, "μ_c = {eig_series}");
+    println!(
+        "in series with the residual: eigenvalues {eig_series:.9}, closed form {closed_series:.9}"
+    );
+    assert!(
+        (eig_series - closed_series).abs() < 1e-6 * closed_series,
+        "{eig_series} vs {closed_series}"
+    );
+    assert!(
+        (0.3..=0.5).contains(&eig_series) && eig_series > eig,
+        "μ_c = {eig_series}"
+    );
     // The paper's mid-plane model with the same data never squeals.
     let mut c = scene();
     c.pads.as_mut().unwrap().contact_surface = annular_plate::config::ContactSurface::MidPlane;
@@ -147,8 +178,15 @@ fn below_the_threshold_a_vibration_decays_and_above_it_grows_at_the_eigenvalue_r
         // 0.1 µm: far below the 100 µm static compression, so the pads stay linear.
         let (rate, slope) = simulated_growth_rate(factor * mu_c, 1e-7, 5000);
         println!("μ = {factor} μ_c: eigenvalue Re λ = {rate:.5} 1/s, simulated {slope:.5} 1/s");
-        assert_eq!(slope > 0.0, factor > 1.0, "decays below, grows above: {slope}");
-        assert!((slope - rate).abs() < 0.02 * rate.abs(), "simulated {slope} vs eigenvalue {rate}");
+        assert_eq!(
+            slope > 0.0,
+            factor > 1.0,
+            "decays below, grows above: {slope}"
+        );
+        assert!(
+            (slope - rate).abs() < 0.02 * rate.abs(),
+            "simulated {slope} vs eigenvalue {rate}"
+        );
     }
 }
 
@@ -171,9 +209,13 @@ fn limit_cycle_of(c: Config, seconds: f64) -> Vec<(f64, f64, f64)> {
         for _ in 0..per {
             sim.step().unwrap();
             amp = sim.q_ale().iter().fold(amp, |a, q| a.max(q.abs()));
-            normal = sim.pad_contact_forces().iter().fold(normal, |n, f| n.min(f.top).min(f.bottom));
+            normal = sim
+                .pad_contact_forces()
+                .iter()
+                .fold(normal, |n, f| n.min(f.top).min(f.bottom));
             for node in &sim.scene().ale_nodes {
-                let g = face_kinematics(node, sim.q_ale(), sim.q_dot_ale(), speed).grad_material_rate;
+                let g =
+                    face_kinematics(node, sim.q_ale(), sim.q_dot_ale(), speed).grad_material_rate;
                 face = face.max(0.5 * h * g[0].hypot(g[1]));
             }
         }
@@ -196,9 +238,18 @@ fn squeal_settles_in_a_limit_cycle_with_every_contact_closed_bounded_by_the_slid
         let min_normal = run.iter().map(|r| r.1).fold(f64::INFINITY, f64::min);
         println!("μ = {mu:.4} ({:.3} μ_c): |q̄| {amp:.4e} m (0.5 s earlier {earlier:.4e}), face vibration speed {:.4} V, least normal force {min_normal:.1} N of {preload:.1} N", mu / mu_c, speed / v);
         assert!(amp > 5.0 * run[0].0, "it squeals: {run:?}");
-        assert!((amp / earlier - 1.0).abs() < 0.01, "settled: {amp} vs {earlier}");
-        assert!(min_normal > 0.05 * preload, "every contact stays closed: {min_normal} N");
-        assert!(speed < v, "the faces never slide backwards: {speed} vs V = {v}");
+        assert!(
+            (amp / earlier - 1.0).abs() < 0.01,
+            "settled: {amp} vs {earlier}"
+        );
+        assert!(
+            min_normal > 0.05 * preload,
+            "every contact stays closed: {min_normal} N"
+        );
+        assert!(
+            speed < v,
+            "the faces never slide backwards: {speed} vs V = {v}"
+        );
         cycles.push((mu, speed));
     }
     // A supercritical Hopf bifurcation: the cubic part of the friction direction
@@ -237,22 +288,43 @@ fn variant(radial: f64, mu: f64, mu_s: Option<f64>, rate: f64) -> Config {
 /// to 0.86 V — every contact closed in both.
 #[test]
 fn the_couple_driven_cycle_stays_near_half_the_sliding_speed_and_only_a_steep_mu_v_reaches_it() {
-    let cases = [(1.0, None, 3.0, 20_000.0, (0.50, 0.60)), (0.8, Some(0.4), 0.0, 40_000.0, (0.80, 1.20))];
+    let cases = [
+        (1.0, None, 3.0, 20_000.0, (0.50, 0.60)),
+        (0.8, Some(0.4), 0.0, 40_000.0, (0.80, 1.20)),
+    ];
     for (radial, mu_s, factor, rate, (lo, hi)) in cases {
         let probe = Simulation::new(variant(radial, 0.0, mu_s, rate)).unwrap();
-        let mu_c = stability::friction_threshold(probe.scene(), 1.0, 3.0).expect("squeals below μ = 3");
+        let mu_c =
+            stability::friction_threshold(probe.scene(), 1.0, 3.0).expect("squeals below μ = 3");
         let c = variant(radial, factor * mu_c, mu_s, rate);
         let sim = Simulation::new(c.clone()).unwrap();
         let v = sim.scene().ale_nodes[0].radius;
         let pads = c.pads.as_ref().unwrap();
-        let f = stability::critical_mode(sim.scene(), 1.0, pads.friction_coefficient, &pads.clamp_force).eigenvalue.im.abs() / TAU;
+        let f = stability::critical_mode(
+            sim.scene(),
+            1.0,
+            pads.friction_coefficient,
+            &pads.clamp_force,
+        )
+        .eigenvalue
+        .im
+        .abs()
+            / TAU;
         let run = limit_cycle_of(c.clone(), 1.0);
         let (amp, _, speed) = *run.last().unwrap();
-        let min_normal = run.iter().map(|r| r.1).fold(f64::INFINITY, f64::min) / (pads.clamp_force[0] / 18.0);
+        let min_normal =
+            run.iter().map(|r| r.1).fold(f64::INFINITY, f64::min) / (pads.clamp_force[0] / 18.0);
         println!("r = {v:.4} m, μ_s {mu_s:?}: μ_c = {mu_c:.4}, μ = {:.4} ({f:.0} Hz): |q̄| {amp:.3e} m, face speed {:.3} V, least normal force {min_normal:.3} of the preload", pads.friction_coefficient, speed / v);
-        assert!((amp / run[run.len() - 4].0 - 1.0).abs() < 0.01, "settled: {run:?}");
+        assert!(
+            (amp / run[run.len() - 4].0 - 1.0).abs() < 0.01,
+            "settled: {run:?}"
+        );
         assert!(min_normal > 0.2, "every contact stays closed: {min_normal}");
-        assert!(speed / v > lo && speed / v < hi, "face speed {} V outside {lo}..{hi}", speed / v);
+        assert!(
+            speed / v > lo && speed / v < hi,
+            "face speed {} V outside {lo}..{hi}",
+            speed / v
+        );
     }
 }
 
@@ -260,21 +332,44 @@ fn the_couple_driven_cycle_stays_near_half_the_sliding_speed_and_only_a_steep_mu
 fn the_csv_decimation_refuses_to_alias_the_squeal_unless_allowed() {
     let run = |extra: &[&str]| {
         let out = std::process::Command::new(env!("CARGO_BIN_EXE_annular_plate"))
-            .args(["simulate", scenes::path("brake_squeal.yaml").to_str().unwrap(), "--duration", "0.01", "--csv", "-", "--quiet"])
+            .args([
+                "simulate",
+                scenes::path("brake_squeal.yaml").to_str().unwrap(),
+                "--duration",
+                "0.01",
+                "--csv",
+                "-",
+                "--quiet",
+            ])
             .args(extra)
             .output()
             .unwrap();
-        (out.status.success(), String::from_utf8_lossy(&out.stdout).lines().count(), String::from_utf8_lossy(&out.stderr).into_owned())
+        (
+            out.status.success(),
+            String::from_utf8_lossy(&out.stdout).lines().count(),
+            String::from_utf8_lossy(&out.stderr).into_owned(),
+        )
     };
     // The squeal is the ⟨2, 0⟩ pair with the pads at μ = 0.5, about 1.52 kHz
     // (the critical mode of the shipped file, in series with the residual): 2 kHz would alias it.
     let shipped = Simulation::new(scenes::load("brake_squeal.yaml")).unwrap();
     let pads = shipped.config().pads.clone().unwrap();
-    let mode = stability::critical_mode(shipped.scene(), 3.0, pads.friction_coefficient, &pads.clamp_force);
+    let mode = stability::critical_mode(
+        shipped.scene(),
+        3.0,
+        pads.friction_coefficient,
+        &pads.clamp_force,
+    );
     let squeal_hz = format!("{:.1} Hz", mode.eigenvalue.im.abs() / TAU);
     assert!(squeal_hz.starts_with("152"), "{squeal_hz}");
     let (ok, _, err) = run(&["--output-rate", "2000"]);
-    assert!(!ok && err.contains("--output-rate 2000 Hz") && err.contains("1000 Hz") && err.contains(&squeal_hz) && err.contains("--allow-aliasing"), "{err}");
+    assert!(
+        !ok && err.contains("--output-rate 2000 Hz")
+            && err.contains("1000 Hz")
+            && err.contains(&squeal_hz)
+            && err.contains("--allow-aliasing"),
+        "{err}"
+    );
     let (ok, rows, err) = run(&["--output-rate", "2000", "--allow-aliasing"]);
     assert!(ok && rows == 1 + 21, "{err}");
     let (ok, rows, err) = run(&["--output-rate", "5000"]);

@@ -5,7 +5,6 @@
 //! ⟨k = 1, l = 0⟩ pair are stationary, while the Lagrangian ones turn with the
 //! disc at the rotation frequency.
 
-
 mod support;
 
 use annular_plate::config::{Config, ConfigError};
@@ -25,7 +24,13 @@ fn kienzle(b_mm: f64, h_mm: f64) -> f64 {
 
 /// Index of the ⟨k = 1, l = 0⟩ cos mode and its sin partner.
 fn first_pair(sim: &Simulation) -> (usize, usize) {
-    let p = sim.scene().layout.pairs.iter().find(|p| p.k == 1 && sim.model().modes()[p.cos].l == 0).unwrap();
+    let p = sim
+        .scene()
+        .layout
+        .pairs
+        .iter()
+        .find(|p| p.k == 1 && sim.model().modes()[p.cos].l == 0)
+        .unwrap();
     (p.cos, p.sin)
 }
 
@@ -44,7 +49,11 @@ fn the_tool_reaches_the_disc_at_a_quarter_second_and_then_cuts_the_feed_per_revo
         let next = sim.time() + 0.01;
         run_to(&mut sim, next);
         let f = sim.tool_output().unwrap().feed_force;
-        assert!(f >= last, "the feed force fell while the chip grows: {f} < {last} at {}", sim.time());
+        assert!(
+            f >= last,
+            "the feed force fell while the chip grows: {f} < {last} at {}",
+            sim.time()
+        );
         last = f;
     }
     // Steady: the chip is the feed per revolution, the force eq. (21) for it.
@@ -75,17 +84,33 @@ fn ale_amplitudes_are_stationary_while_lagrangian_ones_turn_with_the_disc() {
         // z = q_c + i q_s turns as e^{−ikχ} in the Lagrangian description.
         phase.push(sim.q_lagrange()[s].atan2(sim.q_lagrange()[c]));
         t.push(sim.time());
-        let (zl, za) = (sim.q_lagrange()[c].hypot(sim.q_lagrange()[s]), sim.q_ale()[c].hypot(sim.q_ale()[s]));
-        assert!((zl - za).abs() < 1e-12 * za, "|z| differs between the descriptions");
+        let (zl, za) = (
+            sim.q_lagrange()[c].hypot(sim.q_lagrange()[s]),
+            sim.q_ale()[c].hypot(sim.q_ale()[s]),
+        );
+        assert!(
+            (zl - za).abs() < 1e-12 * za,
+            "|z| differs between the descriptions"
+        );
     }
     let mean = ale.iter().map(|a| a.0).sum::<f64>() / ale.len() as f64;
     let spread = ale.iter().map(|a| (a.0 - mean).abs()).fold(0.0, f64::max) / mean.abs();
     let sin_part = ale.iter().map(|a| a.1.abs()).fold(0.0, f64::max) / mean.abs();
-    let (lo, hi) = lag_c.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), &v| (lo.min(v), hi.max(v)));
+    let (lo, hi) = lag_c
+        .iter()
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), &v| {
+            (lo.min(v), hi.max(v))
+        });
     println!("ALE ⟨1,0⟩ cos: mean {mean:.6e} m, spread {spread:.2e} (relative), sin part {sin_part:.2e}; Lagrangian cos: {lo:.3e} .. {hi:.3e} m");
     assert!(spread < 2e-3, "ALE amplitude not stationary: {spread}");
-    assert!(sin_part < 1e-3, "a load at θ = 0 does not load the ALE sin mode");
-    assert!(hi > 0.99 * mean.abs() && lo < -0.99 * mean.abs(), "the Lagrangian amplitude does not swing between ±|q̄|");
+    assert!(
+        sin_part < 1e-3,
+        "a load at θ = 0 does not load the ALE sin mode"
+    );
+    assert!(
+        hi > 0.99 * mean.abs() && lo < -0.99 * mean.abs(),
+        "the Lagrangian amplitude does not swing between ±|q̄|"
+    );
     // Its phase turns backwards at the rotation speed: fit the unwrapped phase.
     let mut unwrapped = vec![phase[0]];
     for w in phase.windows(2) {
@@ -95,7 +120,12 @@ fn ale_amplitudes_are_stationary_while_lagrangian_ones_turn_with_the_disc() {
     }
     let n = t.len() as f64;
     let (mt, mp) = (t.iter().sum::<f64>() / n, unwrapped.iter().sum::<f64>() / n);
-    let slope = t.iter().zip(&unwrapped).map(|(t, p)| (t - mt) * (p - mp)).sum::<f64>() / t.iter().map(|t| (t - mt).powi(2)).sum::<f64>();
+    let slope = t
+        .iter()
+        .zip(&unwrapped)
+        .map(|(t, p)| (t - mt) * (p - mp))
+        .sum::<f64>()
+        / t.iter().map(|t| (t - mt).powi(2)).sum::<f64>();
     println!("Lagrangian phase rate {slope:.9} rad/s, −Ω = {:.9}", -speed);
     assert!((slope + speed).abs() < 1e-6 * speed);
 }
@@ -117,7 +147,10 @@ fn the_deflection_under_the_tool_is_the_steady_ale_response_to_the_feed_force() 
         .map(|m| {
             let rr = sim.model().radial_shapes()[m.radial].value(r_a);
             let (k, w) = (m.k as f64, m.omega);
-            let (a, b) = (w * w - k * k * speed * speed, 2.0 * m.damping * w * k * speed);
+            let (a, b) = (
+                w * w - k * k * speed * speed,
+                2.0 * m.damping * w * k * speed,
+            );
             rr * a * force * rr / (m.modal_mass * (a * a + b * b))
         })
         .sum();
@@ -156,8 +189,15 @@ fn feed_commands_change_the_chip_and_bad_ones_are_refused() {
         let e = sim.set_tool_feed(bad).unwrap_err();
         assert!(e.to_string().contains("tool feed rate"), "{e}");
     }
-    assert_eq!(sim.tool_output().unwrap().feed_rate, 0.004, "a refused command changes nothing");
-    assert!(matches!(sim.set_pad_clamp_force(0, 1.0), Err(LoadCommandError::NoSuchPad { count: 0, .. })));
+    assert_eq!(
+        sim.tool_output().unwrap().feed_rate,
+        0.004,
+        "a refused command changes nothing"
+    );
+    assert!(matches!(
+        sim.set_pad_clamp_force(0, 1.0),
+        Err(LoadCommandError::NoSuchPad { count: 0, .. })
+    ));
     // Retract by more than the feed per revolution (2.3 mm): the tool clears the helical shoulder.
     sim.set_tool_feed(-0.01).unwrap();
     let later = sim.time() + 0.3;
@@ -179,25 +219,66 @@ fn rejected(from: &str, to: &str, key: &str) -> ConfigError {
 fn bad_tool_data_are_refused_naming_the_key() {
     // A tool whose node is not on the rim, or that would cut beyond the annulus.
     let e = rejected("ale_radial: [1.0]", "ale_radial: [0.8]", "tool.ale_node");
-    assert!(matches!(e, ConfigError::ToolNotOnRim { node: 1, .. }), "{e:?}");
+    assert!(
+        matches!(e, ConfigError::ToolNotOnRim { node: 1, .. }),
+        "{e:?}"
+    );
     println!("{e}");
-    let e = rejected("depth_of_cut: 0.001", "depth_of_cut: 0.1", "tool.depth_of_cut");
-    assert!(matches!(e, ConfigError::DepthOfCutBeyondPlate { .. }), "{e:?}");
+    let e = rejected(
+        "depth_of_cut: 0.001",
+        "depth_of_cut: 0.1",
+        "tool.depth_of_cut",
+    );
+    assert!(
+        matches!(e, ConfigError::DepthOfCutBeyondPlate { .. }),
+        "{e:?}"
+    );
     println!("{e}");
     rejected("ale_radial: [1.0]", "ale_radial: [1.2]", "nodes.ale_radial");
     let e = rejected("ale_node: 1", "ale_node: 2", "tool.ale_node");
-    assert!(matches!(e, ConfigError::NoSuchNode { node: 2, count: 1, .. }), "{e:?}");
+    assert!(
+        matches!(
+            e,
+            ConfigError::NoSuchNode {
+                node: 2,
+                count: 1,
+                ..
+            }
+        ),
+        "{e:?}"
+    );
     rejected("ale_node: 1", "ale_node: -1", "tool.ale_node");
     let e = rejected("stiffness: 2.0e7", "stiffness: -2.0e7", "tool.stiffness");
     assert!(matches!(e, ConfigError::NotPositive { .. }), "{e:?}");
     rejected("damping: 2.0e3", "damping: -1.0", "tool.damping");
     rejected("feed_rate: 0.002", "feed_rate: 5.0", "tool.feed_rate");
-    rejected("start_clearance: 0.0005", "start_clearance: -0.001", "tool.start_clearance");
-    rejected("force_exponent: 0.7013", "force_exponent: 1.2", "tool.force_exponent");
-    rejected("specific_force: 351.0e6", "specific_force: 0.0", "tool.specific_force");
+    rejected(
+        "start_clearance: 0.0005",
+        "start_clearance: -0.001",
+        "tool.start_clearance",
+    );
+    rejected(
+        "force_exponent: 0.7013",
+        "force_exponent: 1.2",
+        "tool.force_exponent",
+    );
+    rejected(
+        "specific_force: 351.0e6",
+        "specific_force: 0.0",
+        "tool.specific_force",
+    );
     // Tool keys without a tool.
     let e = rejected("      ale_node: 1\n", "", "tool.depth_of_cut");
-    assert!(matches!(e, ConfigError::KeyWithoutSection { enabling_key: "tool.ale_node", .. }), "{e:?}");
+    assert!(
+        matches!(
+            e,
+            ConfigError::KeyWithoutSection {
+                enabling_key: "tool.ale_node",
+                ..
+            }
+        ),
+        "{e:?}"
+    );
 }
 
 #[test]
@@ -206,7 +287,21 @@ fn the_cli_simulates_the_scene_with_the_tool_columns_after_the_contract_ones() {
     let header: Vec<&str> = text.lines().next().unwrap().split(',').collect();
     let contract = 3 + 2 * 30 + 2;
     assert_eq!(&header[contract - 2..contract], ["ale1_uz", "lagrange1_uz"]);
-    assert_eq!(&header[contract..], ["joint_effort", "tool_tip_z", "tool_chip_thickness", "tool_feed_force"]);
-    let last: Vec<f64> = text.lines().last().unwrap().split(',').map(|v| v.parse().unwrap()).collect();
+    assert_eq!(
+        &header[contract..],
+        [
+            "joint_effort",
+            "tool_tip_z",
+            "tool_chip_thickness",
+            "tool_feed_force"
+        ]
+    );
+    let last: Vec<f64> = text
+        .lines()
+        .last()
+        .unwrap()
+        .split(',')
+        .map(|v| v.parse().unwrap())
+        .collect();
     assert!(last[header.len() - 1] > 0.0, "cutting at 0.3 s");
 }

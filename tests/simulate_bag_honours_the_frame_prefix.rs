@@ -33,7 +33,11 @@ fn simulate_bag(scene: &Path, dir: &Path) {
         .arg(dir)
         .output()
         .unwrap();
-    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
 }
 
 #[test]
@@ -43,8 +47,15 @@ fn a_simulate_bag_carries_the_scenes_frame_prefix_and_world_frame() {
     std::fs::create_dir_all(&tmp).unwrap();
     let scene = tmp.join("prefixed.yaml");
     let text = scene_files::text("brake_bench.yaml");
-    let text = text.replacen("ros__parameters:\n", "ros__parameters:\n    ros.frame_prefix: left/\n    ros.world_frame: map\n", 1);
-    assert!(text.contains("ros.frame_prefix: left/"), "the scene gained the keys");
+    let text = text.replacen(
+        "ros__parameters:\n",
+        "ros__parameters:\n    ros.frame_prefix: left/\n    ros.world_frame: map\n",
+        1,
+    );
+    assert!(
+        text.contains("ros.frame_prefix: left/"),
+        "the scene gained the keys"
+    );
     std::fs::write(&scene, text).unwrap();
 
     let (prefixed, plain) = (tmp.join("prefixed_bag"), tmp.join("plain_bag"));
@@ -54,11 +65,25 @@ fn a_simulate_bag_carries_the_scenes_frame_prefix_and_world_frame() {
 
     // A CDR string ends in NUL (the message definitions in the file mention
     // the frames in comments, not so terminated).
-    for frame in ["plate_rotor", "plate_base", "plate_ale_1", "plate_lagrange_1", "plate_joint"] {
+    for frame in [
+        "plate_rotor",
+        "plate_base",
+        "plate_ale_1",
+        "plate_lagrange_1",
+        "plate_joint",
+    ] {
         let all = count(&with, format!("{frame}\0").as_bytes());
         assert!(all > 0, "{frame} is in the bag");
-        assert_eq!(count(&with, format!("left/{frame}\0").as_bytes()), all, "every {frame} carries the prefix");
-        assert_eq!(count(&without, format!("left/{frame}\0").as_bytes()), 0, "no prefix without the key");
+        assert_eq!(
+            count(&with, format!("left/{frame}\0").as_bytes()),
+            all,
+            "every {frame} carries the prefix"
+        );
+        assert_eq!(
+            count(&without, format!("left/{frame}\0").as_bytes()),
+            0,
+            "no prefix without the key"
+        );
         assert!(count(&without, format!("{frame}\0").as_bytes()) > 0);
     }
     // /tf_static: world frame -> plate_base.

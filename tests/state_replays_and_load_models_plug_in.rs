@@ -10,7 +10,14 @@ use annular_plate::dynamics::{Simulation, Stepper};
 use support::scene_files;
 
 /// Run `sim` for `steps`, returning the state after `at` steps and after all.
-fn run(sim: &mut Simulation, at: usize, steps: usize) -> (annular_plate::dynamics::State, annular_plate::dynamics::State) {
+fn run(
+    sim: &mut Simulation,
+    at: usize,
+    steps: usize,
+) -> (
+    annular_plate::dynamics::State,
+    annular_plate::dynamics::State,
+) {
     let mut saved = None;
     for s in 0..steps {
         if s == at {
@@ -25,12 +32,18 @@ fn run(sim: &mut Simulation, at: usize, steps: usize) -> (annular_plate::dynamic
 fn a_saved_state_stepped_by_a_fresh_stepper_replays_the_run_bit_for_bit() {
     // The lathe (a tool with memory: its machined surface), the squeal scene
     // (pads, RK4 stages) and the swash plate (links, Lagrangian coordinates).
-    for (file, at, steps) in [("lathe.yaml", 300, 700), ("brake_squeal.yaml", 50, 150), ("swash_plate.yaml", 100, 300)] {
+    for (file, at, steps) in [
+        ("lathe.yaml", 300, 700),
+        ("brake_squeal.yaml", 50, 150),
+        ("swash_plate.yaml", 100, 300),
+    ] {
         let mut sim = Simulation::new(scene_files::load(file)).unwrap();
         let (mut replay, end) = run(&mut sim, at, steps);
         let mut stepper = Stepper::new(sim.scene());
         for _ in at..steps {
-            stepper.step(sim.scene(), sim.settings(), &mut replay, sim.inputs()).unwrap();
+            stepper
+                .step(sim.scene(), sim.settings(), &mut replay, sim.inputs())
+                .unwrap();
         }
         assert_eq!(replay, end, "{file}: the replayed state differs");
         // And restored into the facade, it continues like the original.
@@ -41,7 +54,11 @@ fn a_saved_state_stepped_by_a_fresh_stepper_replays_the_run_bit_for_bit() {
         for _ in at..steps {
             restored.step().unwrap();
         }
-        assert_eq!(restored.state(), &end, "{file}: the restored simulation differs");
+        assert_eq!(
+            restored.state(),
+            &end,
+            "{file}: the restored simulation differs"
+        );
         assert_eq!(restored.step_count(), steps as u64);
     }
 }
@@ -53,8 +70,15 @@ fn one_mode_with_spring(stiffness: f64, damping_ratio: f64) -> Config {
     c.plate.nodal_circles = vec![0];
     c.plate.damping = vec![damping_ratio];
     c.joint.speed = 0.0;
-    c.nodes.ale = vec![NodePosition { radial: 1.0, angular: 0.0 }];
-    c.springs = Some(SpringsConfig { nodes: vec![0], stiffness, damping: 0.0 });
+    c.nodes.ale = vec![NodePosition {
+        radial: 1.0,
+        angular: 0.0,
+    }];
+    c.springs = Some(SpringsConfig {
+        nodes: vec![0],
+        stiffness,
+        damping: 0.0,
+    });
     c.simulation.integrator = IntegratorKind::Rk4;
     c.simulation.rate_hz = 20_000.0;
     c
@@ -65,7 +89,10 @@ fn a_point_spring_carries_its_share_of_a_static_load() {
     // One mode: m q̈ + K q = φ (F − k_s φ q), so at rest q = φ F / (K + k_s φ²).
     let (k_s, force) = (2.0e7, -500.0);
     let mut c = one_mode_with_spring(k_s, 0.3);
-    c.loads.ale = vec![WrenchConfig { force: [0.0, 0.0, force], moment: [0.0; 3] }];
+    c.loads.ale = vec![WrenchConfig {
+        force: [0.0, 0.0, force],
+        moment: [0.0; 3],
+    }];
     let mut sim = Simulation::new(c).unwrap();
     let phi = sim.scene().ale_nodes[0].shapes[0].w;
     let stiffness = sim.model().body().modal_stiffness[0];
@@ -75,10 +102,17 @@ fn a_point_spring_carries_its_share_of_a_static_load() {
     let expected = phi * phi * force / (stiffness + k_s * phi * phi);
     // the modal part (uz less the residual flexibility, docs/residual_flexibility.md)
     let w = sim.ale_node(0).uz - sim.residual_deflection(0);
-    assert!((w - expected).abs() < 1e-9 * expected.abs(), "w = {w:e}, closed form {expected:e}");
+    assert!(
+        (w - expected).abs() < 1e-9 * expected.abs(),
+        "w = {w:e}, closed form {expected:e}"
+    );
     // The spring's reaction is the part of the load the plate does not carry.
     let reaction = sim.ale_model_wrench(0).force[2];
-    assert!((reaction + k_s * w).abs() < 1e-9 * (k_s * w).abs(), "{reaction} vs {}", -k_s * w);
+    assert!(
+        (reaction + k_s * w).abs() < 1e-9 * (k_s * w).abs(),
+        "{reaction} vs {}",
+        -k_s * w
+    );
 }
 
 #[test]
@@ -104,7 +138,13 @@ fn a_point_spring_raises_the_frequency_to_the_closed_form() {
     let periods = (crossings.len() - 1) as f64;
     let omega = std::f64::consts::TAU * periods / (crossings.last().unwrap() - crossings[0]);
     assert!(periods > 20.0, "{periods} periods");
-    assert!((omega - expected).abs() < 1e-5 * expected, "ω = {omega}, closed form {expected}");
+    assert!(
+        (omega - expected).abs() < 1e-5 * expected,
+        "ω = {omega}, closed form {expected}"
+    );
     let bare = sim.model().modes()[0].omega;
-    assert!(expected > 1.001 * bare, "the spring stiffens the mode: {expected} vs {bare}");
+    assert!(
+        expected > 1.001 * bare,
+        "the spring stiffens the mode: {expected} vs {bare}"
+    );
 }

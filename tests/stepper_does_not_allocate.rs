@@ -37,9 +37,19 @@ static GLOBAL: Counting = Counting;
 
 #[test]
 fn stepping_with_changing_inputs_allocates_nothing() {
-    for (integrator, stiffening) in [IntegratorKind::Exponential, IntegratorKind::ImplicitMidpoint, IntegratorKind::Rk4].into_iter().flat_map(|i| [(i, false), (i, true)]) {
+    for (integrator, stiffening) in [
+        IntegratorKind::Exponential,
+        IntegratorKind::ImplicitMidpoint,
+        IntegratorKind::Rk4,
+    ]
+    .into_iter()
+    .flat_map(|i| [(i, false), (i, true)])
+    {
         // Without follower loads the node loads of held wrenches are kept and reused while the wrenches stay the same.
-        for (coords, follower) in [Coordinates::Ale, Coordinates::Lagrangian].into_iter().flat_map(|c| [(c, true), (c, false)]) {
+        for (coords, follower) in [Coordinates::Ale, Coordinates::Lagrangian]
+            .into_iter()
+            .flat_map(|c| [(c, true), (c, false)])
+        {
             let mut c = Config::default();
             // Centrifugal stiffening: the per-k block propagators are rebuilt every substep of the ramp.
             c.centrifugal.stiffening = stiffening;
@@ -52,15 +62,38 @@ fn stepping_with_changing_inputs_allocates_nothing() {
             c.simulation.coordinates = coords;
             c.simulation.rate_hz = 10_000.0;
             c.simulation.substeps = 2;
-            c.nodes.ale.push(NodePosition { radial: 1.0, angular: 0.0 });
-            c.nodes.lagrange.push(NodePosition { radial: 0.5, angular: 0.5 });
-            c.loads.ale.push(WrenchConfig { force: [0.0, 30.0, -100.0], moment: [0.0; 3] });
+            c.nodes.ale.push(NodePosition {
+                radial: 1.0,
+                angular: 0.0,
+            });
+            c.nodes.lagrange.push(NodePosition {
+                radial: 0.5,
+                angular: 0.5,
+            });
+            c.loads.ale.push(WrenchConfig {
+                force: [0.0, 30.0, -100.0],
+                moment: [0.0; 3],
+            });
             let mut sim = Simulation::new(c).unwrap();
             sim.step().unwrap(); // warm-up: propagator caches
             let before = allocations();
             for s in 0..500 {
-                sim.set_ale_wrench(0, Wrench { force: [0.0, 30.0, -100.0 - s as f64], moment: [0.0; 3] }).unwrap();
-                sim.set_lagrange_wrench(0, Wrench { force: [0.0, 0.0, 5.0], moment: [0.1, 0.0, 0.0] }).unwrap();
+                sim.set_ale_wrench(
+                    0,
+                    Wrench {
+                        force: [0.0, 30.0, -100.0 - s as f64],
+                        moment: [0.0; 3],
+                    },
+                )
+                .unwrap();
+                sim.set_lagrange_wrench(
+                    0,
+                    Wrench {
+                        force: [0.0, 0.0, 5.0],
+                        moment: [0.1, 0.0, 0.0],
+                    },
+                )
+                .unwrap();
                 sim.set_speed_command(20.0 + 0.01 * s as f64).unwrap();
                 sim.step().unwrap();
                 std::hint::black_box((sim.q_ale()[0], sim.ale_node(0).uz, sim.joint()));
@@ -76,9 +109,14 @@ fn stepping_with_changing_inputs_allocates_nothing() {
 /// stage slots are scratch, so stepping still allocates nothing.
 #[test]
 fn stepping_with_massive_pads_allocates_nothing() {
-    use annular_plate::config::{Caliper, PadContact, PadsConfig, ContactSurface};
+    use annular_plate::config::{Caliper, ContactSurface, PadContact, PadsConfig};
     for (caliper, backing) in [(Caliper::Floating, None), (Caliper::Fixed, Some(3.0e7))] {
-        for (coords, residual) in [(Coordinates::Ale, false), (Coordinates::Lagrangian, false), (Coordinates::Ale, true), (Coordinates::Lagrangian, true)] {
+        for (coords, residual) in [
+            (Coordinates::Ale, false),
+            (Coordinates::Lagrangian, false),
+            (Coordinates::Ale, true),
+            (Coordinates::Lagrangian, true),
+        ] {
             let mut c = Config::default();
             c.plate.damping = vec![0.02];
             c.plate.residual_flexibility = residual;
@@ -86,10 +124,19 @@ fn stepping_with_massive_pads_allocates_nothing() {
             c.simulation.integrator = IntegratorKind::Rk4;
             c.simulation.coordinates = coords;
             c.simulation.rate_hz = 10_000.0;
-            c.nodes.ale.push(NodePosition { radial: 0.6, angular: 0.0 });
-            c.nodes.ale.push(NodePosition { radial: 0.6, angular: 0.2 });
+            c.nodes.ale.push(NodePosition {
+                radial: 0.6,
+                angular: 0.0,
+            });
+            c.nodes.ale.push(NodePosition {
+                radial: 0.6,
+                angular: 0.2,
+            });
             c.pads = Some(PadsConfig {
-                contacts: vec![PadContact { node: 0, pad: 0 }, PadContact { node: 1, pad: 0 }],
+                contacts: vec![
+                    PadContact { node: 0, pad: 0 },
+                    PadContact { node: 1, pad: 0 },
+                ],
                 clamp_force: vec![1000.0],
                 contact_stiffness: 2.0e7,
                 contact_damping: 50.0,
@@ -111,8 +158,16 @@ fn stepping_with_massive_pads_allocates_nothing() {
                 std::hint::black_box((sim.q_ale()[0], sim.joint()));
             }
             let after = allocations();
-            assert_eq!(after - before, 0, "{caliper:?}/{coords:?}/in series {residual}: allocated {} times in 200 steps", after - before);
-            assert!(sim.state().load_models.slots[0].iter().any(|&v| v != 0.0), "the pads' states are in the state");
+            assert_eq!(
+                after - before,
+                0,
+                "{caliper:?}/{coords:?}/in series {residual}: allocated {} times in 200 steps",
+                after - before
+            );
+            assert!(
+                sim.state().load_models.slots[0].iter().any(|&v| v != 0.0),
+                "the pads' states are in the state"
+            );
         }
     }
 }

@@ -30,8 +30,14 @@ fn swash_scene(stiffening: bool) -> Config {
     c.plate.nodal_circles = vec![0, 1];
     c.plate.damping = vec![0.01];
     c.centrifugal.stiffening = stiffening;
-    c.nodes.ale.push(NodePosition { radial: 1.0, angular: 0.0 });
-    c.loads.ale.push(WrenchConfig { force: [0.0, 0.0, -100.0], moment: [0.0; 3] });
+    c.nodes.ale.push(NodePosition {
+        radial: 1.0,
+        angular: 0.0,
+    });
+    c.loads.ale.push(WrenchConfig {
+        force: [0.0, 0.0, -100.0],
+        moment: [0.0; 3],
+    });
     c.joint.speed = 250.0;
     c.joint.max_acceleration = 5.0;
     c.simulation.rate_hz = 1000.0;
@@ -45,9 +51,17 @@ fn peak_speed(stiffening: bool) -> (f64, f64, f64) {
     let c = swash_scene(stiffening);
     let mut sim = Simulation::new(c.clone()).expect("valid scene");
     let campbell = critical_speeds(sim.model(), &c.centrifugal).unwrap();
-    let critical = campbell.iter().find(|s| s.k == 2 && s.l == 0).expect("⟨2, 0⟩ has a critical speed").rad_s;
+    let critical = campbell
+        .iter()
+        .find(|s| s.k == 2 && s.l == 0)
+        .expect("⟨2, 0⟩ has a critical speed")
+        .rad_s;
     let model = sim.model();
-    let cos = model.modes().iter().position(|m| m.k == 2 && m.l == 0 && m.shape == annular_plate::model::AngularShape::Cos).unwrap();
+    let cos = model
+        .modes()
+        .iter()
+        .position(|m| m.k == 2 && m.l == 0 && m.shape == annular_plate::model::AngularShape::Cos)
+        .unwrap();
     let sin = model.modes()[cos].partner.unwrap();
     let omega_over_k = model.modes()[cos].omega / 2.0;
     sim.set_speed_command(600.0).unwrap();
@@ -72,13 +86,25 @@ fn a_spin_up_resonates_at_the_stiffened_critical_speed_not_at_omega_over_k() {
         100.0 * (peak - critical) / critical,
         100.0 * (peak - omega_over_k) / omega_over_k
     );
-    assert!((critical - 458.0).abs() < 1.0, "the issue's stiffened estimate: {critical}");
-    assert!((peak - critical).abs() < 0.02 * critical, "peak {peak} vs critical {critical}");
-    assert!(peak > 1.3 * omega_over_k, "peak {peak} vs ω/k {omega_over_k}");
+    assert!(
+        (critical - 458.0).abs() < 1.0,
+        "the issue's stiffened estimate: {critical}"
+    );
+    assert!(
+        (peak - critical).abs() < 0.02 * critical,
+        "peak {peak} vs critical {critical}"
+    );
+    assert!(
+        peak > 1.3 * omega_over_k,
+        "peak {peak} vs ω/k {omega_over_k}"
+    );
 
     // Control: without stiffening the same spin-up peaks at ω₀/k.
     let (peak_off, critical_off, _) = peak_speed(false);
     println!("unstiffened: peak at {peak_off:.2} rad/s, critical speed ω₀/k = {critical_off:.2} rad/s ({:+.2} %)", 100.0 * (peak_off - critical_off) / critical_off);
     assert!((critical_off - omega_over_k).abs() < 1e-9 * omega_over_k);
-    assert!((peak_off - critical_off).abs() < 0.02 * critical_off, "peak {peak_off} vs ω/k {critical_off}");
+    assert!(
+        (peak_off - critical_off).abs() < 0.02 * critical_off,
+        "peak {peak_off} vs ω/k {critical_off}"
+    );
 }

@@ -50,11 +50,28 @@ fn resting_lathe() -> Config {
 
 /// Exact frequencies (Hz) of every ⟨k, l⟩ the plate requests.
 fn exact_frequencies(p: &PlateConfig) -> BTreeMap<(u32, u32), f64> {
-    let a = Annulus::new(p.inner_radius, p.outer_radius, p.poisson_ratio, edge(p.inner_boundary), edge(p.outer_boundary));
-    let mat = Material { thickness: p.thickness, density: p.density, youngs_modulus: p.youngs_modulus, poisson_ratio: p.poisson_ratio };
+    let a = Annulus::new(
+        p.inner_radius,
+        p.outer_radius,
+        p.poisson_ratio,
+        edge(p.inner_boundary),
+        edge(p.outer_boundary),
+    );
+    let mat = Material {
+        thickness: p.thickness,
+        density: p.density,
+        youngs_modulus: p.youngs_modulus,
+        poisson_ratio: p.poisson_ratio,
+    };
     // λ bound from a coarse library model, generously above the highest requested mode.
-    let f_max = PlateModel::new(p).unwrap().modes().iter().map(|m| m.frequency_hz).fold(0.0, f64::max);
-    let lambda_max = 1.3 * (TAU * f_max / (mat.rigidity() / (mat.density * mat.thickness)).sqrt()).sqrt();
+    let f_max = PlateModel::new(p)
+        .unwrap()
+        .modes()
+        .iter()
+        .map(|m| m.frequency_hz)
+        .fold(0.0, f64::max);
+    let lambda_max =
+        1.3 * (TAU * f_max / (mat.rigidity() / (mat.density * mat.thickness)).sqrt()).sqrt();
     let mut out = BTreeMap::new();
     for &k in &p.nodal_diameters {
         let ls = a.lambdas(k, lambda_max);
@@ -66,7 +83,11 @@ fn exact_frequencies(p: &PlateConfig) -> BTreeMap<(u32, u32), f64> {
 }
 
 fn max_rel(model: &PlateModel, exact: &BTreeMap<(u32, u32), f64>) -> f64 {
-    model.radial_shapes().iter().map(|s| (s.omega / TAU - exact[&(s.k, s.l)]).abs() / exact[&(s.k, s.l)]).fold(0.0, f64::max)
+    model
+        .radial_shapes()
+        .iter()
+        .map(|s| (s.omega / TAU - exact[&(s.k, s.l)]).abs() / exact[&(s.k, s.l)])
+        .fold(0.0, f64::max)
 }
 
 fn check_frequency_axis(config: &Config, r: &StudyReport) {
@@ -75,12 +96,21 @@ fn check_frequency_axis(config: &Config, r: &StudyReport) {
     let mut p = config.plate.clone();
     p.radial_splines = annular_plate::config::RadialSplines::Fixed(a.reference.radial_splines);
     let reference_error = max_rel(&PlateModel::new(&p).unwrap(), &exact);
-    println!("frequencies: reference ({} splines) exact error {reference_error:.2e}, uncertainty {:.2e}", p.radial_splines, a.reference.uncertainty);
-    assert!(reference_error <= a.reference.uncertainty, "the reference's error is within its uncertainty");
+    println!(
+        "frequencies: reference ({} splines) exact error {reference_error:.2e}, uncertainty {:.2e}",
+        p.radial_splines, a.reference.uncertainty
+    );
+    assert!(
+        reference_error <= a.reference.uncertainty,
+        "the reference's error is within its uncertainty"
+    );
     for row in &a.rows {
         p.radial_splines = row.radial_splines;
         let e = max_rel(&PlateModel::new(&p).unwrap(), &exact);
-        println!("  n = {:>3}: study {:.4e}, exact {e:.4e}", row.radial_splines, row.max_relative_error);
+        println!(
+            "  n = {:>3}: study {:.4e}, exact {e:.4e}",
+            row.radial_splines, row.max_relative_error
+        );
         assert!(
             (row.max_relative_error - e).abs() <= a.reference.uncertainty * (1.0 + e) + 1e-14,
             "row {}: study {} vs exact {e}",
@@ -94,7 +124,10 @@ fn check_frequency_axis(config: &Config, r: &StudyReport) {
             p.radial_splines = s.radial_splines;
             let e = max_rel(&PlateModel::new(&p).unwrap(), &exact);
             let claimed = rec.claimed_error.unwrap();
-            println!("  target {:.0e}: {} splines, claimed ≤ {claimed:.2e}, exact {e:.2e}", rec.target, s.radial_splines);
+            println!(
+                "  target {:.0e}: {} splines, claimed ≤ {claimed:.2e}, exact {e:.2e}",
+                rec.target, s.radial_splines
+            );
             assert!(e <= claimed && claimed <= rec.target);
             recommended += 1;
         }
@@ -120,20 +153,31 @@ fn check_response_axis(config: &Config, r: &StudyReport) {
     let b = &r.mode_count;
     assert_eq!(b.load_case.loads.len(), 1);
     let (xi, wrench) = b.load_case.loads[0];
-    assert_eq!((xi.angular, wrench[0], wrench[1], wrench[3], wrench[4]), (0.0, 0.0, 0.0, 0.0, 0.0), "a transverse point force");
+    assert_eq!(
+        (xi.angular, wrench[0], wrench[1], wrench[3], wrench[4]),
+        (0.0, 0.0, 0.0, 0.0, 0.0),
+        "a transverse point force"
+    );
     let exact = wrench[2] * exact_rim_compliance(&config.plate, xi.radial);
     let ref_error = (b.reference.response_m - exact).abs() / exact.abs();
     println!(
         "response: exact {exact:.9e} m, reference {:.9e} m, its error {ref_error:.2e}, uncertainty {:.2e} ({})",
         b.reference.response_m, b.reference.uncertainty, b.reference.uncertainty_method
     );
-    assert!(ref_error <= b.reference.uncertainty, "the reference's truncation error is within its estimated uncertainty");
-    let ref_error_with_residual = (b.reference.response_with_residual_m - exact).abs() / exact.abs();
+    assert!(
+        ref_error <= b.reference.uncertainty,
+        "the reference's truncation error is within its estimated uncertainty"
+    );
+    let ref_error_with_residual =
+        (b.reference.response_with_residual_m - exact).abs() / exact.abs();
     println!(
         "  with residual flexibility: reference {:.9e} m, its error {ref_error_with_residual:.2e}, uncertainty {:.2e}",
         b.reference.response_with_residual_m, b.reference.uncertainty_with_residual
     );
-    assert!(ref_error_with_residual <= b.reference.uncertainty_with_residual, "the corrected reference is within its uncertainty");
+    assert!(
+        ref_error_with_residual <= b.reference.uncertainty_with_residual,
+        "the corrected reference is within its uncertainty"
+    );
     for row in &b.rows {
         let e = (row.response_m - exact).abs() / exact.abs();
         assert!(
@@ -145,7 +189,8 @@ fn check_response_axis(config: &Config, r: &StudyReport) {
         );
         let e = (row.response_with_residual_m - exact).abs() / exact.abs();
         assert!(
-            (row.relative_error_with_residual - e).abs() <= b.reference.uncertainty_with_residual * (1.0 + e),
+            (row.relative_error_with_residual - e).abs()
+                <= b.reference.uncertainty_with_residual * (1.0 + e),
             "k ≤ {}, l ≤ {} + residual: study {} vs exact {e}",
             row.k_max,
             row.l_max,
@@ -199,7 +244,10 @@ fn analytic_trajectory(config: &Config, samples: usize, sample_rate: f64) -> tra
                     let q_static = f / (m.modal_mass * m.omega * m.omega);
                     let z = m.damping;
                     let wd = m.omega * (1.0 - z * z).sqrt();
-                    q_static * (1.0 - (-z * m.omega * t).exp() * ((wd * t).cos() + z * m.omega / wd * (wd * t).sin()))
+                    q_static
+                        * (1.0
+                            - (-z * m.omega * t).exp()
+                                * ((wd * t).cos() + z * m.omega / wd * (wd * t).sin()))
                 })
                 .collect()
         })
@@ -212,16 +260,35 @@ fn check_trajectory_axis(config: &Config, plan: &StudyPlan, r: &StudyReport) {
     let exact = analytic_trajectory(config, samples, c.sample_rate_hz);
     let run = |integrator: IntegratorKind, rate: f64| {
         let every = (rate / c.sample_rate_hz).round() as u64;
-        trajectory::record(&trajectory::scene_at(config, integrator, rate), every, samples).map(|(s, _)| s).unwrap()
+        trajectory::record(
+            &trajectory::scene_at(config, integrator, rate),
+            every,
+            samples,
+        )
+        .map(|(s, _)| s)
+        .unwrap()
     };
-    let reference_error = trajectory::relative_error(&run(IntegratorKind::Exponential, c.reference.rate_hz), &exact);
-    println!("trajectory: reference exact error {reference_error:.2e}, uncertainty {:.2e}", c.reference.uncertainty);
+    let reference_error = trajectory::relative_error(
+        &run(IntegratorKind::Exponential, c.reference.rate_hz),
+        &exact,
+    );
+    println!(
+        "trajectory: reference exact error {reference_error:.2e}, uncertainty {:.2e}",
+        c.reference.uncertainty
+    );
     assert!(reference_error <= c.reference.uncertainty);
     let kind = |name: &str| IntegratorKind::from_name(name).unwrap();
     for row in &c.rows {
-        let Some(err) = row.relative_error else { continue };
+        let Some(err) = row.relative_error else {
+            continue;
+        };
         let e = trajectory::relative_error(&run(kind(row.integrator), row.rate_hz), &exact);
-        assert!((err - e).abs() <= c.reference.uncertainty * (1.0 + e), "{} {} Hz: study {err} vs exact {e}", row.integrator, row.rate_hz);
+        assert!(
+            (err - e).abs() <= c.reference.uncertainty * (1.0 + e),
+            "{} {} Hz: study {err} vs exact {e}",
+            row.integrator,
+            row.rate_hz
+        );
     }
     assert_eq!(c.rows.len(), plan.integrators.len() * plan.rates_hz.len());
     let mut recommended = 0;
@@ -229,7 +296,10 @@ fn check_trajectory_axis(config: &Config, plan: &StudyPlan, r: &StudyReport) {
         let Some(s) = &rec.setting else { continue };
         let e = trajectory::relative_error(&run(kind(s.integrator), s.rate_hz), &exact);
         let claimed = rec.claimed_error.unwrap();
-        println!("  target {:.0e}: {} at {} Hz, claimed ≤ {claimed:.2e}, exact {e:.2e}", rec.target, s.integrator, s.rate_hz);
+        println!(
+            "  target {:.0e}: {} at {} Hz, claimed ≤ {claimed:.2e}, exact {e:.2e}",
+            rec.target, s.integrator, s.rate_hz
+        );
         assert!(e <= claimed && claimed <= rec.target);
         recommended += 1;
     }
@@ -252,8 +322,19 @@ fn quick_study_errors_match_exact_solutions_and_its_recommendations_hold() {
     // resolve the 18.7 kHz mode (docs/hard_cases.md), so their cost is nearly
     // flat in the rate and the cheaper one for each target wins; every claim
     // was checked against the exact trajectory above.
-    let picked: Vec<&str> = r.integrator.recommendations.iter().filter_map(|x| x.setting.as_ref().map(|s| s.integrator)).collect();
-    assert!(picked.len() == plan.targets.len() && picked.iter().all(|p| ["implicit_midpoint", "rk4"].contains(p)), "{picked:?}");
+    let picked: Vec<&str> = r
+        .integrator
+        .recommendations
+        .iter()
+        .filter_map(|x| x.setting.as_ref().map(|s| s.integrator))
+        .collect();
+    assert!(
+        picked.len() == plan.targets.len()
+            && picked
+                .iter()
+                .all(|p| ["implicit_midpoint", "rk4"].contains(p)),
+        "{picked:?}"
+    );
 }
 
 #[test]
@@ -271,20 +352,45 @@ fn full_study_errors_match_exact_solutions_and_its_recommendations_hold() {
     println!("full study: {wall:.1} s, {calls} progress calls");
     assert_eq!(calls, plan.units(&config) + 1);
     // The full grids, as planned.
-    assert_eq!(r.radial_splines.rows.len(), plan.splines.len() + 1, "the plan's counts and auto");
+    assert_eq!(
+        r.radial_splines.rows.len(),
+        plan.splines.len() + 1,
+        "the plan's counts and auto"
+    );
     assert_eq!(r.mode_count.rows.len(), plan.k_max.len() * plan.l_max.len());
-    assert_eq!(r.integrator.rows.len(), plan.integrators.len() * plan.rates_hz.len());
+    assert_eq!(
+        r.integrator.rows.len(),
+        plan.integrators.len() * plan.rates_hz.len()
+    );
     check_frequency_axis(&config, &r);
     check_response_axis(&config, &r);
     check_trajectory_axis(&config, &plan, &r);
     // The paper's mode set (k ≤ 7, l ≤ 1) is 5.3 % stiff under the rim force (docs/static_convergence.md).
-    let paper = r.mode_count.rows.iter().find(|x| x.k_max == 7 && x.l_max == 1).unwrap();
-    assert!((paper.relative_error - 0.0531).abs() < 0.001, "{}", paper.relative_error);
+    let paper = r
+        .mode_count
+        .rows
+        .iter()
+        .find(|x| x.k_max == 7 && x.l_max == 1)
+        .unwrap();
+    assert!(
+        (paper.relative_error - 0.0531).abs() < 0.001,
+        "{}",
+        paper.relative_error
+    );
     // The load-point targets down to 1e-4 are each reached by a corrected set
     // (checked against the exact plate above); below the modal reference's
     // uncertainty (~1e-4) nothing can be claimed.
-    for rec in r.mode_count.recommendations.iter().filter(|x| x.target >= 1e-4) {
-        assert!(rec.setting.as_ref().is_some_and(|s| s.residual_flexibility), "target {:e}: {rec:?}", rec.target);
+    for rec in r
+        .mode_count
+        .recommendations
+        .iter()
+        .filter(|x| x.target >= 1e-4)
+    {
+        assert!(
+            rec.setting.as_ref().is_some_and(|s| s.residual_flexibility),
+            "target {:e}: {rec:?}",
+            rec.target
+        );
     }
 }
 
@@ -300,14 +406,25 @@ fn lathe_file_residual_recommendations_hold_against_the_exact_plate() {
     let plan = StudyPlan::full();
     let r = study::run(&config, "lathe.yaml at rest", &plan, &mut |_, _, _| {}).unwrap();
     for target in [1e-3, 1e-4] {
-        let rec = r.mode_count.recommendations.iter().find(|x| x.target == target).unwrap();
-        assert!(rec.setting.as_ref().is_some_and(|s| s.residual_flexibility), "target {target:e}: {rec:?}");
+        let rec = r
+            .mode_count
+            .recommendations
+            .iter()
+            .find(|x| x.target == target)
+            .unwrap();
+        assert!(
+            rec.setting.as_ref().is_some_and(|s| s.residual_flexibility),
+            "target {target:e}: {rec:?}"
+        );
     }
     // The stepper check runs on the axis' own load case (a 1 N force at the
     // tool's node, no tool): the lathe disc of the study's default scene.
     let mut plain = resting_lathe();
     plain.loads.ale[0].force = [0.0, 0.0, -1.0];
-    assert_eq!(r.mode_count.load_case.loads, response::load_case(&plain).1.loads);
+    assert_eq!(
+        r.mode_count.load_case.loads,
+        response::load_case(&plain).1.loads
+    );
     assert_eq!(config.plate.nodal_diameters, plain.plate.nodal_diameters);
     check_response_axis(&plain, &r);
 }
@@ -320,18 +437,38 @@ fn full_plan_has_references_well_beyond_its_grids() {
     // The frequency reference is finer than the grid, but not beyond the ~128 splines
     // where the library's frequencies stop improving (round-off; docs/study.md).
     let spline_ref = plan.spline_reference_factor * plan.splines.last().unwrap();
-    assert!(plan.spline_reference_factor >= 2 && spline_ref <= 128, "{spline_ref}");
+    assert!(
+        plan.spline_reference_factor >= 2 && spline_ref <= 128,
+        "{spline_ref}"
+    );
     let (k_ref, l_ref) = plan.response_reference;
     assert!(k_ref >= 2 * plan.k_max.last().unwrap() && l_ref >= 2 * plan.l_max.last().unwrap());
-    assert!(k_ref <= 200 && l_ref <= 50 && k_ref % 4 == 0 && l_ref % 4 == 0, "nested sets K/4, K/2 are whole");
+    assert!(
+        k_ref <= 200 && l_ref <= 50 && k_ref % 4 == 0 && l_ref % 4 == 0,
+        "nested sets K/4, K/2 are whole"
+    );
     assert!(plan.response_splines >= l_ref as usize + 8);
-    assert!(sorted(&plan.rates_hz) && plan.rates_hz.iter().all(|r| (r / plan.sample_rate_hz).fract() == 0.0));
+    assert!(
+        sorted(&plan.rates_hz)
+            && plan
+                .rates_hz
+                .iter()
+                .all(|r| (r / plan.sample_rate_hz).fract() == 0.0)
+    );
     assert!(plan.trajectory_reference_rate_hz >= 10.0 * plan.rates_hz.last().unwrap());
     assert_eq!(plan.integrators.len(), 3);
-    assert!(plan.targets.contains(&1e-2) && plan.targets.contains(&1e-3) && plan.targets.contains(&1e-4));
+    assert!(
+        plan.targets.contains(&1e-2)
+            && plan.targets.contains(&1e-3)
+            && plan.targets.contains(&1e-4)
+    );
     // the quick plan is a smaller version of the same
     let q = StudyPlan::quick();
-    assert!(q.splines.len() < plan.splines.len() && q.k_max.len() < plan.k_max.len() && q.rates_hz.len() < plan.rates_hz.len());
+    assert!(
+        q.splines.len() < plan.splines.len()
+            && q.k_max.len() < plan.k_max.len()
+            && q.rates_hz.len() < plan.rates_hz.len()
+    );
 }
 
 #[test]
@@ -357,9 +494,15 @@ fn steady_response_closed_form_is_where_the_stepper_settles_when_spinning() {
         // the modal part (uz less the residual flexibility, docs/residual_flexibility.md)
         let w = sim.ale_node(0).uz - sim.residual_deflection(0);
         println!("Ω = {speed:.1} rad/s: closed form {closed:.12e}, stepper {w:.12e}, static {static_one:.12e}");
-        assert!((w - closed).abs() <= 1e-10 * closed.abs(), "{w} vs {closed}");
+        assert!(
+            (w - closed).abs() <= 1e-10 * closed.abs(),
+            "{w} vs {closed}"
+        );
         if speed > 100.0 {
-            assert!((closed - static_one).abs() > 1e-5 * closed.abs(), "the spin does change the response here");
+            assert!(
+                (closed - static_one).abs() > 1e-5 * closed.abs(),
+                "the spin does change the response here"
+            );
         }
     }
 }

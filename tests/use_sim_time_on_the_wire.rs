@@ -20,9 +20,20 @@ const T0: i64 = 100_000 * MS;
 #[test]
 fn the_node_steps_and_stamps_with_the_peers_clock_and_stands_still_with_it() {
     let ns = Netns::new();
-    let args = ["-p", "use_sim_time:=true", "-p", "ros.diagnostics_period:=0.05"];
+    let args = [
+        "-p",
+        "use_sim_time:=true",
+        "-p",
+        "ros.diagnostics_period:=0.05",
+    ];
     let node = start_node(&ns, 61, &args);
-    let out = peer(&ns, &node, "follow_clock", "/annular_plate", json!({"t0_ns": T0}));
+    let out = peer(
+        &ns,
+        &node,
+        "follow_clock",
+        "/annular_plate",
+        json!({"t0_ns": T0}),
+    );
 
     // Running, not paused, but without a clock: no step (a wall-clock node would have taken ~1000).
     assert_eq!(out["before_clock"], 0, "{out}");
@@ -32,29 +43,67 @@ fn the_node_steps_and_stamps_with_the_peers_clock_and_stands_still_with_it() {
     assert_eq!(out["after_origin"], 0);
     // Half a step of clock: no step; a still clock: no step; paused: the advance is skipped.
     assert_eq!(out["after_half_step"], 5, "5.5 steps of clock give 5 steps");
-    assert_eq!(out["after_standstill"], 10, "the clock stood still at 10 steps");
-    assert_eq!(out["step_service"]["success"], false, "~/step is refused while the clock drives");
-    assert!(out["step_service"]["message"].as_str().unwrap().contains("use_sim_time"), "{}", out["step_service"]);
+    assert_eq!(
+        out["after_standstill"], 10,
+        "the clock stood still at 10 steps"
+    );
+    assert_eq!(
+        out["step_service"]["success"], false,
+        "~/step is refused while the clock drives"
+    );
+    assert!(
+        out["step_service"]["message"]
+            .as_str()
+            .unwrap()
+            .contains("use_sim_time"),
+        "{}",
+        out["step_service"]
+    );
     assert_eq!(out["pause"]["success"], true);
-    assert_eq!(out["while_paused"], 30, "paused by ~/set_paused: the clock's advance to 50 ms is not stepped");
-    assert_eq!(out["after_resume"], 30, "resumed: the skipped advance is not caught up");
+    assert_eq!(
+        out["while_paused"], 30,
+        "paused by ~/set_paused: the clock's advance to 50 ms is not stepped"
+    );
+    assert_eq!(
+        out["after_resume"], 30,
+        "resumed: the skipped advance is not caught up"
+    );
     assert_eq!(out["final"], 33);
 
     // Every step published once, in order, stamped with the clock's time on the step grid:
     // t0 + k ms up to step 30, then t0 + 50 ms + (k - 30) ms after the paused stretch.
     let modal = out["modal"].as_array().unwrap();
     let steps: Vec<i64> = modal.iter().map(|m| m["step"].as_i64().unwrap()).collect();
-    assert_eq!(steps, (1..=33).collect::<Vec<_>>(), "one state per step, none lost or repeated");
+    assert_eq!(
+        steps,
+        (1..=33).collect::<Vec<_>>(),
+        "one state per step, none lost or repeated"
+    );
     for m in modal {
         let k = m["step"].as_i64().unwrap();
-        let want = if k <= 30 { T0 + k * MS } else { T0 + (k + 20) * MS };
+        let want = if k <= 30 {
+            T0 + k * MS
+        } else {
+            T0 + (k + 20) * MS
+        };
         assert_eq!(m["stamp"].as_i64().unwrap(), want, "stamp of step {k}");
         let sim_time = m["sim_time"].as_f64().unwrap();
-        assert!((sim_time - k as f64 * 1e-3).abs() < 1e-12, "the plate's own time advanced dt per step: step {k} at {sim_time}");
+        assert!(
+            (sim_time - k as f64 * 1e-3).abs() < 1e-12,
+            "the plate's own time advanced dt per step: step {k} at {sim_time}"
+        );
     }
 
     // The joint state after 33 steps is the offline simulation's after 33 steps.
-    let setup = NodeSetup::load(Some(&scene()), &["--ros-args".to_string(), "-p".into(), "use_sim_time:=true".into()]).unwrap();
+    let setup = NodeSetup::load(
+        Some(&scene()),
+        &[
+            "--ros-args".to_string(),
+            "-p".into(),
+            "use_sim_time:=true".into(),
+        ],
+    )
+    .unwrap();
     let mut sim = Simulation::new(setup.config).unwrap();
     for _ in 0..33 {
         sim.step().unwrap();
@@ -64,6 +113,15 @@ fn the_node_steps_and_stamps_with_the_peers_clock_and_stands_still_with_it() {
     let (pos, vel) = (floats(&js["position"])[0], floats(&js["velocity"])[0]);
     let want = sim.joint();
     let close = |a: f64, b: f64| (a - b).abs() <= 1e-12 + 1e-9 * a.abs().max(b.abs());
-    assert!(close(pos, want.position) && close(vel, want.velocity), "node ({pos}, {vel}) vs offline ({}, {})", want.position, want.velocity);
-    assert!(node.stderr().contains("following /clock"), "{}", node.stderr());
+    assert!(
+        close(pos, want.position) && close(vel, want.velocity),
+        "node ({pos}, {vel}) vs offline ({}, {})",
+        want.position,
+        want.velocity
+    );
+    assert!(
+        node.stderr().contains("following /clock"),
+        "{}",
+        node.stderr()
+    );
 }

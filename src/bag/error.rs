@@ -8,7 +8,10 @@ pub enum BagError {
     #[error("{0} already exists; give a new directory (as `ros2 bag record -o`)")]
     Exists(PathBuf),
     #[error("{path}: {source}")]
-    Io { path: PathBuf, source: std::io::Error },
+    Io {
+        path: PathBuf,
+        source: std::io::Error,
+    },
     #[error("{path}: MCAP: {message}")]
     Mcap { path: PathBuf, message: String },
     #[error("no message definition for {0}")]

@@ -15,12 +15,12 @@
 use super::recorder::{NodeBag, NodeTopics, Sample};
 use super::writer::{BagError, BagSummary};
 use crate::dynamics::Simulation;
-use crate::messages::names::{NameResolver, RosArgs};
 use crate::messages::clock::StepClock;
 use crate::messages::diagnostics::{self, LoopReport, Timing};
 use crate::messages::input_stats::InputStats;
-use crate::messages::outputs::{clock_message, static_transforms, FrameNames, OutputMessages};
 use crate::messages::marker::{MarkerInput, PlateMarker};
+use crate::messages::names::{NameResolver, RosArgs};
+use crate::messages::outputs::{clock_message, static_transforms, FrameNames, OutputMessages};
 use crate::messages::settings::RosSettings;
 use crate::messages::DEFAULT_NODE_NAME;
 use std::path::Path;
@@ -48,19 +48,48 @@ impl OfflineRecorder {
     /// Create the bag `dir` (it must not exist) for `sim`'s scene, with the
     /// scene's `ros.*` settings (frame prefix, world frame, diagnostics
     /// period, `ros.marker_*`).
-    pub fn create(dir: &Path, sim: &Simulation, settings: &RosSettings) -> Result<OfflineRecorder, BagError> {
+    pub fn create(
+        dir: &Path,
+        sim: &Simulation,
+        settings: &RosSettings,
+    ) -> Result<OfflineRecorder, BagError> {
         let marker = &settings.marker;
-        let names = NameResolver::new(&RosArgs::default(), DEFAULT_NODE_NAME).expect("the default node name is valid");
+        let names = NameResolver::new(&RosArgs::default(), DEFAULT_NODE_NAME)
+            .expect("the default node name is valid");
         let rate_hz = 1.0 / sim.dt();
         let every = marker.every(rate_hz);
-        let topics = NodeTopics::resolve(&names, true, sim.pad_count() > 0, sim.has_tool(), every.is_some())
-            .expect("the default topic names are valid");
+        let topics = NodeTopics::resolve(
+            &names,
+            true,
+            sim.pad_count() > 0,
+            sim.has_tool(),
+            every.is_some(),
+        )
+        .expect("the default topic names are valid");
         let mut bag = NodeBag::create(dir, &topics)?;
-        let frames =
-            FrameNames::new(&settings.frame_prefix, &settings.world_frame, sim.n_ale_nodes(), sim.n_lagrange_nodes());
+        let frames = FrameNames::new(
+            &settings.frame_prefix,
+            &settings.world_frame,
+            sim.n_ale_nodes(),
+            sim.n_lagrange_nodes(),
+        );
         let clock = StepClock::new(true, sim.dt());
-        bag.write(&Sample::TfStatic(static_transforms(&frames, sim.config().reference.tilt, clock.sim_time())), clock.sim_time())?;
-        let marker = every.map(|n| (PlateMarker::new(sim.model(), &frames, marker, rate_hz / n as f64), MarkerInput::new(sim), n, 0));
+        bag.write(
+            &Sample::TfStatic(static_transforms(
+                &frames,
+                sim.config().reference.tilt,
+                clock.sim_time(),
+            )),
+            clock.sim_time(),
+        )?;
+        let marker = every.map(|n| {
+            (
+                PlateMarker::new(sim.model(), &frames, marker, rate_hz / n as f64),
+                MarkerInput::new(sim),
+                n,
+                0,
+            )
+        });
         Ok(OfflineRecorder {
             marker,
             bag,
@@ -88,11 +117,17 @@ impl OfflineRecorder {
             self.clock.advance();
         }
         let stamp = self.clock.stamp();
-        self.bag.write(&Sample::Clock(clock_message(&self.clock)), stamp)?;
+        self.bag
+            .write(&Sample::Clock(clock_message(&self.clock)), stamp)?;
         self.outputs.update(sim, stamp);
-        self.bag.write(&Sample::JointState(self.outputs.joint_state.handle()), stamp)?;
-        self.bag.write(&Sample::Tf(self.outputs.tf.handle()), stamp)?;
-        self.bag.write(&Sample::Modal(self.outputs.modal.handle()), stamp)?;
+        self.bag.write(
+            &Sample::JointState(self.outputs.joint_state.handle()),
+            stamp,
+        )?;
+        self.bag
+            .write(&Sample::Tf(self.outputs.tf.handle()), stamp)?;
+        self.bag
+            .write(&Sample::Modal(self.outputs.modal.handle()), stamp)?;
         if let Some(p) = &self.outputs.pad_states {
             self.bag.write(&Sample::PadStates(p.handle()), stamp)?;
         }
@@ -105,7 +140,8 @@ impl OfflineRecorder {
             if sim.step_count() >= *next {
                 input.capture(sim, stamp);
                 marker.update(input);
-                self.bag.write(&Sample::Marker(marker.message().handle()), stamp)?;
+                self.bag
+                    .write(&Sample::Marker(marker.message().handle()), stamp)?;
                 *next = (sim.step_count() / *every + 1) * *every;
             }
         }
@@ -131,7 +167,10 @@ impl OfflineRecorder {
                 diagnostics::simulation_status(&self.node_name, &report),
                 diagnostics::inputs_status(&self.node_name, &self.inputs, 0, None),
             ];
-            self.bag.write(&Sample::Diagnostics(diagnostics::diagnostics_message(stamp, status)), stamp)?;
+            self.bag.write(
+                &Sample::Diagnostics(diagnostics::diagnostics_message(stamp, status)),
+                stamp,
+            )?;
         }
         self.recorded_states += 1;
         Ok(())

@@ -12,12 +12,13 @@
 //! writes metadata.yaml.
 
 use super::writer::{BagError, BagSummary, BagWriter, TopicId};
-use crate::messages::names::NameResolver;
 use crate::messages::diagnostics::RecordReport;
-use crate::messages::types::{
-    Clock, DiagnosticArray, JointState, ModalAmplitudes, PadStates, RosType, TFMessage, Time, ToolState,
-};
+use crate::messages::names::NameResolver;
 use crate::messages::outputs::Shared;
+use crate::messages::types::{
+    Clock, DiagnosticArray, JointState, ModalAmplitudes, PadStates, RosType, TFMessage, Time,
+    ToolState,
+};
 use crate::messages::visualization::MarkerArray;
 use crate::messages::{qos, topics};
 use ros2_client::QosProfile;
@@ -62,7 +63,13 @@ pub struct NodeTopics {
 impl NodeTopics {
     /// The names the node publishes under, for `names`, the time mode and
     /// the scene's load models (pads, a tool).
-    pub fn resolve(names: &NameResolver, sim_time: bool, has_pads: bool, has_tool: bool, has_marker: bool) -> Result<NodeTopics, String> {
+    pub fn resolve(
+        names: &NameResolver,
+        sim_time: bool,
+        has_pads: bool,
+        has_tool: bool,
+        has_marker: bool,
+    ) -> Result<NodeTopics, String> {
         let r = |t: &str| names.resolve(t).map_err(|e| e.to_string());
         Ok(NodeTopics {
             joint_states: r(topics::JOINT_STATES)?,
@@ -70,10 +77,26 @@ impl NodeTopics {
             tf_static: r(topics::TF_STATIC)?,
             modal_amplitudes: r(topics::MODAL_AMPLITUDES)?,
             diagnostics: r(topics::DIAGNOSTICS)?,
-            clock: if sim_time { Some(r(topics::CLOCK)?) } else { None },
-            pad_states: if has_pads { Some(r(topics::PAD_STATES)?) } else { None },
-            tool_state: if has_tool { Some(r(topics::TOOL_STATE)?) } else { None },
-            plate_marker: if has_marker { Some(r(topics::PLATE_MARKER)?) } else { None },
+            clock: if sim_time {
+                Some(r(topics::CLOCK)?)
+            } else {
+                None
+            },
+            pad_states: if has_pads {
+                Some(r(topics::PAD_STATES)?)
+            } else {
+                None
+            },
+            tool_state: if has_tool {
+                Some(r(topics::TOOL_STATE)?)
+            } else {
+                None
+            },
+            plate_marker: if has_marker {
+                Some(r(topics::PLATE_MARKER)?)
+            } else {
+                None
+            },
         })
     }
 }
@@ -104,7 +127,11 @@ impl NodeBag {
         let tf_static = add(&topics.tf_static, type_name::<TFMessage>(), &qos::TF_STATIC)?;
         let joint_states = add(&topics.joint_states, type_name::<JointState>(), &qos::STATE)?;
         let tf = add(&topics.tf, type_name::<TFMessage>(), &qos::TF)?;
-        let modal = add(&topics.modal_amplitudes, type_name::<ModalAmplitudes>(), &qos::STATE)?;
+        let modal = add(
+            &topics.modal_amplitudes,
+            type_name::<ModalAmplitudes>(),
+            &qos::STATE,
+        )?;
         let pad_states = match &topics.pad_states {
             Some(t) => Some(add(t, type_name::<PadStates>(), &qos::STATE)?),
             None => None,
@@ -117,12 +144,27 @@ impl NodeBag {
             Some(t) => Some(add(t, type_name::<MarkerArray>(), &qos::MARKER)?),
             None => None,
         };
-        let diagnostics = add(&topics.diagnostics, type_name::<DiagnosticArray>(), &qos::DIAGNOSTICS)?;
+        let diagnostics = add(
+            &topics.diagnostics,
+            type_name::<DiagnosticArray>(),
+            &qos::DIAGNOSTICS,
+        )?;
         let clock = match &topics.clock {
             Some(c) => Some(add(c, type_name::<Clock>(), &qos::CLOCK)?),
             None => None,
         };
-        Ok(NodeBag { writer, joint_states, tf, tf_static, modal, diagnostics, clock, pad_states, tool_state, plate_marker })
+        Ok(NodeBag {
+            writer,
+            joint_states,
+            tf,
+            tf_static,
+            modal,
+            diagnostics,
+            clock,
+            pad_states,
+            tool_state,
+            plate_marker,
+        })
     }
 
     pub fn dir(&self) -> &Path {
@@ -200,8 +242,18 @@ impl Recorder {
         let counters = Arc::new(Counters::default());
         let path = bag.dir().display().to_string();
         let c = Arc::clone(&counters);
-        let join = std::thread::Builder::new().name("annular_plate-bag".into()).spawn(move || write_all(bag, rx, &c))?;
-        Ok((Recorder { tx, counters: Arc::clone(&counters), path, capacity }, RecorderThread { join, counters }))
+        let join = std::thread::Builder::new()
+            .name("annular_plate-bag".into())
+            .spawn(move || write_all(bag, rx, &c))?;
+        Ok((
+            Recorder {
+                tx,
+                counters: Arc::clone(&counters),
+                path,
+                capacity,
+            },
+            RecorderThread { join, counters },
+        ))
     }
 
     /// Hand one message over; never blocks. Dropped (and counted) if the queue is full.
@@ -225,12 +277,21 @@ impl Recorder {
             dropped,
             new_dropped: dropped.saturating_sub(dropped_before),
             capacity: self.capacity,
-            error: self.counters.error.lock().map(|e| e.clone()).unwrap_or(None),
+            error: self
+                .counters
+                .error
+                .lock()
+                .map(|e| e.clone())
+                .unwrap_or(None),
         }
     }
 }
 
-fn write_all(mut bag: NodeBag, rx: Receiver<(Sample, Time)>, c: &Counters) -> Result<BagSummary, BagError> {
+fn write_all(
+    mut bag: NodeBag,
+    rx: Receiver<(Sample, Time)>,
+    c: &Counters,
+) -> Result<BagSummary, BagError> {
     let mut failed = false;
     // Ends when every sender is gone (the loop has stopped).
     for (sample, at) in rx {

@@ -60,11 +60,12 @@ const DEFINITIONS: &[(&str, &str)] = &[
 ];
 
 const PRIMITIVES: &[&str] = &[
-    "bool", "byte", "char", "float32", "float64", "int8", "uint8", "int16", "uint16", "int32", "uint32", "int64",
-    "uint64", "string", "wstring",
+    "bool", "byte", "char", "float32", "float64", "int8", "uint8", "int16", "uint16", "int32",
+    "uint32", "int64", "uint64", "string", "wstring",
 ];
 
-const DELIMITER: &str = "================================================================================\n";
+const DELIMITER: &str =
+    "================================================================================\n";
 
 /// `pkg/msg/Type` or `pkg/Type` → `(pkg, Type)`.
 fn split(type_name: &str) -> Option<(&str, &str)> {
@@ -80,7 +81,10 @@ fn split(type_name: &str) -> Option<(&str, &str)> {
 /// The `.msg` text of one type (`pkg/Type` or `pkg/msg/Type`), without dependencies.
 pub fn own_text(type_name: &str) -> Option<&'static str> {
     let (pkg, name) = split(type_name)?;
-    DEFINITIONS.iter().find(|(n, _)| n.split_once('/') == Some((pkg, name))).map(|(_, t)| *t)
+    DEFINITIONS
+        .iter()
+        .find(|(n, _)| n.split_once('/') == Some((pkg, name)))
+        .map(|(_, t)| *t)
 }
 
 /// The non-primitive field types of a `.msg` text as `pkg/Type`, sorted and
@@ -89,7 +93,9 @@ pub fn dependencies(text: &str, package: &str) -> Vec<String> {
     let mut out = std::collections::BTreeSet::new();
     for line in text.lines() {
         let line = line.split('#').next().unwrap_or("").trim();
-        let Some(ty) = line.split_whitespace().next() else { continue };
+        let Some(ty) = line.split_whitespace().next() else {
+            continue;
+        };
         if line.split_whitespace().nth(1).is_none() {
             continue;
         }
@@ -98,7 +104,11 @@ pub fn dependencies(text: &str, package: &str) -> Vec<String> {
         if PRIMITIVES.contains(&ty) {
             continue;
         }
-        out.insert(if ty.contains('/') { ty.to_string() } else { format!("{package}/{ty}") });
+        out.insert(if ty.contains('/') {
+            ty.to_string()
+        } else {
+            format!("{package}/{ty}")
+        });
     }
     out.into_iter().collect()
 }
@@ -114,7 +124,12 @@ pub fn ros2msg(type_name: &str) -> Option<String> {
     Some(out)
 }
 
-fn append(type_name: &str, seen: &mut std::collections::BTreeSet<String>, out: &mut String, depth: usize) -> Option<()> {
+fn append(
+    type_name: &str,
+    seen: &mut std::collections::BTreeSet<String>,
+    out: &mut String,
+    depth: usize,
+) -> Option<()> {
     if depth > 50 {
         return None;
     }
@@ -155,7 +170,11 @@ mod tests {
             "geometry_msgs/Quaternion",
             "geometry_msgs/Vector3",
         ] {
-            assert_eq!(s.matches(&format!("{DELIMITER}MSG: {t}\n")).count(), 1, "{t} once in\n{s}");
+            assert_eq!(
+                s.matches(&format!("{DELIMITER}MSG: {t}\n")).count(),
+                1,
+                "{t} once in\n{s}"
+            );
         }
         assert_eq!(s.matches("MSG: ").count(), 6);
     }
@@ -164,10 +183,18 @@ mod tests {
     fn own_package_types_and_relative_names_resolve() {
         let s = ros2msg("annular_plate/msg/ModalAmplitudes").unwrap();
         assert!(s.contains("float64[] q_ale"));
-        assert!(s.contains("MSG: std_msgs/Header\n") && s.contains("MSG: builtin_interfaces/Time\n"));
+        assert!(
+            s.contains("MSG: std_msgs/Header\n") && s.contains("MSG: builtin_interfaces/Time\n")
+        );
         let d = ros2msg("diagnostic_msgs/msg/DiagnosticArray").unwrap();
-        assert!(d.contains("MSG: diagnostic_msgs/DiagnosticStatus\n") && d.contains("MSG: diagnostic_msgs/KeyValue\n"));
-        assert_eq!(dependencies("byte OK=0\nKeyValue[] values # c\n", "diagnostic_msgs"), vec!["diagnostic_msgs/KeyValue"]);
+        assert!(
+            d.contains("MSG: diagnostic_msgs/DiagnosticStatus\n")
+                && d.contains("MSG: diagnostic_msgs/KeyValue\n")
+        );
+        assert_eq!(
+            dependencies("byte OK=0\nKeyValue[] values # c\n", "diagnostic_msgs"),
+            vec!["diagnostic_msgs/KeyValue"]
+        );
         assert!(ros2msg("nav_msgs/msg/Odometry").is_none());
         assert!(ros2msg("bad").is_none());
     }

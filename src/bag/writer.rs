@@ -101,7 +101,10 @@ pub const CHECKPOINT_PERIOD: Duration = Duration::from_millis(500);
 
 /// `dir/metadata.yaml`, replaced atomically.
 fn write_metadata_yaml(dir: &Path, metadata: &Metadata) -> Result<(), BagError> {
-    let yaml = serde_yaml_ng::to_string(&MetadataFile { rosbag2_bagfile_information: metadata }).map_err(|e| BagError::Yaml(e.to_string()))?;
+    let yaml = serde_yaml_ng::to_string(&MetadataFile {
+        rosbag2_bagfile_information: metadata,
+    })
+    .map_err(|e| BagError::Yaml(e.to_string()))?;
     let meta_path = dir.join("metadata.yaml");
     let tmp = dir.join("metadata.yaml.tmp");
     std::fs::write(&tmp, yaml).map_err(io(&tmp))?;
@@ -109,7 +112,10 @@ fn write_metadata_yaml(dir: &Path, metadata: &Metadata) -> Result<(), BagError> 
 }
 
 fn io(path: &Path) -> impl FnOnce(std::io::Error) -> BagError + '_ {
-    move |source| BagError::Io { path: path.to_path_buf(), source }
+    move |source| BagError::Io {
+        path: path.to_path_buf(),
+        source,
+    }
 }
 
 /// rmw's "infinite" duration as rosbag2 stores it (RMW_DURATION_INFINITE).
@@ -174,10 +180,17 @@ impl BagWriter {
         let file = File::create(&path).map_err(io(&path))?;
         let mcap = mcap::WriteOptions::new()
             .profile("ros2")
-            .library(format!("annular_plate {} (mcap {})", env!("CARGO_PKG_VERSION"), "0.26"))
+            .library(format!(
+                "annular_plate {} (mcap {})",
+                env!("CARGO_PKG_VERSION"),
+                "0.26"
+            ))
             .compression(None)
             .create(BufWriter::with_capacity(1 << 20, file))
-            .map_err(|e| BagError::Mcap { path: path.clone(), message: e.to_string() })?;
+            .map_err(|e| BagError::Mcap {
+                path: path.clone(),
+                message: e.to_string(),
+            })?;
         Ok(BagWriter {
             dir: dir.to_path_buf(),
             file_name,
@@ -203,41 +216,83 @@ impl BagWriter {
     }
 
     fn mcap_error(&self, e: mcap::McapError) -> BagError {
-        BagError::Mcap { path: self.dir.join(&self.file_name), message: e.to_string() }
+        BagError::Mcap {
+            path: self.dir.join(&self.file_name),
+            message: e.to_string(),
+        }
     }
 
     /// Add a topic of type `type_name` (`pkg/msg/Type`) offered with `qos`.
-    pub fn add_topic(&mut self, name: &str, type_name: &str, qos: &QosProfile) -> Result<TopicId, BagError> {
-        let text = schemas::ros2msg(type_name).ok_or_else(|| BagError::UnknownType(type_name.to_string()))?;
+    pub fn add_topic(
+        &mut self,
+        name: &str,
+        type_name: &str,
+        qos: &QosProfile,
+    ) -> Result<TopicId, BagError> {
+        let text = schemas::ros2msg(type_name)
+            .ok_or_else(|| BagError::UnknownType(type_name.to_string()))?;
         self.add_topic_with_schema(name, type_name, text.as_bytes(), offered_qos_yaml(qos))
     }
 
     /// Add a topic with its `ros2msg` schema text and `offered_qos_profiles` text as given.
-    pub fn add_topic_with_schema(&mut self, name: &str, type_name: &str, schema_text: &[u8], qos: String) -> Result<TopicId, BagError> {
+    pub fn add_topic_with_schema(
+        &mut self,
+        name: &str,
+        type_name: &str,
+        schema_text: &[u8],
+        qos: String,
+    ) -> Result<TopicId, BagError> {
         if self.topics.iter().any(|t| t.name == name) {
             return Err(BagError::DuplicateTopic(name.to_string()));
         }
-        let schema = self.mcap.add_schema(type_name, "ros2msg", schema_text).map_err(|e| self.mcap_error(e))?;
+        let schema = self
+            .mcap
+            .add_schema(type_name, "ros2msg", schema_text)
+            .map_err(|e| self.mcap_error(e))?;
         let metadata = BTreeMap::from([("offered_qos_profiles".to_string(), qos.clone())]);
-        let channel = self.mcap.add_channel(schema, name, "cdr", &metadata).map_err(|e| self.mcap_error(e))?;
-        self.topics.push(Topic { name: name.to_string(), type_name: type_name.to_string(), qos, channel, count: 0 });
+        let channel = self
+            .mcap
+            .add_channel(schema, name, "cdr", &metadata)
+            .map_err(|e| self.mcap_error(e))?;
+        self.topics.push(Topic {
+            name: name.to_string(),
+            type_name: type_name.to_string(),
+            qos,
+            channel,
+            count: 0,
+        });
         Ok(TopicId(self.topics.len() - 1))
     }
 
     /// Serialize `msg` (CDR, little endian) and write it at `log_time` ns.
-    pub fn write<T: Serialize>(&mut self, topic: TopicId, log_time: u64, msg: &T) -> Result<(), BagError> {
+    pub fn write<T: Serialize>(
+        &mut self,
+        topic: TopicId,
+        log_time: u64,
+        msg: &T,
+    ) -> Result<(), BagError> {
         let mut buf = std::mem::take(&mut self.buf);
         buf.clear();
         buf.extend_from_slice(&CDR_LE_HEADER);
-        let serialized = cdr_encoding::to_writer::<T, LittleEndian, _>(&mut buf, msg)
-            .map_err(|e| BagError::Cdr { topic: self.topics[topic.0].name.clone(), message: e.to_string() });
+        let serialized =
+            cdr_encoding::to_writer::<T, LittleEndian, _>(&mut buf, msg).map_err(|e| {
+                BagError::Cdr {
+                    topic: self.topics[topic.0].name.clone(),
+                    message: e.to_string(),
+                }
+            });
         let written = serialized.and_then(|()| self.write_raw(topic, log_time, &buf));
         self.buf = buf;
         written
     }
 
     /// Write an already serialized message (CDR header included) at `log_time` ns.
-    pub fn write_raw(&mut self, topic: TopicId, log_time: u64, data: &[u8]) -> Result<(), BagError> {
+    pub fn write_raw(
+        &mut self,
+        topic: TopicId,
+        log_time: u64,
+        data: &[u8],
+    ) -> Result<(), BagError> {
         let t = &mut self.topics[topic.0];
         let header = mcap::records::MessageHeader {
             channel_id: t.channel,
@@ -251,7 +306,11 @@ impl BagWriter {
         self.last = self.last.max(log_time);
         let r = self.mcap.write_to_known_channel(&header, data);
         r.map_err(|e| self.mcap_error(e))?;
-        if self.checkpoints && self.checkpoint.is_none_or(|t| t.elapsed() >= CHECKPOINT_PERIOD) {
+        if self.checkpoints
+            && self
+                .checkpoint
+                .is_none_or(|t| t.elapsed() >= CHECKPOINT_PERIOD)
+        {
             self.checkpoint()?;
         }
         Ok(())
@@ -267,8 +326,6 @@ impl BagWriter {
         Ok(())
     }
 
-
-
     /// Messages written so far.
     pub fn message_count(&self) -> u64 {
         self.count
@@ -280,8 +337,12 @@ impl BagWriter {
         Metadata {
             version: METADATA_VERSION,
             storage_identifier: "mcap".into(),
-            duration: Nanoseconds { nanoseconds: duration },
-            starting_time: SinceEpoch { nanoseconds_since_epoch: start },
+            duration: Nanoseconds {
+                nanoseconds: duration,
+            },
+            starting_time: SinceEpoch {
+                nanoseconds_since_epoch: start,
+            },
             message_count: self.count,
             topics_with_message_count: self
                 .topics
@@ -302,8 +363,12 @@ impl BagWriter {
             relative_file_paths: vec![self.file_name.clone()],
             files: vec![FileInformation {
                 path: self.file_name.clone(),
-                starting_time: SinceEpoch { nanoseconds_since_epoch: start },
-                duration: Nanoseconds { nanoseconds: duration },
+                starting_time: SinceEpoch {
+                    nanoseconds_since_epoch: start,
+                },
+                duration: Nanoseconds {
+                    nanoseconds: duration,
+                },
                 message_count: self.count,
             }],
             custom_data: BTreeMap::new(),
@@ -323,17 +388,23 @@ impl BagWriter {
     /// its part of metadata.yaml for [`write_combined_metadata`].
     pub(super) fn finish_file(mut self) -> Result<(BagSummary, Metadata), BagError> {
         let metadata = self.metadata();
-        let serialized = serde_yaml_ng::to_string(&metadata).map_err(|e| BagError::Yaml(e.to_string()))?;
+        let serialized =
+            serde_yaml_ng::to_string(&metadata).map_err(|e| BagError::Yaml(e.to_string()))?;
         let record = mcap::records::Metadata {
             name: "rosbag2".into(),
             metadata: BTreeMap::from([("serialized_metadata".to_string(), serialized)]),
         };
-        self.mcap.write_metadata(&record).map_err(|e| self.mcap_error(e))?;
+        self.mcap
+            .write_metadata(&record)
+            .map_err(|e| self.mcap_error(e))?;
         self.mcap.finish().map_err(|e| self.mcap_error(e))?;
         let path = self.dir.join(&self.file_name);
         let mut file = self.mcap.into_inner();
         file.flush().map_err(io(&path))?;
-        let file = file.into_inner().map_err(|e| BagError::Io { path: path.clone(), source: e.into_error() })?;
+        let file = file.into_inner().map_err(|e| BagError::Io {
+            path: path.clone(),
+            source: e.into_error(),
+        })?;
         file.sync_all().map_err(io(&path))?;
         let bytes = file.metadata().map_err(io(&path))?.len();
 
@@ -346,7 +417,11 @@ impl BagWriter {
             topics: self
                 .topics
                 .iter()
-                .map(|t| TopicSummary { name: t.name.clone(), type_name: t.type_name.clone(), count: t.count })
+                .map(|t| TopicSummary {
+                    name: t.name.clone(),
+                    type_name: t.type_name.clone(),
+                    count: t.count,
+                })
                 .collect(),
             bytes,
         };
@@ -359,10 +434,18 @@ impl BagWriter {
 /// latest end.
 pub(super) fn write_combined_metadata(dir: &Path, parts: Vec<Metadata>) -> Result<(), BagError> {
     let mut parts = parts.into_iter();
-    let Some(mut all) = parts.next() else { return Ok(()) };
+    let Some(mut all) = parts.next() else {
+        return Ok(());
+    };
     for m in parts {
-        let (a0, a1) = (all.starting_time.nanoseconds_since_epoch, all.starting_time.nanoseconds_since_epoch + all.duration.nanoseconds);
-        let (b0, b1) = (m.starting_time.nanoseconds_since_epoch, m.starting_time.nanoseconds_since_epoch + m.duration.nanoseconds);
+        let (a0, a1) = (
+            all.starting_time.nanoseconds_since_epoch,
+            all.starting_time.nanoseconds_since_epoch + all.duration.nanoseconds,
+        );
+        let (b0, b1) = (
+            m.starting_time.nanoseconds_since_epoch,
+            m.starting_time.nanoseconds_since_epoch + m.duration.nanoseconds,
+        );
         let (start, end) = match (all.message_count, m.message_count) {
             (0, _) => (b0, b1),
             (_, 0) => (a0, a1),
@@ -372,7 +455,11 @@ pub(super) fn write_combined_metadata(dir: &Path, parts: Vec<Metadata>) -> Resul
         all.duration.nanoseconds = end - start;
         all.message_count += m.message_count;
         for t in m.topics_with_message_count {
-            match all.topics_with_message_count.iter_mut().find(|a| a.topic_metadata.name == t.topic_metadata.name) {
+            match all
+                .topics_with_message_count
+                .iter_mut()
+                .find(|a| a.topic_metadata.name == t.topic_metadata.name)
+            {
                 Some(a) => a.message_count += t.message_count,
                 None => all.topics_with_message_count.push(t),
             }
@@ -442,11 +529,12 @@ pub(super) struct Metadata {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::messages::types::{Clock, Time};
     use crate::messages::qos;
+    use crate::messages::types::{Clock, Time};
 
     fn temp(name: &str) -> PathBuf {
-        let d = std::env::temp_dir().join(format!("annular_plate-bag-{}-{name}", std::process::id()));
+        let d =
+            std::env::temp_dir().join(format!("annular_plate-bag-{}-{name}", std::process::id()));
         let _ = std::fs::remove_dir_all(&d);
         d
     }
@@ -463,15 +551,27 @@ mod tests {
     fn a_bag_directory_has_metadata_and_an_mcap_file() {
         let dir = temp("small");
         let mut w = BagWriter::create(&dir).unwrap();
-        let clock = w.add_topic("/clock", "rosgraph_msgs/msg/Clock", &qos::CLOCK).unwrap();
-        assert!(matches!(w.add_topic("/clock", "rosgraph_msgs/msg/Clock", &qos::CLOCK), Err(BagError::DuplicateTopic(_))));
-        assert!(matches!(w.add_topic("/x", "nav_msgs/msg/Odometry", &qos::CLOCK), Err(BagError::UnknownType(_))));
+        let clock = w
+            .add_topic("/clock", "rosgraph_msgs/msg/Clock", &qos::CLOCK)
+            .unwrap();
+        assert!(matches!(
+            w.add_topic("/clock", "rosgraph_msgs/msg/Clock", &qos::CLOCK),
+            Err(BagError::DuplicateTopic(_))
+        ));
+        assert!(matches!(
+            w.add_topic("/x", "nav_msgs/msg/Odometry", &qos::CLOCK),
+            Err(BagError::UnknownType(_))
+        ));
         for n in 0..3i64 {
             let t = Time::from_nanos(n * 1_000_000);
-            w.write(clock, t.to_nanos() as u64, &Clock { clock: t }).unwrap();
+            w.write(clock, t.to_nanos() as u64, &Clock { clock: t })
+                .unwrap();
         }
         let s = w.finish().unwrap();
-        assert_eq!((s.message_count, s.starting_time, s.duration), (3, 0, 2_000_000));
+        assert_eq!(
+            (s.message_count, s.starting_time, s.duration),
+            (3, 0, 2_000_000)
+        );
         let name = dir.file_name().unwrap().to_string_lossy().into_owned();
         assert_eq!(s.file, format!("{name}_0.mcap"));
         let mcap = std::fs::read(dir.join(&s.file)).unwrap();
@@ -480,7 +580,12 @@ mod tests {
         let payload = [0u8, 1, 0, 0, 0, 0, 0, 0, 0x80, 0x84, 0x1e, 0];
         assert!(mcap.windows(payload.len()).any(|w| w == payload));
         let meta = std::fs::read_to_string(dir.join("metadata.yaml")).unwrap();
-        assert!(meta.starts_with("rosbag2_bagfile_information:\n  version: 9\n  storage_identifier: mcap\n"), "{meta}");
+        assert!(
+            meta.starts_with(
+                "rosbag2_bagfile_information:\n  version: 9\n  storage_identifier: mcap\n"
+            ),
+            "{meta}"
+        );
         assert!(meta.contains("type: rosgraph_msgs/msg/Clock"));
         assert!(matches!(BagWriter::create(&dir), Err(BagError::Exists(_))));
         let _ = std::fs::remove_dir_all(&dir);

@@ -41,12 +41,24 @@ pub const MAX_POINTS: usize = 100_000;
 
 /// `FROM:TO:N` → N speeds from FROM to TO inclusive (N = 1: FROM, which must equal TO).
 pub fn parse_range(option: &str, text: &str) -> CliResult<Vec<f64>> {
-    let bad = |why: &str| CliError::Usage(format!("{option} {text}: {why} (give FROM:TO:N, e.g. 0:6000:121)"));
+    let bad = |why: &str| {
+        CliError::Usage(format!(
+            "{option} {text}: {why} (give FROM:TO:N, e.g. 0:6000:121)"
+        ))
+    };
     let parts: Vec<&str> = text.split(':').collect();
-    let [from, to, n] = parts[..] else { return Err(bad("three fields separated by ':' expected")) };
-    let from: f64 = from.trim().parse().map_err(|_| bad("FROM is not a number"))?;
+    let [from, to, n] = parts[..] else {
+        return Err(bad("three fields separated by ':' expected"));
+    };
+    let from: f64 = from
+        .trim()
+        .parse()
+        .map_err(|_| bad("FROM is not a number"))?;
     let to: f64 = to.trim().parse().map_err(|_| bad("TO is not a number"))?;
-    let n: usize = n.trim().parse().map_err(|_| bad("N is not a whole number ≥ 1"))?;
+    let n: usize = n
+        .trim()
+        .parse()
+        .map_err(|_| bad("N is not a whole number ≥ 1"))?;
     if !(from.is_finite() && to.is_finite()) {
         return Err(bad("FROM and TO must be finite"));
     }
@@ -66,7 +78,15 @@ pub fn linspace(from: f64, to: f64, n: usize) -> Vec<f64> {
     if n == 1 {
         return vec![from];
     }
-    (0..n).map(|i| if i + 1 == n { to } else { from + (to - from) * i as f64 / (n - 1) as f64 }).collect()
+    (0..n)
+        .map(|i| {
+            if i + 1 == n {
+                to
+            } else {
+                from + (to - from) * i as f64 / (n - 1) as f64
+            }
+        })
+        .collect()
 }
 
 pub fn main(args: CampbellArgs) -> CliResult<()> {
@@ -99,21 +119,43 @@ pub fn main(args: CampbellArgs) -> CliResult<()> {
             let critical = critical_speeds(&model, &config.centrifugal)?;
             // Without any critical speed (only k = 0 modes): up to the highest frequency, in rad/s.
             let top = critical.iter().map(|c| c.rad_s).fold(0.0, f64::max);
-            let top = if top > 0.0 { top } else { model.modes().iter().map(|m| m.omega).fold(0.0, f64::max) };
+            let top = if top > 0.0 {
+                top
+            } else {
+                model.modes().iter().map(|m| m.omega).fold(0.0, f64::max)
+            };
             linspace(0.0, 1.2 * top, DEFAULT_SPEED_COUNT)
         }
     };
     let diagram = campbell(&model, &config.centrifugal, &speeds)?;
     if let Some(p) = &args.plot {
-        super::plot::campbell(&diagram, config.centrifugal.stiffening, p, super::plot::Size { width: 1200, height: 800 })?;
+        super::plot::campbell(
+            &diagram,
+            config.centrifugal.stiffening,
+            p,
+            super::plot::Size {
+                width: 1200,
+                height: 800,
+            },
+        )?;
     }
     let stdout = std::io::stdout();
-    write(&diagram, config.centrifugal.stiffening, args.json, &mut stdout.lock())?;
+    write(
+        &diagram,
+        config.centrifugal.stiffening,
+        args.json,
+        &mut stdout.lock(),
+    )?;
     Ok(())
 }
 
 /// The table (or JSON) of `diagram` to `out`.
-pub fn write(diagram: &CampbellDiagram, stiffening: bool, json: bool, out: &mut impl Write) -> std::io::Result<()> {
+pub fn write(
+    diagram: &CampbellDiagram,
+    stiffening: bool,
+    json: bool,
+    out: &mut impl Write,
+) -> std::io::Result<()> {
     if json {
         serde_json::to_writer_pretty(&mut *out, diagram)?;
         writeln!(out)?;
@@ -128,12 +170,24 @@ pub fn write(diagram: &CampbellDiagram, stiffening: bool, json: bool, out: &mut 
         s.last().copied().unwrap_or(0.0),
         if stiffening { "on" } else { "off" }
     )?;
-    writeln!(out, "{:>4} {:>4} {:>16} {:>16} {:>18}", "k", "l", "f(Ω=first) Hz", "f(Ω=last) Hz", "critical rad/s")?;
+    writeln!(
+        out,
+        "{:>4} {:>4} {:>16} {:>16} {:>18}",
+        "k", "l", "f(Ω=first) Hz", "f(Ω=last) Hz", "critical rad/s"
+    )?;
     for m in &diagram.modes {
-        let critical = diagram.critical_speeds.iter().find(|c| c.k == m.k && c.l == m.l).map_or("—".to_string(), |c| format!("{:.3}", c.rad_s));
+        let critical = diagram
+            .critical_speeds
+            .iter()
+            .find(|c| c.k == m.k && c.l == m.l)
+            .map_or("—".to_string(), |c| format!("{:.3}", c.rad_s));
         let first = m.rotating_hz.first().copied().unwrap_or(f64::NAN);
         let last = m.rotating_hz.last().copied().unwrap_or(f64::NAN);
-        writeln!(out, "{:>4} {:>4} {:>16.4} {:>16.4} {:>18}", m.k, m.l, first, last, critical)?;
+        writeln!(
+            out,
+            "{:>4} {:>4} {:>16.4} {:>16.4} {:>18}",
+            m.k, m.l, first, last, critical
+        )?;
     }
     Ok(())
 }

@@ -11,19 +11,29 @@ use thiserror::Error;
 pub enum CliError {
     /// A scene or parameter file (`source`: its path, or `-p …`).
     #[error("{source_name}: {error}")]
-    Config { source_name: String, error: ConfigError },
+    Config {
+        source_name: String,
+        error: ConfigError,
+    },
     #[error(transparent)]
     Model(#[from] ModelError),
     #[error(transparent)]
     Step(#[from] StepError),
     #[error("study of {source_name}: {error}")]
-    Study { source_name: String, error: StudyError },
+    Study {
+        source_name: String,
+        error: StudyError,
+    },
     /// `--bag DIR`.
     #[error("--bag: {0}")]
     Bag(String),
     /// Reading or writing a file.
     #[error("cannot {what} {path}: {error}")]
-    Io { what: &'static str, path: String, error: std::io::Error },
+    Io {
+        what: &'static str,
+        path: String,
+        error: std::io::Error,
+    },
     /// Writing the output (a CSV row, a JSON document) failed.
     #[error(transparent)]
     Write(#[from] std::io::Error),

@@ -26,7 +26,11 @@ struct Decimal {
 /// `1000.0`, `0.00123`: what it prints for 1e-5 ≤ |v| < 1e16) read back into
 /// digits and exponent.
 fn from_decimal_notation(text: &[u8]) -> Decimal {
-    let mut d = Decimal { digits: [0; 24], n: 0, exp: 0 };
+    let mut d = Decimal {
+        digits: [0; 24],
+        n: 0,
+        exp: 0,
+    };
     let point = text.iter().position(|&c| c == b'.').unwrap_or(text.len());
     let (int, frac) = (&text[..point], text.get(point + 1..).unwrap_or(&[]));
     if int == b"0" {
@@ -55,7 +59,9 @@ fn from_scientific(text: &[u8], e: usize) -> Decimal {
         b'+' => (false, &text[e + 2..]),
         _ => (false, &text[e + 1..]),
     };
-    let magnitude = digits.iter().fold(0i32, |acc, &c| acc * 10 + (c - b'0') as i32);
+    let magnitude = digits
+        .iter()
+        .fold(0i32, |acc, &c| acc * 10 + (c - b'0') as i32);
     d.exp += if negative { -magnitude } else { magnitude };
     d
 }
@@ -66,7 +72,11 @@ fn from_scientific(text: &[u8], e: usize) -> Decimal {
 fn may_tie(abs: f64) -> bool {
     let bits = abs.to_bits();
     let (biased, fraction) = ((bits >> 52) as i32, bits & ((1 << 52) - 1));
-    let (m, e) = if biased == 0 { (fraction, -1074) } else { (fraction | (1 << 52), biased - 1075) };
+    let (m, e) = if biased == 0 {
+        (fraction, -1074)
+    } else {
+        (fraction | (1 << 52), biased - 1075)
+    };
     let t = m.trailing_zeros() as i32;
     let (m, e) = (m >> t, e + t);
     if e >= 0 {
@@ -251,10 +261,20 @@ mod tests {
     fn check(v: f64, digits: &mut zmij::Buffer, out: &mut Vec<u8>) {
         out.clear();
         push_exp(out, v, digits);
-        assert_eq!(std::str::from_utf8(out).unwrap(), format!("{v:e}"), "{{:e}} of bits {:#x}", v.to_bits());
+        assert_eq!(
+            std::str::from_utf8(out).unwrap(),
+            format!("{v:e}"),
+            "{{:e}} of bits {:#x}",
+            v.to_bits()
+        );
         out.clear();
         push_display(out, v, digits);
-        assert_eq!(std::str::from_utf8(out).unwrap(), format!("{v}"), "{{}} of bits {:#x}", v.to_bits());
+        assert_eq!(
+            std::str::from_utf8(out).unwrap(),
+            format!("{v}"),
+            "{{}} of bits {:#x}",
+            v.to_bits()
+        );
     }
 
     #[test]
@@ -320,12 +340,24 @@ mod tests {
             let r = x.wrapping_mul(0x2545_f491_4f6c_dd1d);
             check(f64::from_bits(r), &mut digits, &mut out);
             let scaled = (r >> 11) as f64 / (1u64 << 53) as f64 * 10f64.powi((i % 17) as i32 - 12);
-            check(if i % 2 == 0 { scaled } else { -scaled }, &mut digits, &mut out);
+            check(
+                if i % 2 == 0 { scaled } else { -scaled },
+                &mut digits,
+                &mut out,
+            );
             // Short decimals and large integers with fractions (where ties
             // between two shortest candidates are).
             check((r % 100_000) as f64 / 1000.0, &mut digits, &mut out);
-            check((r >> 10) as f64 + 0.25 * (r % 4) as f64, &mut digits, &mut out);
-            check(f64::from_bits(0x4313_d27d_a8ac_08c1) + (r % 64) as f64, &mut digits, &mut out);
+            check(
+                (r >> 10) as f64 + 0.25 * (r % 4) as f64,
+                &mut digits,
+                &mut out,
+            );
+            check(
+                f64::from_bits(0x4313_d27d_a8ac_08c1) + (r % 64) as f64,
+                &mut digits,
+                &mut out,
+            );
         }
     }
 }

@@ -19,7 +19,8 @@ pub const DEFAULT_NODE_NAME: &str = "annular_plate";
 
 /// Read and validate a params file, printing the geometry notes of paper 4.2 to stderr.
 pub fn load_config(path: &Path) -> CliResult<Config> {
-    let config = Config::from_params_file(path, DEFAULT_NODE_NAME).map_err(|e| CliError::Usage(format!("{}: {e}", path.display())))?;
+    let config = Config::from_params_file(path, DEFAULT_NODE_NAME)
+        .map_err(|e| CliError::Usage(format!("{}: {e}", path.display())))?;
     for note in config.plate.geometry_notes() {
         eprintln!("note: {note}");
     }
@@ -29,10 +30,15 @@ pub fn load_config(path: &Path) -> CliResult<Config> {
 /// The parameters of a params file with `-p NAME:=VALUE` overrides (as after
 /// `--ros-args`) applied; each override names itself in an error.
 pub fn params_with_overrides(path: &Path, overrides: &[String]) -> CliResult<Params> {
-    let mut params = Params::from_file(path, DEFAULT_NODE_NAME).map_err(|e| CliError::Usage(format!("{}: {e}", path.display())))?;
+    let mut params = Params::from_file(path, DEFAULT_NODE_NAME)
+        .map_err(|e| CliError::Usage(format!("{}: {e}", path.display())))?;
     for o in overrides {
-        let (name, value) = o.split_once(":=").ok_or_else(|| CliError::Usage(format!("-p {o:?}: expected NAME:=VALUE")))?;
-        params.set_override(name.trim(), value.trim()).map_err(|e| CliError::Usage(format!("-p {o}: {e}")))?;
+        let (name, value) = o
+            .split_once(":=")
+            .ok_or_else(|| CliError::Usage(format!("-p {o:?}: expected NAME:=VALUE")))?;
+        params
+            .set_override(name.trim(), value.trim())
+            .map_err(|e| CliError::Usage(format!("-p {o}: {e}")))?;
     }
     Ok(params)
 }
@@ -43,7 +49,8 @@ pub fn load_config_with(path: &Path, overrides: &[String]) -> CliResult<Config> 
         return load_config(path);
     }
     let params = params_with_overrides(path, overrides)?;
-    let config = Config::from_params(&params).map_err(|e| CliError::Usage(format!("{} (with -p overrides): {e}", path.display())))?;
+    let config = Config::from_params(&params)
+        .map_err(|e| CliError::Usage(format!("{} (with -p overrides): {e}", path.display())))?;
     for note in config.plate.geometry_notes() {
         eprintln!("note: {note}");
     }

@@ -40,7 +40,14 @@ pub fn write(model: &PlateModel, json: bool, out: &mut impl Write) -> std::io::R
             modes: model
                 .modes()
                 .iter()
-                .map(|m| JsonMode { k: m.k, l: m.l, shape: m.shape.name(), frequency_hz: m.frequency_hz, modal_mass_kg: m.modal_mass, damping: m.damping })
+                .map(|m| JsonMode {
+                    k: m.k,
+                    l: m.l,
+                    shape: m.shape.name(),
+                    frequency_hz: m.frequency_hz,
+                    modal_mass_kg: m.modal_mass,
+                    damping: m.damping,
+                })
                 .collect(),
             skipped_rigid_body_modes: model.skipped_rigid_body_modes().to_vec(),
             radial_splines: model.plate().radial_splines,
@@ -48,7 +55,11 @@ pub fn write(model: &PlateModel, json: bool, out: &mut impl Write) -> std::io::R
             radial_splines_per_k: model
                 .radial_resolution()
                 .iter()
-                .map(|r| JsonRadialResolution { k: r.k, radial_splines: r.splines, estimated_relative_error: r.estimated_error })
+                .map(|r| JsonRadialResolution {
+                    k: r.k,
+                    radial_splines: r.splines,
+                    estimated_relative_error: r.estimated_error,
+                })
                 .collect(),
         };
         serde_json::to_writer_pretty(&mut *out, &doc)?;
@@ -67,9 +78,23 @@ pub fn write(model: &PlateModel, json: bool, out: &mut impl Write) -> std::io::R
         splines_text(model),
         model.rigidity()
     )?;
-    writeln!(out, "{:>5} {:>4} {:>4} {:>13} {:>14} {:>15} {:>8}", "index", "k", "l", "shape", "frequency_Hz", "modal_mass_kg", "damping")?;
+    writeln!(
+        out,
+        "{:>5} {:>4} {:>4} {:>13} {:>14} {:>15} {:>8}",
+        "index", "k", "l", "shape", "frequency_Hz", "modal_mass_kg", "damping"
+    )?;
     for (i, m) in model.modes().iter().enumerate() {
-        writeln!(out, "{:>5} {:>4} {:>4} {:>13} {:>14.4} {:>15.6} {:>8}", i + 1, m.k, m.l, m.shape.name(), m.frequency_hz, m.modal_mass, m.damping)?;
+        writeln!(
+            out,
+            "{:>5} {:>4} {:>4} {:>13} {:>14.4} {:>15.6} {:>8}",
+            i + 1,
+            m.k,
+            m.l,
+            m.shape.name(),
+            m.frequency_hz,
+            m.modal_mass,
+            m.damping
+        )?;
     }
     for (k, l) in model.skipped_rigid_body_modes() {
         writeln!(out, "  ⟨k = {k}, l = {l}⟩ is a rigid-body motion of the free–free plate: carried by the floating frame and joint, not a mode")?;
@@ -86,6 +111,13 @@ fn splines_text(model: &PlateModel) -> String {
     }
     let counts = model.radial_resolution().iter().map(|r| r.splines);
     let (lo, hi) = (counts.clone().min().unwrap_or(0), counts.max().unwrap_or(0));
-    let range = if lo == hi { lo.to_string() } else { format!("{lo}–{hi}") };
-    format!("auto ({range} over k, tolerance {:e})", p.frequency_tolerance)
+    let range = if lo == hi {
+        lo.to_string()
+    } else {
+        format!("{lo}–{hi}")
+    };
+    format!(
+        "auto ({range} over k, tolerance {:e})",
+        p.frequency_tolerance
+    )
 }

@@ -16,25 +16,42 @@ impl BagOutput {
     /// Create the rosbag2 directory `dir` (it must not exist) for the scene
     /// `file` with its `-p` overrides (its `ros.*` keys: frame prefix, world
     /// frame, diagnostics period, marker).
-    pub fn create(dir: &Path, sim: &Simulation, file: &Path, overrides: &[String]) -> CliResult<BagOutput> {
+    pub fn create(
+        dir: &Path,
+        sim: &Simulation,
+        file: &Path,
+        overrides: &[String],
+    ) -> CliResult<BagOutput> {
         use crate::messages::settings::RosSettings;
         let usage = |e: String| CliError::Usage(format!("{}: {e}", file.display()));
         let params = super::params_with_overrides(file, overrides)?;
         let settings = RosSettings::from_params(&params).map_err(|e| usage(e.to_string()))?;
-        settings.check_against_rate(1.0 / sim.dt()).map_err(|e| usage(e.to_string()))?;
-        let inner = crate::bag::OfflineRecorder::create(dir, sim, &settings).map_err(|e| CliError::Usage(format!("--bag: {e}")))?;
+        settings
+            .check_against_rate(1.0 / sim.dt())
+            .map_err(|e| usage(e.to_string()))?;
+        let inner = crate::bag::OfflineRecorder::create(dir, sim, &settings)
+            .map_err(|e| CliError::Usage(format!("--bag: {e}")))?;
         Ok(BagOutput { inner })
     }
 
     /// Record the current state (t = 0, then after every step).
     pub fn record(&mut self, sim: &Simulation) -> CliResult<()> {
-        self.inner.record(sim).map_err(|e| CliError::Usage(format!("--bag: {e}")))
+        self.inner
+            .record(sim)
+            .map_err(|e| CliError::Usage(format!("--bag: {e}")))
     }
 
     /// Finish the bag; returns a one-line summary.
     pub fn finish(self) -> CliResult<String> {
-        let s = self.inner.finish().map_err(|e| CliError::Usage(format!("--bag: {e}")))?;
-        let topics: Vec<String> = s.topics.iter().map(|t| format!("{} {}", t.name, t.count)).collect();
+        let s = self
+            .inner
+            .finish()
+            .map_err(|e| CliError::Usage(format!("--bag: {e}")))?;
+        let topics: Vec<String> = s
+            .topics
+            .iter()
+            .map(|t| format!("{} {}", t.name, t.count))
+            .collect();
         Ok(format!(
             "bag {}: {} messages ({}), {:.3} s, {} bytes",
             s.dir.display(),
@@ -48,10 +65,15 @@ impl BagOutput {
 
 #[cfg(not(feature = "ros"))]
 impl BagOutput {
-    pub fn create(_dir: &Path, _sim: &Simulation, _file: &Path, _overrides: &[String]) -> CliResult<BagOutput> {
+    pub fn create(
+        _dir: &Path,
+        _sim: &Simulation,
+        _file: &Path,
+        _overrides: &[String],
+    ) -> CliResult<BagOutput> {
         return Err(CliError::Usage(format!(
             "--bag needs the `ros` feature (the bag holds the node's messages); this build has none: build with the default features"
-        )))
+        )));
     }
     pub fn record(&mut self, _sim: &Simulation) -> CliResult<()> {
         Ok(())

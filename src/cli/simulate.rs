@@ -9,16 +9,20 @@
 //! tool_tip_z, tool_chip_thickness (m), tool_feed_force (N);
 //! link{j}_force (N).
 
-use std::sync::atomic::{AtomicBool, Ordering};
 use super::error::{CliError, CliResult};
 use super::float_text::{push_display, write_exp, EXP_SLOT};
 use crate::dynamics::{stability, Simulation};
 use std::io::Write;
+use std::sync::atomic::{AtomicBool, Ordering};
 
 /// The CSV header for a simulation.
 pub fn header(sim: &Simulation) -> String {
     let n = sim.model().n_modes();
-    let mut cols = vec!["time".to_string(), "joint_position".into(), "joint_velocity".into()];
+    let mut cols = vec![
+        "time".to_string(),
+        "joint_position".into(),
+        "joint_velocity".into(),
+    ];
     cols.extend((1..=n).map(|i| format!("q{i}")));
     cols.extend((1..=n).map(|i| format!("qale{i}")));
     cols.extend((1..=sim.n_ale_nodes()).map(|j| format!("ale{j}_uz")));
@@ -27,13 +31,24 @@ pub fn header(sim: &Simulation) -> String {
         cols.push("joint_effort".into());
     }
     for p in 1..=sim.pad_count() {
-        cols.extend([format!("pad{p}_clamp_force"), format!("pad{p}_normal_force"), format!("pad{p}_friction_torque")]);
+        cols.extend([
+            format!("pad{p}_clamp_force"),
+            format!("pad{p}_normal_force"),
+            format!("pad{p}_friction_torque"),
+        ]);
         if sim.pad_compression(p - 1).is_some() {
-            cols.extend([format!("pad{p}_top_compression"), format!("pad{p}_bottom_compression")]);
+            cols.extend([
+                format!("pad{p}_top_compression"),
+                format!("pad{p}_bottom_compression"),
+            ]);
         }
     }
     if sim.has_tool() {
-        cols.extend(["tool_tip_z".into(), "tool_chip_thickness".into(), "tool_feed_force".into()]);
+        cols.extend([
+            "tool_tip_z".into(),
+            "tool_chip_thickness".into(),
+            "tool_feed_force".into(),
+        ]);
     }
     cols.extend((1..=sim.link_count()).map(|j| format!("link{j}_force")));
     cols.join(",")
@@ -54,8 +69,19 @@ pub fn column_unit(name: &str) -> Option<&'static str> {
         "joint_effort" => "N·m",
         "tool_tip_z" | "tool_chip_thickness" => "m",
         "tool_feed_force" => "N",
-        _ if numbered("q", "") || numbered("qale", "") || numbered("ale", "_uz") || numbered("lagrange", "_uz") => "m",
-        _ if numbered("pad", "_clamp_force") || numbered("pad", "_normal_force") || numbered("link", "_force") => "N",
+        _ if numbered("q", "")
+            || numbered("qale", "")
+            || numbered("ale", "_uz")
+            || numbered("lagrange", "_uz") =>
+        {
+            "m"
+        }
+        _ if numbered("pad", "_clamp_force")
+            || numbered("pad", "_normal_force")
+            || numbered("link", "_force") =>
+        {
+            "N"
+        }
         _ if numbered("pad", "_friction_torque") => "N·m",
         _ if numbered("pad", "_top_compression") || numbered("pad", "_bottom_compression") => "m",
         _ => return None,
@@ -76,7 +102,12 @@ pub struct RowWriter {
 
 impl Default for RowWriter {
     fn default() -> RowWriter {
-        RowWriter { line: vec![0; 4096], len: 0, text: Vec::with_capacity(64), digits: zmij::Buffer::new() }
+        RowWriter {
+            line: vec![0; 4096],
+            len: 0,
+            text: Vec::with_capacity(64),
+            digits: zmij::Buffer::new(),
+        }
     }
 }
 
@@ -91,7 +122,9 @@ fn keep_slot_after(line: &mut Vec<u8>, end: usize) {
 /// The [`EXP_SLOT`] + 1 bytes of `line` from `at`.
 fn slot(line: &mut Vec<u8>, at: usize) -> &mut [u8; EXP_SLOT + 1] {
     keep_slot_after(line, at);
-    (&mut line[at..at + EXP_SLOT + 1]).try_into().unwrap_or_else(|_| unreachable!())
+    (&mut line[at..at + EXP_SLOT + 1])
+        .try_into()
+        .unwrap_or_else(|_| unreachable!())
 }
 
 impl RowWriter {
@@ -112,7 +145,9 @@ impl RowWriter {
     fn exp(&mut self, v: f64) {
         let slot = slot(&mut self.line, self.len);
         slot[0] = b',';
-        let value: &mut [u8; EXP_SLOT] = (&mut slot[1..]).try_into().unwrap_or_else(|_| unreachable!());
+        let value: &mut [u8; EXP_SLOT] = (&mut slot[1..])
+            .try_into()
+            .unwrap_or_else(|_| unreachable!());
         self.len += 1 + write_exp(value, v, &mut self.digits);
     }
 
@@ -166,7 +201,12 @@ impl RowWriter {
 /// for scenes without pads.
 pub fn relevant_frequency(sim: &Simulation) -> Option<f64> {
     let pads = sim.config().pads.as_ref()?;
-    let mode = stability::critical_mode(sim.scene(), sim.config().joint.speed, pads.friction_coefficient, &pads.clamp_force);
+    let mode = stability::critical_mode(
+        sim.scene(),
+        sim.config().joint.speed,
+        pads.friction_coefficient,
+        &pads.clamp_force,
+    );
     Some(mode.eigenvalue.im.abs() / std::f64::consts::TAU)
 }
 
@@ -187,8 +227,21 @@ pub fn check_output_rate(sim: &Simulation, rate: f64, allow_aliasing: bool) -> C
 
 /// Run for `duration` seconds writing a row per output step (t = 0 included).
 /// `progress` is called with the fraction done.
-pub fn run(sim: &mut Simulation, duration: f64, out: &mut impl Write, progress: impl FnMut(f64)) -> CliResult<u64> {
-    run_with(sim, duration, 1, Some(out), |_| Ok(()), progress, &AtomicBool::new(false))
+pub fn run(
+    sim: &mut Simulation,
+    duration: f64,
+    out: &mut impl Write,
+    progress: impl FnMut(f64),
+) -> CliResult<u64> {
+    run_with(
+        sim,
+        duration,
+        1,
+        Some(out),
+        |_| Ok(()),
+        progress,
+        &AtomicBool::new(false),
+    )
 }
 
 /// [`run`] with the CSV optional, writing a row and calling `each` with the

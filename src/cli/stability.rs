@@ -4,12 +4,12 @@
 
 use super::campbell::parse_range;
 use super::error::{CliError, CliResult};
+use crate::config::Params;
 use crate::dynamics::stability_map::{shard_rows, stability_map, SpeedRow};
 use crate::dynamics::Simulation;
 use serde::{Deserialize, Serialize};
-use std::io::Write;
-use crate::config::Params;
 use std::io::Read;
+use std::io::Write;
 use std::path::{Path, PathBuf};
 
 /// The largest friction coefficient (`pads.friction_coefficient`'s rule).
@@ -24,10 +24,20 @@ pub struct StabilityArgs {
     #[arg(required = true)]
     pub file: Option<PathBuf>,
     /// N friction coefficients from FROM to TO, inclusive.
-    #[arg(long, value_name = "FROM:TO:N", allow_hyphen_values = true, required = true)]
+    #[arg(
+        long,
+        value_name = "FROM:TO:N",
+        allow_hyphen_values = true,
+        required = true
+    )]
     pub mu: Option<String>,
     /// N speeds from FROM to TO rad/s, inclusive (a single speed: S:S:1).
-    #[arg(long, value_name = "FROM:TO:N", allow_hyphen_values = true, required = true)]
+    #[arg(
+        long,
+        value_name = "FROM:TO:N",
+        allow_hyphen_values = true,
+        required = true
+    )]
     pub speeds: Option<String>,
     /// Machine-readable output (always, with --shard).
     #[arg(long)]
@@ -102,14 +112,34 @@ pub struct StabilityMap {
 }
 
 impl StabilityMap {
-    fn from_rows(rows: &[SpeedRow], mu: &[f64], shard: Option<Shard>, params_digest: String) -> StabilityMap {
+    fn from_rows(
+        rows: &[SpeedRow],
+        mu: &[f64],
+        shard: Option<Shard>,
+        params_digest: String,
+    ) -> StabilityMap {
         StabilityMap {
             params_digest,
             speeds_rad_s: rows.iter().map(|r| r.speed).collect(),
             mu: mu.to_vec(),
-            growth_rate: rows.iter().map(|r| r.points.iter().map(|p| p.growth_rate).collect()).collect(),
+            growth_rate: rows
+                .iter()
+                .map(|r| r.points.iter().map(|p| p.growth_rate).collect())
+                .collect(),
             threshold_mu: rows.iter().map(|r| r.threshold_mu).collect(),
-            mode: rows.iter().map(|r| r.points.iter().map(|p| UnstableMode { k: p.k, l: p.l, frequency_hz: p.frequency_hz }).collect()).collect(),
+            mode: rows
+                .iter()
+                .map(|r| {
+                    r.points
+                        .iter()
+                        .map(|p| UnstableMode {
+                            k: p.k,
+                            l: p.l,
+                            frequency_hz: p.frequency_hz,
+                        })
+                        .collect()
+                })
+                .collect(),
             shard,
         }
     }
@@ -154,9 +184,16 @@ fn check_speeds(option: &str, speeds: &[f64], max_speed: f64) -> CliResult<()> {
 }
 
 fn parse_shard(text: &str) -> CliResult<(usize, usize)> {
-    let bad = || CliError::Usage(format!("--shard {text}: give i/n with 1 ≤ i ≤ n (e.g. 3/8)"));
+    let bad = || {
+        CliError::Usage(format!(
+            "--shard {text}: give i/n with 1 ≤ i ≤ n (e.g. 3/8)"
+        ))
+    };
     let (i, n) = text.split_once('/').ok_or_else(bad)?;
-    let (i, n): (usize, usize) = (i.trim().parse().map_err(|_| bad())?, n.trim().parse().map_err(|_| bad())?);
+    let (i, n): (usize, usize) = (
+        i.trim().parse().map_err(|_| bad())?,
+        n.trim().parse().map_err(|_| bad())?,
+    );
     if n == 0 || i == 0 || i > n {
         return Err(bad());
     }
@@ -174,7 +211,10 @@ pub fn main(args: StabilityArgs) -> CliResult<()> {
     }
     let file = args.file.expect("clap requires FILE");
     let mu = parse_range("--mu", args.mu.as_deref().expect("clap requires --mu"))?;
-    let speeds = parse_range("--speeds", args.speeds.as_deref().expect("clap requires --speeds"))?;
+    let speeds = parse_range(
+        "--speeds",
+        args.speeds.as_deref().expect("clap requires --speeds"),
+    )?;
     let params = super::params_with_overrides(&file, &args.overrides)?;
     let digest = params_digest(&params);
     let config = super::load_config_with(&file, &args.overrides)?;
@@ -182,7 +222,10 @@ pub fn main(args: StabilityArgs) -> CliResult<()> {
         super::plot::check_output_path(p)?;
     }
     if config.pads.is_none() {
-        return Err(CliError::Usage(format!("{}: the scene has no pads (pads.*): nothing can squeal", file.display())));
+        return Err(CliError::Usage(format!(
+            "{}: the scene has no pads (pads.*): nothing can squeal",
+            file.display()
+        )));
     }
     check_speeds("--speeds", &speeds, config.limits.max_speed)?;
     if let Some(m) = mu.iter().find(|&&m| m > MAX_MU) {
@@ -199,11 +242,17 @@ pub fn main(args: StabilityArgs) -> CliResult<()> {
             )));
         }
     }
-    let rows = shard.map_or(speeds.len(), |(i, n)| shard_rows(speeds.len(), i - 1, n).len());
+    let rows = shard.map_or(speeds.len(), |(i, n)| {
+        shard_rows(speeds.len(), i - 1, n).len()
+    });
     let cells = check_grid(mu.len(), rows, args.max_cells)?;
-    let threads = args.threads.unwrap_or_else(|| std::thread::available_parallelism().map_or(1, |n| n.get()));
+    let threads = args
+        .threads
+        .unwrap_or_else(|| std::thread::available_parallelism().map_or(1, |n| n.get()));
     if threads == 0 || threads > MAX_THREADS {
-        return Err(CliError::Usage(format!("--threads must be between 1 and {MAX_THREADS}")));
+        return Err(CliError::Usage(format!(
+            "--threads must be between 1 and {MAX_THREADS}"
+        )));
     }
     if cells >= 100_000 {
         eprintln!(
@@ -212,19 +261,41 @@ pub fn main(args: StabilityArgs) -> CliResult<()> {
             cells as f64 * BYTES_PER_CELL as f64 / 1e6
         );
     }
-    let sim = Simulation::new(config).map_err(|e| CliError::Usage(format!("{}: {e}", file.display())))?;
+    let sim =
+        Simulation::new(config).map_err(|e| CliError::Usage(format!("{}: {e}", file.display())))?;
     let (rows, shard) = match shard {
         Some((i, n)) => {
             let range = shard_rows(speeds.len(), i - 1, n);
-            let whole = Shard { index: i, count: n, speeds_total: speeds.len(), speeds_from: speeds[0], speeds_to: speeds[speeds.len() - 1] };
-            (stability_map(sim.scene(), &speeds[range], &mu, threads), Some(whole))
+            let whole = Shard {
+                index: i,
+                count: n,
+                speeds_total: speeds.len(),
+                speeds_from: speeds[0],
+                speeds_to: speeds[speeds.len() - 1],
+            };
+            (
+                stability_map(sim.scene(), &speeds[range], &mu, threads),
+                Some(whole),
+            )
         }
         None => (stability_map(sim.scene(), &speeds, &mu, threads), None),
     };
     let map = StabilityMap::from_rows(&rows, &mu, shard, digest);
     if let Some(p) = &args.plot {
-        let grid = super::plot::StabilityGrid { speeds: &map.speeds_rad_s, mu: &map.mu, growth_rate: &map.growth_rate, threshold_mu: &map.threshold_mu };
-        super::plot::stability_map(&grid, p, super::plot::Size { width: 1200, height: 800 })?;
+        let grid = super::plot::StabilityGrid {
+            speeds: &map.speeds_rad_s,
+            mu: &map.mu,
+            growth_rate: &map.growth_rate,
+            threshold_mu: &map.threshold_mu,
+        };
+        super::plot::stability_map(
+            &grid,
+            p,
+            super::plot::Size {
+                width: 1200,
+                height: 800,
+            },
+        )?;
     }
     let stdout = std::io::stdout();
     let mut out = stdout.lock();
@@ -233,18 +304,37 @@ pub fn main(args: StabilityArgs) -> CliResult<()> {
         writeln!(out)?;
         return Ok(());
     }
-    writeln!(out, "{:>12} {:>14} {:>16} {:>14}", "speed_rad_s", "threshold_mu", "max_rate_1/s", "at_mu")?;
+    writeln!(
+        out,
+        "{:>12} {:>14} {:>16} {:>14}",
+        "speed_rad_s", "threshold_mu", "max_rate_1/s", "at_mu"
+    )?;
     for (s, &speed) in map.speeds_rad_s.iter().enumerate() {
-        let (m, rate) = map.growth_rate[s].iter().enumerate().fold((0, f64::NEG_INFINITY), |b, (m, &r)| if r > b.1 { (m, r) } else { b });
+        let (m, rate) =
+            map.growth_rate[s]
+                .iter()
+                .enumerate()
+                .fold(
+                    (0, f64::NEG_INFINITY),
+                    |b, (m, &r)| if r > b.1 { (m, r) } else { b },
+                );
         let threshold = map.threshold_mu[s].map_or("—".to_string(), |t| format!("{t:.6}"));
-        writeln!(out, "{speed:>12.4} {threshold:>14} {rate:>16.6} {:>14.4}", map.mu[m])?;
+        writeln!(
+            out,
+            "{speed:>12.4} {threshold:>14} {rate:>16.6} {:>14.4}",
+            map.mu[m]
+        )?;
     }
     Ok(())
 }
 
 /// Read one shard: at most [`MAX_SHARD_BYTES`], parsed as it is read.
 fn read_shard(p: &Path) -> CliResult<StabilityMap> {
-    let file = std::fs::File::open(p).map_err(|error| CliError::Io { what: "read", path: p.display().to_string(), error })?;
+    let file = std::fs::File::open(p).map_err(|error| CliError::Io {
+        what: "read",
+        path: p.display().to_string(),
+        error,
+    })?;
     let mut reader = std::io::BufReader::new(file.take(MAX_SHARD_BYTES + 1));
     let doc: Result<StabilityMap, _> = serde_json::from_reader(&mut reader);
     let read_all = reader.get_ref().limit() == 0;
@@ -266,10 +356,22 @@ fn malformed(doc: &StabilityMap) -> Option<String> {
             doc.threshold_mu.len()
         ));
     }
-    if let Some(r) = (0..rows).find(|&r| doc.growth_rate[r].len() != cols || doc.mode[r].len() != cols) {
-        return Some(format!("row {r} has {} growth rates and {} modes for {cols} μ", doc.growth_rate[r].len(), doc.mode[r].len()));
+    if let Some(r) =
+        (0..rows).find(|&r| doc.growth_rate[r].len() != cols || doc.mode[r].len() != cols)
+    {
+        return Some(format!(
+            "row {r} has {} growth rates and {} modes for {cols} μ",
+            doc.growth_rate[r].len(),
+            doc.mode[r].len()
+        ));
     }
-    if doc.speeds_rad_s.iter().chain(&doc.mu).chain(doc.growth_rate.iter().flatten()).any(|x| !x.is_finite()) {
+    if doc
+        .speeds_rad_s
+        .iter()
+        .chain(&doc.mu)
+        .chain(doc.growth_rate.iter().flatten())
+        .any(|x| !x.is_finite())
+    {
         return Some("a speed, μ or growth rate is not a finite number".into());
     }
     None
@@ -281,21 +383,34 @@ fn malformed(doc: &StabilityMap) -> Option<String> {
 /// whole grid; otherwise the error names the shard and the difference.
 pub fn merge(paths: &[PathBuf]) -> CliResult<StabilityMap> {
     if paths.is_empty() {
-        return Err(CliError::Usage("stability merge: give the shard JSON files".into()));
+        return Err(CliError::Usage(
+            "stability merge: give the shard JSON files".into(),
+        ));
     }
     let mut docs = Vec::new();
     for p in paths {
         let doc = read_shard(p)?;
-        let shard = doc.shard.ok_or_else(|| CliError::Usage(format!("{}: a complete map, not a shard", p.display())))?;
+        let shard = doc.shard.ok_or_else(|| {
+            CliError::Usage(format!("{}: a complete map, not a shard", p.display()))
+        })?;
         if let Some(why) = malformed(&doc) {
-            return Err(CliError::Usage(format!("{}: a malformed shard: {why}", p.display())));
+            return Err(CliError::Usage(format!(
+                "{}: a malformed shard: {why}",
+                p.display()
+            )));
         }
         docs.push((shard, doc, p));
     }
     docs.sort_by_key(|(s, ..)| s.index);
     let (first, first_path) = (docs[0].0, docs[0].2.clone());
     let (first_mu, first_digest) = (docs[0].1.mu.clone(), docs[0].1.params_digest.clone());
-    let other = |p: &Path, what: String| CliError::Usage(format!("{}: a shard of another map than {}: {what}", p.display(), first_path.display()));
+    let other = |p: &Path, what: String| {
+        CliError::Usage(format!(
+            "{}: a shard of another map than {}: {what}",
+            p.display(),
+            first_path.display()
+        ))
+    };
     for (s, doc, p) in &docs {
         if doc.params_digest != first_digest {
             return Err(other(p, format!("computed with other parameters (digest {} ≠ {first_digest}: scene or -p differ)", doc.params_digest)));
@@ -303,22 +418,54 @@ pub fn merge(paths: &[PathBuf]) -> CliResult<StabilityMap> {
         if doc.mu != first_mu {
             return Err(other(p, "the μ grid (--mu) differs".into()));
         }
-        if s.count != first.count || s.speeds_total != first.speeds_total || s.speeds_from != first.speeds_from || s.speeds_to != first.speeds_to {
-            return Err(other(p, format!(
-                "shard {}/{} of --speeds {}:{}:{} against {}/{} of {}:{}:{}",
-                s.index, s.count, s.speeds_from, s.speeds_to, s.speeds_total, first.index, first.count, first.speeds_from, first.speeds_to, first.speeds_total
-            )));
+        if s.count != first.count
+            || s.speeds_total != first.speeds_total
+            || s.speeds_from != first.speeds_from
+            || s.speeds_to != first.speeds_to
+        {
+            return Err(other(
+                p,
+                format!(
+                    "shard {}/{} of --speeds {}:{}:{} against {}/{} of {}:{}:{}",
+                    s.index,
+                    s.count,
+                    s.speeds_from,
+                    s.speeds_to,
+                    s.speeds_total,
+                    first.index,
+                    first.count,
+                    first.speeds_from,
+                    first.speeds_to,
+                    first.speeds_total
+                ),
+            ));
         }
     }
     let indices: Vec<usize> = docs.iter().map(|(s, ..)| s.index).collect();
     if first.count != docs.len() || !indices.iter().enumerate().all(|(i, &index)| index == i + 1) {
-        return Err(CliError::Usage(format!("stability merge: shards {indices:?} given, all of 1..={} needed once each", first.count)));
+        return Err(CliError::Usage(format!(
+            "stability merge: shards {indices:?} given, all of 1..={} needed once each",
+            first.count
+        )));
     }
     if first.speeds_total > super::campbell::MAX_POINTS {
-        return Err(CliError::Usage(format!("{}: speeds_total {} is above {}", first_path.display(), first.speeds_total, super::campbell::MAX_POINTS)));
+        return Err(CliError::Usage(format!(
+            "{}: speeds_total {} is above {}",
+            first_path.display(),
+            first.speeds_total,
+            super::campbell::MAX_POINTS
+        )));
     }
     let whole = super::campbell::linspace(first.speeds_from, first.speeds_to, first.speeds_total);
-    let mut merged = StabilityMap { params_digest: first_digest, speeds_rad_s: vec![], mu: first_mu.clone(), growth_rate: vec![], threshold_mu: vec![], mode: vec![], shard: None };
+    let mut merged = StabilityMap {
+        params_digest: first_digest,
+        speeds_rad_s: vec![],
+        mu: first_mu.clone(),
+        growth_rate: vec![],
+        threshold_mu: vec![],
+        mode: vec![],
+        shard: None,
+    };
     for (s, doc, p) in docs {
         let range = shard_rows(first.speeds_total, s.index - 1, s.count);
         if doc.speeds_rad_s != whole[range.clone()] {

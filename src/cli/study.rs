@@ -32,23 +32,36 @@ pub struct StudyArgs {
     #[arg(long)]
     pub quiet: bool,
     /// Parameter overrides `-p NAME:=VALUE` on FILE (as after --ros-args), e.g. -p plate.thickness:=0.01.
-    #[arg(short = 'p', long = "param", value_name = "NAME:=VALUE", requires = "file")]
+    #[arg(
+        short = 'p',
+        long = "param",
+        value_name = "NAME:=VALUE",
+        requires = "file"
+    )]
     pub overrides: Vec<String>,
 }
 
 /// The plan the arguments ask for.
 pub fn plan(args: &StudyArgs) -> CliResult<StudyPlan> {
-    let mut plan = if args.quick { StudyPlan::quick() } else { StudyPlan::full() };
+    let mut plan = if args.quick {
+        StudyPlan::quick()
+    } else {
+        StudyPlan::full()
+    };
     if let Some(t) = &args.targets {
         if !(!t.is_empty() && t.iter().all(|x| x.is_finite() && *x > 0.0 && *x < 1.0)) {
-            return Err(CliError::Usage(format!("--targets must be numbers in (0, 1), got {t:?}")));
+            return Err(CliError::Usage(format!(
+                "--targets must be numbers in (0, 1), got {t:?}"
+            )));
         };
         plan.targets = t.clone();
     }
     if let Some(d) = args.duration {
         if !(d.is_finite() && d * plan.sample_rate_hz >= 1.0 && d <= 10.0) {
-            return Err(CliError::Usage(format!("--duration must be between {} s and 10 s, got {d}",
-            1.0 / plan.sample_rate_hz)));
+            return Err(CliError::Usage(format!(
+                "--duration must be between {} s and 10 s, got {d}",
+                1.0 / plan.sample_rate_hz
+            )));
         };
         plan.duration_s = d;
     }
@@ -58,7 +71,10 @@ pub fn plan(args: &StudyArgs) -> CliResult<StudyPlan> {
 pub fn main(args: StudyArgs) -> CliResult<()> {
     let plan = plan(&args)?;
     let (config, source) = match &args.file {
-        Some(f) => (super::load_config_with(f, &args.overrides)?, f.display().to_string()),
+        Some(f) => (
+            super::load_config_with(f, &args.overrides)?,
+            f.display().to_string(),
+        ),
         None => (study::lathe_scene(), "built-in lathe disc".to_string()),
     };
     if let Some(p) = &args.plot {
@@ -67,7 +83,10 @@ pub fn main(args: StudyArgs) -> CliResult<()> {
     let show = !args.quiet && std::io::stderr().is_terminal();
     let bar = indicatif::ProgressBar::new(plan.units(&config) as u64);
     if show {
-        bar.set_style(indicatif::ProgressStyle::with_template("{bar:30} {pos}/{len} {elapsed_precise} {msg}").expect("valid template"));
+        bar.set_style(
+            indicatif::ProgressStyle::with_template("{bar:30} {pos}/{len} {elapsed_precise} {msg}")
+                .expect("valid template"),
+        );
     } else {
         bar.set_draw_target(indicatif::ProgressDrawTarget::hidden());
     }
@@ -75,7 +94,10 @@ pub fn main(args: StudyArgs) -> CliResult<()> {
         bar.set_position(done as u64);
         bar.set_message(what.to_string());
     })
-    .map_err(|error| CliError::Study { source_name: source.clone(), error })?;
+    .map_err(|error| CliError::Study {
+        source_name: source.clone(),
+        error,
+    })?;
     bar.finish_and_clear();
     let stdout = std::io::stdout();
     let mut out = stdout.lock();
@@ -86,7 +108,14 @@ pub fn main(args: StudyArgs) -> CliResult<()> {
         out.write_all(table(&report).as_bytes())?;
     }
     if let Some(p) = &args.plot {
-        super::plot::pareto(&report, p, super::plot::Size { width: 1500, height: 560 })?;
+        super::plot::pareto(
+            &report,
+            p,
+            super::plot::Size {
+                width: 1500,
+                height: 560,
+            },
+        )?;
         if !args.json {
             writeln!(out, "\nPareto picture: {}", p.display())?;
         }
@@ -120,16 +149,32 @@ fn fmt_rate(hz: f64) -> String {
     }
 }
 
-fn fmt_rec<S>(r: &Recommendation<S>, setting: impl Fn(&S) -> String, cost: impl Fn(f64) -> String) -> String {
+fn fmt_rec<S>(
+    r: &Recommendation<S>,
+    setting: impl Fn(&S) -> String,
+    cost: impl Fn(f64) -> String,
+) -> String {
     match (&r.setting, r.claimed_error, r.cost) {
-        (Some(s), Some(e), Some(c)) => format!("{}{} (≤ {e:.1e}; {})", setting(s), if r.is_default { " [default]" } else { "" }, cost(c)),
+        (Some(s), Some(e), Some(c)) => format!(
+            "{}{} (≤ {e:.1e}; {})",
+            setting(s),
+            if r.is_default { " [default]" } else { "" },
+            cost(c)
+        ),
         _ => "not reached in the grid".into(),
     }
 }
 
 /// A mode set as the recommendations name it.
 pub fn fmt_mode_set(k_max: u32, l_max: u32, residual_flexibility: bool) -> String {
-    format!("k ≤ {k_max}, l ≤ {l_max}{}", if residual_flexibility { " + residual" } else { ", modes only" })
+    format!(
+        "k ≤ {k_max}, l ≤ {l_max}{}",
+        if residual_flexibility {
+            " + residual"
+        } else {
+            ", modes only"
+        }
+    )
 }
 
 /// The human-readable report.
@@ -163,7 +208,11 @@ pub fn table(r: &StudyReport) -> String {
         "   error: {}\n   reference: {} splines; its difference from {} splines, {:.1e}, bounds its own error",
         a.error_measure, a.reference.radial_splines, a.reference.check_radial_splines, a.reference.uncertainty
     );
-    let _ = writeln!(o, "   {:>14} {:>14} {:>11} {:>14}", "radial_splines", "max rel error", "worst ⟨k,l⟩", "build time");
+    let _ = writeln!(
+        o,
+        "   {:>14} {:>14} {:>11} {:>14}",
+        "radial_splines", "max rel error", "worst ⟨k,l⟩", "build time"
+    );
     for row in &a.rows {
         let _ = writeln!(
             o,
@@ -179,7 +228,10 @@ pub fn table(r: &StudyReport) -> String {
     // Axis 2.
     let b = &r.mode_count;
     let lc = &b.load_case;
-    let _ = writeln!(o, "\n2. Steady deflection at the load point vs mode set k = 0..k_max, l = 0..l_max");
+    let _ = writeln!(
+        o,
+        "\n2. Steady deflection at the load point vs mode set k = 0..k_max, l = 0..l_max"
+    );
     let _ = writeln!(
         o,
         "   load point: ALE node {} at ξ = ({}, {}), {} loaded node(s), Ω = {:.4} rad/s, ζ = {}",
@@ -244,7 +296,19 @@ pub fn table(r: &StudyReport) -> String {
         fmt_rate(c.sample_rate_hz),
         c.modes
     );
-    let checks: Vec<String> = c.reference.checks.iter().map(|k| format!("{} at {}: {:.1e}", k.integrator, fmt_rate(k.rate_hz), k.difference)).collect();
+    let checks: Vec<String> = c
+        .reference
+        .checks
+        .iter()
+        .map(|k| {
+            format!(
+                "{} at {}: {:.1e}",
+                k.integrator,
+                fmt_rate(k.rate_hz),
+                k.difference
+            )
+        })
+        .collect();
     let _ = writeln!(
         o,
         "   error: {}\n   reference: {} at {}; checks {}; the larger difference bounds the reference's error; peak ‖q‖ = {:.3e} m",
@@ -257,7 +321,11 @@ pub fn table(r: &StudyReport) -> String {
     for n in &c.notes {
         let _ = writeln!(o, "   note: {n}");
     }
-    let _ = writeln!(o, "   {:>18} {:>9} {:>14} {:>16}", "integrator", "rate", "rel error", "wall / sim s");
+    let _ = writeln!(
+        o,
+        "   {:>18} {:>9} {:>14} {:>16}",
+        "integrator", "rate", "rel error", "wall / sim s"
+    );
     for row in &c.rows {
         match (row.relative_error, row.wall_s_per_simulated_s) {
             (Some(e), Some(w)) => {
@@ -272,7 +340,14 @@ pub fn table(r: &StudyReport) -> String {
                 );
             }
             _ => {
-                let _ = writeln!(o, "   {:>18} {:>9} {:>14?}: {}", row.integrator, fmt_rate(row.rate_hz), row.status, row.detail.as_deref().unwrap_or(""));
+                let _ = writeln!(
+                    o,
+                    "   {:>18} {:>9} {:>14?}: {}",
+                    row.integrator,
+                    fmt_rate(row.rate_hz),
+                    row.status,
+                    row.detail.as_deref().unwrap_or("")
+                );
             }
         }
     }
@@ -300,16 +375,38 @@ pub fn table(r: &StudyReport) -> String {
         r.mode_count.reference.uncertainty_with_residual,
         r.mode_count.reference.uncertainty
     );
-    let _ = writeln!(o, "   {:>7}  {:<44} {:<64} integrator and rate", "target", "plate.radial_splines", "mode set");
+    let _ = writeln!(
+        o,
+        "   {:>7}  {:<44} {:<64} integrator and rate",
+        "target", "plate.radial_splines", "mode set"
+    );
     for i in 0..r.plan.targets.len() {
-        let a = fmt_rec(&r.radial_splines.recommendations[i], |s| s.radial_splines.to_string(), |c| format!("build {}", fmt_time(c)));
+        let a = fmt_rec(
+            &r.radial_splines.recommendations[i],
+            |s| s.radial_splines.to_string(),
+            |c| format!("build {}", fmt_time(c)),
+        );
         let b = fmt_rec(
             &r.mode_count.recommendations[i],
-            |s| format!("{} ({} modes)", fmt_mode_set(s.k_max, s.l_max, s.residual_flexibility), s.modes),
+            |s| {
+                format!(
+                    "{} ({} modes)",
+                    fmt_mode_set(s.k_max, s.l_max, s.residual_flexibility),
+                    s.modes
+                )
+            },
             |c| format!("{}/step", fmt_time(c)),
         );
-        let c = fmt_rec(&r.integrator.recommendations[i], |s| format!("{} {}", s.integrator, fmt_rate(s.rate_hz)), |c| format!("{}/sim s", fmt_time(c)));
-        let _ = writeln!(o, "   {:>7.0e}  {:<44} {:<64} {}", r.plan.targets[i], a, b, c);
+        let c = fmt_rec(
+            &r.integrator.recommendations[i],
+            |s| format!("{} {}", s.integrator, fmt_rate(s.rate_hz)),
+            |c| format!("{}/sim s", fmt_time(c)),
+        );
+        let _ = writeln!(
+            o,
+            "   {:>7.0e}  {:<44} {:<64} {}",
+            r.plan.targets[i], a, b, c
+        );
     }
     let _ = writeln!(o, "\n(study wall time {:.1} s)", r.wall_time_s);
     o

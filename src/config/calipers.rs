@@ -22,7 +22,11 @@ use super::{ConfigError, NodePosition, NodesConfig, PadContact, PlateConfig};
 const MAX_CALIPER_POINTS: i64 = 400;
 
 fn rule(key: &str, value: f64, rule: String) -> ConfigError {
-    ConfigError::CaliperRule { key: key.to_string(), value, rule }
+    ConfigError::CaliperRule {
+        key: key.to_string(),
+        value,
+        rule,
+    }
 }
 
 /// The radii (m) of `n` equal-area rings' mean friction radii between `inner` and `outer`.
@@ -31,7 +35,11 @@ pub fn ring_radii(inner: f64, outer: f64, n: usize) -> Vec<f64> {
     (0..n)
         .map(|j| {
             let a = (inner * inner + j as f64 * area).sqrt();
-            let b = if j + 1 == n { outer } else { (inner * inner + (j + 1) as f64 * area).sqrt() };
+            let b = if j + 1 == n {
+                outer
+            } else {
+                (inner * inner + (j + 1) as f64 * area).sqrt()
+            };
             2.0 / 3.0 * (b * b * b - a * a * a) / (b * b - a * a)
         })
         .collect()
@@ -39,14 +47,26 @@ pub fn ring_radii(inner: f64, outer: f64, n: usize) -> Vec<f64> {
 
 /// Reads `calipers.*`; if given, appends the contact points to `nodes.ale`
 /// and returns the pads' contacts (pad p = caliper p).
-pub(super) fn read_calipers(r: &Reader, plate: &PlateConfig, nodes: &mut NodesConfig) -> Result<Option<Vec<PadContact>>, ConfigError> {
+pub(super) fn read_calipers(
+    r: &Reader,
+    plate: &PlateConfig,
+    nodes: &mut NodesConfig,
+) -> Result<Option<Vec<PadContact>>, ConfigError> {
     let angles = r.f64_array("calipers.angles_deg", &[])?;
     if angles.is_empty() {
-        super::load_model_sections::no_other_keys(r, &super::table::keys("calipers"), "calipers.angles_deg")?;
+        super::load_model_sections::no_other_keys(
+            r,
+            &super::table::keys("calipers"),
+            "calipers.angles_deg",
+        )?;
         return Ok(None);
     }
     if r.has("pads.ale_nodes") || r.has("pads.contact_pad") {
-        let key = if r.has("pads.ale_nodes") { "pads.ale_nodes" } else { "pads.contact_pad" };
+        let key = if r.has("pads.ale_nodes") {
+            "pads.ale_nodes"
+        } else {
+            "pads.contact_pad"
+        };
         return Err(ConfigError::CaliperRule {
             key: key.into(),
             value: angles.len() as f64,
@@ -56,16 +76,32 @@ pub(super) fn read_calipers(r: &Reader, plate: &PlateConfig, nodes: &mut NodesCo
     let count = angles.len();
     let arc = r.f64("calipers.arc_deg", 60.0)?;
     if !(arc > 0.0 && arc * count as f64 <= 360.0) {
-        return Err(rule("calipers.arc_deg", arc, format!("must be > 0 and the {count} calipers' arcs must not overlap: ≤ 360°/{count}")));
+        return Err(rule(
+            "calipers.arc_deg",
+            arc,
+            format!("must be > 0 and the {count} calipers' arcs must not overlap: ≤ 360°/{count}"),
+        ));
     }
     for (index, &a) in angles.iter().enumerate() {
         if a.abs() > 360.0 {
-            return Err(rule(&format!("calipers.angles_deg[{index}]"), a, "must lie in [−360°, 360°]".into()));
+            return Err(rule(
+                &format!("calipers.angles_deg[{index}]"),
+                a,
+                "must lie in [−360°, 360°]".into(),
+            ));
         }
     }
     let (ri, ra) = (plate.inner_radius, plate.outer_radius);
-    let inner = r.f64_opt("calipers.inner_radius")?.ok_or(ConfigError::CaliperKeyMissing { key: "calipers.inner_radius" })?;
-    let outer = r.f64_opt("calipers.outer_radius")?.ok_or(ConfigError::CaliperKeyMissing { key: "calipers.outer_radius" })?;
+    let inner = r
+        .f64_opt("calipers.inner_radius")?
+        .ok_or(ConfigError::CaliperKeyMissing {
+            key: "calipers.inner_radius",
+        })?;
+    let outer = r
+        .f64_opt("calipers.outer_radius")?
+        .ok_or(ConfigError::CaliperKeyMissing {
+            key: "calipers.outer_radius",
+        })?;
     if !(inner >= ri && inner < ra) {
         return Err(rule("calipers.inner_radius", inner, format!("must lie on the disc: plate.inner_radius ≤ r < plate.outer_radius = [{ri}, {ra}) m")));
     }
@@ -74,13 +110,22 @@ pub(super) fn read_calipers(r: &Reader, plate: &PlateConfig, nodes: &mut NodesCo
     }
     let nr = r.i64("calipers.points_radial", 1)?;
     let nc = r.i64("calipers.points_circumferential", 6)?;
-    for (key, n) in [("calipers.points_radial", nr), ("calipers.points_circumferential", nc)] {
+    for (key, n) in [
+        ("calipers.points_radial", nr),
+        ("calipers.points_circumferential", nc),
+    ] {
         if n < 1 {
             return Err(rule(key, n as f64, "must be ≥ 1".into()));
         }
     }
     if nr * nc * count as i64 > MAX_CALIPER_POINTS {
-        return Err(rule("calipers.points_circumferential", nc as f64, format!("points_radial × points_circumferential × calipers must be ≤ {MAX_CALIPER_POINTS}")));
+        return Err(rule(
+            "calipers.points_circumferential",
+            nc as f64,
+            format!(
+                "points_radial × points_circumferential × calipers must be ≤ {MAX_CALIPER_POINTS}"
+            ),
+        ));
     }
     let radii = ring_radii(inner, outer, nr as usize);
     let mut contacts = Vec::with_capacity((nr * nc) as usize * count);
@@ -89,8 +134,14 @@ pub(super) fn read_calipers(r: &Reader, plate: &PlateConfig, nodes: &mut NodesCo
             let deg = centre + arc * ((c as f64 + 0.5) / nc as f64 - 0.5);
             let turns = (deg / 360.0).rem_euclid(1.0);
             for &radius in &radii {
-                contacts.push(PadContact { node: nodes.ale.len(), pad });
-                nodes.ale.push(NodePosition { radial: (radius - ri) / (ra - ri), angular: turns });
+                contacts.push(PadContact {
+                    node: nodes.ale.len(),
+                    pad,
+                });
+                nodes.ale.push(NodePosition {
+                    radial: (radius - ri) / (ra - ri),
+                    angular: turns,
+                });
             }
         }
     }

@@ -58,7 +58,10 @@ pub struct CentrifugalConfig {
 
 impl Default for CentrifugalConfig {
     fn default() -> Self {
-        CentrifugalConfig { stiffening: false, in_plane_inner: InPlaneInner::Auto }
+        CentrifugalConfig {
+            stiffening: false,
+            in_plane_inner: InPlaneInner::Auto,
+        }
     }
 }
 
@@ -66,10 +69,14 @@ pub(super) fn read_centrifugal(r: &Reader) -> Result<CentrifugalConfig, ConfigEr
     let stiffening = r.bool("plate.centrifugal_stiffening", false)?;
     let key = "plate.in_plane_inner";
     let name = r.string(key, "auto")?;
-    let in_plane_inner = InPlaneInner::from_name(name.trim()).ok_or(ConfigError::UnknownChoice {
-        key: key.to_string(),
-        value: name,
-        allowed: InPlaneInner::NAMES,
-    })?;
-    Ok(CentrifugalConfig { stiffening, in_plane_inner })
+    let in_plane_inner =
+        InPlaneInner::from_name(name.trim()).ok_or(ConfigError::UnknownChoice {
+            key: key.to_string(),
+            value: name,
+            allowed: InPlaneInner::NAMES,
+        })?;
+    Ok(CentrifugalConfig {
+        stiffening,
+        in_plane_inner,
+    })
 }

@@ -109,7 +109,10 @@ fn in_range(param: &Param, key: &str, x: f64) -> Result<(), ConfigError> {
 /// the given one abbreviates (`plate.poisson` → `plate.poisson_ratio`).
 pub(super) fn suggest(key: &str, known: &[&str]) -> Option<String> {
     let lower = key.to_lowercase();
-    let best = known.iter().map(|k| (levenshtein(&lower, k), *k)).min_by_key(|(d, _)| *d);
+    let best = known
+        .iter()
+        .map(|k| (levenshtein(&lower, k), *k))
+        .min_by_key(|(d, _)| *d);
     if let Some((d, k)) = best {
         if d <= (k.chars().count() / 6).max(2) {
             return Some(k.to_string());
@@ -125,7 +128,10 @@ pub(super) fn suggest(key: &str, known: &[&str]) -> Option<String> {
         return Some(k.to_string());
     }
     if last.chars().count() >= 4 {
-        if let Some(k) = known.iter().find(|k| section_of(k) == section && last_of(k).starts_with(last)) {
+        if let Some(k) = known
+            .iter()
+            .find(|k| section_of(k) == section && last_of(k).starts_with(last))
+        {
             return Some(k.to_string());
         }
     }

@@ -30,13 +30,23 @@ pub enum ConfigError {
     Yaml { message: String },
 
     #[error("{quantity} = {value:e}, derived from {keys}, lies outside [{low:e}, {high:e}]: the model cannot be built in floating point; check the values and units of {keys}")]
-    DerivedOutOfRange { quantity: &'static str, value: f64, low: f64, high: f64, keys: &'static str },
+    DerivedOutOfRange {
+        quantity: &'static str,
+        value: f64,
+        low: f64,
+        high: f64,
+        keys: &'static str,
+    },
 
     #[error("line {line}: the YAML nests deeper than {limit} levels; a ROS 2 parameter file needs about four (node, ros__parameters, section, key) and flat arrays")]
     TooDeep { line: usize, limit: usize },
 
     #[error("the parameter file {} has {bytes} bytes, more than the limit of {limit} bytes", path.display())]
-    TooLarge { path: PathBuf, bytes: u64, limit: u64 },
+    TooLarge {
+        path: PathBuf,
+        bytes: u64,
+        limit: u64,
+    },
 
     #[error("the parameter file has no entry for the node `{node}` (entries found: {}); add `{node}:` or `/**:` with `ros__parameters:` under it", list_or_none(found))]
     NoEntryForNode { node: String, found: Vec<String> },
@@ -51,9 +61,15 @@ pub enum ConfigError {
     NestedList { key: String },
 
     #[error("{key} mixes {first} and {other} elements; a ROS 2 array holds one type (integers may be mixed into a list of doubles)")]
-    MixedList { key: String, first: &'static str, other: &'static str },
+    MixedList {
+        key: String,
+        first: &'static str,
+        other: &'static str,
+    },
 
-    #[error("{key} has no value (YAML null); give a value or leave the key out to use its default")]
+    #[error(
+        "{key} has no value (YAML null); give a value or leave the key out to use its default"
+    )]
     MissingValue { key: String },
 
     #[error("{key} is given twice in the same parameter file entry (for example once nested and once as a dotted name)")]
@@ -63,20 +79,35 @@ pub enum ConfigError {
     BadParameterName { name: String, reason: String },
 
     #[error("cannot parse the value `{text}` given for {key}: {message}")]
-    BadOverride { key: String, text: String, message: String },
+    BadOverride {
+        key: String,
+        text: String,
+        message: String,
+    },
 
     // ---- names and types ---------------------------------------------------
     #[error("unknown parameter {key}{}", suggestion_text(suggestion))]
-    UnknownKey { key: String, suggestion: Option<String> },
+    UnknownKey {
+        key: String,
+        suggestion: Option<String>,
+    },
 
     #[error("{key} must be {expected}, found {found}")]
-    WrongType { key: String, expected: &'static str, found: String },
+    WrongType {
+        key: String,
+        expected: &'static str,
+        found: String,
+    },
 
     #[error("{key} = {value} is not a boundary condition; use one of: free, supported, clamped")]
     UnknownBoundary { key: String, value: String },
 
     #[error("{key} = {value} is not one of: {}", allowed.join(", "))]
-    UnknownChoice { key: String, value: String, allowed: &'static [&'static str] },
+    UnknownChoice {
+        key: String,
+        value: String,
+        allowed: &'static [&'static str],
+    },
 
     // ---- single values -----------------------------------------------------
     #[error("{key} must be a finite number (got NaN or infinity)")]
@@ -92,13 +123,21 @@ pub enum ConfigError {
     AboveMaximum { key: String, value: f64, max: f64 },
 
     #[error("{key} = {} is out of its declared range: it must be {rule}", num(*value))]
-    OutOfRange { key: String, value: f64, rule: String },
+    OutOfRange {
+        key: String,
+        value: f64,
+        rule: String,
+    },
 
     #[error("{key} must not be empty")]
     Empty { key: String },
     /// A caliper key against its geometric rule (`calipers.*`, docs/scenes.md).
     #[error("{key} = {} breaks its rule: {rule}", num(*value))]
-    CaliperRule { key: String, value: f64, rule: String },
+    CaliperRule {
+        key: String,
+        value: f64,
+        rule: String,
+    },
     #[error("{key} is required with calipers.angles_deg (the pads' radial extent, m)")]
     CaliperKeyMissing { key: &'static str },
 
@@ -106,23 +145,42 @@ pub enum ConfigError {
     Duplicate { key: String, value: i64 },
 
     #[error("{key} must have {expected} elements, found {len}")]
-    WrongLength { key: String, len: usize, expected: usize },
+    WrongLength {
+        key: String,
+        len: usize,
+        expected: usize,
+    },
 
     // ---- the plate ---------------------------------------------------------
     #[error("plate.inner_radius = {} must be smaller than plate.outer_radius = {} (an annulus with r_i ≥ r_a does not exist; paper section 4.2)", num(*inner), num(*outer))]
     InnerRadiusNotBelowOuter { inner: f64, outer: f64 },
 
     #[error("{}", degenerate_text(*kind, *inner, *outer))]
-    DegenerateGeometry { kind: Degeneracy, inner: f64, outer: f64 },
+    DegenerateGeometry {
+        kind: Degeneracy,
+        inner: f64,
+        outer: f64,
+    },
 
     #[error("give exactly one of plate.poisson_ratio (= {}) and plate.shear_modulus (= {}), not both", num(*poisson_ratio), num(*shear_modulus))]
-    PoissonAndShearModulus { poisson_ratio: f64, shear_modulus: f64 },
+    PoissonAndShearModulus {
+        poisson_ratio: f64,
+        shear_modulus: f64,
+    },
 
     #[error("{}", poisson_text(*nu, *from_shear_modulus))]
     PoissonRatioOutOfRange { nu: f64, from_shear_modulus: bool },
 
     #[error("plate.radial_splines = {splines}: the {inner}–{outer} boundaries remove {removed} B-splines, leaving {free} free coefficients, but nodal circles up to l = {max_l} need at least {} (use plate.radial_splines ≥ {needed})", max_l + 4)]
-    TooFewRadialSplines { splines: usize, needed: usize, free: usize, removed: usize, max_l: u32, inner: &'static str, outer: &'static str },
+    TooFewRadialSplines {
+        splines: usize,
+        needed: usize,
+        free: usize,
+        removed: usize,
+        max_l: u32,
+        inner: &'static str,
+        outer: &'static str,
+    },
 
     #[error("plate.radial_splines = {found}: give `auto` (the count per nodal-diameter number that reaches plate.frequency_tolerance) or an integer count ≤ 400")]
     RadialSplinesNotAutoOrCount { found: String },
@@ -141,16 +199,36 @@ pub enum ConfigError {
 
     // ---- nodes and loads ---------------------------------------------------
     #[error("{key}[{index}] = {value} must lie in [0, 1] (the paper's ξ coordinate, section 4.1)")]
-    NodeOutOfUnitInterval { key: String, index: usize, value: f64 },
+    NodeOutOfUnitInterval {
+        key: String,
+        index: usize,
+        value: f64,
+    },
 
     #[error("{key_a} has {len_a} values but {key_b} has {len_b}; they must have the same length")]
-    LengthMismatch { key_a: String, len_a: usize, key_b: String, len_b: usize },
+    LengthMismatch {
+        key_a: String,
+        len_a: usize,
+        key_b: String,
+        len_b: usize,
+    },
 
     #[error("{}", wrench_length_text(key, *len, *nodes))]
-    WrenchLength { key: String, len: usize, nodes: usize },
+    WrenchLength {
+        key: String,
+        len: usize,
+        nodes: usize,
+    },
 
     #[error("{key}: the {what} of node {node} (from 1) has magnitude {}, above {limit_key} = {}", num(*value), num(*limit))]
-    WrenchAboveLimit { key: String, node: usize, what: &'static str, value: f64, limit_key: &'static str, limit: f64 },
+    WrenchAboveLimit {
+        key: String,
+        node: usize,
+        what: &'static str,
+        value: f64,
+        limit_key: &'static str,
+        limit: f64,
+    },
 
     // ---- joint, reference --------------------------------------------------
     #[error("joint.speed = {} rad/s exceeds limits.max_speed = {} rad/s in magnitude", num(*speed), num(*max_speed))]
@@ -161,10 +239,18 @@ pub enum ConfigError {
 
     // ---- load models (pads, tool, links) and initial state ------------------
     #[error("{key} names {kind} node {node} (nodes count from 1), but the scene has {} {kind} node(s) (nodes.{kind}_radial / nodes.{kind}_angular)", count)]
-    NoSuchNode { key: String, node: i64, kind: &'static str, count: usize },
+    NoSuchNode {
+        key: String,
+        node: i64,
+        kind: &'static str,
+        count: usize,
+    },
 
     #[error("{key} is given but {enabling_key} is empty or missing, so this load model is off; give {enabling_key} or remove {key}")]
-    KeyWithoutSection { key: String, enabling_key: &'static str },
+    KeyWithoutSection {
+        key: String,
+        enabling_key: &'static str,
+    },
 
     #[error("pads.contact_pad: pads are numbered from 1 without gaps, but pad {pad} has no contact point (pads used: 1..={pads})")]
     PadWithoutContacts { pad: usize, pads: usize },
@@ -195,7 +281,11 @@ fn num(x: f64) -> String {
 }
 
 fn wrench_length_text(key: &str, len: usize, nodes: usize) -> String {
-    let kind = if key.starts_with("loads.ale") { "ale" } else { "lagrange" };
+    let kind = if key.starts_with("loads.ale") {
+        "ale"
+    } else {
+        "lagrange"
+    };
     if nodes == 0 {
         format!(
             "{key} has {len} values but there are no {kind} nodes (nodes.{kind}_radial / nodes.{kind}_angular); \
@@ -213,7 +303,11 @@ fn list_or_none(found: &[String]) -> String {
     if found.is_empty() {
         "none".to_string()
     } else {
-        found.iter().map(|f| format!("`{f}`")).collect::<Vec<_>>().join(", ")
+        found
+            .iter()
+            .map(|f| format!("`{f}`"))
+            .collect::<Vec<_>>()
+            .join(", ")
     }
 }
 

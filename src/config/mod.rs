@@ -7,11 +7,11 @@
 //! the key (`plate.inner_radius`) and the rule.
 
 pub mod calipers;
-mod check;
 mod centrifugal;
+mod check;
+mod error;
 mod load_model_sections;
 mod load_models;
-mod error;
 mod params_file;
 mod raw;
 pub mod table;
@@ -19,11 +19,12 @@ mod text_limits;
 mod validate;
 
 pub use centrifugal::{CentrifugalConfig, InPlaneInner};
-pub use load_models::{
-    Caliper, ContactSurface, LinksConfig, PadContact, PadsConfig, SpringsConfig, ToolConfig, MAX_TOOL_FEED_RATE,
-};
 pub use check::{check, check_params};
 pub use error::{ConfigError, Degeneracy};
+pub use load_models::{
+    Caliper, ContactSurface, LinksConfig, PadContact, PadsConfig, SpringsConfig, ToolConfig,
+    MAX_TOOL_FEED_RATE,
+};
 pub use params_file::{ParamValue, Params};
 
 use serde::Serialize;
@@ -139,7 +140,8 @@ impl PlateConfig {
     /// coefficients must remain (and at least 4 B-splines in total).
     pub fn min_radial_splines(&self) -> usize {
         let max_l = self.nodal_circles.iter().copied().max().unwrap_or(0) as usize;
-        let removed = self.inner_boundary.essential_conditions() + self.outer_boundary.essential_conditions();
+        let removed =
+            self.inner_boundary.essential_conditions() + self.outer_boundary.essential_conditions();
         (max_l + 4 + removed).max(4)
     }
 
@@ -147,9 +149,16 @@ impl PlateConfig {
     /// cos/sin pair for k ≥ 1; a free–free plate skips its rigid-body motions
     /// ⟨0, 0⟩ (one) and ⟨1, 0⟩ (two) when requested.
     pub fn mode_count(&self) -> usize {
-        let per_circle_set: usize = self.nodal_diameters.iter().map(|&k| if k == 0 { 1 } else { 2 }).sum();
+        let per_circle_set: usize = self
+            .nodal_diameters
+            .iter()
+            .map(|&k| if k == 0 { 1 } else { 2 })
+            .sum();
         let mut n = per_circle_set * self.nodal_circles.len();
-        if self.inner_boundary == Boundary::Free && self.outer_boundary == Boundary::Free && self.nodal_circles.contains(&0) {
+        if self.inner_boundary == Boundary::Free
+            && self.outer_boundary == Boundary::Free
+            && self.nodal_circles.contains(&0)
+        {
             if self.nodal_diameters.contains(&0) {
                 n -= 1;
             }
@@ -355,7 +364,12 @@ pub struct JointConfig {
 
 impl Default for JointConfig {
     fn default() -> Self {
-        JointConfig { speed: 0.0, max_acceleration: 50.0, max_torque: None, initial_position: 0.0 }
+        JointConfig {
+            speed: 0.0,
+            max_acceleration: 50.0,
+            max_torque: None,
+            initial_position: 0.0,
+        }
     }
 }
 
@@ -472,7 +486,12 @@ pub struct LimitsConfig {
 
 impl Default for LimitsConfig {
     fn default() -> Self {
-        LimitsConfig { max_force: 1.0e7, max_moment: 1.0e6, max_speed: 1.0e4, max_deflection_thicknesses: 1.0e3 }
+        LimitsConfig {
+            max_force: 1.0e7,
+            max_moment: 1.0e6,
+            max_speed: 1.0e4,
+            max_deflection_thicknesses: 1.0e3,
+        }
     }
 }
 
@@ -513,7 +532,10 @@ pub struct Config {
 impl Config {
     /// Read and validate a ROS 2 parameter file for the node `node_name`
     /// (entries under `/**` apply to every node; a node's own entry wins).
-    pub fn from_params_file(path: &std::path::Path, node_name: &str) -> Result<Config, ConfigError> {
+    pub fn from_params_file(
+        path: &std::path::Path,
+        node_name: &str,
+    ) -> Result<Config, ConfigError> {
         let params = Params::from_file(path, node_name)?;
         Config::from_params(&params)
     }

@@ -59,7 +59,11 @@ impl ParamValue {
     }
 }
 
-fn write_list<T>(f: &mut fmt::Formatter<'_>, items: &[T], one: impl Fn(&mut fmt::Formatter<'_>, &T) -> fmt::Result) -> fmt::Result {
+fn write_list<T>(
+    f: &mut fmt::Formatter<'_>,
+    items: &[T],
+    one: impl Fn(&mut fmt::Formatter<'_>, &T) -> fmt::Result,
+) -> fmt::Result {
     f.write_str("[")?;
     for (i, item) in items.iter().enumerate() {
         if i > 0 {
@@ -108,20 +112,39 @@ impl Params {
 
     /// Read a ROS 2 parameter file for the node `node_name`.
     pub fn from_file(path: &Path, node_name: &str) -> Result<Params, ConfigError> {
-        let io = |e: std::io::Error| ConfigError::Io { path: path.to_path_buf(), message: e.to_string() };
+        let io = |e: std::io::Error| ConfigError::Io {
+            path: path.to_path_buf(),
+            message: e.to_string(),
+        };
         let bytes = std::fs::metadata(path).map_err(io)?.len();
         if bytes > MAX_FILE_BYTES {
-            return Err(ConfigError::TooLarge { path: path.to_path_buf(), bytes, limit: MAX_FILE_BYTES });
+            return Err(ConfigError::TooLarge {
+                path: path.to_path_buf(),
+                bytes,
+                limit: MAX_FILE_BYTES,
+            });
         }
         // The size again while reading: a device or pipe (/dev/zero) has no length beforehand.
         let mut text = String::new();
-        std::io::Read::read_to_string(&mut std::io::Read::take(std::fs::File::open(path).map_err(io)?, MAX_FILE_BYTES + 1), &mut text)
-            .map_err(|e| ConfigError::Io { path: path.to_path_buf(), message: e.to_string() })?;
+        std::io::Read::read_to_string(
+            &mut std::io::Read::take(std::fs::File::open(path).map_err(io)?, MAX_FILE_BYTES + 1),
+            &mut text,
+        )
+        .map_err(|e| ConfigError::Io {
+            path: path.to_path_buf(),
+            message: e.to_string(),
+        })?;
         if text.len() as u64 > MAX_FILE_BYTES {
-            return Err(ConfigError::TooLarge { path: path.to_path_buf(), bytes: text.len() as u64, limit: MAX_FILE_BYTES });
+            return Err(ConfigError::TooLarge {
+                path: path.to_path_buf(),
+                bytes: text.len() as u64,
+                limit: MAX_FILE_BYTES,
+            });
         }
         Params::from_yaml_str(&text, node_name).map_err(|e| match e {
-            ConfigError::Yaml { message } => ConfigError::Yaml { message: format!("{}: {message}", path.display()) },
+            ConfigError::Yaml { message } => ConfigError::Yaml {
+                message: format!("{}: {message}", path.display()),
+            },
             other => other,
         })
     }
@@ -134,7 +157,9 @@ impl Params {
     /// own entries (file order).
     pub fn from_yaml_str(text: &str, node_name: &str) -> Result<Params, ConfigError> {
         check_depth(text)?;
-        let doc: Value = serde_yaml_ng::from_str(text).map_err(|e| ConfigError::Yaml { message: e.to_string() })?;
+        let doc: Value = serde_yaml_ng::from_str(text).map_err(|e| ConfigError::Yaml {
+            message: e.to_string(),
+        })?;
         let top = match doc {
             Value::Mapping(m) => m,
             Value::Null => serde_yaml_ng::Mapping::new(),
@@ -157,7 +182,10 @@ impl Params {
                 Value::String(s) => s.clone(),
                 other => {
                     return Err(ConfigError::Yaml {
-                        message: format!("top-level keys must be node names, found {}", yaml_kind(other)),
+                        message: format!(
+                            "top-level keys must be node names, found {}",
+                            yaml_kind(other)
+                        ),
                     })
                 }
             };
@@ -167,7 +195,10 @@ impl Params {
             }
         }
         if matching.is_empty() {
-            return Err(ConfigError::NoEntryForNode { node: node.to_string(), found });
+            return Err(ConfigError::NoEntryForNode {
+                node: node.to_string(),
+                found,
+            });
         }
         matching.sort_by_key(|(priority, index, _, _)| (*priority, *index));
 
@@ -191,11 +222,12 @@ impl Params {
     pub fn set_override(&mut self, name: &str, value_text: &str) -> Result<(), ConfigError> {
         check_name(name)?;
         check_depth(value_text)?;
-        let value: Value = serde_yaml_ng::from_str(value_text).map_err(|e| ConfigError::BadOverride {
-            key: name.to_string(),
-            text: value_text.to_string(),
-            message: e.to_string(),
-        })?;
+        let value: Value =
+            serde_yaml_ng::from_str(value_text).map_err(|e| ConfigError::BadOverride {
+                key: name.to_string(),
+                text: value_text.to_string(),
+                message: e.to_string(),
+            })?;
         if let Value::Mapping(_) = value {
             return Err(ConfigError::BadOverride {
                 key: name.to_string(),
@@ -274,7 +306,8 @@ fn token_match(pattern: &str, token: &str) -> bool {
     }
     let parts: Vec<&str> = pattern.split('*').collect();
     let (first, last) = (parts[0], parts[parts.len() - 1]);
-    if !token.starts_with(first) || token.len() < first.len() + last.len() || !token.ends_with(last) {
+    if !token.starts_with(first) || token.len() < first.len() + last.len() || !token.ends_with(last)
+    {
         return false;
     }
     let mut rest = &token[first.len()..token.len() - last.len()];
@@ -287,10 +320,17 @@ fn token_match(pattern: &str, token: &str) -> bool {
     true
 }
 
-fn ros_parameters_of<'a>(entry: &str, value: &'a Value) -> Result<Option<&'a serde_yaml_ng::Mapping>, ConfigError> {
+fn ros_parameters_of<'a>(
+    entry: &str,
+    value: &'a Value,
+) -> Result<Option<&'a serde_yaml_ng::Mapping>, ConfigError> {
     let map = match value {
         Value::Mapping(m) => m,
-        _ => return Err(ConfigError::MissingRosParameters { entry: entry.to_string() }),
+        _ => {
+            return Err(ConfigError::MissingRosParameters {
+                entry: entry.to_string(),
+            })
+        }
     };
     let mut result = None;
     let mut seen = false;
@@ -303,23 +343,35 @@ fn ros_parameters_of<'a>(entry: &str, value: &'a Value) -> Result<Option<&'a ser
                     Value::Null => None,
                     other => {
                         return Err(ConfigError::Yaml {
-                            message: format!("`{entry}: ros__parameters:` must be a map, found {}", yaml_kind(other)),
+                            message: format!(
+                                "`{entry}: ros__parameters:` must be a map, found {}",
+                                yaml_kind(other)
+                            ),
                         })
                     }
                 };
             }
             other => {
-                return Err(ConfigError::UnexpectedEntryKey { entry: entry.to_string(), key: key_text(other) });
+                return Err(ConfigError::UnexpectedEntryKey {
+                    entry: entry.to_string(),
+                    key: key_text(other),
+                });
             }
         }
     }
     if !seen {
-        return Err(ConfigError::MissingRosParameters { entry: entry.to_string() });
+        return Err(ConfigError::MissingRosParameters {
+            entry: entry.to_string(),
+        });
     }
     Ok(result)
 }
 
-fn flatten_map(prefix: &str, map: &serde_yaml_ng::Mapping, out: &mut BTreeMap<String, ParamValue>) -> Result<(), ConfigError> {
+fn flatten_map(
+    prefix: &str,
+    map: &serde_yaml_ng::Mapping,
+    out: &mut BTreeMap<String, ParamValue>,
+) -> Result<(), ConfigError> {
     for (key, value) in map {
         let name_part = match key {
             Value::String(s) => s.clone(),
@@ -328,7 +380,10 @@ fn flatten_map(prefix: &str, map: &serde_yaml_ng::Mapping, out: &mut BTreeMap<St
             other => {
                 return Err(ConfigError::BadParameterName {
                     name: format!("{prefix}{}", key_text(other)),
-                    reason: format!("a parameter name must be a string, found {}", yaml_kind(other)),
+                    reason: format!(
+                        "a parameter name must be a string, found {}",
+                        yaml_kind(other)
+                    ),
                 })
             }
         };
@@ -348,7 +403,12 @@ fn flatten_map(prefix: &str, map: &serde_yaml_ng::Mapping, out: &mut BTreeMap<St
 }
 
 fn check_name(name: &str) -> Result<(), ConfigError> {
-    let bad = |reason: &str| Err(ConfigError::BadParameterName { name: name.to_string(), reason: reason.to_string() });
+    let bad = |reason: &str| {
+        Err(ConfigError::BadParameterName {
+            name: name.to_string(),
+            reason: reason.to_string(),
+        })
+    };
     if name.is_empty() {
         return bad("the name is empty");
     }
@@ -382,7 +442,9 @@ impl ElemKind {
 
 fn convert_value(key: &str, value: &Value) -> Result<ParamValue, ConfigError> {
     match value {
-        Value::Null => Err(ConfigError::MissingValue { key: key.to_string() }),
+        Value::Null => Err(ConfigError::MissingValue {
+            key: key.to_string(),
+        }),
         Value::Bool(b) => Ok(ParamValue::Bool(*b)),
         Value::Number(_) => match number(key, value)? {
             Scalar::Integer(i) => Ok(ParamValue::Integer(i)),
@@ -390,7 +452,9 @@ fn convert_value(key: &str, value: &Value) -> Result<ParamValue, ConfigError> {
         },
         Value::String(s) => Ok(ParamValue::String(s.clone())),
         Value::Sequence(items) => convert_list(key, items),
-        Value::Mapping(_) => Err(ConfigError::Yaml { message: format!("{key}: unexpected map") }),
+        Value::Mapping(_) => Err(ConfigError::Yaml {
+            message: format!("{key}: unexpected map"),
+        }),
         Value::Tagged(t) => Err(ConfigError::WrongType {
             key: key.to_string(),
             expected: "a ROS 2 parameter value (no YAML tags)",
@@ -405,7 +469,9 @@ enum Scalar {
 }
 
 fn number(key: &str, value: &Value) -> Result<Scalar, ConfigError> {
-    let Value::Number(n) = value else { unreachable!("number() is only called on numbers") };
+    let Value::Number(n) = value else {
+        unreachable!("number() is only called on numbers")
+    };
     if let Some(i) = n.as_i64() {
         Ok(Scalar::Integer(i))
     } else if n.is_f64() {
@@ -429,8 +495,16 @@ fn convert_list(key: &str, items: &[Value]) -> Result<ParamValue, ConfigError> {
                 Scalar::Double(_) => ElemKind::Double,
             },
             Value::String(_) => ElemKind::String,
-            Value::Sequence(_) | Value::Mapping(_) => return Err(ConfigError::NestedList { key: key.to_string() }),
-            Value::Null => return Err(ConfigError::MissingValue { key: key.to_string() }),
+            Value::Sequence(_) | Value::Mapping(_) => {
+                return Err(ConfigError::NestedList {
+                    key: key.to_string(),
+                })
+            }
+            Value::Null => {
+                return Err(ConfigError::MissingValue {
+                    key: key.to_string(),
+                })
+            }
             Value::Tagged(t) => {
                 return Err(ConfigError::WrongType {
                     key: key.to_string(),
@@ -442,18 +516,34 @@ fn convert_list(key: &str, items: &[Value]) -> Result<ParamValue, ConfigError> {
         kind = Some(match (kind, this) {
             (None, k) => k,
             (Some(a), b) if a == b => a,
-            (Some(ElemKind::Integer), ElemKind::Double) | (Some(ElemKind::Double), ElemKind::Integer) => ElemKind::Double,
-            (Some(a), b) => return Err(ConfigError::MixedList { key: key.to_string(), first: a.name(), other: b.name() }),
+            (Some(ElemKind::Integer), ElemKind::Double)
+            | (Some(ElemKind::Double), ElemKind::Integer) => ElemKind::Double,
+            (Some(a), b) => {
+                return Err(ConfigError::MixedList {
+                    key: key.to_string(),
+                    first: a.name(),
+                    other: b.name(),
+                })
+            }
         });
     }
     Ok(match kind {
         None => ParamValue::DoubleArray(Vec::new()),
-        Some(ElemKind::Bool) => ParamValue::BoolArray(items.iter().filter_map(Value::as_bool).collect()),
-        Some(ElemKind::Integer) => ParamValue::IntegerArray(items.iter().filter_map(Value::as_i64).collect()),
-        Some(ElemKind::Double) => ParamValue::DoubleArray(items.iter().filter_map(Value::as_f64).collect()),
-        Some(ElemKind::String) => {
-            ParamValue::StringArray(items.iter().filter_map(|v| v.as_str().map(str::to_string)).collect())
+        Some(ElemKind::Bool) => {
+            ParamValue::BoolArray(items.iter().filter_map(Value::as_bool).collect())
         }
+        Some(ElemKind::Integer) => {
+            ParamValue::IntegerArray(items.iter().filter_map(Value::as_i64).collect())
+        }
+        Some(ElemKind::Double) => {
+            ParamValue::DoubleArray(items.iter().filter_map(Value::as_f64).collect())
+        }
+        Some(ElemKind::String) => ParamValue::StringArray(
+            items
+                .iter()
+                .filter_map(|v| v.as_str().map(str::to_string))
+                .collect(),
+        ),
     })
 }
 
@@ -489,12 +579,27 @@ mod tests {
         // rclcpp: an entry without a namespace is the root namespace's node only.
         assert_eq!(entry_priority("/ns/annular_plate", "annular_plate"), None);
         assert_eq!(entry_priority("annular_plate", "/ns/annular_plate"), None);
-        assert_eq!(entry_priority("/ns/annular_plate", "/ns/annular_plate"), Some(2));
-        assert_eq!(entry_priority("/other/annular_plate", "/ns/annular_plate"), None);
+        assert_eq!(
+            entry_priority("/ns/annular_plate", "/ns/annular_plate"),
+            Some(2)
+        );
+        assert_eq!(
+            entry_priority("/other/annular_plate", "/ns/annular_plate"),
+            None
+        );
         assert_eq!(entry_priority("other_node", "annular_plate"), None);
-        assert_eq!(entry_priority("/**/annular_plate", "/a/b/annular_plate"), Some(1));
-        assert_eq!(entry_priority("/*/annular_plate", "/a/annular_plate"), Some(1));
-        assert_eq!(entry_priority("/*/annular_plate", "/a/b/annular_plate"), None);
+        assert_eq!(
+            entry_priority("/**/annular_plate", "/a/b/annular_plate"),
+            Some(1)
+        );
+        assert_eq!(
+            entry_priority("/*/annular_plate", "/a/annular_plate"),
+            Some(1)
+        );
+        assert_eq!(
+            entry_priority("/*/annular_plate", "/a/b/annular_plate"),
+            None
+        );
         assert_eq!(entry_priority("/annular_*", "/annular_plate"), Some(1));
     }
 }

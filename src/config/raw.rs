@@ -21,7 +21,10 @@ impl<'a> Reader<'a> {
     }
 
     fn get(&self, key: &str) -> Option<&'a ParamValue> {
-        debug_assert!(self.known.contains(&key), "config key {key} is read but missing from the table of known keys");
+        debug_assert!(
+            self.known.contains(&key),
+            "config key {key} is read but missing from the table of known keys"
+        );
         self.params.get(key)
     }
 
@@ -32,7 +35,9 @@ impl<'a> Reader<'a> {
             (Some(ParamValue::Double(x)), _) => Ok(*x),
             (None, Some(super::table::Value::Double(x))) => Ok(x),
             (Some(other), _) => Err(wrong_type(key, "a double", other)),
-            (None, _) => Err(ConfigError::MissingValue { key: key.to_string() }),
+            (None, _) => Err(ConfigError::MissingValue {
+                key: key.to_string(),
+            }),
         }
     }
 
@@ -43,9 +48,17 @@ impl<'a> Reader<'a> {
             (Some(ParamValue::Integer(i)), _) => *i,
             (None, Some(super::table::Value::Integer(i))) => i,
             (Some(other), _) => return Err(wrong_type(key, "an integer", other)),
-            (None, _) => return Err(ConfigError::MissingValue { key: key.to_string() }),
+            (None, _) => {
+                return Err(ConfigError::MissingValue {
+                    key: key.to_string(),
+                })
+            }
         };
-        u32::try_from(i).map_err(|_| ConfigError::AboveMaximum { key: key.to_string(), value: i as f64, max: u32::MAX as f64 })
+        u32::try_from(i).map_err(|_| ConfigError::AboveMaximum {
+            key: key.to_string(),
+            value: i as f64,
+            max: u32::MAX as f64,
+        })
     }
 
     /// Whether the parameter set gives `key` at all.
@@ -136,8 +149,11 @@ impl<'a> Reader<'a> {
     /// Exactly three finite doubles.
     pub(super) fn vec3(&self, key: &str, default: [f64; 3]) -> Result<[f64; 3], ConfigError> {
         let v = self.f64_array(key, &default)?;
-        <[f64; 3]>::try_from(v.as_slice())
-            .map_err(|_| ConfigError::WrongLength { key: key.to_string(), len: v.len(), expected: 3 })
+        <[f64; 3]>::try_from(v.as_slice()).map_err(|_| ConfigError::WrongLength {
+            key: key.to_string(),
+            len: v.len(),
+            expected: 3,
+        })
     }
 }
 
@@ -145,7 +161,9 @@ pub(super) fn finite(key: &str, x: f64) -> Result<f64, ConfigError> {
     if x.is_finite() {
         Ok(x)
     } else {
-        Err(ConfigError::NonFinite { key: key.to_string() })
+        Err(ConfigError::NonFinite {
+            key: key.to_string(),
+        })
     }
 }
 
@@ -153,12 +171,19 @@ pub(super) fn positive(key: &str, x: f64) -> Result<f64, ConfigError> {
     if x > 0.0 {
         Ok(x)
     } else {
-        Err(ConfigError::NotPositive { key: key.to_string(), value: x })
+        Err(ConfigError::NotPositive {
+            key: key.to_string(),
+            value: x,
+        })
     }
 }
 
 fn wrong_type(key: &str, expected: &'static str, found: &ParamValue) -> ConfigError {
-    ConfigError::WrongType { key: key.to_string(), expected, found: format!("{} {found}", found.type_name()) }
+    ConfigError::WrongType {
+        key: key.to_string(),
+        expected,
+        found: format!("{} {found}", found.type_name()),
+    }
 }
 
 /// A string key that must be one of `allowed`, parsed by `parse`.
@@ -170,5 +195,9 @@ pub(super) fn read_choice<T>(
     parse: impl Fn(&str) -> Option<T>,
 ) -> Result<T, ConfigError> {
     let name = r.string(key, default)?;
-    parse(name.trim()).ok_or(ConfigError::UnknownChoice { key: key.to_string(), value: name, allowed })
+    parse(name.trim()).ok_or(ConfigError::UnknownChoice {
+        key: key.to_string(),
+        value: name,
+        allowed,
+    })
 }

@@ -63,7 +63,11 @@ pub struct Range {
 }
 
 impl Range {
-    pub const ANY: Range = Range { min: Bound::Open, max: Bound::Open, or_zero: false };
+    pub const ANY: Range = Range {
+        min: Bound::Open,
+        max: Bound::Open,
+        or_zero: false,
+    };
 
     /// Whether `x` lies in the range.
     pub fn contains(&self, x: f64) -> bool {
@@ -82,7 +86,13 @@ impl Range {
 
     /// The range as an error message states it (`> 0`, `in (0, 2.5]`, `0 or in [1e-6, 1e6]`).
     pub fn text(&self) -> String {
-        let n = |x: f64| if x != 0.0 && (x.abs() >= 1e6 || x.abs() < 1e-4) { format!("{x:e}") } else { format!("{x}") };
+        let n = |x: f64| {
+            if x != 0.0 && (x.abs() >= 1e6 || x.abs() < 1e-4) {
+                format!("{x:e}")
+            } else {
+                format!("{x}")
+            }
+        };
         let range = match (self.min, self.max) {
             (Bound::Open, Bound::Open) => "finite".to_string(),
             (Bound::Inclusive(a), Bound::Open) => format!(">= {}", n(a)),
@@ -210,7 +220,17 @@ const fn p(
     rule: &'static str,
     meaning: &'static str,
 ) -> Param {
-    Param { key, ty, type_text, unit, default, default_text, rule, meaning, range: Range::ANY }
+    Param {
+        key,
+        ty,
+        type_text,
+        unit,
+        default,
+        default_text,
+        rule,
+        meaning,
+        range: Range::ANY,
+    }
 }
 
 /// Every section, in the reference's order.
@@ -460,7 +480,9 @@ pub fn keys(name: &str) -> Vec<&'static str> {
 /// their other keys have no effect, and no default, without it.
 pub fn enabled_by(section_name: &str) -> Option<&'static str> {
     match section_name {
-        "pads" | "calipers" | "tool" | "links" | "springs" => section(section_name).map(|s| s.params[0].key),
+        "pads" | "calipers" | "tool" | "links" | "springs" => {
+            section(section_name).map(|s| s.params[0].key)
+        }
         _ => None,
     }
 }
@@ -482,7 +504,9 @@ pub fn reference_markdown() -> String {
         if !s.before.is_empty() {
             out.push_str(&format!("{}\n\n", s.before));
         }
-        out.push_str("| Key | Type | Unit | Default | Rule | Meaning |\n|---|---|---|---|---|---|\n");
+        out.push_str(
+            "| Key | Type | Unit | Default | Rule | Meaning |\n|---|---|---|---|---|---|\n",
+        );
         for p in s.params {
             out.push_str(&format!(
                 "| `{}` | {} | {} | {} | {} | {} |\n",
@@ -513,9 +537,16 @@ pub fn key_index_markdown() -> String {
             .filter(|c| c.is_alphanumeric() || *c == ' ' || *c == '-' || *c == '_')
             .map(|c| if c == ' ' { '-' } else { c })
             .collect();
-        let name = if s.name.is_empty() { "top level".to_string() } else { format!("`{}`", s.name) };
+        let name = if s.name.is_empty() {
+            "top level".to_string()
+        } else {
+            format!("`{}`", s.name)
+        };
         let keys: Vec<String> = s.params.iter().map(|p| format!("`{}`", p.key)).collect();
-        out.push_str(&format!("| [{name}](docs/parameters.md#{anchor}) | {} |\n", keys.join(", ")));
+        out.push_str(&format!(
+            "| [{name}](docs/parameters.md#{anchor}) | {} |\n",
+            keys.join(", ")
+        ));
     }
     out
 }

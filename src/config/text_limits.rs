@@ -36,7 +36,10 @@ pub fn check_depth(text: &str) -> Result<(), ConfigError> {
         }
         let deepest = indents.len() + dashes + flow_depth(rest, &mut flow);
         if deepest > MAX_DEPTH {
-            return Err(ConfigError::TooDeep { line: number + 1, limit: MAX_DEPTH });
+            return Err(ConfigError::TooDeep {
+                line: number + 1,
+                limit: MAX_DEPTH,
+            });
         }
     }
     Ok(())
@@ -79,14 +82,34 @@ mod tests {
     fn a_scene_file_passes_and_deep_nesting_is_refused_with_its_line() {
         let scene = "annular_plate:\n  ros__parameters:\n    plate:\n      damping: [0.02]  # [[[ in a comment\n      note: \"[[[[\"\n";
         assert_eq!(check_depth(scene), Ok(()));
-        let deep = format!("annular_plate:\n  ros__parameters:\n    plate:\n      damping: {}{}\n", "[".repeat(40), "]".repeat(40));
-        assert_eq!(check_depth(&deep), Err(ConfigError::TooDeep { line: 4, limit: MAX_DEPTH }));
+        let deep = format!(
+            "annular_plate:\n  ros__parameters:\n    plate:\n      damping: {}{}\n",
+            "[".repeat(40),
+            "]".repeat(40)
+        );
+        assert_eq!(
+            check_depth(&deep),
+            Err(ConfigError::TooDeep {
+                line: 4,
+                limit: MAX_DEPTH
+            })
+        );
         let mut block = String::new();
         for level in 0..40 {
             block.push_str(&format!("{}k{level}:\n", " ".repeat(level)));
         }
-        assert!(matches!(check_depth(&block), Err(ConfigError::TooDeep { line: 33, .. })), "{:?}", check_depth(&block));
+        assert!(
+            matches!(
+                check_depth(&block),
+                Err(ConfigError::TooDeep { line: 33, .. })
+            ),
+            "{:?}",
+            check_depth(&block)
+        );
         let dashes = format!("a:\n  {}x\n", "- ".repeat(40));
-        assert!(matches!(check_depth(&dashes), Err(ConfigError::TooDeep { line: 2, .. })));
+        assert!(matches!(
+            check_depth(&dashes),
+            Err(ConfigError::TooDeep { line: 2, .. })
+        ));
     }
 }

@@ -12,13 +12,14 @@
 use std::f64::consts::FRAC_PI_2;
 
 use super::check::suggest;
-use super::raw::{positive, read_choice, Reader};
-use super::{
-    Boundary, Config, ConfigError, Coordinates, InitialConfig, IntegratorKind, JointConfig, LimitsConfig, LoadsConfig, NodePosition,
-    NodesConfig, Params, PlateConfig, RadialSplines, ReferenceConfig, SimulationConfig, Surface, WrenchConfig,
-};
 use super::error::Degeneracy;
 use super::load_model_sections::{at_most, read_links, read_pads, read_springs, read_tool};
+use super::raw::{positive, read_choice, Reader};
+use super::{
+    Boundary, Config, ConfigError, Coordinates, InitialConfig, IntegratorKind, JointConfig,
+    LimitsConfig, LoadsConfig, NodePosition, NodesConfig, Params, PlateConfig, RadialSplines,
+    ReferenceConfig, SimulationConfig, Surface, WrenchConfig,
+};
 
 /// Every accepted parameter name: the declared table ([`super::table`]).
 pub(super) fn known_keys() -> Vec<&'static str> {
@@ -69,7 +70,22 @@ pub(super) fn config_from_params(params: &Params) -> Result<Config, ConfigError>
         return Err(ConfigError::PadMass { rule: "pads.mass > 0 needs simulation.integrator: rk4 (the pads' axial motion is integrated at every stage)" });
     }
 
-    Ok(Config { plate, nodes, loads, joint, reference, gravity, simulation, limits, pads, tool, links, springs, initial, centrifugal })
+    Ok(Config {
+        plate,
+        nodes,
+        loads,
+        joint,
+        reference,
+        gravity,
+        simulation,
+        limits,
+        pads,
+        tool,
+        links,
+        springs,
+        initial,
+        centrifugal,
+    })
 }
 
 // ---- unknown keys ------------------------------------------------------------
@@ -77,12 +93,14 @@ pub(super) fn config_from_params(params: &Params) -> Result<Config, ConfigError>
 fn check_unknown_keys(params: &Params, known: &[&str]) -> Result<(), ConfigError> {
     for (key, _) in params.iter() {
         if !known.contains(&key) {
-            return Err(ConfigError::UnknownKey { key: key.to_string(), suggestion: suggest(key, known) });
+            return Err(ConfigError::UnknownKey {
+                key: key.to_string(),
+                suggestion: suggest(key, known),
+            });
         }
     }
     Ok(())
 }
-
 
 // ---- plate -------------------------------------------------------------------
 
@@ -92,17 +110,28 @@ fn read_plate(r: &Reader) -> Result<PlateConfig, ConfigError> {
     let inner = r.f64("plate.inner_radius", d.inner_radius)?;
     let outer = r.positive("plate.outer_radius", d.outer_radius)?;
     if inner < 0.0 {
-        return Err(ConfigError::NotPositive { key: "plate.inner_radius".into(), value: inner });
+        return Err(ConfigError::NotPositive {
+            key: "plate.inner_radius".into(),
+            value: inner,
+        });
     }
     if inner >= outer {
         return Err(ConfigError::InnerRadiusNotBelowOuter { inner, outer });
     }
     if inner / outer < MIN_RADIUS_RATIO {
-        return Err(ConfigError::DegenerateGeometry { kind: Degeneracy::SolidCircularPlate, inner, outer });
+        return Err(ConfigError::DegenerateGeometry {
+            kind: Degeneracy::SolidCircularPlate,
+            inner,
+            outer,
+        });
     }
     // A ring exactly 1e-3 wide must pass despite the rounding of (r_a − r_i)/r_a.
     if (outer - inner) / outer < MIN_RELATIVE_WIDTH * (1.0 - 1e-9) {
-        return Err(ConfigError::DegenerateGeometry { kind: Degeneracy::NarrowRing, inner, outer });
+        return Err(ConfigError::DegenerateGeometry {
+            kind: Degeneracy::NarrowRing,
+            inner,
+            outer,
+        });
     }
 
     let thickness = r.positive("plate.thickness", d.thickness)?;
@@ -115,7 +144,8 @@ fn read_plate(r: &Reader) -> Result<PlateConfig, ConfigError> {
 
     let default_k: Vec<i64> = d.nodal_diameters.iter().map(|&k| k as i64).collect();
     let default_l: Vec<i64> = d.nodal_circles.iter().map(|&l| l as i64).collect();
-    let nodal_diameters = read_index_list(r, "plate.nodal_diameters", &default_k, MAX_NODAL_DIAMETER)?;
+    let nodal_diameters =
+        read_index_list(r, "plate.nodal_diameters", &default_k, MAX_NODAL_DIAMETER)?;
     let nodal_circles = read_index_list(r, "plate.nodal_circles", &default_l, MAX_NODAL_CIRCLE)?;
 
     let radial_splines = read_radial_splines(r)?;
@@ -149,7 +179,8 @@ fn read_plate(r: &Reader) -> Result<PlateConfig, ConfigError> {
     let needed = plate.min_radial_splines();
     if let RadialSplines::Fixed(splines) = plate.radial_splines {
         if splines < needed {
-            let removed = inner_boundary.essential_conditions() + outer_boundary.essential_conditions();
+            let removed =
+                inner_boundary.essential_conditions() + outer_boundary.essential_conditions();
             return Err(ConfigError::TooFewRadialSplines {
                 splines,
                 needed,
@@ -164,7 +195,9 @@ fn read_plate(r: &Reader) -> Result<PlateConfig, ConfigError> {
 
     let n_modes = plate.mode_count();
     if n_modes == 0 {
-        return Err(ConfigError::NoElasticModes { skipped: rigid_body_modes_selected(&plate) });
+        return Err(ConfigError::NoElasticModes {
+            skipped: rigid_body_modes_selected(&plate),
+        });
     }
     let damping = r.f64_array("plate.damping", &d.damping)?;
     for (index, &value) in damping.iter().enumerate() {
@@ -173,7 +206,10 @@ fn read_plate(r: &Reader) -> Result<PlateConfig, ConfigError> {
         }
     }
     if damping.len() != 1 && damping.len() != n_modes {
-        return Err(ConfigError::DampingLength { len: damping.len(), n_modes });
+        return Err(ConfigError::DampingLength {
+            len: damping.len(),
+            n_modes,
+        });
     }
     plate.damping = damping;
     Ok(plate)
@@ -189,18 +225,31 @@ fn read_radial_splines(r: &Reader) -> Result<RadialSplines, ConfigError> {
     if let Ok(name) = r.string(KEY, "auto") {
         return match name.trim() {
             "auto" => Ok(RadialSplines::Auto),
-            _ => Err(ConfigError::RadialSplinesNotAutoOrCount { found: format!("\"{name}\"") }),
+            _ => Err(ConfigError::RadialSplinesNotAutoOrCount {
+                found: format!("\"{name}\""),
+            }),
         };
     }
     let splines = r.i64(KEY, 0).map_err(|e| match e {
-        ConfigError::WrongType { key, found, .. } => ConfigError::WrongType { key, expected: "`auto` or an integer", found },
+        ConfigError::WrongType { key, found, .. } => ConfigError::WrongType {
+            key,
+            expected: "`auto` or an integer",
+            found,
+        },
         other => other,
     })?;
     if splines < 0 {
-        return Err(ConfigError::Negative { key: KEY.into(), value: splines as f64 });
+        return Err(ConfigError::Negative {
+            key: KEY.into(),
+            value: splines as f64,
+        });
     }
     if splines > MAX_RADIAL_SPLINES {
-        return Err(ConfigError::AboveMaximum { key: KEY.into(), value: splines as f64, max: MAX_RADIAL_SPLINES as f64 });
+        return Err(ConfigError::AboveMaximum {
+            key: KEY.into(),
+            value: splines as f64,
+            max: MAX_RADIAL_SPLINES as f64,
+        });
     }
     Ok(RadialSplines::Fixed(splines as usize))
 }
@@ -209,17 +258,39 @@ fn read_radial_splines(r: &Reader) -> Result<RadialSplines, ConfigError> {
 /// to spare: flexural rigidity D (eq. 2), mass per area ρh and the frequency
 /// scale D/(ρh r_a⁴). Each is refused with the keys it comes from.
 fn check_derived(plate: &PlateConfig) -> Result<(), ConfigError> {
-    let rigidity = super::bending_rigidity(plate.youngs_modulus, plate.thickness, plate.poisson_ratio);
+    let rigidity =
+        super::bending_rigidity(plate.youngs_modulus, plate.thickness, plate.poisson_ratio);
     let areal_density = plate.density * plate.thickness;
     let scale = rigidity / (areal_density * plate.outer_radius.powi(4));
     let checks = [
-        ("the flexural rigidity D = E h³ / (12 (1 − ν²))", rigidity, DERIVED_RANGE, "plate.youngs_modulus, plate.thickness, plate.poisson_ratio"),
-        ("the mass per area ρ h", areal_density, DERIVED_RANGE, "plate.density, plate.thickness"),
-        ("the frequency scale D / (ρ h r_a⁴)", scale, FREQUENCY_SCALE_RANGE, "plate.youngs_modulus, plate.density, plate.thickness, plate.outer_radius"),
+        (
+            "the flexural rigidity D = E h³ / (12 (1 − ν²))",
+            rigidity,
+            DERIVED_RANGE,
+            "plate.youngs_modulus, plate.thickness, plate.poisson_ratio",
+        ),
+        (
+            "the mass per area ρ h",
+            areal_density,
+            DERIVED_RANGE,
+            "plate.density, plate.thickness",
+        ),
+        (
+            "the frequency scale D / (ρ h r_a⁴)",
+            scale,
+            FREQUENCY_SCALE_RANGE,
+            "plate.youngs_modulus, plate.density, plate.thickness, plate.outer_radius",
+        ),
     ];
     for (quantity, value, (low, high), keys) in checks {
         if !(low..=high).contains(&value) {
-            return Err(ConfigError::DerivedOutOfRange { quantity, value, low, high, keys });
+            return Err(ConfigError::DerivedOutOfRange {
+                quantity,
+                value,
+                low,
+                high,
+                keys,
+            });
         }
     }
     Ok(())
@@ -236,7 +307,10 @@ fn read_poisson_ratio(r: &Reader, youngs_modulus: f64, default: f64) -> Result<f
     let shear = r.f64_opt("plate.shear_modulus")?;
     let (nu, from_shear_modulus) = match (given, shear) {
         (Some(poisson_ratio), Some(shear_modulus)) => {
-            return Err(ConfigError::PoissonAndShearModulus { poisson_ratio, shear_modulus })
+            return Err(ConfigError::PoissonAndShearModulus {
+                poisson_ratio,
+                shear_modulus,
+            })
         }
         (Some(nu), None) => (nu, false),
         (None, Some(g)) => {
@@ -246,32 +320,55 @@ fn read_poisson_ratio(r: &Reader, youngs_modulus: f64, default: f64) -> Result<f
         (None, None) => (default, false),
     };
     if !(nu > -1.0 && nu < 0.5) {
-        return Err(ConfigError::PoissonRatioOutOfRange { nu, from_shear_modulus });
+        return Err(ConfigError::PoissonRatioOutOfRange {
+            nu,
+            from_shear_modulus,
+        });
     }
     Ok(nu)
 }
 
 fn read_boundary(r: &Reader, key: &str, default: Boundary) -> Result<Boundary, ConfigError> {
     let name = r.string(key, default.name())?;
-    Boundary::from_name(name.trim()).ok_or(ConfigError::UnknownBoundary { key: key.to_string(), value: name })
+    Boundary::from_name(name.trim()).ok_or(ConfigError::UnknownBoundary {
+        key: key.to_string(),
+        value: name,
+    })
 }
 
 /// A non-empty list of distinct integers in 0..=max.
-fn read_index_list(r: &Reader, key: &str, default: &[i64], max: i64) -> Result<Vec<u32>, ConfigError> {
+fn read_index_list(
+    r: &Reader,
+    key: &str,
+    default: &[i64],
+    max: i64,
+) -> Result<Vec<u32>, ConfigError> {
     let values = r.i64_array(key, default)?;
     if values.is_empty() {
-        return Err(ConfigError::Empty { key: key.to_string() });
+        return Err(ConfigError::Empty {
+            key: key.to_string(),
+        });
     }
     let mut out: Vec<u32> = Vec::with_capacity(values.len());
     for &v in &values {
         if v < 0 {
-            return Err(ConfigError::Negative { key: key.to_string(), value: v as f64 });
+            return Err(ConfigError::Negative {
+                key: key.to_string(),
+                value: v as f64,
+            });
         }
         if v > max {
-            return Err(ConfigError::AboveMaximum { key: key.to_string(), value: v as f64, max: max as f64 });
+            return Err(ConfigError::AboveMaximum {
+                key: key.to_string(),
+                value: v as f64,
+                max: max as f64,
+            });
         }
         if out.contains(&(v as u32)) {
-            return Err(ConfigError::Duplicate { key: key.to_string(), value: v });
+            return Err(ConfigError::Duplicate {
+                key: key.to_string(),
+                value: v,
+            });
         }
         out.push(v as u32);
     }
@@ -295,7 +392,12 @@ fn read_nodes(r: &Reader) -> Result<NodesConfig, ConfigError> {
     let lagrange = read_node_list(r, "nodes.lagrange_radial", "nodes.lagrange_angular")?;
     let ale = read_node_list(r, "nodes.ale_radial", "nodes.ale_angular")?;
     Ok(NodesConfig {
-        lagrange_surface: read_surfaces(r, "nodes.lagrange_surface", "nodes.lagrange_radial", lagrange.len())?,
+        lagrange_surface: read_surfaces(
+            r,
+            "nodes.lagrange_surface",
+            "nodes.lagrange_radial",
+            lagrange.len(),
+        )?,
         ale_surface: read_surfaces(r, "nodes.ale_surface", "nodes.ale_radial", ale.len())?,
         lagrange,
         ale,
@@ -303,13 +405,23 @@ fn read_nodes(r: &Reader) -> Result<NodesConfig, ConfigError> {
 }
 
 /// `top|bottom|mid` per node; not given: all `mid`.
-fn read_surfaces(r: &Reader, key: &str, nodes_key: &str, nodes: usize) -> Result<Vec<Surface>, ConfigError> {
+fn read_surfaces(
+    r: &Reader,
+    key: &str,
+    nodes_key: &str,
+    nodes: usize,
+) -> Result<Vec<Surface>, ConfigError> {
     let names = r.string_array(key)?;
     if names.is_empty() {
         return Ok(vec![Surface::Mid; nodes]);
     }
     if names.len() != nodes {
-        return Err(ConfigError::LengthMismatch { key_a: key.to_string(), len_a: names.len(), key_b: nodes_key.to_string(), len_b: nodes });
+        return Err(ConfigError::LengthMismatch {
+            key_a: key.to_string(),
+            len_a: names.len(),
+            key_b: nodes_key.to_string(),
+            len_b: nodes,
+        });
     }
     names
         .iter()
@@ -318,18 +430,30 @@ fn read_surfaces(r: &Reader, key: &str, nodes_key: &str, nodes: usize) -> Result
             "top" => Ok(Surface::Top),
             "bottom" => Ok(Surface::Bottom),
             "mid" => Ok(Surface::Mid),
-            _ => Err(ConfigError::UnknownChoice { key: format!("{key}[{index}]"), value: name.clone(), allowed: SURFACES }),
+            _ => Err(ConfigError::UnknownChoice {
+                key: format!("{key}[{index}]"),
+                value: name.clone(),
+                allowed: SURFACES,
+            }),
         })
         .collect()
 }
 
-fn read_node_list(r: &Reader, radial_key: &str, angular_key: &str) -> Result<Vec<NodePosition>, ConfigError> {
+fn read_node_list(
+    r: &Reader,
+    radial_key: &str,
+    angular_key: &str,
+) -> Result<Vec<NodePosition>, ConfigError> {
     let radial = r.f64_array(radial_key, &[])?;
     let angular = r.f64_array(angular_key, &[])?;
     for (key, values) in [(radial_key, &radial), (angular_key, &angular)] {
         for (index, &value) in values.iter().enumerate() {
             if !(0.0..=1.0).contains(&value) {
-                return Err(ConfigError::NodeOutOfUnitInterval { key: key.to_string(), index, value });
+                return Err(ConfigError::NodeOutOfUnitInterval {
+                    key: key.to_string(),
+                    index,
+                    value,
+                });
             }
         }
     }
@@ -341,10 +465,18 @@ fn read_node_list(r: &Reader, radial_key: &str, angular_key: &str) -> Result<Vec
             len_b: angular.len(),
         });
     }
-    Ok(radial.into_iter().zip(angular).map(|(radial, angular)| NodePosition { radial, angular }).collect())
+    Ok(radial
+        .into_iter()
+        .zip(angular)
+        .map(|(radial, angular)| NodePosition { radial, angular })
+        .collect())
 }
 
-fn read_loads(r: &Reader, nodes: &NodesConfig, limits: &LimitsConfig) -> Result<LoadsConfig, ConfigError> {
+fn read_loads(
+    r: &Reader,
+    nodes: &NodesConfig,
+    limits: &LimitsConfig,
+) -> Result<LoadsConfig, ConfigError> {
     Ok(LoadsConfig {
         ale: read_wrenches(r, "loads.ale_wrench", nodes.ale.len(), limits)?,
         lagrange: read_wrenches(r, "loads.lagrange_wrench", nodes.lagrange.len(), limits)?,
@@ -353,13 +485,22 @@ fn read_loads(r: &Reader, nodes: &NodesConfig, limits: &LimitsConfig) -> Result<
 }
 
 /// One wrench per node: empty → zeros, else 6 numbers per node.
-fn read_wrenches(r: &Reader, key: &str, nodes: usize, limits: &LimitsConfig) -> Result<Vec<WrenchConfig>, ConfigError> {
+fn read_wrenches(
+    r: &Reader,
+    key: &str,
+    nodes: usize,
+    limits: &LimitsConfig,
+) -> Result<Vec<WrenchConfig>, ConfigError> {
     let values = r.f64_array(key, &[])?;
     if values.is_empty() {
         return Ok(vec![WrenchConfig::default(); nodes]);
     }
     if values.len() != 6 * nodes {
-        return Err(ConfigError::WrenchLength { key: key.to_string(), len: values.len(), nodes });
+        return Err(ConfigError::WrenchLength {
+            key: key.to_string(),
+            len: values.len(),
+            nodes,
+        });
     }
     let mut wrenches = Vec::with_capacity(nodes);
     for (i, chunk) in values.chunks_exact(6).enumerate() {
@@ -367,11 +508,23 @@ fn read_wrenches(r: &Reader, key: &str, nodes: usize, limits: &LimitsConfig) -> 
         let moment = [chunk[3], chunk[4], chunk[5]];
         let checks = [
             ("force", norm(force), "limits.max_force", limits.max_force),
-            ("moment", norm(moment), "limits.max_moment", limits.max_moment),
+            (
+                "moment",
+                norm(moment),
+                "limits.max_moment",
+                limits.max_moment,
+            ),
         ];
         for (what, value, limit_key, limit) in checks {
             if value > limit {
-                return Err(ConfigError::WrenchAboveLimit { key: key.to_string(), node: i + 1, what, value, limit_key, limit });
+                return Err(ConfigError::WrenchAboveLimit {
+                    key: key.to_string(),
+                    node: i + 1,
+                    what,
+                    value,
+                    limit_key,
+                    limit,
+                });
             }
         }
         wrenches.push(WrenchConfig { force, moment });
@@ -389,7 +542,10 @@ fn read_joint(r: &Reader, limits: &LimitsConfig) -> Result<JointConfig, ConfigEr
     let d = JointConfig::default();
     let speed = r.f64("joint.speed", d.speed)?;
     if speed.abs() > limits.max_speed {
-        return Err(ConfigError::SpeedAboveLimit { speed, max_speed: limits.max_speed });
+        return Err(ConfigError::SpeedAboveLimit {
+            speed,
+            max_speed: limits.max_speed,
+        });
     }
     let max_acceleration = r.positive("joint.max_acceleration", d.max_acceleration)?;
     let max_torque = match r.f64_opt("joint.max_torque")? {
@@ -397,7 +553,12 @@ fn read_joint(r: &Reader, limits: &LimitsConfig) -> Result<JointConfig, ConfigEr
         None => d.max_torque,
     };
     let initial_position = r.f64("joint.initial_position", d.initial_position)?;
-    Ok(JointConfig { speed, max_acceleration, max_torque, initial_position })
+    Ok(JointConfig {
+        speed,
+        max_acceleration,
+        max_torque,
+        initial_position,
+    })
 }
 
 fn read_reference(r: &Reader) -> Result<ReferenceConfig, ConfigError> {
@@ -419,17 +580,38 @@ fn read_simulation(r: &Reader) -> Result<SimulationConfig, ConfigError> {
     let d = SimulationConfig::default();
     let rate_hz = r.declared_f64("simulation.rate_hz")?;
     let substeps = r.declared_u32("simulation.substeps")?;
-    let integrator = read_choice(r, "simulation.integrator", d.integrator.name(), INTEGRATORS, IntegratorKind::from_name)?;
-    let coordinates = read_choice(r, "simulation.coordinates", "ale", COORDINATES, |s| match s {
-        "ale" => Some(Coordinates::Ale),
-        "lagrangian" => Some(Coordinates::Lagrangian),
-        _ => None,
-    })?;
+    let integrator = read_choice(
+        r,
+        "simulation.integrator",
+        d.integrator.name(),
+        INTEGRATORS,
+        IntegratorKind::from_name,
+    )?;
+    let coordinates = read_choice(
+        r,
+        "simulation.coordinates",
+        "ale",
+        COORDINATES,
+        |s| match s {
+            "ale" => Some(Coordinates::Ale),
+            "lagrangian" => Some(Coordinates::Lagrangian),
+            _ => None,
+        },
+    )?;
     let realtime_factor = r.declared_f64("simulation.realtime_factor")?;
     let publish_divisor = r.declared_u32("simulation.publish_divisor")?;
     let rk4_step_limit = r.declared_f64("simulation.rk4_step_limit")?;
     let midpoint_step_limit = r.declared_f64("simulation.midpoint_step_limit")?;
-    Ok(SimulationConfig { rate_hz, substeps, integrator, coordinates, realtime_factor, publish_divisor, rk4_step_limit, midpoint_step_limit })
+    Ok(SimulationConfig {
+        rate_hz,
+        substeps,
+        integrator,
+        coordinates,
+        realtime_factor,
+        publish_divisor,
+        rk4_step_limit,
+        midpoint_step_limit,
+    })
 }
 
 fn read_limits(r: &Reader) -> Result<LimitsConfig, ConfigError> {
@@ -438,20 +620,31 @@ fn read_limits(r: &Reader) -> Result<LimitsConfig, ConfigError> {
         max_force: r.positive("limits.max_force", d.max_force)?,
         max_moment: r.positive("limits.max_moment", d.max_moment)?,
         max_speed: r.positive("limits.max_speed", d.max_speed)?,
-        max_deflection_thicknesses: r.positive("limits.max_deflection_thicknesses", d.max_deflection_thicknesses)?,
+        max_deflection_thicknesses: r.positive(
+            "limits.max_deflection_thicknesses",
+            d.max_deflection_thicknesses,
+        )?,
     })
 }
 
 // ---- load models and initial state (paper section 5; docs/scenes.md) ------------
 
-fn read_initial(r: &Reader, plate: &PlateConfig, limits: &LimitsConfig) -> Result<InitialConfig, ConfigError> {
+fn read_initial(
+    r: &Reader,
+    plate: &PlateConfig,
+    limits: &LimitsConfig,
+) -> Result<InitialConfig, ConfigError> {
     let n = plate.mode_count();
     let max_q = limits.max_deflection_thicknesses * plate.thickness;
     let mut out = InitialConfig::default();
     for (key, slot) in [("initial.q", &mut out.q), ("initial.q_dot", &mut out.q_dot)] {
         let values = r.f64_array(key, &[])?;
         if !values.is_empty() && values.len() != n {
-            return Err(ConfigError::WrongLength { key: key.to_string(), len: values.len(), expected: n });
+            return Err(ConfigError::WrongLength {
+                key: key.to_string(),
+                len: values.len(),
+                expected: n,
+            });
         }
         if key == "initial.q" {
             for (index, &q) in values.iter().enumerate() {
@@ -470,10 +663,22 @@ mod tests {
     #[test]
     fn suggestions() {
         let known = known_keys();
-        assert_eq!(suggest("plate.inner_raduis", &known).as_deref(), Some("plate.inner_radius"));
-        assert_eq!(suggest("simulation.speed", &known).as_deref(), Some("joint.speed"));
-        assert_eq!(suggest("plate.poisson", &known).as_deref(), Some("plate.poisson_ratio"));
-        assert_eq!(suggest("Plate.Thickness", &known).as_deref(), Some("plate.thickness"));
+        assert_eq!(
+            suggest("plate.inner_raduis", &known).as_deref(),
+            Some("plate.inner_radius")
+        );
+        assert_eq!(
+            suggest("simulation.speed", &known).as_deref(),
+            Some("joint.speed")
+        );
+        assert_eq!(
+            suggest("plate.poisson", &known).as_deref(),
+            Some("plate.poisson_ratio")
+        );
+        assert_eq!(
+            suggest("Plate.Thickness", &known).as_deref(),
+            Some("plate.thickness")
+        );
         assert_eq!(suggest("completely.different", &known), None);
     }
 

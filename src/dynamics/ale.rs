@@ -45,12 +45,23 @@ pub fn rotate_pairs(layout: &ModeLayout, harm: &[(f64, f64)], x: &mut [f64], to_
 /// Lagrangian (q, q̇) → ALE (q̄, q̄̇) at angle χ and speed Ω, in place.
 /// One pass over the pairs (the same operations, in the same order, as
 /// rotating q, then q̇, then adding kΩ J q̄).
-pub fn lagrange_to_ale(layout: &ModeLayout, harm: &[(f64, f64)], speed: f64, q: &mut [f64], q_dot: &mut [f64]) {
+pub fn lagrange_to_ale(
+    layout: &ModeLayout,
+    harm: &[(f64, f64)],
+    speed: f64,
+    q: &mut [f64],
+    q_dot: &mut [f64],
+) {
     // Both of length n: one index check serves both.
     let q_dot = &mut q_dot[..q.len()];
     for p in &layout.pairs {
         let (c, s) = harm[p.k as usize];
-        let [bar_c, bar_s, dot_c, dot_s] = pair_to_ale((c, s), p.k as f64 * speed, [q[p.cos], q[p.sin]], [q_dot[p.cos], q_dot[p.sin]]);
+        let [bar_c, bar_s, dot_c, dot_s] = pair_to_ale(
+            (c, s),
+            p.k as f64 * speed,
+            [q[p.cos], q[p.sin]],
+            [q_dot[p.cos], q_dot[p.sin]],
+        );
         q_dot[p.cos] = dot_c;
         q_dot[p.sin] = dot_s;
         q[p.cos] = bar_c;
@@ -63,11 +74,22 @@ pub fn lagrange_to_ale(layout: &ModeLayout, harm: &[(f64, f64)], speed: f64, q: 
 #[inline(always)]
 pub fn pair_to_ale((c, s): (f64, f64), w: f64, [qc, qs]: [f64; 2], [vc, vs]: [f64; 2]) -> [f64; 4] {
     let (bar_c, bar_s) = (c * qc - s * qs, s * qc + c * qs);
-    [bar_c, bar_s, (c * vc - s * vs) - w * bar_s, (s * vc + c * vs) + w * bar_c]
+    [
+        bar_c,
+        bar_s,
+        (c * vc - s * vs) - w * bar_s,
+        (s * vc + c * vs) + w * bar_c,
+    ]
 }
 
 /// ALE (q̄, q̄̇) → Lagrangian (q, q̇): q̇ = Rᵀ (q̄̇ − kΩ J q̄).
-pub fn ale_to_lagrange(layout: &ModeLayout, harm: &[(f64, f64)], speed: f64, q: &mut [f64], q_dot: &mut [f64]) {
+pub fn ale_to_lagrange(
+    layout: &ModeLayout,
+    harm: &[(f64, f64)],
+    speed: f64,
+    q: &mut [f64],
+    q_dot: &mut [f64],
+) {
     for p in &layout.pairs {
         let w = p.k as f64 * speed;
         q_dot[p.cos] += w * q[p.sin];

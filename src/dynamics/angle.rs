@@ -16,7 +16,10 @@ pub struct JointAngle {
 impl JointAngle {
     pub fn from_radians(chi: f64) -> JointAngle {
         let turns = (chi / TAU).floor();
-        let mut a = JointAngle { turns: turns as i64, angle: chi - turns * TAU };
+        let mut a = JointAngle {
+            turns: turns as i64,
+            angle: chi - turns * TAU,
+        };
         a.normalize();
         a
     }

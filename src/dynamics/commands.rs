@@ -47,7 +47,12 @@ pub struct InputRules {
 }
 
 impl InputRules {
-    pub fn new(limits: &LimitsConfig, ale_nodes: usize, lagrange_nodes: usize, load_models: &LoadModels) -> InputRules {
+    pub fn new(
+        limits: &LimitsConfig,
+        ale_nodes: usize,
+        lagrange_nodes: usize,
+        load_models: &LoadModels,
+    ) -> InputRules {
         let models = load_models
             .models()
             .iter()
@@ -55,15 +60,32 @@ impl InputRules {
             .map(|(i, m)| ModelCommands {
                 name: m.name(),
                 specs: m.commands().to_vec(),
-                layout: (0..m.commands().len()).map(|c| (load_models.command_index(i, c, 0).unwrap_or(0), load_models.instances(i, c))).collect(),
+                layout: (0..m.commands().len())
+                    .map(|c| {
+                        (
+                            load_models.command_index(i, c, 0).unwrap_or(0),
+                            load_models.instances(i, c),
+                        )
+                    })
+                    .collect(),
             })
             .collect();
-        InputRules { limits: limits.clone(), ale_nodes, lagrange_nodes, models }
+        InputRules {
+            limits: limits.clone(),
+            ale_nodes,
+            lagrange_nodes,
+            models,
+        }
     }
 
     /// Rules for explicitly given load-model commands: per model its name and
     /// (spec, instances) per command (tests and tools without a scene).
-    pub fn from_parts(limits: &LimitsConfig, ale_nodes: usize, lagrange_nodes: usize, models: &[(&'static str, &[(CommandSpec, usize)])]) -> InputRules {
+    pub fn from_parts(
+        limits: &LimitsConfig,
+        ale_nodes: usize,
+        lagrange_nodes: usize,
+        models: &[(&'static str, &[(CommandSpec, usize)])],
+    ) -> InputRules {
         let models = models
             .iter()
             .map(|(name, commands)| {
@@ -75,25 +97,46 @@ impl InputRules {
                         (first - n, *n)
                     })
                     .collect();
-                ModelCommands { name, specs: commands.iter().map(|(s, _)| *s).collect(), layout }
+                ModelCommands {
+                    name,
+                    specs: commands.iter().map(|(s, _)| *s).collect(),
+                    layout,
+                }
             })
             .collect();
-        InputRules { limits: limits.clone(), ale_nodes, lagrange_nodes, models }
+        InputRules {
+            limits: limits.clone(),
+            ale_nodes,
+            lagrange_nodes,
+            models,
+        }
     }
 
     /// Index of the model named `name` (`pads`, `tool`) and its command specs.
     pub fn model(&self, name: &str) -> Option<(usize, &[CommandSpec])> {
-        self.models.iter().position(|m| m.name == name).map(|i| (i, self.models[i].specs.as_slice()))
+        self.models
+            .iter()
+            .position(|m| m.name == name)
+            .map(|i| (i, self.models[i].specs.as_slice()))
     }
 
     /// Every load-model command: (model, command, spec, instances).
     pub fn load_commands(&self) -> impl Iterator<Item = (usize, usize, &CommandSpec, usize)> {
-        self.models.iter().enumerate().flat_map(|(i, m)| m.specs.iter().zip(&m.layout).enumerate().map(move |(c, (s, l))| (i, c, s, l.1)))
+        self.models.iter().enumerate().flat_map(|(i, m)| {
+            m.specs
+                .iter()
+                .zip(&m.layout)
+                .enumerate()
+                .map(move |(c, (s, l))| (i, c, s, l.1))
+        })
     }
 
     /// Instances of command `command` of model `model` (0 if either does not exist).
     pub fn instances(&self, model: usize, command: usize) -> usize {
-        self.models.get(model).and_then(|m| m.layout.get(command)).map_or(0, |l| l.1)
+        self.models
+            .get(model)
+            .and_then(|m| m.layout.get(command))
+            .map_or(0, |l| l.1)
     }
 }
 
@@ -103,9 +146,18 @@ pub enum Command {
     /// Commanded joint speed Ω, rad/s.
     Speed(f64),
     /// A wrench held on a node until replaced, in the node frame's axes.
-    Wrench { kind: NodeKind, node: usize, wrench: Wrench },
+    Wrench {
+        kind: NodeKind,
+        node: usize,
+        wrench: Wrench,
+    },
     /// Command `command` of load model `model` (see [`LoadModels::models`](super::load_models::LoadModels::models)) for one instance.
-    Load { model: usize, command: usize, instance: usize, value: f64 },
+    Load {
+        model: usize,
+        command: usize,
+        instance: usize,
+        value: f64,
+    },
 }
 
 /// A command that passed the rules; only [`check`] makes one.
@@ -146,49 +198,79 @@ impl CheckedBatch {
 /// Check one command against the scene's rules.
 pub fn check(rules: &InputRules, command: Command) -> Result<Checked, InputError> {
     let limits = &rules.limits;
-    let target = match command {
-        Command::Speed(value) => {
-            if !value.is_finite() {
-                return Err(InputError::SpeedNotFinite { value });
+    let target =
+        match command {
+            Command::Speed(value) => {
+                if !value.is_finite() {
+                    return Err(InputError::SpeedNotFinite { value });
+                }
+                if value.abs() > limits.max_speed {
+                    return Err(InputError::SpeedBeyondLimit {
+                        value,
+                        limit: limits.max_speed,
+                    });
+                }
+                Target::Speed
             }
-            if value.abs() > limits.max_speed {
-                return Err(InputError::SpeedBeyondLimit { value, limit: limits.max_speed });
+            Command::Wrench { kind, node, wrench } => {
+                let count = match kind {
+                    NodeKind::Ale => rules.ale_nodes,
+                    NodeKind::Lagrange => rules.lagrange_nodes,
+                };
+                if node >= count {
+                    return Err(InputError::NoSuchNode {
+                        kind,
+                        index: node + 1,
+                        count,
+                    });
+                }
+                wrench.validate(
+                    || format!("{}_{} wrench", kind.name(), node + 1),
+                    limits.max_force,
+                    limits.max_moment,
+                )?;
+                Target::Wrench(kind, node)
             }
-            Target::Speed
-        }
-        Command::Wrench { kind, node, wrench } => {
-            let count = match kind {
-                NodeKind::Ale => rules.ale_nodes,
-                NodeKind::Lagrange => rules.lagrange_nodes,
-            };
-            if node >= count {
-                return Err(InputError::NoSuchNode { kind, index: node + 1, count });
+            Command::Load {
+                model,
+                command,
+                instance,
+                value,
+            } => {
+                let m = rules.models.get(model).ok_or(InputError::NoSuchLoadModel {
+                    index: model,
+                    count: rules.models.len(),
+                })?;
+                let (spec, &(first, count)) = m.specs.iter().zip(&m.layout).nth(command).ok_or(
+                    InputError::NoSuchCommand {
+                        model: m.name,
+                        index: command,
+                        count: m.specs.len(),
+                    },
+                )?;
+                if instance >= count {
+                    return Err(InputError::NoSuchInstance {
+                        instance: spec.instance,
+                        index: instance + 1,
+                        count,
+                    });
+                }
+                spec.check(instance, value, limits)?;
+                Target::Load(model, first + instance)
             }
-            wrench.validate(|| format!("{}_{} wrench", kind.name(), node + 1), limits.max_force, limits.max_moment)?;
-            Target::Wrench(kind, node)
-        }
-        Command::Load { model, command, instance, value } => {
-            let m = rules.models.get(model).ok_or(InputError::NoSuchLoadModel { index: model, count: rules.models.len() })?;
-            let (spec, &(first, count)) = m.specs.iter().zip(&m.layout).nth(command).ok_or(InputError::NoSuchCommand {
-                model: m.name,
-                index: command,
-                count: m.specs.len(),
-            })?;
-            if instance >= count {
-                return Err(InputError::NoSuchInstance { instance: spec.instance, index: instance + 1, count });
-            }
-            spec.check(instance, value, limits)?;
-            Target::Load(model, first + instance)
-        }
-    };
+        };
     Ok(Checked(target, command))
 }
 
 /// Check a batch whole: every entry, and no target named twice.
-pub fn check_batch(rules: &InputRules, commands: impl IntoIterator<Item = Command>) -> Result<CheckedBatch, BatchError> {
+pub fn check_batch(
+    rules: &InputRules,
+    commands: impl IntoIterator<Item = Command>,
+) -> Result<CheckedBatch, BatchError> {
     let mut out: Vec<Checked> = Vec::new();
     for (position, command) in commands.into_iter().enumerate() {
-        let checked = check(rules, command).map_err(|error| BatchError::Invalid { position, error })?;
+        let checked =
+            check(rules, command).map_err(|error| BatchError::Invalid { position, error })?;
         if let Some(first) = out.iter().position(|c| c.0 == checked.0) {
             return Err(BatchError::Duplicate { position, first });
         }
@@ -202,9 +284,15 @@ impl Inputs {
     pub fn apply(&mut self, checked: Checked) {
         match (checked.0, checked.1) {
             (Target::Speed, Command::Speed(omega)) => self.speed_command = omega,
-            (Target::Wrench(NodeKind::Ale, j), Command::Wrench { wrench, .. }) => self.ale[j] = wrench,
-            (Target::Wrench(NodeKind::Lagrange, j), Command::Wrench { wrench, .. }) => self.lagrange[j] = wrench,
-            (Target::Load(model, index), Command::Load { value, .. }) => self.commands.values[model][index] = value,
+            (Target::Wrench(NodeKind::Ale, j), Command::Wrench { wrench, .. }) => {
+                self.ale[j] = wrench
+            }
+            (Target::Wrench(NodeKind::Lagrange, j), Command::Wrench { wrench, .. }) => {
+                self.lagrange[j] = wrench
+            }
+            (Target::Load(model, index), Command::Load { value, .. }) => {
+                self.commands.values[model][index] = value
+            }
             _ => unreachable!("a Checked pairs its target with its command"),
         }
     }

@@ -159,7 +159,11 @@ impl ContactCompliance {
             }
             self.apply(&s.f, &mut s.gf);
             for c in 0..n {
-                let jgf: f64 = s.jac[c * n..(c + 1) * n].iter().zip(&s.gf).map(|(j, g)| j * g).sum();
+                let jgf: f64 = s.jac[c * n..(c + 1) * n]
+                    .iter()
+                    .zip(&s.gf)
+                    .map(|(j, g)| j * g)
+                    .sum();
                 s.f[c] = force[c] - jgf;
             }
             lu_solve(&s.lu, &s.perm, &mut s.f, &mut s.gf, n);
@@ -177,7 +181,11 @@ impl ContactCompliance {
     /// out = G f.
     fn apply(&self, f: &[f64], out: &mut [f64]) {
         for (c, o) in out.iter_mut().enumerate() {
-            *o = self.g[c * self.n..(c + 1) * self.n].iter().zip(f).map(|(g, f)| g * f).sum();
+            *o = self.g[c * self.n..(c + 1) * self.n]
+                .iter()
+                .zip(f)
+                .map(|(g, f)| g * f)
+                .sum();
         }
     }
 
@@ -188,7 +196,10 @@ impl ContactCompliance {
         let mut a: Vec<f64> = (0..n * n)
             .map(|i| {
                 let (c, e) = (i / n, i % n);
-                (c == e) as u8 as f64 + (0..n).map(|x| k[c * n + x] * self.g[x * n + e]).sum::<f64>()
+                (c == e) as u8 as f64
+                    + (0..n)
+                        .map(|x| k[c * n + x] * self.g[x * n + e])
+                        .sum::<f64>()
             })
             .collect();
         let mut perm = vec![0; n];
@@ -225,14 +236,19 @@ pub fn stiffness_rate(shapes: &[&[NodeShape]], k: &[f64], modal_mass: &[f64]) ->
             }
             for i in 0..n {
                 for m in 0..n {
-                    a[(i, m)] += shapes[c][i].w * kcd * shapes[d][m].w / (modal_mass[i] * modal_mass[m]).sqrt();
+                    a[(i, m)] += shapes[c][i].w * kcd * shapes[d][m].w
+                        / (modal_mass[i] * modal_mass[m]).sqrt();
                 }
             }
         }
     }
     // Symmetrise against round-off (K_eff is symmetric).
     let a = faer::Mat::<f64>::from_fn(n, n, |i, m| 0.5 * (a[(i, m)] + a[(m, i)]));
-    a.self_adjoint_eigenvalues(faer::Side::Lower).ok().and_then(|ev| ev.last().copied()).unwrap_or(0.0).max(0.0)
+    a.self_adjoint_eigenvalues(faer::Side::Lower)
+        .ok()
+        .and_then(|ev| ev.last().copied())
+        .unwrap_or(0.0)
+        .max(0.0)
 }
 
 /// The root f in [0, f_max] of f = 𝓕(f), for a force 𝓕 that does not grow
@@ -261,7 +277,11 @@ pub fn solve_monotone(f_max: f64, law: impl Fn(f64) -> (f64, f64)) -> f64 {
             hi = f;
         }
         let newton = f - phi / (1.0 - slope.min(0.0));
-        let next = if newton > lo && newton < hi { newton } else { 0.5 * (lo + hi) };
+        let next = if newton > lo && newton < hi {
+            newton
+        } else {
+            0.5 * (lo + hi)
+        };
         if (next - f).abs() <= tolerance || hi - lo <= tolerance {
             return next;
         }
@@ -283,7 +303,13 @@ impl HeldDeflection<'_> {
     /// At node `a` (ALE first, then Lagrangian) at joint angle χ, m.
     pub fn at(&self, a: usize, chi: f64) -> f64 {
         let n_ale = self.ale.len();
-        self.compliance.deflection(a, chi, |b| if b < n_ale { self.ale[b].force[2] } else { self.lagrange.get(b - n_ale).map_or(0.0, |w| w.force[2]) })
+        self.compliance.deflection(a, chi, |b| {
+            if b < n_ale {
+                self.ale[b].force[2]
+            } else {
+                self.lagrange.get(b - n_ale).map_or(0.0, |w| w.force[2])
+            }
+        })
     }
 }
 
@@ -304,19 +330,27 @@ mod tests {
             f[1] = -k2 * w[1];
             on[0] = true;
         };
-        g.solve(&w, &mut f, &mut s, law, |_, j| j.copy_from_slice(&[-k1, 0.0, 0.0, -k2]));
+        g.solve(&w, &mut f, &mut s, law, |_, j| {
+            j.copy_from_slice(&[-k1, 0.0, 0.0, -k2])
+        });
         // By hand: (I + K G) = [[1 + k1 g11, k1 g12], [k2 g21, 1 + k2 g22]].
         let a = [[1.0 + k1 * 2e-7, k1 * 5e-8], [k2 * 5e-8, 1.0 + k2 * 1e-7]];
         let b = [-k1 * w[0], -k2 * w[1]];
         let det = a[0][0] * a[1][1] - a[0][1] * a[1][0];
-        let x = [(b[0] * a[1][1] - a[0][1] * b[1]) / det, (a[0][0] * b[1] - a[1][0] * b[0]) / det];
+        let x = [
+            (b[0] * a[1][1] - a[0][1] * b[1]) / det,
+            (a[0][0] * b[1] - a[1][0] * b[0]) / det,
+        ];
         for c in 0..2 {
             assert!((f[c] - x[c]).abs() < 1e-12 * x[c].abs(), "{f:?} vs {x:?}");
         }
         assert_eq!(s.passes, 1);
         // And the series stiffness is the same map.
         let keff = g.series_stiffness(&[k1, 0.0, 0.0, k2]);
-        let y = [-(keff[0] * w[0] + keff[1] * w[1]), -(keff[2] * w[0] + keff[3] * w[1])];
+        let y = [
+            -(keff[0] * w[0] + keff[1] * w[1]),
+            -(keff[2] * w[0] + keff[3] * w[1]),
+        ];
         for c in 0..2 {
             assert!((y[c] - x[c]).abs() < 1e-12 * x[c].abs(), "{y:?} vs {x:?}");
         }
@@ -335,7 +369,9 @@ mod tests {
             f[0] = if on[0] { f0 } else { 0.0 };
             f[1] = 5e3 - k * w[1];
         };
-        let jacobian = |on: &[bool], j: &mut [f64]| j.copy_from_slice(&[if on[0] { -k } else { 0.0 }, 0.0, 0.0, -k]);
+        let jacobian = |on: &[bool], j: &mut [f64]| {
+            j.copy_from_slice(&[if on[0] { -k } else { 0.0 }, 0.0, 0.0, -k])
+        };
         let mut s = SeriesScratch::new(2, 1);
         let mut f = [0.0; 2];
         g.solve(&w_free, &mut f, &mut s, law, jacobian);
@@ -351,10 +387,20 @@ mod tests {
     fn the_monotone_root_is_the_fixed_point() {
         // 𝓕(f) = a (c − g f)^0.3, the tool's law: f = 𝓕(f).
         let (a, c, g) = (2.0e3, 1e-4, 1e-8);
-        let law = |f: f64| if c - g * f > 0.0 { a * (c - g * f).powf(0.3) } else { 0.0 };
+        let law = |f: f64| {
+            if c - g * f > 0.0 {
+                a * (c - g * f).powf(0.3)
+            } else {
+                0.0
+            }
+        };
         let with_slope = |f: f64| {
             let chip = c - g * f;
-            if chip > 0.0 { (law(f), -0.3 * law(f) / chip * g) } else { (0.0, 0.0) }
+            if chip > 0.0 {
+                (law(f), -0.3 * law(f) / chip * g)
+            } else {
+                (0.0, 0.0)
+            }
         };
         let f = solve_monotone(law(0.0), with_slope);
         assert!((f - law(f)).abs() < 1e-12 * f, "{f} vs {}", law(f));

@@ -9,7 +9,9 @@ pub fn lu_factor(a: &mut [f64], perm: &mut [usize], n: usize) -> bool {
         *p = i;
     }
     for col in 0..n {
-        let pivot = (col..n).max_by(|&i, &j| a[i * n + col].abs().total_cmp(&a[j * n + col].abs())).unwrap_or(col);
+        let pivot = (col..n)
+            .max_by(|&i, &j| a[i * n + col].abs().total_cmp(&a[j * n + col].abs()))
+            .unwrap_or(col);
         if a[pivot * n + col] == 0.0 || !a[pivot * n + col].is_finite() {
             return false;
         }

@@ -28,7 +28,10 @@ pub struct FrictionTorque {
 }
 
 fn friction_torque(friction: &[FrictionTorque], speed: f64) -> f64 {
-    friction.iter().map(|f| -f.capacity * (speed * f.slope).tanh()).sum()
+    friction
+        .iter()
+        .map(|f| -f.capacity * (speed * f.slope).tanh())
+        .sum()
 }
 
 /// Beyond |Ω · slope| of this the friction is fully developed (tanh = 1 − 1e-17).
@@ -43,26 +46,45 @@ pub struct DriveStep {
 
 /// The drive law for a step of length h from speed Ω towards the command.
 /// `load_torque` includes the friction `friction` at Ω.
-pub fn drive(joint: &JointConfig, polar_inertia: f64, speed: f64, command: f64, load_torque: f64, friction: &[FrictionTorque], h: f64) -> DriveStep {
+pub fn drive(
+    joint: &JointConfig,
+    polar_inertia: f64,
+    speed: f64,
+    command: f64,
+    load_torque: f64,
+    friction: &[FrictionTorque],
+    h: f64,
+) -> DriveStep {
     let a_max = joint.max_acceleration;
     let wanted = ((command - speed) / h).clamp(-a_max, a_max);
     let needed = polar_inertia * wanted - load_torque;
     match joint.max_torque {
-        None => DriveStep { acceleration: wanted, effort: needed },
+        None => DriveStep {
+            acceleration: wanted,
+            effort: needed,
+        },
         Some(limit) => {
             let effort = needed.clamp(-limit, limit);
             let explicit = (effort + load_torque) / polar_inertia;
             let end = speed + h * explicit;
             let in_band = |w: f64| friction.iter().any(|f| (w * f.slope).abs() < BAND);
             if friction.is_empty() || !(in_band(speed) || in_band(end) || end * speed < 0.0) {
-                return DriveStep { acceleration: explicit, effort };
+                return DriveStep {
+                    acceleration: explicit,
+                    effort,
+                };
             }
             // g(w) = J (w − Ω)/h − effort − τ_other − τ_f(w) rises strictly in w;
             // τ_f ∈ [−C, C] brackets the root.
             let other = load_torque - friction_torque(friction, speed);
             let capacity: f64 = friction.iter().map(|f| f.capacity).sum();
-            let g = |w: f64| polar_inertia * (w - speed) / h - effort - other - friction_torque(friction, w);
-            let (mut lo, mut hi) = (speed + h * (effort + other - capacity) / polar_inertia, speed + h * (effort + other + capacity) / polar_inertia);
+            let g = |w: f64| {
+                polar_inertia * (w - speed) / h - effort - other - friction_torque(friction, w)
+            };
+            let (mut lo, mut hi) = (
+                speed + h * (effort + other - capacity) / polar_inertia,
+                speed + h * (effort + other + capacity) / polar_inertia,
+            );
             for _ in 0..100 {
                 let mid = 0.5 * (lo + hi);
                 if mid == lo || mid == hi {
@@ -74,7 +96,10 @@ pub fn drive(joint: &JointConfig, polar_inertia: f64, speed: f64, command: f64, 
                     lo = mid;
                 }
             }
-            DriveStep { acceleration: (0.5 * (lo + hi) - speed) / h, effort }
+            DriveStep {
+                acceleration: (0.5 * (lo + hi) - speed) / h,
+                effort,
+            }
         }
     }
 }
@@ -84,7 +109,12 @@ mod tests {
     use super::*;
 
     fn joint(max_torque: Option<f64>) -> JointConfig {
-        JointConfig { speed: 0.0, max_acceleration: 10.0, max_torque, initial_position: 0.0 }
+        JointConfig {
+            speed: 0.0,
+            max_acceleration: 10.0,
+            max_torque,
+            initial_position: 0.0,
+        }
     }
 
     #[test]
@@ -110,7 +140,10 @@ mod tests {
         // 2 kN·m of friction (band 1e-2 rad/s) against a 1.5 kN·m drive: explicit
         // Euler jumps between ±3 rad/s; solved at the step's end the plate stops.
         let (j, h) = (0.117, 1e-3);
-        let friction = [FrictionTorque { capacity: 2000.0, slope: 100.0 }];
+        let friction = [FrictionTorque {
+            capacity: 2000.0,
+            slope: 100.0,
+        }];
         let mut speed: f64 = 25.0;
         let mut history = vec![];
         for _ in 0..200 {
@@ -119,7 +152,10 @@ mod tests {
             speed += d.acceleration * h;
             history.push(speed);
         }
-        assert!(history.windows(2).all(|w| w[1] <= w[0] + 1e-12), "not monotone");
+        assert!(
+            history.windows(2).all(|w| w[1] <= w[0] + 1e-12),
+            "not monotone"
+        );
         let last = *history.last().unwrap();
         // At rest the drive's 1.5 kN·m is held by static-like friction: tanh(Ω s) = 0.75.
         let expected = (1500.0f64 / 2000.0).atanh() / 100.0;

@@ -25,7 +25,13 @@ impl ModeLayout {
             layout.k_max = layout.k_max.max(m.k);
             match (m.k, m.partner) {
                 (0, _) => layout.axisymmetric.push(i),
-                (_, Some(j)) if m.shape == crate::model::AngularShape::Cos => layout.pairs.push(ModePair { k: m.k, cos: i, sin: j }),
+                (_, Some(j)) if m.shape == crate::model::AngularShape::Cos => {
+                    layout.pairs.push(ModePair {
+                        k: m.k,
+                        cos: i,
+                        sin: j,
+                    })
+                }
                 _ => {}
             }
         }

@@ -32,12 +32,15 @@ pub struct StepLoads {
     pub plate_frame: Vec<f64>,
     /// Torque of all node wrenches about the axis, N·m.
     pub axial_torque: f64,
-
 }
 
 impl StepLoads {
     pub fn new(n: usize) -> StepLoads {
-        StepLoads { ale_frame: vec![0.0; n], plate_frame: vec![0.0; n], axial_torque: 0.0 }
+        StepLoads {
+            ale_frame: vec![0.0; n],
+            plate_frame: vec![0.0; n],
+            axial_torque: 0.0,
+        }
     }
 }
 
@@ -63,7 +66,14 @@ fn add_node(node: &NodeFrame, w: &Wrench, q_own: &[f64], follower: bool, out: &m
 /// the load models' wrenches `models` (each node with its own follower choice).
 /// The reference motion is added separately ([`add_reference_motion`]), as it
 /// depends on the joint speed over the step.
-pub fn compute(scene: &Scene, inputs: &Inputs, models: &ModelWrenches, q_ale: &[f64], q_lagrange: &[f64], out: &mut StepLoads) {
+pub fn compute(
+    scene: &Scene,
+    inputs: &Inputs,
+    models: &ModelWrenches,
+    q_ale: &[f64],
+    q_lagrange: &[f64],
+    out: &mut StepLoads,
+) {
     out.ale_frame.iter_mut().for_each(|v| *v = 0.0);
     out.plate_frame.iter_mut().for_each(|v| *v = 0.0);
     let follower = scene.effects.follower_loads;
@@ -79,12 +89,22 @@ pub fn compute(scene: &Scene, inputs: &Inputs, models: &ModelWrenches, q_ale: &[
         }
     }
     if !scene.load_models.is_empty() {
-        for ((node, w), &f) in scene.ale_nodes.iter().zip(&models.ale).zip(&models.ale_follower) {
+        for ((node, w), &f) in scene
+            .ale_nodes
+            .iter()
+            .zip(&models.ale)
+            .zip(&models.ale_follower)
+        {
             if *w != Wrench::default() {
                 torque += add_node(node, w, q_ale, f, &mut out.ale_frame);
             }
         }
-        for ((node, w), &f) in scene.lagrange_nodes.iter().zip(&models.lagrange).zip(&models.lagrange_follower) {
+        for ((node, w), &f) in scene
+            .lagrange_nodes
+            .iter()
+            .zip(&models.lagrange)
+            .zip(&models.lagrange_follower)
+        {
             if *w != Wrench::default() {
                 torque += add_node(node, w, q_lagrange, f, &mut out.plate_frame);
             }

@@ -27,13 +27,15 @@ pub mod stability;
 pub mod stability_map;
 pub mod stability_pads;
 pub mod state;
-pub mod stiffening;
 pub mod stepper;
+pub mod stiffening;
 pub mod wrench;
 
 pub use commands::{check, check_batch, Checked, CheckedBatch, Command, InputRules, Inputs};
 pub use error::{BatchError, Divergence, InputError, LoadCommandError, SimulationError, StepError};
-pub use load_models::{CommandRule, CommandSpec, LoadCommands, LoadModel, LoadModelState, LoadModels, ModelWrenches};
+pub use load_models::{
+    CommandRule, CommandSpec, LoadCommands, LoadModel, LoadModelState, LoadModels, ModelWrenches,
+};
 pub use scene::Scene;
 pub use simulation::{JointOutput, NodeOutput, PadOutput, Pose, Simulation, ToolOutput};
 pub use state::{JointAngle, State};

@@ -56,14 +56,24 @@ impl NodeFrame {
     pub(super) fn new(model: &PlateModel, kind: NodeKind, p: NodePosition, z: f64) -> NodeFrame {
         let radius = model.radius_at(p.radial);
         let angle = p.angular * TAU;
-        let values: Vec<ShapeValue> = (0..model.n_modes()).map(|i| model.mode_shape(i, radius, angle)).collect();
+        let values: Vec<ShapeValue> = (0..model.n_modes())
+            .map(|i| model.mode_shape(i, radius, angle))
+            .collect();
         NodeFrame {
             kind,
             radius,
             angle,
-            shapes: values.iter().map(|s| NodeShape { w: s.w, tilt: s.tilt(radius, angle) }).collect(),
+            shapes: values
+                .iter()
+                .map(|s| NodeShape {
+                    w: s.w,
+                    tilt: s.tilt(radius, angle),
+                })
+                .collect(),
             w_phi: values.iter().map(|s| s.w_phi).collect(),
-            w_phi_grad: (0..model.n_modes()).map(|i| angular_rate_gradient(model, i, radius, angle)).collect(),
+            w_phi_grad: (0..model.n_modes())
+                .map(|i| angular_rate_gradient(model, i, radius, angle))
+                .collect(),
             z,
             xy: [radius * angle.cos(), radius * angle.sin()],
         }
@@ -78,7 +88,11 @@ impl NodeFrame {
     /// Kirchhoff face point at z is displaced by w along the axis and by
     /// −z∇w in-plane, ∇w = (∂w/∂x, ∂w/∂y) = (−θ_y, θ_x).
     pub fn surface_position(&self, d: &NodeShape) -> [f64; 3] {
-        [self.xy[0] + self.z * d.tilt[1], self.xy[1] - self.z * d.tilt[0], self.z + d.w]
+        [
+            self.xy[0] + self.z * d.tilt[1],
+            self.xy[1] - self.z * d.tilt[0],
+            self.z + d.w,
+        ]
     }
 
     /// The moment about the mid-plane point of an in-plane force F at the

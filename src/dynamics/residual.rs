@@ -43,7 +43,10 @@ impl AngleTable {
         let (d0, d1) = (self.slopes[i] * h, self.slopes[i + 1] * h);
         let t2 = t * t;
         let t3 = t2 * t;
-        (2.0 * t3 - 3.0 * t2 + 1.0) * y0 + (t3 - 2.0 * t2 + t) * d0 + (-2.0 * t3 + 3.0 * t2) * y1 + (t3 - t2) * d1
+        (2.0 * t3 - 3.0 * t2 + 1.0) * y0
+            + (t3 - 2.0 * t2 + t) * d0
+            + (-2.0 * t3 + 3.0 * t2) * y1
+            + (t3 - t2) * d1
     }
 }
 
@@ -52,7 +55,10 @@ impl AngleTable {
 enum PairCompliance {
     Constant(f64),
     /// ALE node angle θ minus the material node's angle φ; C(θ − φ − χ).
-    Turning { offset: f64, table: usize },
+    Turning {
+        offset: f64,
+        table: usize,
+    },
 }
 
 /// Residual compliances between all node frames of a scene, m/N.
@@ -64,7 +70,11 @@ pub struct ResidualCompliance {
 }
 
 impl ResidualCompliance {
-    pub fn new(model: &PlateModel, ale: &[NodeFrame], lagrange: &[NodeFrame]) -> ResidualCompliance {
+    pub fn new(
+        model: &PlateModel,
+        ale: &[NodeFrame],
+        lagrange: &[NodeFrame],
+    ) -> ResidualCompliance {
         let nodes: Vec<&NodeFrame> = ale.iter().chain(lagrange).collect();
         let n = nodes.len();
         let mut radii: Vec<f64> = Vec::new();
@@ -95,13 +105,19 @@ impl ResidualCompliance {
                     let table = match table_of.iter().find(|(k, _)| *k == key) {
                         Some(&(_, t)) => t,
                         None => {
-                            tables.push(AngleTable::new(&model.residual_kernel(&harmonics, key.0, key.1)));
+                            tables.push(AngleTable::new(
+                                &model.residual_kernel(&harmonics, key.0, key.1),
+                            ));
                             table_of.push((key, tables.len() - 1));
                             tables.len() - 1
                         }
                     };
                     // Δ = θ_ale − φ_material − χ; written as offset ∓ χ by which node is the ALE one.
-                    let offset = if na.kind == super::NodeKind::Ale { na.angle - nb.angle } else { nb.angle - na.angle };
+                    let offset = if na.kind == super::NodeKind::Ale {
+                        na.angle - nb.angle
+                    } else {
+                        nb.angle - na.angle
+                    };
                     pairs.push(PairCompliance::Turning { offset, table });
                 }
             }
@@ -129,9 +145,15 @@ impl ResidualCompliance {
 
     /// Residual deflection at node a under transverse forces `force(b)` (N) at every node.
     pub fn deflection(&self, a: usize, chi: f64, force: impl Fn(usize) -> f64) -> f64 {
-        (0..self.n).map(|b| {
-            let f = force(b);
-            if f == 0.0 { 0.0 } else { self.between(a, b, chi) * f }
-        }).sum()
+        (0..self.n)
+            .map(|b| {
+                let f = force(b);
+                if f == 0.0 {
+                    0.0
+                } else {
+                    self.between(a, b, chi) * f
+                }
+            })
+            .sum()
     }
 }

@@ -5,8 +5,8 @@
 use crate::config::{Config, JointConfig, LimitsConfig};
 use crate::model::PlateModel;
 
-pub use super::layout::{ModeLayout, ModePair};
 use super::commands::InputRules;
+pub use super::layout::{ModeLayout, ModePair};
 use super::load_models::{LoadModels, ModelWrenches, SceneNodes};
 pub use super::node_frame::{NodeFrame, NodeKind, NodeShape};
 pub use super::residual::ResidualCompliance;
@@ -62,14 +62,28 @@ impl Scene {
     pub fn new(config: &Config, model: PlateModel) -> Scene {
         let layout = ModeLayout::new(&model);
         let h = config.plate.thickness;
-        let ale_nodes: Vec<NodeFrame> =
-            config.nodes.ale.iter().enumerate().map(|(j, &p)| NodeFrame::new(&model, NodeKind::Ale, p, config.nodes.ale_surface(j).z(h))).collect();
+        let ale_nodes: Vec<NodeFrame> = config
+            .nodes
+            .ale
+            .iter()
+            .enumerate()
+            .map(|(j, &p)| {
+                NodeFrame::new(&model, NodeKind::Ale, p, config.nodes.ale_surface(j).z(h))
+            })
+            .collect();
         let lagrange_nodes: Vec<NodeFrame> = config
             .nodes
             .lagrange
             .iter()
             .enumerate()
-            .map(|(j, &p)| NodeFrame::new(&model, NodeKind::Lagrange, p, config.nodes.lagrange_surface(j).z(h)))
+            .map(|(j, &p)| {
+                NodeFrame::new(
+                    &model,
+                    NodeKind::Lagrange,
+                    p,
+                    config.nodes.lagrange_surface(j).z(h),
+                )
+            })
             .collect();
         // Gravity is given in world axes; the reference frame is tilted about world x.
         let (st, ct) = config.reference.tilt.sin_cos();
@@ -85,12 +99,26 @@ impl Scene {
             follower_loads: config.loads.follower,
         };
         let polar_inertia = model.body().inertia[2][2];
-        let residual = (config.plate.residual_flexibility && !(ale_nodes.is_empty() && lagrange_nodes.is_empty()))
-            .then(|| ResidualCompliance::new(&model, &ale_nodes, &lagrange_nodes));
-        let stiffening = config.centrifugal.stiffening.then(|| Stiffening::new(&model, &config.centrifugal));
-        let nodes = SceneNodes { ale: &ale_nodes, lagrange: &lagrange_nodes, modal_mass: &model.body().modal_mass, residual: residual.as_ref() };
+        let residual = (config.plate.residual_flexibility
+            && !(ale_nodes.is_empty() && lagrange_nodes.is_empty()))
+        .then(|| ResidualCompliance::new(&model, &ale_nodes, &lagrange_nodes));
+        let stiffening = config
+            .centrifugal
+            .stiffening
+            .then(|| Stiffening::new(&model, &config.centrifugal));
+        let nodes = SceneNodes {
+            ale: &ale_nodes,
+            lagrange: &lagrange_nodes,
+            modal_mass: &model.body().modal_mass,
+            residual: residual.as_ref(),
+        };
         let load_models = LoadModels::new(config, &nodes);
-        let rules = InputRules::new(&config.limits, ale_nodes.len(), lagrange_nodes.len(), &load_models);
+        let rules = InputRules::new(
+            &config.limits,
+            ale_nodes.len(),
+            lagrange_nodes.len(),
+            &load_models,
+        );
         Scene {
             model,
             layout,
@@ -98,7 +126,10 @@ impl Scene {
             lagrange_nodes,
             joint: config.joint.clone(),
             limits: config.limits.clone(),
-            reference: ReferenceMotion { angular_velocity: w, specific_force },
+            reference: ReferenceMotion {
+                angular_velocity: w,
+                specific_force,
+            },
             effects,
             polar_inertia,
             rules,
@@ -110,13 +141,26 @@ impl Scene {
 
     /// The residual deflection of the held wrenches `inputs`, for the load
     /// models' contacts (None with `plate.residual_flexibility: false`).
-    pub fn held_deflection<'a>(&'a self, inputs: &'a super::commands::Inputs) -> Option<super::contact_compliance::HeldDeflection<'a>> {
-        self.residual.as_ref().map(|compliance| super::contact_compliance::HeldDeflection { compliance, ale: &inputs.ale, lagrange: &inputs.lagrange })
+    pub fn held_deflection<'a>(
+        &'a self,
+        inputs: &'a super::commands::Inputs,
+    ) -> Option<super::contact_compliance::HeldDeflection<'a>> {
+        self.residual
+            .as_ref()
+            .map(|compliance| super::contact_compliance::HeldDeflection {
+                compliance,
+                ale: &inputs.ale,
+                lagrange: &inputs.lagrange,
+            })
     }
 
     /// Scratch for the load models' wrenches at this scene's node frames.
     pub fn model_wrenches(&self) -> ModelWrenches {
-        ModelWrenches::new(self.ale_nodes.len(), self.lagrange_nodes.len(), &self.load_models)
+        ModelWrenches::new(
+            self.ale_nodes.len(),
+            self.lagrange_nodes.len(),
+            &self.load_models,
+        )
     }
 
     pub fn n_modes(&self) -> usize {

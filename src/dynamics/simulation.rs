@@ -6,13 +6,15 @@ use crate::model::PlateModel;
 use nalgebra::{Isometry3, Quaternion, Translation3, UnitQuaternion, Vector3};
 
 use super::ale::{harmonics, lagrange_to_ale};
+use super::commands::Inputs;
 use super::commands::{check, check_batch, Checked, CheckedBatch, Command};
 use super::error::{BatchError, InputError, LoadCommandError, SimulationError, StepError};
-use super::load_models::{ContactForces, LoadContext, ModelWrenches, PadScratch, Pads, PitchLinks, Tool};
-use super::commands::Inputs;
+use super::integrators::MAX_INNER_SUBSTEPS;
+use super::load_models::{
+    ContactForces, LoadContext, ModelWrenches, PadScratch, Pads, PitchLinks, Tool,
+};
 use super::scene::{NodeFrame, Scene};
 use super::state::State;
-use super::integrators::MAX_INNER_SUBSTEPS;
 use super::stepper::{Stepper, StepperSettings};
 use super::wrench::{NodeKind, Wrench};
 
@@ -61,11 +63,18 @@ pub struct Pose {
 }
 
 impl Pose {
-    pub const IDENTITY: Pose = Pose { translation: [0.0; 3], rotation: [0.0, 0.0, 0.0, 1.0] };
+    pub const IDENTITY: Pose = Pose {
+        translation: [0.0; 3],
+        rotation: [0.0, 0.0, 0.0, 1.0],
+    };
 
     /// A rotation about z by `angle`.
     pub fn about_z(angle: f64) -> Pose {
-        Isometry3::from_parts(Translation3::identity(), UnitQuaternion::from_axis_angle(&Vector3::z_axis(), angle)).into()
+        Isometry3::from_parts(
+            Translation3::identity(),
+            UnitQuaternion::from_axis_angle(&Vector3::z_axis(), angle),
+        )
+        .into()
     }
 
     pub fn isometry(&self) -> Isometry3<f64> {
@@ -78,7 +87,10 @@ impl Pose {
 impl From<Isometry3<f64>> for Pose {
     fn from(iso: Isometry3<f64>) -> Pose {
         let q = iso.rotation.coords;
-        Pose { translation: iso.translation.vector.into(), rotation: [q[0], q[1], q[2], q[3]] }
+        Pose {
+            translation: iso.translation.vector.into(),
+            rotation: [q[0], q[1], q[2], q[3]],
+        }
     }
 }
 
@@ -116,11 +128,22 @@ impl Simulation {
         let settings = StepperSettings::from_config(&config);
         let stepper = Stepper::new(&scene);
         check_inner_substeps(&config, &scene, &settings, &stepper)?;
-        scene.load_models.check_integrator(settings.integrator, settings.h())?;
+        scene
+            .load_models
+            .check_integrator(settings.integrator, settings.h())?;
         let initial = initial_state(&config, &scene);
         let mut inputs = Inputs::default();
         reset_inputs(&config, &scene, &mut inputs);
-        let mut sim = Simulation { state: initial.clone(), initial, stepper, inputs, model_outputs: scene.model_wrenches(), scene, settings, config };
+        let mut sim = Simulation {
+            state: initial.clone(),
+            initial,
+            stepper,
+            inputs,
+            model_outputs: scene.model_wrenches(),
+            scene,
+            settings,
+            config,
+        };
         sim.refresh_model_outputs();
         Ok(sim)
     }
@@ -180,8 +203,21 @@ impl Simulation {
             return;
         }
         let (q_ale, q_dot_ale) = self.state.ale();
-        let ctx = LoadContext { ale_nodes: &self.scene.ale_nodes, lagrange_nodes: &self.scene.lagrange_nodes, q_ale, q_dot_ale, chi: self.state.chi.angle, speed: self.state.speed, held: self.scene.held_deflection(&self.inputs) };
-        lm.evaluate(&ctx, &self.state.load_models, &self.inputs.commands, &mut self.model_outputs);
+        let ctx = LoadContext {
+            ale_nodes: &self.scene.ale_nodes,
+            lagrange_nodes: &self.scene.lagrange_nodes,
+            q_ale,
+            q_dot_ale,
+            chi: self.state.chi.angle,
+            speed: self.state.speed,
+            held: self.scene.held_deflection(&self.inputs),
+        };
+        lm.evaluate(
+            &ctx,
+            &self.state.load_models,
+            &self.inputs.commands,
+            &mut self.model_outputs,
+        );
     }
 
     /// Replace the state (a checkpoint taken with `state().clone()`, stepped
@@ -195,7 +231,8 @@ impl Simulation {
 
     /// Advance one output step (1/rate_hz). On error the state is unchanged.
     pub fn step(&mut self) -> Result<(), StepError> {
-        self.stepper.step(&self.scene, &self.settings, &mut self.state, &self.inputs)?;
+        self.stepper
+            .step(&self.scene, &self.settings, &mut self.state, &self.inputs)?;
         self.refresh_model_outputs();
         Ok(())
     }
@@ -208,7 +245,10 @@ impl Simulation {
     }
 
     /// Check a batch whole (nothing is held yet).
-    pub fn check_batch(&self, commands: impl IntoIterator<Item = Command>) -> Result<CheckedBatch, BatchError> {
+    pub fn check_batch(
+        &self,
+        commands: impl IntoIterator<Item = Command>,
+    ) -> Result<CheckedBatch, BatchError> {
         check_batch(&self.scene.rules, commands)
     }
 
@@ -224,7 +264,10 @@ impl Simulation {
     /// Hold every command of a checked batch.
     pub fn apply_batch(&mut self, batch: &CheckedBatch) {
         self.inputs.apply_batch(batch);
-        if batch.iter().any(|c| matches!(c.command(), Command::Load { .. })) {
+        if batch
+            .iter()
+            .any(|c| matches!(c.command(), Command::Load { .. }))
+        {
             self.refresh_model_outputs();
         }
     }
@@ -242,12 +285,20 @@ impl Simulation {
 
     /// Hold a wrench on ALE node `node` (0-based) until replaced.
     pub fn set_ale_wrench(&mut self, node: usize, wrench: Wrench) -> Result<(), InputError> {
-        self.command(Command::Wrench { kind: NodeKind::Ale, node, wrench })
+        self.command(Command::Wrench {
+            kind: NodeKind::Ale,
+            node,
+            wrench,
+        })
     }
 
     /// Hold a wrench on Lagrangian node `node` (0-based) until replaced.
     pub fn set_lagrange_wrench(&mut self, node: usize, wrench: Wrench) -> Result<(), InputError> {
-        self.command(Command::Wrench { kind: NodeKind::Lagrange, node, wrench })
+        self.command(Command::Wrench {
+            kind: NodeKind::Lagrange,
+            node,
+            wrench,
+        })
     }
 
     // ---- load models (paper section 5; docs/scenes.md) ----------------------
@@ -268,30 +319,66 @@ impl Simulation {
 
     /// Number of pitch links (`links.*`; 0 without links).
     pub fn link_count(&self) -> usize {
-        self.scene.load_models.find::<PitchLinks>().map_or(0, |(_, l)| l.nodes.len())
+        self.scene
+            .load_models
+            .find::<PitchLinks>()
+            .map_or(0, |(_, l)| l.nodes.len())
     }
 
     /// Hold the clamp force of pad `pad` (0-based), N: the force each disc face
     /// is pressed with, shared by the pad's contact points. Refused (and the
     /// held commands unchanged) if the pad does not exist or the force is not
     /// finite, negative or above `limits.max_force`.
-    pub fn set_pad_clamp_force(&mut self, pad: usize, newtons: f64) -> Result<(), LoadCommandError> {
-        let Some((model, _)) = self.pads() else { return Err(LoadCommandError::NoSuchPad { index: pad + 1, count: 0 }) };
-        self.command(Command::Load { model, command: 0, instance: pad, value: newtons }).map_err(LoadCommandError::from_input)
+    pub fn set_pad_clamp_force(
+        &mut self,
+        pad: usize,
+        newtons: f64,
+    ) -> Result<(), LoadCommandError> {
+        let Some((model, _)) = self.pads() else {
+            return Err(LoadCommandError::NoSuchPad {
+                index: pad + 1,
+                count: 0,
+            });
+        };
+        self.command(Command::Load {
+            model,
+            command: 0,
+            instance: pad,
+            value: newtons,
+        })
+        .map_err(LoadCommandError::from_input)
     }
 
     /// Hold the tool feed rate, m/s (towards −z; negative retracts). Refused if
     /// the scene has no tool or the rate is not finite or beyond 1 m/s.
     pub fn set_tool_feed(&mut self, rate: f64) -> Result<(), LoadCommandError> {
-        let Some((model, _)) = self.scene.load_models.find::<Tool>() else { return Err(LoadCommandError::NoTool) };
-        self.command(Command::Load { model, command: 0, instance: 0, value: rate }).map_err(LoadCommandError::from_input)
+        let Some((model, _)) = self.scene.load_models.find::<Tool>() else {
+            return Err(LoadCommandError::NoTool);
+        };
+        self.command(Command::Load {
+            model,
+            command: 0,
+            instance: 0,
+            value: rate,
+        })
+        .map_err(LoadCommandError::from_input)
     }
 
     /// Forces of pad `pad` (0-based) at the current state.
     pub fn pad_output(&self, pad: usize) -> PadOutput {
-        let Some((model, p)) = self.pads() else { return PadOutput::default() };
-        let mut out = PadOutput { clamp_force: self.inputs.commands.values[model][pad], ..PadOutput::default() };
-        for (c, f) in p.contacts.iter().zip(self.pad_contact_forces()).filter(|(c, _)| c.pad == pad) {
+        let Some((model, p)) = self.pads() else {
+            return PadOutput::default();
+        };
+        let mut out = PadOutput {
+            clamp_force: self.inputs.commands.values[model][pad],
+            ..PadOutput::default()
+        };
+        for (c, f) in p
+            .contacts
+            .iter()
+            .zip(self.pad_contact_forces())
+            .filter(|(c, _)| c.pad == pad)
+        {
             out.normal_force += 0.5 * (f.top + f.bottom);
             out.friction_force += f.tangential;
             out.friction_torque += c.radius * f.tangential;
@@ -310,7 +397,9 @@ impl Simulation {
 
     /// Forces at every pad contact point (order of `pads.ale_nodes`) at the current state.
     pub fn pad_contact_forces(&self) -> &[ContactForces] {
-        self.pads().and_then(|(i, _)| self.model_outputs.scratch::<PadScratch>(i)).map_or(&[], |s| &s.forces)
+        self.pads()
+            .and_then(|(i, _)| self.model_outputs.scratch::<PadScratch>(i))
+            .map_or(&[], |s| &s.forces)
     }
 
     /// The lathe tool at the current state (`None` without a tool).
@@ -327,7 +416,10 @@ impl Simulation {
 
     /// Axial force of pitch link `j` (0-based) at the current joint angle, N.
     pub fn link_force(&self, j: usize) -> f64 {
-        self.scene.load_models.find::<PitchLinks>().map_or(0.0, |(_, l)| l.force(j, self.state.chi.angle))
+        self.scene
+            .load_models
+            .find::<PitchLinks>()
+            .map_or(0.0, |(_, l)| l.force(j, self.state.chi.angle))
     }
 
     /// The wrench the load models apply at ALE node `j` (0-based) at the current
@@ -338,13 +430,21 @@ impl Simulation {
 
     /// The wrench the load models apply at Lagrangian node `j` (0-based), in its node frame.
     pub fn lagrange_model_wrench(&self, j: usize) -> Wrench {
-        self.model_outputs.lagrange.get(j).copied().unwrap_or_default()
+        self.model_outputs
+            .lagrange
+            .get(j)
+            .copied()
+            .unwrap_or_default()
     }
 
     // ---- outputs ------------------------------------------------------------
 
     pub fn joint(&self) -> JointOutput {
-        JointOutput { position: self.state.chi.radians(), velocity: self.state.speed, effort: self.state.effort }
+        JointOutput {
+            position: self.state.chi.radians(),
+            velocity: self.state.speed,
+            effort: self.state.effort,
+        }
     }
 
     /// χ wrapped to (−π, π], for the plate_base → plate_rotor transform.
@@ -355,13 +455,25 @@ impl Simulation {
     /// ALE node `j` (0-based), in plate_base.
     pub fn ale_node(&self, j: usize) -> NodeOutput {
         let (q, q_dot) = self.state.ale();
-        NodeOutput::of(&self.scene.ale_nodes[j], q, q_dot, self.state.speed, self.residual_deflection(j))
+        NodeOutput::of(
+            &self.scene.ale_nodes[j],
+            q,
+            q_dot,
+            self.state.speed,
+            self.residual_deflection(j),
+        )
     }
 
     /// Lagrangian node `j` (0-based), in plate_rotor.
     pub fn lagrange_node(&self, j: usize) -> NodeOutput {
         let (q, q_dot) = self.state.lagrange();
-        NodeOutput::of(&self.scene.lagrange_nodes[j], q, q_dot, self.state.speed, self.residual_deflection(self.scene.ale_nodes.len() + j))
+        NodeOutput::of(
+            &self.scene.lagrange_nodes[j],
+            q,
+            q_dot,
+            self.state.speed,
+            self.residual_deflection(self.scene.ale_nodes.len() + j),
+        )
     }
 
     /// The `uz` of [`Simulation::ale_node`] alone (m; the same sums, bit for
@@ -372,7 +484,8 @@ impl Simulation {
 
     /// The `uz` of [`Simulation::lagrange_node`] alone (m).
     pub fn lagrange_node_uz(&self, j: usize) -> f64 {
-        self.scene.lagrange_nodes[j].deflection_w(self.state.lagrange().0) + self.residual_deflection(self.scene.ale_nodes.len() + j)
+        self.scene.lagrange_nodes[j].deflection_w(self.state.lagrange().0)
+            + self.residual_deflection(self.scene.ale_nodes.len() + j)
     }
 
     /// Transverse force (N) at node `b` (ALE first, then Lagrangian): the held
@@ -382,7 +495,11 @@ impl Simulation {
         if b < n_ale {
             self.inputs.ale.get(b).map_or(0.0, |w| w.force[2]) + self.ale_model_wrench(b).force[2]
         } else {
-            self.inputs.lagrange.get(b - n_ale).map_or(0.0, |w| w.force[2]) + self.lagrange_model_wrench(b - n_ale).force[2]
+            self.inputs
+                .lagrange
+                .get(b - n_ale)
+                .map_or(0.0, |w| w.force[2])
+                + self.lagrange_model_wrench(b - n_ale).force[2]
         }
     }
 
@@ -391,7 +508,9 @@ impl Simulation {
     /// `plate.residual_flexibility: false`).
     pub fn residual_deflection(&self, a: usize) -> f64 {
         match &self.scene.residual {
-            Some(r) => r.deflection(a, self.state.chi.wrapped(), |b| self.transverse_node_force(b)),
+            Some(r) => r.deflection(a, self.state.chi.wrapped(), |b| {
+                self.transverse_node_force(b)
+            }),
             None => 0.0,
         }
     }
@@ -424,7 +543,11 @@ impl Simulation {
     pub fn modal_energy(&self) -> f64 {
         let b = self.scene.model.body();
         let (q, q_dot) = self.state.lagrange();
-        (0..self.scene.n_modes()).map(|i| 0.5 * (b.modal_mass[i] * q_dot[i].powi(2) + b.modal_stiffness[i] * q[i].powi(2))).sum()
+        (0..self.scene.n_modes())
+            .map(|i| {
+                0.5 * (b.modal_mass[i] * q_dot[i].powi(2) + b.modal_stiffness[i] * q[i].powi(2))
+            })
+            .sum()
     }
 }
 
@@ -432,7 +555,12 @@ impl Simulation {
 /// `initial.*`, given Lagrangian), both descriptions consistent.
 fn initial_state(config: &Config, scene: &Scene) -> State {
     let n = scene.n_modes();
-    let mut initial = State::new(n, config.simulation.coordinates, config.joint.initial_position, config.joint.speed);
+    let mut initial = State::new(
+        n,
+        config.simulation.coordinates,
+        config.joint.initial_position,
+        config.joint.speed,
+    );
     initial.load_models = scene.load_models.initial_state();
     if !config.initial.q.is_empty() || !config.initial.q_dot.is_empty() {
         // initial.* are Lagrangian; the state may be kept in ALE coordinates.
@@ -455,9 +583,23 @@ fn initial_state(config: &Config, scene: &Scene) -> State {
 /// The inputs a configuration starts with: its speed, held loads and the load models' commands.
 fn reset_inputs(config: &Config, scene: &Scene, inputs: &mut Inputs) {
     inputs.speed_command = config.joint.speed;
-    let to_wrench = |w: &crate::config::WrenchConfig| Wrench { force: w.force, moment: w.moment };
-    inputs.ale = (0..scene.ale_nodes.len()).map(|j| config.loads.ale.get(j).map(to_wrench).unwrap_or_default()).collect();
-    inputs.lagrange = (0..scene.lagrange_nodes.len()).map(|j| config.loads.lagrange.get(j).map(to_wrench).unwrap_or_default()).collect();
+    let to_wrench = |w: &crate::config::WrenchConfig| Wrench {
+        force: w.force,
+        moment: w.moment,
+    };
+    inputs.ale = (0..scene.ale_nodes.len())
+        .map(|j| config.loads.ale.get(j).map(to_wrench).unwrap_or_default())
+        .collect();
+    inputs.lagrange = (0..scene.lagrange_nodes.len())
+        .map(|j| {
+            config
+                .loads
+                .lagrange
+                .get(j)
+                .map(to_wrench)
+                .unwrap_or_default()
+        })
+        .collect();
     scene.load_models.reset_commands(&mut inputs.commands);
 }
 
@@ -471,11 +613,14 @@ impl NodeOutput {
         let uz_dot: f64 = node.shapes.iter().zip(q_dot).map(|(s, v)| s.w * v).sum();
         let material_uz_dot = match node.kind {
             NodeKind::Lagrange => uz_dot,
-            NodeKind::Ale => uz_dot + speed * node.w_phi.iter().zip(q).map(|(w, qi)| w * qi).sum::<f64>(),
+            NodeKind::Ale => {
+                uz_dot + speed * node.w_phi.iter().zip(q).map(|(w, qi)| w * qi).sum::<f64>()
+            }
         };
         let p = node.surface_position(&d);
         NodeOutput {
-            pose: Isometry3::from_parts(Translation3::new(p[0], p[1], p[2]), tilt_rotation(d.tilt)).into(),
+            pose: Isometry3::from_parts(Translation3::new(p[0], p[1], p[2]), tilt_rotation(d.tilt))
+                .into(),
             uz: d.w,
             uz_dot,
             tilt: d.tilt,
@@ -494,14 +639,26 @@ pub fn tilt_rotation(tilt: [f64; 2]) -> UnitQuaternion<f64> {
         return UnitQuaternion::identity();
     }
     let (s, c) = (0.5 * angle).sin_cos();
-    UnitQuaternion::new_unchecked(Quaternion::new(c, tilt[0] / angle * s, tilt[1] / angle * s, 0.0))
+    UnitQuaternion::new_unchecked(Quaternion::new(
+        c,
+        tilt[0] / angle * s,
+        tilt[1] / angle * s,
+        0.0,
+    ))
 }
 
 /// Refuse a scene whose integrator would need more than
 /// [`MAX_INNER_SUBSTEPS`] inner substeps at the configured speed to resolve the
 /// fastest mode (the same criterion the stepper applies per step).
-fn check_inner_substeps(config: &Config, scene: &Scene, settings: &StepperSettings, stepper: &Stepper) -> Result<(), SimulationError> {
-    let Some((step_limit, limit_key)) = settings.step_limit() else { return Ok(()) };
+fn check_inner_substeps(
+    config: &Config,
+    scene: &Scene,
+    settings: &StepperSettings,
+    stepper: &Stepper,
+) -> Result<(), SimulationError> {
+    let Some((step_limit, limit_key)) = settings.step_limit() else {
+        return Ok(());
+    };
     let speed = config.joint.speed.abs();
     let needed = stepper.inner_substeps(scene, settings, settings.h(), speed);
     if needed <= MAX_INNER_SUBSTEPS {
@@ -514,7 +671,12 @@ fn check_inner_substeps(config: &Config, scene: &Scene, settings: &StepperSettin
         needed,
         limit: MAX_INNER_SUBSTEPS,
         step: settings.h(),
-        frequency_hz: scene.model.modes().iter().map(|m| m.frequency_hz).fold(0.0, f64::max),
+        frequency_hz: scene
+            .model
+            .modes()
+            .iter()
+            .map(|m| m.frequency_hz)
+            .fold(0.0, f64::max),
         speed,
     })
 }

@@ -48,8 +48,8 @@
 use super::integrators::equations::mode_constants;
 use super::load_models::pad::FRICTION_REGULARISATION_SPEED;
 use super::load_models::{PadContactPoint, Pads};
-use super::stability_pads::NetForce;
 use super::scene::Scene;
+use super::stability_pads::NetForce;
 use crate::config::{Caliper, ContactSurface};
 use faer::Mat;
 use nalgebra::Complex;
@@ -58,7 +58,12 @@ use nalgebra::Complex;
 /// coefficient μ and pad clamp forces `clamp_force` (one per pad). With
 /// massive pads (`pads.mass`) y = (q̄, q̄̇, ξ, ξ̇): ξ the pads' compressions
 /// from rest, per pad (top, bottom) as in their slot ([`pad_dofs`]).
-pub fn linear_system(scene: &Scene, speed: f64, friction_coefficient: f64, clamp_force: &[f64]) -> Mat<f64> {
+pub fn linear_system(
+    scene: &Scene,
+    speed: f64,
+    friction_coefficient: f64,
+    clamp_force: &[f64],
+) -> Mat<f64> {
     let n = scene.n_modes();
     let extra = pad_dofs(scene);
     let mut a = Mat::<f64>::zeros(2 * n + 2 * extra, 2 * n + 2 * extra);
@@ -102,8 +107,15 @@ pub fn linear_system(scene: &Scene, speed: f64, friction_coefficient: f64, clamp
             }
         }
         // In series with G: the contact forces per unit q̄ and q̄̇ (n_c × n).
-        let active: Vec<bool> = pads.contacts.iter().map(|c| !(pads.lift_off && clamp_force[c.pad] <= 0.0)).collect();
-        let series = pads.series.as_ref().map(|g| pads.linear_series_forces(g, &scene.ale_nodes, &active));
+        let active: Vec<bool> = pads
+            .contacts
+            .iter()
+            .map(|c| !(pads.lift_off && clamp_force[c.pad] <= 0.0))
+            .collect();
+        let series = pads
+            .series
+            .as_ref()
+            .map(|g| pads.linear_series_forces(g, &scene.ale_nodes, &active));
         for (ci, contact) in pads.contacts.iter().enumerate() {
             let clamp = clamp_force[contact.pad];
             if pads.lift_off && clamp <= 0.0 {
@@ -114,7 +126,9 @@ pub fn linear_system(scene: &Scene, speed: f64, friction_coefficient: f64, clamp
             let preload = clamp / pads.contacts_per_pad[contact.pad] as f64;
             // With face friction μ is μ(V) at the sliding speed V = Ωr (equal to μ without μ_s).
             let mu = match pads.contact_surface {
-                ContactSurface::Faces => pads.friction_law(friction_coefficient).mu((speed * contact.radius).abs()),
+                ContactSurface::Faces => pads
+                    .friction_law(friction_coefficient)
+                    .mu((speed * contact.radius).abs()),
                 ContactSurface::MidPlane => friction_coefficient,
             };
             let f_theta = -mu * 2.0 * preload * Pads::sliding_sign(speed, contact.radius);
@@ -142,12 +156,26 @@ pub fn linear_system(scene: &Scene, speed: f64, friction_coefficient: f64, clamp
                 }
             }
             if pads.contact_surface == ContactSurface::Faces {
-                let rows = series.as_ref().map(|l| (&l.q[ci * n..(ci + 1) * n], &l.q_dot[ci * n..(ci + 1) * n]));
-                add_face_terms(&mut a, scene, pads, contact, mean, preload, speed, friction_coefficient, rows);
+                let rows = series
+                    .as_ref()
+                    .map(|l| (&l.q[ci * n..(ci + 1) * n], &l.q_dot[ci * n..(ci + 1) * n]));
+                add_face_terms(
+                    &mut a,
+                    scene,
+                    pads,
+                    contact,
+                    mean,
+                    preload,
+                    speed,
+                    friction_coefficient,
+                    rows,
+                );
             }
             if pads.is_massive() {
                 let couple = match pads.contact_surface {
-                    ContactSurface::Faces => face_couple(pads, contact, speed, friction_coefficient),
+                    ContactSurface::Faces => {
+                        face_couple(pads, contact, speed, friction_coefficient)
+                    }
                     ContactSurface::MidPlane => 0.0,
                 };
                 let net = match &series {
@@ -166,7 +194,10 @@ pub fn linear_system(scene: &Scene, speed: f64, friction_coefficient: f64, clamp
 
 /// Generalised coordinates the massive pads add (2 per pad: top, bottom); 0 for massless pads.
 pub fn pad_dofs(scene: &Scene) -> usize {
-    scene.load_models.find::<Pads>().map_or(0, |(_, p)| p.pad_states() / 2)
+    scene
+        .load_models
+        .find::<Pads>()
+        .map_or(0, |(_, p)| p.pad_states() / 2)
 }
 
 /// h μ(V) tanh(V/v_reg): the faces' couple per unit (δN_t − δN_b)/2 (see [`add_face_terms`]).
@@ -181,7 +212,17 @@ fn face_couple(pads: &Pads, contact: &PadContactPoint, speed: f64, mu: f64) -> f
 #[allow(clippy::too_many_arguments)]
 /// `series`: the contact's net axial force per unit q̄ and q̄̇ in series with
 /// the residual compliance (δN = −F/2), or None (δN = k_c dn q̄ + c_c dn q̄̇).
-fn add_face_terms(a: &mut Mat<f64>, scene: &Scene, pads: &Pads, contact: &PadContactPoint, mean: &[f64], preload: f64, speed: f64, mu: f64, series: Option<(&[f64], &[f64])>) {
+fn add_face_terms(
+    a: &mut Mat<f64>,
+    scene: &Scene,
+    pads: &Pads,
+    contact: &PadContactPoint,
+    mean: &[f64],
+    preload: f64,
+    speed: f64,
+    mu: f64,
+    series: Option<(&[f64], &[f64])>,
+) {
     let n = scene.n_modes();
     let mass = &scene.model.body().modal_mass;
     let node = &scene.ale_nodes[contact.node];
@@ -193,8 +234,13 @@ fn add_face_terms(a: &mut Mat<f64>, scene: &Scene, pads: &Pads, contact: &PadCon
     let law = pads.friction_law(mu);
     let mu_v = law.mu(v.abs());
     let g = mu_v * x.tanh();
-    let g_over_v = if x < 1e-8 { mu_v / FRICTION_REGULARISATION_SPEED } else { g / v.abs() };
-    let g_slope = mu_v / (FRICTION_REGULARISATION_SPEED * x.cosh().powi(2)) + law.slope(v.abs()) * x.tanh();
+    let g_over_v = if x < 1e-8 {
+        mu_v / FRICTION_REGULARISATION_SPEED
+    } else {
+        g / v.abs()
+    };
+    let g_slope =
+        mu_v / (FRICTION_REGULARISATION_SPEED * x.cosh().powi(2)) + law.slope(v.abs()) * x.tanh();
     let couple = h * mu_v * (v / FRICTION_REGULARISATION_SPEED).tanh();
     let lever = 0.5 * h * h * preload;
     // Per mode: ∂_r w, ∂_θ w and of ∂_θ w: ∂_r ∂_θ w, ∂²_θ w.
@@ -214,7 +260,9 @@ fn add_face_terms(a: &mut Mat<f64>, scene: &Scene, pads: &Pads, contact: &PadCon
             let on_q = dn_times(couple * dt_i / r, pads.stiffness, series.map(|s| s.0))
                 - lever * g_over_v * dr_i * speed * drt_m
                 - lever * g_slope / (r * r) * dt_i * speed * dtt_m;
-            let on_q_dot = dn_times(couple * dt_i / r, pads.damping, series.map(|s| s.1)) - lever * g_over_v * dr_i * dr_m - lever * g_slope / (r * r) * dt_i * dt_m;
+            let on_q_dot = dn_times(couple * dt_i / r, pads.damping, series.map(|s| s.1))
+                - lever * g_over_v * dr_i * dr_m
+                - lever * g_slope / (r * r) * dt_i * dt_m;
             a[(n + i, m)] += on_q / mass[i];
             a[(n + i, n + m)] += on_q_dot / mass[i];
         }
@@ -225,10 +273,18 @@ fn add_face_terms(a: &mut Mat<f64>, scene: &Scene, pads: &Pads, contact: &PadCon
 /// frequency: the same eigenvalues, but the blocks are of one magnitude
 /// (ω instead of ω² and 1), so the growth rates — some 1e-5 of ω near a
 /// threshold — keep their accuracy. Returns the matrix and s.
-fn balanced_system(scene: &Scene, speed: f64, friction_coefficient: f64, clamp_force: &[f64]) -> (Mat<f64>, f64) {
+fn balanced_system(
+    scene: &Scene,
+    speed: f64,
+    friction_coefficient: f64,
+    clamp_force: &[f64],
+) -> (Mat<f64>, f64) {
     let mut a = linear_system(scene, speed, friction_coefficient, clamp_force);
     let n = scene.n_modes();
-    let s = (0..n).map(|i| a[(n + i, i)].abs()).fold(1.0, f64::max).sqrt();
+    let s = (0..n)
+        .map(|i| a[(n + i, i)].abs())
+        .fold(1.0, f64::max)
+        .sqrt();
     let len = a.nrows();
     let position = |r: usize| is_position(r, n, len);
     for r in 0..len {
@@ -249,7 +305,12 @@ fn is_position(r: usize, n: usize, len: usize) -> bool {
 }
 
 /// Eigenvalues of [`linear_system`], largest real part first.
-pub fn eigenvalues(scene: &Scene, speed: f64, friction_coefficient: f64, clamp_force: &[f64]) -> Vec<Complex<f64>> {
+pub fn eigenvalues(
+    scene: &Scene,
+    speed: f64,
+    friction_coefficient: f64,
+    clamp_force: &[f64],
+) -> Vec<Complex<f64>> {
     let (a, _) = balanced_system(scene, speed, friction_coefficient, clamp_force);
     let mut ev: Vec<Complex<f64>> = a
         .eigenvalues()
@@ -262,7 +323,12 @@ pub fn eigenvalues(scene: &Scene, speed: f64, friction_coefficient: f64, clamp_f
 }
 
 /// max Re λ, 1/s: positive means a growing vibration (flutter).
-pub fn growth_rate(scene: &Scene, speed: f64, friction_coefficient: f64, clamp_force: &[f64]) -> f64 {
+pub fn growth_rate(
+    scene: &Scene,
+    speed: f64,
+    friction_coefficient: f64,
+    clamp_force: &[f64],
+) -> f64 {
     eigenvalues(scene, speed, friction_coefficient, clamp_force)[0].re
 }
 
@@ -273,7 +339,13 @@ pub fn max_growth_rate(scene: &Scene, speed: f64) -> f64 {
 }
 
 fn configured(scene: &Scene) -> (f64, Vec<f64>) {
-    scene.load_models.find::<Pads>().map(|(_, p)| p).map_or((0.0, Vec::new()), |p| (p.friction_coefficient, p.initial_clamp_force.clone()))
+    scene
+        .load_models
+        .find::<Pads>()
+        .map(|(_, p)| p)
+        .map_or((0.0, Vec::new()), |p| {
+            (p.friction_coefficient, p.initial_clamp_force.clone())
+        })
 }
 
 /// The smallest friction coefficient in [0, mu_max] at which the linearised
@@ -318,9 +390,16 @@ pub struct CriticalMode {
 
 /// The eigenvalue with the largest real part (positive imaginary part among a
 /// conjugate pair) and its eigenvector.
-pub fn critical_mode(scene: &Scene, speed: f64, friction_coefficient: f64, clamp_force: &[f64]) -> CriticalMode {
+pub fn critical_mode(
+    scene: &Scene,
+    speed: f64,
+    friction_coefficient: f64,
+    clamp_force: &[f64],
+) -> CriticalMode {
     let (a, scale) = balanced_system(scene, speed, friction_coefficient, clamp_force);
-    let eig = a.eigen().expect("the eigendecomposition of a finite real matrix");
+    let eig = a
+        .eigen()
+        .expect("the eigendecomposition of a finite real matrix");
     let s = eig.S();
     let u = eig.U();
     let n = a.nrows();
@@ -332,7 +411,16 @@ pub fn critical_mode(scene: &Scene, speed: f64, friction_coefficient: f64, clamp
         .expect("a non-empty system");
     CriticalMode {
         eigenvalue: Complex::new(s[best].re, s[best].im),
-        vector: (0..n).map(|r| Complex::new(u[(r, best)].re, u[(r, best)].im) / if is_position(r, scene.n_modes(), n) { scale } else { 1.0 }).collect(),
+        vector: (0..n)
+            .map(|r| {
+                Complex::new(u[(r, best)].re, u[(r, best)].im)
+                    / if is_position(r, scene.n_modes(), n) {
+                        scale
+                    } else {
+                        1.0
+                    }
+            })
+            .collect(),
     }
 }
 
@@ -375,7 +463,10 @@ mod tests {
         let got = eigenvalues(&scene, speed, 0.0, &[]);
         assert_eq!(got.len(), expected.len());
         for e in &expected {
-            let nearest = got.iter().map(|g| (g - e).norm()).fold(f64::INFINITY, f64::min);
+            let nearest = got
+                .iter()
+                .map(|g| (g - e).norm())
+                .fold(f64::INFINITY, f64::min);
             assert!(nearest < 1e-9 * e.norm(), "{e} not among {got:?}");
         }
     }

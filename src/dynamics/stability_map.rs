@@ -36,18 +36,34 @@ pub struct SpeedRow {
 
 /// The clamp forces the scene starts with (the linearisation's preload).
 fn clamp_forces(scene: &Scene) -> Vec<f64> {
-    scene.load_models.find::<Pads>().map_or(Vec::new(), |(_, p)| p.initial_clamp_force.clone())
+    scene
+        .load_models
+        .find::<Pads>()
+        .map_or(Vec::new(), |(_, p)| p.initial_clamp_force.clone())
 }
 
 fn point(scene: &Scene, speed: f64, mu: f64, clamp: &[f64]) -> GridPoint {
     let mode = critical_mode(scene, speed, mu, clamp);
     let n = scene.n_modes();
-    let dominant = (0..n).max_by(|&a, &b| mode.vector[a].norm().total_cmp(&mode.vector[b].norm())).unwrap_or(0);
+    let dominant = (0..n)
+        .max_by(|&a, &b| mode.vector[a].norm().total_cmp(&mode.vector[b].norm()))
+        .unwrap_or(0);
     let m = &scene.model.modes()[dominant];
-    GridPoint { growth_rate: growth_rate(scene, speed, mu, clamp), k: m.k, l: m.l, frequency_hz: mode.eigenvalue.im.abs() / TAU }
+    GridPoint {
+        growth_rate: growth_rate(scene, speed, mu, clamp),
+        k: m.k,
+        l: m.l,
+        frequency_hz: mode.eigenvalue.im.abs() / TAU,
+    }
 }
 
-fn threshold(scene: &Scene, speed: f64, mus: &[f64], points: &[GridPoint], clamp: &[f64]) -> Option<f64> {
+fn threshold(
+    scene: &Scene,
+    speed: f64,
+    mus: &[f64],
+    points: &[GridPoint],
+    clamp: &[f64],
+) -> Option<f64> {
     let first = points.iter().position(|p| p.growth_rate > 0.0)?;
     if first == 0 {
         return Some(mus[0]);
@@ -81,7 +97,10 @@ pub fn stability_map(scene: &Scene, speeds: &[f64], mus: &[f64], threads: usize)
                         if i >= n {
                             break mine;
                         }
-                        mine.push((i, point(scene, speeds[i / mus.len()], mus[i % mus.len()], &clamp)));
+                        mine.push((
+                            i,
+                            point(scene, speeds[i / mus.len()], mus[i % mus.len()], &clamp),
+                        ));
                     }
                 })
             })
@@ -96,9 +115,16 @@ pub fn stability_map(scene: &Scene, speeds: &[f64], mus: &[f64], threads: usize)
         .iter()
         .enumerate()
         .map(|(r, &speed)| {
-            let points: Vec<GridPoint> = results[r * mus.len()..(r + 1) * mus.len()].iter().map(|p| p.expect("every point computed")).collect();
+            let points: Vec<GridPoint> = results[r * mus.len()..(r + 1) * mus.len()]
+                .iter()
+                .map(|p| p.expect("every point computed"))
+                .collect();
             let threshold_mu = threshold(scene, speed, mus, &points, &clamp);
-            SpeedRow { speed, points, threshold_mu }
+            SpeedRow {
+                speed,
+                points,
+                threshold_mu,
+            }
         })
         .collect()
 }

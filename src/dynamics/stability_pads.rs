@@ -52,10 +52,18 @@ impl NetForce {
     /// On the modal deflection: F = k_c (ξ_b − ξ_t − 2w) + c_c (ξ̇_b − ξ̇_t − 2ẇ).
     pub fn direct(pads: &Pads, contact: &PadContactPoint, node: &NodeFrame) -> NetForce {
         let (k, c) = (pads.stiffness, pads.damping);
-        let (mut pad, mut pad_rate) = (vec![0.0; 2 * pads.pad_count()], vec![0.0; 2 * pads.pad_count()]);
+        let (mut pad, mut pad_rate) = (
+            vec![0.0; 2 * pads.pad_count()],
+            vec![0.0; 2 * pads.pad_count()],
+        );
         let (t, b) = (2 * contact.pad, 2 * contact.pad + 1);
         (pad[t], pad[b], pad_rate[t], pad_rate[b]) = (-k, k, -c, c);
-        NetForce { q: node.shapes.iter().map(|s| -2.0 * k * s.w).collect(), q_dot: node.shapes.iter().map(|s| -2.0 * c * s.w).collect(), pad, pad_rate }
+        NetForce {
+            q: node.shapes.iter().map(|s| -2.0 * k * s.w).collect(),
+            q_dot: node.shapes.iter().map(|s| -2.0 * c * s.w).collect(),
+            pad,
+            pad_rate,
+        }
     }
 
     /// In series with the residual compliance: row `ci` of [`LinearSeriesForces`].
@@ -63,14 +71,26 @@ impl NetForce {
         let p = 2 * pads.pad_count();
         let pad: Vec<f64> = l.pad[ci * p..(ci + 1) * p].to_vec();
         let ratio = pads.damping / pads.stiffness;
-        NetForce { q: l.q[ci * n..(ci + 1) * n].to_vec(), q_dot: l.q_dot[ci * n..(ci + 1) * n].to_vec(), pad_rate: pad.iter().map(|v| ratio * v).collect(), pad }
+        NetForce {
+            q: l.q[ci * n..(ci + 1) * n].to_vec(),
+            q_dot: l.q_dot[ci * n..(ci + 1) * n].to_vec(),
+            pad_rate: pad.iter().map(|v| ratio * v).collect(),
+            pad,
+        }
     }
 }
 
 /// The terms of contact `contact` that involve the pads' coordinates, and the
 /// pads' equations (module docs), for its net axial force `net`; `couple` =
 /// h μ(V) tanh(V/v_reg) with face friction (0 at the mid-plane).
-pub(super) fn add_pad_terms(a: &mut Mat<f64>, scene: &Scene, pads: &Pads, contact: &PadContactPoint, couple: f64, net: &NetForce) {
+pub(super) fn add_pad_terms(
+    a: &mut Mat<f64>,
+    scene: &Scene,
+    pads: &Pads,
+    contact: &PadContactPoint,
+    couple: f64,
+    net: &NetForce,
+) {
     let n = scene.n_modes();
     let mass = &scene.model.body().modal_mass;
     let node = &scene.ale_nodes[contact.node];
@@ -79,7 +99,7 @@ pub(super) fn add_pad_terms(a: &mut Mat<f64>, scene: &Scene, pads: &Pads, contac
     for i in 0..n {
         let g = node.gradient(i);
         let arm = couple * (-s * g[0] + co * g[1]); // couple ∂_θ w_i / r
-        // f_i = w_i F + arm δN, δN = −F/2.
+                                                    // f_i = w_i F + arm δN, δN = −F/2.
         let on_f = (node.shapes[i].w - 0.5 * arm) / mass[i];
         for (j, (&x, &v)) in net.pad.iter().zip(&net.pad_rate).enumerate() {
             a[(n + i, first.0 + j)] += on_f * x;

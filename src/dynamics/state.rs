@@ -68,8 +68,20 @@ impl State {
         self.q_other.copy_from_slice(&self.q);
         self.q_dot_other.copy_from_slice(&self.q_dot);
         match self.coordinates {
-            Coordinates::Lagrangian => lagrange_to_ale(layout, harm, self.speed, &mut self.q_other, &mut self.q_dot_other),
-            Coordinates::Ale => ale_to_lagrange(layout, harm, self.speed, &mut self.q_other, &mut self.q_dot_other),
+            Coordinates::Lagrangian => lagrange_to_ale(
+                layout,
+                harm,
+                self.speed,
+                &mut self.q_other,
+                &mut self.q_dot_other,
+            ),
+            Coordinates::Ale => ale_to_lagrange(
+                layout,
+                harm,
+                self.speed,
+                &mut self.q_other,
+                &mut self.q_dot_other,
+            ),
         }
     }
 
@@ -111,7 +123,12 @@ impl State {
         self.acceleration = other.acceleration;
         self.effort = other.effort;
         self.coordinates = other.coordinates;
-        for (a, b) in [(&mut self.q, &other.q), (&mut self.q_dot, &other.q_dot), (&mut self.q_other, &other.q_other), (&mut self.q_dot_other, &other.q_dot_other)] {
+        for (a, b) in [
+            (&mut self.q, &other.q),
+            (&mut self.q_dot, &other.q_dot),
+            (&mut self.q_other, &other.q_other),
+            (&mut self.q_dot_other, &other.q_dot_other),
+        ] {
             a.clear();
             a.extend_from_slice(b);
         }
@@ -128,7 +145,9 @@ impl State {
             && self.chi.angle.is_finite()
             && self.speed.is_finite()
             && self.effort.is_finite()
-            && [&self.q, &self.q_dot, &self.q_other, &self.q_dot_other].into_iter().all(|v| all_finite(v))
+            && [&self.q, &self.q_dot, &self.q_other, &self.q_dot_other]
+                .into_iter()
+                .all(|v| all_finite(v))
     }
 }
 
@@ -142,7 +161,11 @@ impl State {
 fn all_finite(values: &[f64]) -> bool {
     const EXPONENT: u64 = 0x7ff0_0000_0000_0000;
     const ONE: u64 = 1 << 52;
-    values.iter().fold(0u64, |acc, v| acc | ((v.to_bits() & EXPONENT) + ONE)) >> 63 == 0
+    values
+        .iter()
+        .fold(0u64, |acc, v| acc | ((v.to_bits() & EXPONENT) + ONE))
+        >> 63
+        == 0
 }
 
 #[cfg(test)]
@@ -164,7 +187,10 @@ mod tests {
                         _ => &mut s.q_dot_other,
                     };
                     v[i] = bad;
-                    assert!(!s.is_finite_except_load_models(), "{bad} in field {field}[{i}]");
+                    assert!(
+                        !s.is_finite_except_load_models(),
+                        "{bad} in field {field}[{i}]"
+                    );
                 }
             }
         }

@@ -10,14 +10,14 @@
 //! step that produces a non-finite or implausible state is undone and reported.
 
 use super::ale::{harmonics, lagrange_to_ale, pair_to_ale};
+use super::commands::Inputs;
 use super::error::{Divergence, StepError};
 use super::integrators::equations::{accelerations, mode_constants, ModeConstants};
 use super::integrators::exponential::ModePropagator;
-use super::integrators::{block_exponential, implicit_midpoint, rk4, MAX_INNER_SUBSTEPS};
 use super::integrators::stiffened_midpoint::StiffenedMidpoint;
+use super::integrators::{block_exponential, implicit_midpoint, rk4, MAX_INNER_SUBSTEPS};
 use super::joint::drive;
 use super::load_models::{LoadContext, LoadModelState, LoadModelUndo, ModelWrenches};
-use super::commands::Inputs;
 use super::loads::{add_reference_motion, compute as node_loads, StepLoads};
 use super::scene::Scene;
 use super::state::{JointAngle, State};
@@ -36,7 +36,12 @@ struct Views {
 
 impl Views {
     fn new(n: usize) -> Views {
-        Views { q_lagrange: vec![0.0; n], q_dot_lagrange: vec![0.0; n], q_ale: vec![0.0; n], q_dot_ale: vec![0.0; n] }
+        Views {
+            q_lagrange: vec![0.0; n],
+            q_dot_lagrange: vec![0.0; n],
+            q_ale: vec![0.0; n],
+            q_dot_ale: vec![0.0; n],
+        }
     }
 }
 
@@ -83,7 +88,9 @@ impl StepperSettings {
     pub fn step_limit(&self) -> Option<(f64, &'static str)> {
         match self.integrator {
             IntegratorKind::Exponential => None,
-            IntegratorKind::ImplicitMidpoint => Some((self.midpoint_step_limit, "simulation.midpoint_step_limit")),
+            IntegratorKind::ImplicitMidpoint => {
+                Some((self.midpoint_step_limit, "simulation.midpoint_step_limit"))
+            }
             IntegratorKind::Rk4 => Some((self.rk4_step_limit, "simulation.rk4_step_limit")),
         }
     }
@@ -162,7 +169,15 @@ impl Stepper {
             undo: LoadModelUndo::new(&scene.load_models),
             last_inner_substeps: 1,
             model_wrenches: scene.model_wrenches(),
-            stiffened: scene.stiffening.iter().flat_map(|s| &s.blocks).flat_map(|b| b.families().map(|f| block_exponential::BlockPropagator::new(f.len()))).collect(),
+            stiffened: scene
+                .stiffening
+                .iter()
+                .flat_map(|s| &s.blocks)
+                .flat_map(|b| {
+                    b.families()
+                        .map(|f| block_exponential::BlockPropagator::new(f.len()))
+                })
+                .collect(),
             stiffened_midpoint: StiffenedMidpoint::new(scene.stiffening.as_ref()),
         }
     }
@@ -174,8 +189,16 @@ impl Stepper {
     /// Inner substeps a substep of h needs at speeds up to |Ω| so that
     /// h·λ_max stays below the integrator's step limit (1 for the exponential
     /// integrator).
-    pub fn inner_substeps(&self, scene: &Scene, settings: &StepperSettings, h: f64, speed: f64) -> usize {
-        let Some((limit, _)) = settings.step_limit() else { return 1 };
+    pub fn inner_substeps(
+        &self,
+        scene: &Scene,
+        settings: &StepperSettings,
+        h: f64,
+        speed: f64,
+    ) -> usize {
+        let Some((limit, _)) = settings.step_limit() else {
+            return 1;
+        };
         ((h * self.lambda_max(scene, speed) / limit).ceil() as usize).max(1)
     }
 
@@ -183,29 +206,55 @@ impl Stepper {
     /// coupling included as bounded in [`LoadModels`](super::load_models::LoadModels).
     fn lambda_max(&self, scene: &Scene, speed: f64) -> f64 {
         let c = scene.load_models.coupling();
-        let stiffening = scene.stiffening.as_ref().map_or(0.0, |s| s.rate_bound * speed * speed);
+        let stiffening = scene
+            .stiffening
+            .as_ref()
+            .map_or(0.0, |s| s.rate_bound * speed * speed);
         scene
             .model
             .modes()
             .iter()
             .zip(&self.consts)
-            .map(|(m, mc)| (mc.omega_eff_sq.abs() + stiffening + c.stiffness_rate_sq).sqrt() + mc.damping_rate + c.damping_rate + m.k as f64 * speed.abs())
+            .map(|(m, mc)| {
+                (mc.omega_eff_sq.abs() + stiffening + c.stiffness_rate_sq).sqrt()
+                    + mc.damping_rate
+                    + c.damping_rate
+                    + m.k as f64 * speed.abs()
+            })
             .fold(0.0, f64::max)
     }
 
     /// The inner substeps for a substep of h from Ω0 under α, or the refusal.
-    fn checked_inner_substeps(&self, scene: &Scene, settings: &StepperSettings, h: f64, speed0: f64, alpha: f64) -> Result<usize, StepError> {
+    fn checked_inner_substeps(
+        &self,
+        scene: &Scene,
+        settings: &StepperSettings,
+        h: f64,
+        speed0: f64,
+        alpha: f64,
+    ) -> Result<usize, StepError> {
         let speed_max = speed0.abs().max((speed0 + alpha * h).abs());
         let inner = self.inner_substeps(scene, settings, h, speed_max);
         if inner > MAX_INNER_SUBSTEPS {
-            return Err(StepError::TooManySubsteps { integrator: settings.integrator.name(), needed: inner, limit: MAX_INNER_SUBSTEPS, step: h });
+            return Err(StepError::TooManySubsteps {
+                integrator: settings.integrator.name(),
+                needed: inner,
+                limit: MAX_INNER_SUBSTEPS,
+                step: h,
+            });
         }
         Ok(inner)
     }
 
     /// Advance `state` by one output step (dt) under `inputs`. On error the
     /// state is as before the call.
-    pub fn step(&mut self, scene: &Scene, settings: &StepperSettings, state: &mut State, inputs: &Inputs) -> Result<(), StepError> {
+    pub fn step(
+        &mut self,
+        scene: &Scene,
+        settings: &StepperSettings,
+        state: &mut State,
+        inputs: &Inputs,
+    ) -> Result<(), StepError> {
         self.backup.copy_from_except_load_models(state);
         self.undo.begin(&scene.load_models, &state.load_models);
         let h = settings.h();
@@ -233,12 +282,27 @@ impl Stepper {
     /// One substep: load models and node loads at its start, the joint, the
     /// elastic coordinates, the models' memory. On exit both descriptions in
     /// `state` describe its end.
-    fn substep(&mut self, scene: &Scene, settings: &StepperSettings, state: &mut State, inputs: &Inputs, h: f64) -> Result<(), StepError> {
+    fn substep(
+        &mut self,
+        scene: &Scene,
+        settings: &StepperSettings,
+        state: &mut State,
+        inputs: &Inputs,
+        h: f64,
+    ) -> Result<(), StepError> {
         let models = &scene.load_models;
         if !models.is_empty() {
             let mut slots = std::mem::take(&mut state.load_models);
             let (q_ale, q_dot_ale) = state.ale();
-            let mut ctx = LoadContext { ale_nodes: &scene.ale_nodes, lagrange_nodes: &scene.lagrange_nodes, q_ale, q_dot_ale, chi: state.chi.angle, speed: state.speed, held: scene.held_deflection(inputs) };
+            let mut ctx = LoadContext {
+                ale_nodes: &scene.ale_nodes,
+                lagrange_nodes: &scene.lagrange_nodes,
+                q_ale,
+                q_dot_ale,
+                chi: state.chi.angle,
+                speed: state.speed,
+                held: scene.held_deflection(inputs),
+            };
             models.begin_substep(&ctx, &mut slots, h);
             // Prescribed forces at the substep's mid-angle (held by the non-RK4 integrators).
             ctx.chi = state.chi.angle + 0.5 * state.speed * h;
@@ -246,7 +310,15 @@ impl Stepper {
             state.load_models = slots;
         }
         self.node_loads(scene, state, inputs);
-        let d = drive(&scene.joint, scene.polar_inertia, state.speed, inputs.speed_command, self.loads.axial_torque, &self.model_wrenches.friction, h);
+        let d = drive(
+            &scene.joint,
+            scene.polar_inertia,
+            state.speed,
+            inputs.speed_command,
+            self.loads.axial_torque,
+            &self.model_wrenches.friction,
+            h,
+        );
         let (speed0, alpha) = (state.speed, d.acceleration);
         let speed_mean = speed0 + 0.5 * alpha * h;
         let chi0 = state.chi;
@@ -265,7 +337,9 @@ impl Stepper {
                 self.last_inner_substeps = self.last_inner_substeps.max(inner);
                 self.implicit_midpoint(scene, state, h, inner, chi0, speed0, alpha);
             }
-            IntegratorKind::Rk4 => self.rk4(scene, settings, state, inputs, h, chi0, speed0, alpha)?,
+            IntegratorKind::Rk4 => {
+                self.rk4(scene, settings, state, inputs, h, chi0, speed0, alpha)?
+            }
         }
         models.save_changes(&state.load_models, &mut self.undo);
         models.commit_substep(&mut state.load_models, &inputs.commands, h);
@@ -288,17 +362,40 @@ impl Stepper {
         let (q_ale, _) = state.ale();
         let (q_lagrange, _) = state.lagrange();
         if scene.effects.follower_loads || !scene.load_models.is_empty() {
-            return node_loads(scene, inputs, &self.model_wrenches, q_ale, q_lagrange, &mut self.loads);
+            return node_loads(
+                scene,
+                inputs,
+                &self.model_wrenches,
+                q_ale,
+                q_lagrange,
+                &mut self.loads,
+            );
         }
-        let fresh = !self.held_loads.as_ref().is_some_and(|held| held.is_of(inputs));
-        let held = self.held_loads.get_or_insert_with(|| HeldLoads { ale: Vec::new(), lagrange: Vec::new(), loads: StepLoads::new(scene.n_modes()) });
+        let fresh = !self
+            .held_loads
+            .as_ref()
+            .is_some_and(|held| held.is_of(inputs));
+        let held = self.held_loads.get_or_insert_with(|| HeldLoads {
+            ale: Vec::new(),
+            lagrange: Vec::new(),
+            loads: StepLoads::new(scene.n_modes()),
+        });
         if fresh {
-            node_loads(scene, inputs, &self.model_wrenches, q_ale, q_lagrange, &mut held.loads);
+            node_loads(
+                scene,
+                inputs,
+                &self.model_wrenches,
+                q_ale,
+                q_lagrange,
+                &mut held.loads,
+            );
             held.ale.clone_from(&inputs.ale);
             held.lagrange.clone_from(&inputs.lagrange);
         }
         self.loads.ale_frame.copy_from_slice(&held.loads.ale_frame);
-        self.loads.plate_frame.copy_from_slice(&held.loads.plate_frame);
+        self.loads
+            .plate_frame
+            .copy_from_slice(&held.loads.plate_frame);
         self.loads.axial_torque = held.loads.axial_torque;
     }
 
@@ -314,14 +411,34 @@ impl Stepper {
     /// Exact step of the Lagrangian description over h (the loads held), then
     /// the ALE one derived at χ1: both written into `state`.
     #[allow(clippy::too_many_arguments)]
-    fn exponential(&mut self, scene: &Scene, state: &mut State, h: f64, speed_mean: f64, chi0: JointAngle, chi1: JointAngle, speed1: f64) {
+    fn exponential(
+        &mut self,
+        scene: &Scene,
+        state: &mut State,
+        h: f64,
+        speed_mean: f64,
+        chi0: JointAngle,
+        chi1: JointAngle,
+        speed1: f64,
+    ) {
         self.exp_harmonics(&chi0, scene.layout.k_max);
         if let Some(stiffening) = &scene.stiffening {
             let (lagrange_q, lagrange_v) = match state.coordinates {
                 Coordinates::Lagrangian => (&mut state.q, &mut state.q_dot),
                 Coordinates::Ale => (&mut state.q_other, &mut state.q_dot_other),
             };
-            block_exponential::advance(stiffening, &mut self.stiffened, &self.consts, &self.exp_harm, h, speed_mean, speed1, &self.loads, lagrange_q, lagrange_v);
+            block_exponential::advance(
+                stiffening,
+                &mut self.stiffened,
+                &self.consts,
+                &self.exp_harm,
+                h,
+                speed_mean,
+                speed1,
+                &self.loads,
+                lagrange_q,
+                lagrange_v,
+            );
             return self.derive_ale(scene, state, chi1, speed1);
         }
         if self.propagators_for != Some((h, speed_mean)) {
@@ -339,17 +456,36 @@ impl Stepper {
         // (the same operations as `derive_ale`, while the pair is at hand).
         harmonics(&chi1, scene.layout.k_max, &mut self.exp_harm_next);
         let (lagrange_q, lagrange_v, ale_q, ale_v) = match state.coordinates {
-            Coordinates::Lagrangian => (&mut state.q, &mut state.q_dot, &mut state.q_other, &mut state.q_dot_other),
-            Coordinates::Ale => (&mut state.q_other, &mut state.q_dot_other, &mut state.q, &mut state.q_dot),
+            Coordinates::Lagrangian => (
+                &mut state.q,
+                &mut state.q_dot,
+                &mut state.q_other,
+                &mut state.q_dot_other,
+            ),
+            Coordinates::Ale => (
+                &mut state.q_other,
+                &mut state.q_dot_other,
+                &mut state.q,
+                &mut state.q_dot,
+            ),
         };
         // All of length n, so one index check serves every array (the compiler merges them).
         let n = lagrange_q.len();
         let (lagrange_v, ale_q, ale_v) = (&mut lagrange_v[..n], &mut ale_q[..n], &mut ale_v[..n]);
-        let (propagators, ale_frame, plate_frame) = (&self.propagators[..n], &self.loads.ale_frame[..n], &self.loads.plate_frame[..n]);
+        let (propagators, ale_frame, plate_frame) = (
+            &self.propagators[..n],
+            &self.loads.ale_frame[..n],
+            &self.loads.plate_frame[..n],
+        );
         let harmonics_len = self.exp_harm.len();
         let (harm0, harm1) = (&self.exp_harm[..], &self.exp_harm_next[..harmonics_len]);
         for &i in &scene.layout.axisymmetric {
-            let (q, qd) = propagators[i].advance(lagrange_q[i], lagrange_v[i], ale_frame[i], Complex::new(0.0, 0.0));
+            let (q, qd) = propagators[i].advance(
+                lagrange_q[i],
+                lagrange_v[i],
+                ale_frame[i],
+                Complex::new(0.0, 0.0),
+            );
             lagrange_q[i] = q;
             lagrange_v[i] = qd;
             ale_q[i] = q;
@@ -361,13 +497,24 @@ impl Stepper {
             let (fc, fs) = (ale_frame[p.cos], ale_frame[p.sin]);
             let gc = Complex::new(fc, -fs) * e0;
             let gs = Complex::new(fs, fc) * e0;
-            let (qc, vc) = propagators[p.cos].advance(lagrange_q[p.cos], lagrange_v[p.cos], plate_frame[p.cos], gc);
-            let (qs, vs) = propagators[p.sin].advance(lagrange_q[p.sin], lagrange_v[p.sin], plate_frame[p.sin], gs);
+            let (qc, vc) = propagators[p.cos].advance(
+                lagrange_q[p.cos],
+                lagrange_v[p.cos],
+                plate_frame[p.cos],
+                gc,
+            );
+            let (qs, vs) = propagators[p.sin].advance(
+                lagrange_q[p.sin],
+                lagrange_v[p.sin],
+                plate_frame[p.sin],
+                gs,
+            );
             lagrange_q[p.cos] = qc;
             lagrange_v[p.cos] = vc;
             lagrange_q[p.sin] = qs;
             lagrange_v[p.sin] = vs;
-            let [bar_c, bar_s, dot_c, dot_s] = pair_to_ale(harm1[p.k as usize], p.k as f64 * speed1, [qc, qs], [vc, vs]);
+            let [bar_c, bar_s, dot_c, dot_s] =
+                pair_to_ale(harm1[p.k as usize], p.k as f64 * speed1, [qc, qs], [vc, vs]);
             ale_q[p.cos] = bar_c;
             ale_q[p.sin] = bar_s;
             ale_v[p.cos] = dot_c;
@@ -382,8 +529,18 @@ impl Stepper {
     /// derive the ALE one.
     fn derive_ale(&mut self, scene: &Scene, state: &mut State, chi1: JointAngle, speed1: f64) {
         let (lagrange_q, lagrange_v, ale_q, ale_v) = match state.coordinates {
-            Coordinates::Lagrangian => (&mut state.q, &mut state.q_dot, &mut state.q_other, &mut state.q_dot_other),
-            Coordinates::Ale => (&mut state.q_other, &mut state.q_dot_other, &mut state.q, &mut state.q_dot),
+            Coordinates::Lagrangian => (
+                &mut state.q,
+                &mut state.q_dot,
+                &mut state.q_other,
+                &mut state.q_dot_other,
+            ),
+            Coordinates::Ale => (
+                &mut state.q_other,
+                &mut state.q_dot_other,
+                &mut state.q,
+                &mut state.q_dot,
+            ),
         };
         ale_q.copy_from_slice(lagrange_q);
         ale_v.copy_from_slice(lagrange_v);
@@ -395,7 +552,16 @@ impl Stepper {
     /// held, each step's joint angle and speed at its midpoint (χ quadratic in
     /// time under constant α).
     #[allow(clippy::too_many_arguments)]
-    fn implicit_midpoint(&mut self, scene: &Scene, state: &mut State, h: f64, inner: usize, chi0: JointAngle, speed0: f64, alpha: f64) {
+    fn implicit_midpoint(
+        &mut self,
+        scene: &Scene,
+        state: &mut State,
+        h: f64,
+        inner: usize,
+        chi0: JointAngle,
+        speed0: f64,
+        alpha: f64,
+    ) {
         let hi = h / inner as f64;
         for j in 0..inner {
             let t_mid = (j as f64 + 0.5) * hi;
@@ -405,15 +571,49 @@ impl Stepper {
             let speed_mid = speed0 + alpha * t_mid;
             let (f_ale, f_plate) = (&self.loads.ale_frame, &self.loads.plate_frame);
             if let Some(s) = &scene.stiffening {
-                self.stiffened_midpoint.advance(s, &self.consts, state.coordinates, hi, &self.harm_end, speed_mid, alpha, f_ale, f_plate, &mut state.q, &mut state.q_dot);
+                self.stiffened_midpoint.advance(
+                    s,
+                    &self.consts,
+                    state.coordinates,
+                    hi,
+                    &self.harm_end,
+                    speed_mid,
+                    alpha,
+                    f_ale,
+                    f_plate,
+                    &mut state.q,
+                    &mut state.q_dot,
+                );
             } else {
-                implicit_midpoint::advance(scene, &self.consts, state.coordinates, hi, &self.harm_end, speed_mid, alpha, f_ale, f_plate, &mut state.q, &mut state.q_dot);
+                implicit_midpoint::advance(
+                    scene,
+                    &self.consts,
+                    state.coordinates,
+                    hi,
+                    &self.harm_end,
+                    speed_mid,
+                    alpha,
+                    f_ale,
+                    f_plate,
+                    &mut state.q,
+                    &mut state.q_dot,
+                );
             }
         }
     }
 
     #[allow(clippy::too_many_arguments)]
-    fn rk4(&mut self, scene: &Scene, settings: &StepperSettings, state: &mut State, inputs: &Inputs, h: f64, chi0: JointAngle, speed0: f64, alpha: f64) -> Result<(), StepError> {
+    fn rk4(
+        &mut self,
+        scene: &Scene,
+        settings: &StepperSettings,
+        state: &mut State,
+        inputs: &Inputs,
+        h: f64,
+        chi0: JointAngle,
+        speed0: f64,
+        alpha: f64,
+    ) -> Result<(), StepError> {
         let inner = self.checked_inner_substeps(scene, settings, h, speed0, alpha)?;
         self.last_inner_substeps = self.last_inner_substeps.max(inner);
         let n = scene.n_modes();
@@ -422,11 +622,24 @@ impl Stepper {
         self.y[n..2 * n].copy_from_slice(&state.q_dot);
         let continuous = scene.load_models.continuous_states() > 0;
         if continuous {
-            scene.load_models.gather_continuous(&state.load_models, &mut self.y[2 * n..]);
+            scene
+                .load_models
+                .gather_continuous(&state.load_models, &mut self.y[2 * n..]);
             self.stage_slots.copy_from(&state.load_models);
         }
         self.base_ale_frame.copy_from_slice(&self.loads.ale_frame);
-        let Stepper { consts, loads, base_ale_frame, harm, views, y, rk, model_wrenches, stage_slots, .. } = self;
+        let Stepper {
+            consts,
+            loads,
+            base_ale_frame,
+            harm,
+            views,
+            y,
+            rk,
+            model_wrenches,
+            stage_slots,
+            ..
+        } = self;
         let follower = scene.effects.follower_loads;
         let stage_models = scene.load_models.stage_dependent();
         let slots = &state.load_models;
@@ -439,7 +652,12 @@ impl Stepper {
             let (q, rest) = yy.split_at(n);
             let (v, s) = rest.split_at(n);
             if follower || stage_models {
-                let st = StateView { q, v, coords, speed };
+                let st = StateView {
+                    q,
+                    v,
+                    coords,
+                    speed,
+                };
                 st.fill(scene, harm, views);
                 if stage_models {
                     let ctx = LoadContext {
@@ -457,9 +675,18 @@ impl Stepper {
                     } else {
                         slots
                     };
-                    scene.load_models.evaluate(&ctx, slots, &inputs.commands, model_wrenches);
+                    scene
+                        .load_models
+                        .evaluate(&ctx, slots, &inputs.commands, model_wrenches);
                 }
-                node_loads(scene, inputs, model_wrenches, &views.q_ale, &views.q_lagrange, loads);
+                node_loads(
+                    scene,
+                    inputs,
+                    model_wrenches,
+                    &views.q_ale,
+                    &views.q_lagrange,
+                    loads,
+                );
             } else {
                 loads.ale_frame.copy_from_slice(base_ale_frame);
             }
@@ -467,7 +694,19 @@ impl Stepper {
             let (dq, rest) = dy.split_at_mut(n);
             let (dv, ds) = rest.split_at_mut(n);
             dq.copy_from_slice(v);
-            accelerations(scene, consts, coords, harm, speed, alpha, q, v, &loads.ale_frame, &loads.plate_frame, dv);
+            accelerations(
+                scene,
+                consts,
+                coords,
+                harm,
+                speed,
+                alpha,
+                q,
+                v,
+                &loads.ale_frame,
+                &loads.plate_frame,
+                dv,
+            );
             ds.copy_from_slice(&model_wrenches.rates);
         };
         for j in 0..inner {
@@ -476,7 +715,9 @@ impl Stepper {
         state.q.copy_from_slice(&y[..n]);
         state.q_dot.copy_from_slice(&y[n..2 * n]);
         if continuous {
-            scene.load_models.scatter_continuous(&y[2 * n..], &mut state.load_models);
+            scene
+                .load_models
+                .scatter_continuous(&y[2 * n..], &mut state.load_models);
         }
         Ok(())
     }
@@ -493,7 +734,14 @@ impl HeldLoads {
     /// Whether `inputs` hold the same wrenches, bit for bit.
     fn is_of(&self, inputs: &Inputs) -> bool {
         let same = |a: &[Wrench], b: &[Wrench]| {
-            a.len() == b.len() && a.iter().zip(b).all(|(x, y)| x.force.iter().chain(&x.moment).zip(y.force.iter().chain(&y.moment)).all(|(u, v)| u.to_bits() == v.to_bits()))
+            a.len() == b.len()
+                && a.iter().zip(b).all(|(x, y)| {
+                    x.force
+                        .iter()
+                        .chain(&x.moment)
+                        .zip(y.force.iter().chain(&y.moment))
+                        .all(|(u, v)| u.to_bits() == v.to_bits())
+                })
         };
         same(&self.ale, &inputs.ale) && same(&self.lagrange, &inputs.lagrange)
     }
@@ -516,8 +764,20 @@ impl StateView<'_> {
             buf.copy_from_slice(self.v);
         }
         match self.coords {
-            Coordinates::Lagrangian => lagrange_to_ale(&scene.layout, harm, self.speed, &mut views.q_ale, &mut views.q_dot_ale),
-            Coordinates::Ale => super::ale::ale_to_lagrange(&scene.layout, harm, self.speed, &mut views.q_lagrange, &mut views.q_dot_lagrange),
+            Coordinates::Lagrangian => lagrange_to_ale(
+                &scene.layout,
+                harm,
+                self.speed,
+                &mut views.q_ale,
+                &mut views.q_dot_ale,
+            ),
+            Coordinates::Ale => super::ale::ale_to_lagrange(
+                &scene.layout,
+                harm,
+                self.speed,
+                &mut views.q_lagrange,
+                &mut views.q_dot_lagrange,
+            ),
         }
     }
 }
@@ -539,8 +799,15 @@ fn largest_magnitude(values: &[f64]) -> f64 {
 
 /// Divergence guard: everything finite, amplitudes within the plausibility limit.
 fn check(scene: &Scene, state: &State) -> Result<(), StepError> {
-    let diverged = |cause| Err(StepError::Diverged { time: state.time, cause });
-    if !state.is_finite_except_load_models() || !scene.load_models.state_is_finite(&state.load_models) {
+    let diverged = |cause| {
+        Err(StepError::Diverged {
+            time: state.time,
+            cause,
+        })
+    };
+    if !state.is_finite_except_load_models()
+        || !scene.load_models.state_is_finite(&state.load_models)
+    {
         return diverged(Divergence::NonFinite);
     }
     let limit = scene.limits.max_deflection_thicknesses * scene.model.plate().thickness;
@@ -548,11 +815,21 @@ fn check(scene: &Scene, state: &State) -> Result<(), StepError> {
     if largest_magnitude(&state.q) > limit {
         if let Some((i, &q)) = state.q.iter().enumerate().find(|(_, q)| q.abs() > limit) {
             let m = &scene.model.modes()[i];
-            return diverged(Divergence::ModeBeyondLimit { mode: i, k: m.k, l: m.l, shape: m.shape, value: q, limit });
+            return diverged(Divergence::ModeBeyondLimit {
+                mode: i,
+                k: m.k,
+                l: m.l,
+                shape: m.shape,
+                value: q,
+                limit,
+            });
         }
     }
     if state.speed.abs() > scene.limits.max_speed * 1.5 {
-        return diverged(Divergence::SpeedBeyondLimit { speed: state.speed, limit: scene.limits.max_speed });
+        return diverged(Divergence::SpeedBeyondLimit {
+            speed: state.speed,
+            limit: scene.limits.max_speed,
+        });
     }
     Ok(())
 }

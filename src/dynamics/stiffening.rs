@@ -39,7 +39,9 @@ impl StiffeningBlock {
 
     /// The families of this k (cos, then sin when k ≥ 1).
     pub fn families(&self) -> impl Iterator<Item = &[usize]> {
-        [self.cos.as_slice(), self.sin.as_slice()].into_iter().filter(|f| !f.is_empty())
+        [self.cos.as_slice(), self.sin.as_slice()]
+            .into_iter()
+            .filter(|f| !f.is_empty())
     }
 }
 
@@ -64,10 +66,24 @@ impl Stiffening {
             .map(|b| {
                 let n = b.radial.len();
                 let family_member = |r: usize, cos: bool| {
-                    modes.iter().position(|m| m.radial == r && (m.k == 0 || (m.shape == crate::model::AngularShape::Cos) == cos))
+                    modes.iter().position(|m| {
+                        m.radial == r
+                            && (m.k == 0 || (m.shape == crate::model::AngularShape::Cos) == cos)
+                    })
                 };
-                let cos: Vec<usize> = b.radial.iter().filter_map(|&r| family_member(r, true)).collect();
-                let sin: Vec<usize> = if b.k == 0 { Vec::new() } else { b.radial.iter().filter_map(|&r| family_member(r, false)).collect() };
+                let cos: Vec<usize> = b
+                    .radial
+                    .iter()
+                    .filter_map(|&r| family_member(r, true))
+                    .collect();
+                let sin: Vec<usize> = if b.k == 0 {
+                    Vec::new()
+                } else {
+                    b.radial
+                        .iter()
+                        .filter_map(|&r| family_member(r, false))
+                        .collect()
+                };
                 debug_assert_eq!(cos.len(), n, "every retained radial shape is a mode");
                 let mass: Vec<f64> = cos.iter().map(|&i| modes[i].modal_mass).collect();
                 let mut g_over_m = vec![0.0; n * n];
@@ -79,7 +95,12 @@ impl Stiffening {
                     }
                     rate_bound = rate_bound.max(row);
                 }
-                StiffeningBlock { k: b.k, cos, sin, g_over_m }
+                StiffeningBlock {
+                    k: b.k,
+                    cos,
+                    sin,
+                    g_over_m,
+                }
             })
             .collect();
         Stiffening { blocks, rate_bound }
@@ -102,7 +123,12 @@ impl Stiffening {
 
     /// Add −Ω² M⁻¹ G to the velocity rows of a first-order system matrix
     /// `a` (rows n + i hold q̈_i, columns j hold q_j).
-    pub fn add_to_system(&self, speed_sq: f64, n_modes: usize, mut a: impl FnMut(usize, usize, f64)) {
+    pub fn add_to_system(
+        &self,
+        speed_sq: f64,
+        n_modes: usize,
+        mut a: impl FnMut(usize, usize, f64),
+    ) {
         for b in &self.blocks {
             let n = b.len();
             for family in b.families() {

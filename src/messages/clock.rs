@@ -40,13 +40,23 @@ pub struct StepClock {
 
 impl StepClock {
     pub fn new(sim: bool, dt: f64) -> Self {
-        StepClock { sim, dt, total_steps: 0, follow: None }
+        StepClock {
+            sim,
+            dt,
+            total_steps: 0,
+            follow: None,
+        }
     }
 
     /// Stamps from an external `/clock` (`use_sim_time: true`).
     /// `max_jump`: `ros.max_clock_jump`, s ([`ClockFollower::with_max_jump`]).
     pub fn following(dt: f64, max_jump: f64) -> Self {
-        StepClock { sim: false, dt, total_steps: 0, follow: Some(ClockFollower::new(dt).with_max_jump(max_jump)) }
+        StepClock {
+            sim: false,
+            dt,
+            total_steps: 0,
+            follow: Some(ClockFollower::new(dt).with_max_jump(max_jump)),
+        }
     }
 
     /// The external clock being followed, if any.
@@ -122,7 +132,11 @@ impl Pacer {
                 Duration::try_from_secs_f64(p.max(0.0)).map_or(MAX_PERIOD, |d| d.min(MAX_PERIOD))
             }
         });
-        Pacer { period, next: now, overruns: 0 }
+        Pacer {
+            period,
+            next: now,
+            overruns: 0,
+        }
     }
 
     pub fn period(&self) -> Option<Duration> {
@@ -131,7 +145,10 @@ impl Pacer {
 
     /// Change the real-time factor (takes effect from now).
     pub fn set_realtime_factor(&mut self, dt: f64, realtime_factor: f64, now: Instant) {
-        *self = Pacer { overruns: self.overruns, ..Pacer::new(dt, realtime_factor, now) };
+        *self = Pacer {
+            overruns: self.overruns,
+            ..Pacer::new(dt, realtime_factor, now)
+        };
     }
 
     /// When the next step is due.
@@ -177,7 +194,13 @@ mod tests {
         assert_eq!(c.stamp(), Time { sec: 1, nanosec: 0 });
         let mut c = StepClock::new(true, 1e-3);
         c.advance();
-        assert_eq!(c.stamp(), Time { sec: 0, nanosec: 1_000_000 });
+        assert_eq!(
+            c.stamp(),
+            Time {
+                sec: 0,
+                nanosec: 1_000_000
+            }
+        );
     }
 
     #[test]
@@ -187,7 +210,13 @@ mod tests {
         c.follower_mut().unwrap().observe(2_003_000_000);
         assert_eq!(c.follower().unwrap().due(), 3);
         c.advance();
-        assert_eq!(c.stamp(), Time { sec: 2, nanosec: 1_000_000 });
+        assert_eq!(
+            c.stamp(),
+            Time {
+                sec: 2,
+                nanosec: 1_000_000
+            }
+        );
         assert_eq!(c.follower().unwrap().due(), 2);
     }
 
@@ -218,7 +247,10 @@ mod tests {
     #[test]
     fn realtime_factor_scales_the_period() {
         let t0 = Instant::now();
-        assert_eq!(Pacer::new(1e-3, 2.0, t0).period(), Some(Duration::from_micros(500)));
+        assert_eq!(
+            Pacer::new(1e-3, 2.0, t0).period(),
+            Some(Duration::from_micros(500))
+        );
         assert_eq!(Pacer::new(1e-3, 0.0, t0).period(), None);
         let mut p = Pacer::new(1e-3, 0.0, t0);
         p.stepped(t0 + Duration::from_secs(1));

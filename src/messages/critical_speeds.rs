@@ -34,11 +34,21 @@ pub fn near(speeds: &[CriticalSpeed], joint_speed: f64) -> Option<&CriticalSpeed
 /// `<node>: critical speeds`: WARN naming the mode ⟨k, l⟩, the joint speed
 /// and the critical speed while |Ω| is within 5 % of one; OK otherwise.
 pub fn status(node_name: &str, speeds: &[CriticalSpeed], joint_speed: f64) -> DiagnosticStatus {
-    let kv = |k: &str, v: String| KeyValue { key: k.to_string(), value: v };
-    let mut values = vec![kv("joint_speed_rad_s", format!("{joint_speed}")), kv("critical_speeds", speeds.len().to_string())];
+    let kv = |k: &str, v: String| KeyValue {
+        key: k.to_string(),
+        value: v,
+    };
+    let mut values = vec![
+        kv("joint_speed_rad_s", format!("{joint_speed}")),
+        kv("critical_speeds", speeds.len().to_string()),
+    ];
     let (level, message) = match near(speeds, joint_speed) {
         Some(s) => {
-            values.extend([kv("near_k", s.k.to_string()), kv("near_l", s.l.to_string()), kv("near_rad_s", format!("{}", s.rad_s))]);
+            values.extend([
+                kv("near_k", s.k.to_string()),
+                kv("near_l", s.l.to_string()),
+                kv("near_rad_s", format!("{}", s.rad_s)),
+            ]);
             (
                 DiagnosticStatus::WARN,
                 format!(
@@ -51,10 +61,22 @@ pub fn status(node_name: &str, speeds: &[CriticalSpeed], joint_speed: f64) -> Di
                 ),
             )
         }
-        None if speeds.is_empty() => (DiagnosticStatus::OK, "no critical speeds in the mode set".to_string()),
-        None => (DiagnosticStatus::OK, "joint speed more than 5 % from every critical speed".to_string()),
+        None if speeds.is_empty() => (
+            DiagnosticStatus::OK,
+            "no critical speeds in the mode set".to_string(),
+        ),
+        None => (
+            DiagnosticStatus::OK,
+            "joint speed more than 5 % from every critical speed".to_string(),
+        ),
     };
-    DiagnosticStatus { level, name: format!("{node_name}: critical speeds"), message, hardware_id: node_name.to_string(), values }
+    DiagnosticStatus {
+        level,
+        name: format!("{node_name}: critical speeds"),
+        message,
+        hardware_id: node_name.to_string(),
+        values,
+    }
 }
 
 #[cfg(test)]
@@ -62,21 +84,54 @@ mod tests {
     use super::*;
 
     fn speeds() -> Vec<CriticalSpeed> {
-        vec![CriticalSpeed { k: 2, l: 0, rad_s: 458.0 }, CriticalSpeed { k: 3, l: 0, rad_s: 480.0 }, CriticalSpeed { k: 2, l: 1, rad_s: 2000.0 }]
+        vec![
+            CriticalSpeed {
+                k: 2,
+                l: 0,
+                rad_s: 458.0,
+            },
+            CriticalSpeed {
+                k: 3,
+                l: 0,
+                rad_s: 480.0,
+            },
+            CriticalSpeed {
+                k: 2,
+                l: 1,
+                rad_s: 2000.0,
+            },
+        ]
     }
 
     #[test]
     fn warns_within_five_percent_of_a_critical_speed_naming_the_nearest_mode_and_both_speeds() {
         let s = speeds();
         // 458 · 0.95 = 435.1 and 458 · 1.05 = 480.9: the band's edges.
-        for (w, expected) in [(0.0, None), (435.0, None), (435.2, Some((2, 0))), (458.0, Some((2, 0))), (-460.0, Some((2, 0))), (470.0, Some((3, 0))), (505.0, None), (505.9, None), (1900.5, Some((2, 1))), (2100.1, None)] {
+        for (w, expected) in [
+            (0.0, None),
+            (435.0, None),
+            (435.2, Some((2, 0))),
+            (458.0, Some((2, 0))),
+            (-460.0, Some((2, 0))),
+            (470.0, Some((3, 0))),
+            (505.0, None),
+            (505.9, None),
+            (1900.5, Some((2, 1))),
+            (2100.1, None),
+        ] {
             let st = status("/n", &s, w);
             let got = near(&s, w).map(|c| (c.k, c.l));
             assert_eq!(got, expected, "Ω = {w}");
             if let Some((k, l)) = expected {
                 assert_eq!(st.level, DiagnosticStatus::WARN, "Ω = {w}");
                 let c = s.iter().find(|c| c.k == k && c.l == l).unwrap();
-                assert!(st.message.contains(&format!("<{k}, {l}>")) && st.message.contains(&format!("{:.1}", c.rad_s)) && st.message.contains(&format!("{:.1}", w.abs())), "{}", st.message);
+                assert!(
+                    st.message.contains(&format!("<{k}, {l}>"))
+                        && st.message.contains(&format!("{:.1}", c.rad_s))
+                        && st.message.contains(&format!("{:.1}", w.abs())),
+                    "{}",
+                    st.message
+                );
             } else {
                 assert_eq!(st.level, DiagnosticStatus::OK, "Ω = {w}: {}", st.message);
             }
@@ -91,6 +146,9 @@ mod tests {
     fn the_message_lists_every_critical_speed_in_order() {
         let m = message(&speeds(), true);
         assert!(m.centrifugal_stiffening);
-        assert_eq!((m.k, m.l, m.rad_s), (vec![2, 3, 2], vec![0, 0, 1], vec![458.0, 480.0, 2000.0]));
+        assert_eq!(
+            (m.k, m.l, m.rad_s),
+            (vec![2, 3, 2], vec![0, 0, 1], vec![458.0, 480.0, 2000.0])
+        );
     }
 }

@@ -41,19 +41,27 @@ impl Timing {
 
     /// A step that started at `start` and took `work`; `deadline` and
     /// `nominal` period when paced.
-    pub fn record(&mut self, start: Instant, deadline: Option<Instant>, nominal: Option<Duration>, work: Duration) {
+    pub fn record(
+        &mut self,
+        start: Instant,
+        deadline: Option<Instant>,
+        nominal: Option<Duration>,
+        work: Duration,
+    ) {
         let us = work.as_secs_f64() * 1e6;
         self.work_us_sum += us;
         self.work_us_max = self.work_us_max.max(us);
         self.steps += 1;
         if let (Some(deadline), Some(nominal)) = (deadline, nominal) {
             if self.late_us.len() < TIMING_CAPACITY {
-                self.late_us.push(start.saturating_duration_since(deadline).as_secs_f32() * 1e6);
+                self.late_us
+                    .push(start.saturating_duration_since(deadline).as_secs_f32() * 1e6);
             }
             if let Some(last) = self.last_start {
                 if self.period_dev_us.len() < TIMING_CAPACITY {
                     let period = start.duration_since(last).as_secs_f64();
-                    self.period_dev_us.push(((period - nominal.as_secs_f64()).abs() * 1e6) as f32);
+                    self.period_dev_us
+                        .push(((period - nominal.as_secs_f64()).abs() * 1e6) as f32);
                 }
             }
             self.last_start = Some(start);
@@ -82,15 +90,44 @@ impl Timing {
         let wall = now.duration_since(self.since).as_secs_f64();
         let out = vec![
             ("steps_in_period".into(), self.steps.to_string()),
-            ("achieved_rate_hz".into(), format!("{:.1}", if wall > 0.0 { self.steps as f64 / wall } else { 0.0 })),
+            (
+                "achieved_rate_hz".into(),
+                format!(
+                    "{:.1}",
+                    if wall > 0.0 {
+                        self.steps as f64 / wall
+                    } else {
+                        0.0
+                    }
+                ),
+            ),
             (
                 "step_time_mean_us".into(),
-                format!("{:.1}", if self.steps > 0 { self.work_us_sum / self.steps as f64 } else { 0.0 }),
+                format!(
+                    "{:.1}",
+                    if self.steps > 0 {
+                        self.work_us_sum / self.steps as f64
+                    } else {
+                        0.0
+                    }
+                ),
             ),
-            ("step_time_max_us".into(), format!("{:.1}", self.work_us_max)),
-            ("period_jitter_p50_us".into(), format!("{:.1}", Self::percentile(&mut self.period_dev_us, 0.5))),
-            ("period_jitter_p99_us".into(), format!("{:.1}", Self::percentile(&mut self.period_dev_us, 0.99))),
-            ("lateness_p99_us".into(), format!("{:.1}", Self::percentile(&mut self.late_us, 0.99))),
+            (
+                "step_time_max_us".into(),
+                format!("{:.1}", self.work_us_max),
+            ),
+            (
+                "period_jitter_p50_us".into(),
+                format!("{:.1}", Self::percentile(&mut self.period_dev_us, 0.5)),
+            ),
+            (
+                "period_jitter_p99_us".into(),
+                format!("{:.1}", Self::percentile(&mut self.period_dev_us, 0.99)),
+            ),
+            (
+                "lateness_p99_us".into(),
+                format!("{:.1}", Self::percentile(&mut self.late_us, 0.99)),
+            ),
         ];
         self.period_dev_us.clear();
         self.late_us.clear();
@@ -143,7 +180,10 @@ pub struct RecordReport {
 }
 
 fn kv(k: &str, v: String) -> KeyValue {
-    KeyValue { key: k.to_string(), value: v }
+    KeyValue {
+        key: k.to_string(),
+        value: v,
+    }
 }
 
 /// `<node>: simulation`.
@@ -182,24 +222,51 @@ pub fn simulation_status(node_name: &str, r: &LoopReport) -> DiagnosticStatus {
         values.push(kv("clock_jumps_forward", j.to_string()));
     }
     values.extend(r.timing.iter().map(|(k, v)| kv(k, v.clone())));
-    DiagnosticStatus { level, name: format!("{node_name}: simulation"), message, hardware_id: node_name.to_string(), values }
+    DiagnosticStatus {
+        level,
+        name: format!("{node_name}: simulation"),
+        message,
+        hardware_id: node_name.to_string(),
+        values,
+    }
 }
 
 /// `<node>: inputs`; `new_rejected` = rejections since the last report.
 /// `reception` (the node only): how the input datagrams are read,
 /// `ros/step_aligned_receive.rs`.
-pub fn inputs_status(node_name: &str, s: &InputStats, new_rejected: u64, reception: Option<&str>) -> DiagnosticStatus {
-    let mut values: Vec<KeyValue> =
-        Source::ALL.iter().map(|src| kv(&format!("accepted_{}", src.name()), s.accepted(*src).to_string())).collect();
+pub fn inputs_status(
+    node_name: &str,
+    s: &InputStats,
+    new_rejected: u64,
+    reception: Option<&str>,
+) -> DiagnosticStatus {
+    let mut values: Vec<KeyValue> = Source::ALL
+        .iter()
+        .map(|src| {
+            kv(
+                &format!("accepted_{}", src.name()),
+                s.accepted(*src).to_string(),
+            )
+        })
+        .collect();
     values.push(kv("accepted_total", s.accepted_total().to_string()));
     values.push(kv("rejected_total", s.rejected_total().to_string()));
-    values.extend(RejectReason::ALL.iter().map(|r| kv(&format!("rejected_{}", r.name()), s.rejected(*r).to_string())));
+    values.extend(RejectReason::ALL.iter().map(|r| {
+        kv(
+            &format!("rejected_{}", r.name()),
+            s.rejected(*r).to_string(),
+        )
+    }));
     values.push(kv("expired_wrenches", s.expired().to_string()));
     if let Some(reception) = reception {
         values.push(kv("input_reception", reception.to_string()));
     }
     DiagnosticStatus {
-        level: if new_rejected > 0 { DiagnosticStatus::WARN } else { DiagnosticStatus::OK },
+        level: if new_rejected > 0 {
+            DiagnosticStatus::WARN
+        } else {
+            DiagnosticStatus::OK
+        },
         name: format!("{node_name}: inputs"),
         message: if new_rejected > 0 {
             format!("{new_rejected} inputs rejected since the last report")
@@ -218,7 +285,10 @@ pub fn recording_status(node_name: &str, r: &RecordReport) -> DiagnosticStatus {
         Some(e) => (DiagnosticStatus::ERROR, format!("recording stopped: {e}")),
         None if r.new_dropped > 0 => (
             DiagnosticStatus::WARN,
-            format!("{} messages dropped since the last report: the bag writer fell behind", r.new_dropped),
+            format!(
+                "{} messages dropped since the last report: the bag writer fell behind",
+                r.new_dropped
+            ),
         ),
         None => (DiagnosticStatus::OK, format!("recording to {}", r.path)),
     };
@@ -231,7 +301,10 @@ pub fn recording_status(node_name: &str, r: &RecordReport) -> DiagnosticStatus {
             kv("record_path", r.path.clone()),
             kv("record_handed", r.handed.to_string()),
             kv("record_written", r.written.to_string()),
-            kv("record_queued", r.handed.saturating_sub(r.written + r.dropped).to_string()),
+            kv(
+                "record_queued",
+                r.handed.saturating_sub(r.written + r.dropped).to_string(),
+            ),
             kv("record_dropped", r.dropped.to_string()),
             kv("record_queue_capacity", r.capacity.to_string()),
             kv("record_error", r.error.clone().unwrap_or_default()),
@@ -241,7 +314,13 @@ pub fn recording_status(node_name: &str, r: &RecordReport) -> DiagnosticStatus {
 
 /// The whole message.
 pub fn diagnostics_message(stamp: Time, status: Vec<DiagnosticStatus>) -> DiagnosticArray {
-    DiagnosticArray { header: Header { stamp, frame_id: String::new() }, status }
+    DiagnosticArray {
+        header: Header {
+            stamp,
+            frame_id: String::new(),
+        },
+        status,
+    }
 }
 
 #[cfg(test)]
@@ -275,7 +354,10 @@ mod tests {
         assert_eq!(simulation_status("/n", &r).level, DiagnosticStatus::WARN);
         r.diverged = Some("NaN".into());
         let s = simulation_status("/n", &r);
-        assert_eq!((s.level, s.name.as_str()), (DiagnosticStatus::ERROR, "/n: simulation"));
+        assert_eq!(
+            (s.level, s.name.as_str()),
+            (DiagnosticStatus::ERROR, "/n: simulation")
+        );
         assert!(s.values.iter().any(|v| v.key == "steps_in_period"));
     }
 
@@ -287,11 +369,21 @@ mod tests {
         let s = simulation_status("/n", &r);
         assert_eq!(s.level, DiagnosticStatus::WARN);
         assert!(s.message.contains("ros.max_clock_jump"), "{}", s.message);
-        assert!(s.values.contains(&KeyValue { key: "clock_jumps_forward".into(), value: "1".into() }));
+        assert!(s.values.contains(&KeyValue {
+            key: "clock_jumps_forward".into(),
+            value: "1".into()
+        }));
         r.new_clock_jumps = 0;
         let s = simulation_status("/n", &r);
-        assert_eq!(s.level, DiagnosticStatus::OK, "the next report is OK, the count stays");
-        assert!(s.values.contains(&KeyValue { key: "clock_jumps_forward".into(), value: "1".into() }));
+        assert_eq!(
+            s.level,
+            DiagnosticStatus::OK,
+            "the next report is OK, the count stays"
+        );
+        assert!(s.values.contains(&KeyValue {
+            key: "clock_jumps_forward".into(),
+            value: "1".into()
+        }));
     }
 
     #[test]
@@ -307,7 +399,10 @@ mod tests {
         };
         let s = recording_status("/n", &r);
         assert_eq!(s.level, DiagnosticStatus::OK);
-        assert!(s.values.contains(&KeyValue { key: "record_queued".into(), value: "2".into() }));
+        assert!(s.values.contains(&KeyValue {
+            key: "record_queued".into(),
+            value: "2".into()
+        }));
         r.new_dropped = 1;
         assert_eq!(recording_status("/n", &r).level, DiagnosticStatus::WARN);
         r.error = Some("disk full".into());

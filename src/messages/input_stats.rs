@@ -45,14 +45,19 @@ impl RejectReason {
     }
 
     pub(crate) fn index(self) -> usize {
-        RejectReason::ALL.iter().position(|r| *r == self).unwrap_or(0)
+        RejectReason::ALL
+            .iter()
+            .position(|r| *r == self)
+            .unwrap_or(0)
     }
 
     /// The kind of an input refused by the dynamics' rules (a missing pad or
     /// tool counts as a missing node).
     pub fn of_input_error(e: &InputError) -> Self {
         match e {
-            InputError::NonFinite { .. } | InputError::SpeedNotFinite { .. } => RejectReason::NonFinite,
+            InputError::NonFinite { .. } | InputError::SpeedNotFinite { .. } => {
+                RejectReason::NonFinite
+            }
             InputError::Absurd { .. } | InputError::SpeedBeyondLimit { .. } => RejectReason::Absurd,
             InputError::NoSuchNode { .. }
             | InputError::NoSuchInstance { .. }
@@ -75,8 +80,14 @@ pub enum Source {
 }
 
 impl Source {
-    pub const ALL: [Source; 6] =
-        [Source::SpeedCommand, Source::NodeWrench, Source::WrenchArray, Source::PadClampForce, Source::PadClampForces, Source::ToolFeed];
+    pub const ALL: [Source; 6] = [
+        Source::SpeedCommand,
+        Source::NodeWrench,
+        Source::WrenchArray,
+        Source::PadClampForce,
+        Source::PadClampForces,
+        Source::ToolFeed,
+    ];
 
     /// The counter of a load-model command: numbered instances one at a time
     /// (`pad_clamp_force`), their batch (`pad_clamp_forces`), or a single
@@ -133,7 +144,10 @@ impl InputStats {
     }
 
     pub fn accepted_total(&self) -> u64 {
-        self.accepted.iter().map(|a| a.load(Ordering::Relaxed)).sum()
+        self.accepted
+            .iter()
+            .map(|a| a.load(Ordering::Relaxed))
+            .sum()
     }
 
     pub fn rejected(&self, reason: RejectReason) -> u64 {
@@ -141,7 +155,10 @@ impl InputStats {
     }
 
     pub fn rejected_total(&self) -> u64 {
-        self.rejected.iter().map(|a| a.load(Ordering::Relaxed)).sum()
+        self.rejected
+            .iter()
+            .map(|a| a.load(Ordering::Relaxed))
+            .sum()
     }
 
     pub fn expired(&self) -> u64 {

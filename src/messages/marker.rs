@@ -52,7 +52,12 @@ pub struct MarkerSettings {
 impl Default for MarkerSettings {
     /// 30 Hz, 8 × 128 cells (2,048 triangles), auto scale.
     fn default() -> Self {
-        MarkerSettings { rate_hz: 30.0, rings: 8, sectors: 128, scale: MarkerScale::Auto }
+        MarkerSettings {
+            rate_hz: 30.0,
+            rings: 8,
+            sectors: 128,
+            scale: MarkerScale::Auto,
+        }
     }
 }
 
@@ -90,8 +95,12 @@ impl MarkerGrid {
     pub fn new(model: &PlateModel, rings: u32, sectors: u32) -> MarkerGrid {
         let p = model.plate();
         let (ri, ra) = (p.inner_radius, p.outer_radius);
-        let radii: Vec<f64> = (0..=rings).map(|j| ri + (ra - ri) * j as f64 / rings as f64).collect();
-        let angles: Vec<f64> = (0..sectors).map(|s| std::f64::consts::TAU * s as f64 / sectors as f64).collect();
+        let radii: Vec<f64> = (0..=rings)
+            .map(|j| ri + (ra - ri) * j as f64 / rings as f64)
+            .collect();
+        let angles: Vec<f64> = (0..sectors)
+            .map(|s| std::f64::consts::TAU * s as f64 / sectors as f64)
+            .collect();
         let mut radial = Vec::with_capacity(model.n_modes() * radii.len());
         let mut angular = Vec::with_capacity(model.n_modes() * angles.len());
         for m in model.modes() {
@@ -100,7 +109,13 @@ impl MarkerGrid {
             angular.extend(angles.iter().map(|&phi| m.shape.eval(m.k, phi).0));
         }
         let directions = angles.iter().map(|a| (a.cos(), a.sin())).collect();
-        MarkerGrid { radii, angles, radial, angular, directions }
+        MarkerGrid {
+            radii,
+            angles,
+            radial,
+            angular,
+            directions,
+        }
     }
 
     /// w at every grid vertex, ring-major (`w[j * sectors + s]`), for the
@@ -202,7 +217,12 @@ pub struct PlateMarker {
 
 impl PlateMarker {
     /// `markers_per_second`: the actual marker rate (for the one-second window of `auto`).
-    pub fn new(model: &PlateModel, frames: &FrameNames, settings: &MarkerSettings, markers_per_second: f64) -> PlateMarker {
+    pub fn new(
+        model: &PlateModel,
+        frames: &FrameNames,
+        settings: &MarkerSettings,
+        markers_per_second: f64,
+    ) -> PlateMarker {
         let grid = MarkerGrid::new(model, settings.rings, settings.sectors);
         let w = vec![0.0; grid.vertex_count()];
         let len = markers_per_second.ceil().max(1.0) as usize;
@@ -211,7 +231,10 @@ impl PlateMarker {
             settings: *settings,
             frames: frames.clone(),
             outer_radius: model.plate().outer_radius,
-            recent: RecentMaximum { window: VecDeque::with_capacity(len), len },
+            recent: RecentMaximum {
+                window: VecDeque::with_capacity(len),
+                len,
+            },
             w,
             message: Shared::new(MarkerArray::default()),
             scale: 1.0,
@@ -240,16 +263,40 @@ impl PlateMarker {
         self.colour_reference = self.recent.push(w_max);
         self.scale = match self.settings.scale {
             MarkerScale::Fixed(s) => s,
-            MarkerScale::Auto if self.colour_reference > 0.0 => AUTO_FRACTION * self.outer_radius / self.colour_reference,
+            MarkerScale::Auto if self.colour_reference > 0.0 => {
+                AUTO_FRACTION * self.outer_radius / self.colour_reference
+            }
             MarkerScale::Auto => 1.0,
         };
-        let f_max = input.ale_forces.iter().chain(&input.lagrange_forces).map(|f| norm(*f)).fold(0.0, f64::max);
-        self.force_scale = if f_max > 0.0 { ARROW_FRACTION * self.outer_radius / f_max } else { 0.0 };
-        let header = |frame: &str| Header { stamp: input.stamp, frame_id: frame.to_string() };
-        let mut markers = Vec::with_capacity(2 + input.ale_forces.len() + input.lagrange_forces.len());
-        markers.push(Marker { header: header(&self.frames.rotor), action: Marker::DELETEALL, ..Marker::default() });
+        let f_max = input
+            .ale_forces
+            .iter()
+            .chain(&input.lagrange_forces)
+            .map(|f| norm(*f))
+            .fold(0.0, f64::max);
+        self.force_scale = if f_max > 0.0 {
+            ARROW_FRACTION * self.outer_radius / f_max
+        } else {
+            0.0
+        };
+        let header = |frame: &str| Header {
+            stamp: input.stamp,
+            frame_id: frame.to_string(),
+        };
+        let mut markers =
+            Vec::with_capacity(2 + input.ale_forces.len() + input.lagrange_forces.len());
+        markers.push(Marker {
+            header: header(&self.frames.rotor),
+            action: Marker::DELETEALL,
+            ..Marker::default()
+        });
         markers.push(self.mesh(header(&self.frames.rotor)));
-        let nodes = self.frames.ale.iter().zip(&input.ale_forces).chain(self.frames.lagrange.iter().zip(&input.lagrange_forces));
+        let nodes = self
+            .frames
+            .ale
+            .iter()
+            .zip(&input.ale_forces)
+            .chain(self.frames.lagrange.iter().zip(&input.lagrange_forces));
         for (frame, force) in nodes {
             if norm(*force) > 0.0 {
                 let id = markers.len() as i32 - 2;
@@ -268,13 +315,35 @@ impl PlateMarker {
         let mut colors = Vec::with_capacity(points.capacity());
         let vertex = |j: usize, s: usize| {
             let s = s % ns;
-            let (r, (c, sn), w) = (self.grid.radii[j], self.grid.directions[s], self.w[j * ns + s]);
-            let t = if self.colour_reference > 0.0 { w / self.colour_reference } else { 0.0 };
-            (Point { x: r * c, y: r * sn, z: self.scale * w }, colour(t))
+            let (r, (c, sn), w) = (
+                self.grid.radii[j],
+                self.grid.directions[s],
+                self.w[j * ns + s],
+            );
+            let t = if self.colour_reference > 0.0 {
+                w / self.colour_reference
+            } else {
+                0.0
+            };
+            (
+                Point {
+                    x: r * c,
+                    y: r * sn,
+                    z: self.scale * w,
+                },
+                colour(t),
+            )
         };
         for j in 0..nr - 1 {
             for s in 0..ns {
-                for (jj, ss) in [(j, s), (j + 1, s), (j + 1, s + 1), (j, s), (j + 1, s + 1), (j, s + 1)] {
+                for (jj, ss) in [
+                    (j, s),
+                    (j + 1, s),
+                    (j + 1, s + 1),
+                    (j, s),
+                    (j + 1, s + 1),
+                    (j, s + 1),
+                ] {
                     let (p, c) = vertex(jj, ss);
                     points.push(p);
                     colors.push(c);
@@ -288,8 +357,17 @@ impl PlateMarker {
             kind: Marker::TRIANGLE_LIST,
             action: Marker::ADD,
             pose: Default::default(),
-            scale: Vector3 { x: 1.0, y: 1.0, z: 1.0 },
-            color: ColorRGBA { r: 1.0, g: 1.0, b: 1.0, a: 1.0 },
+            scale: Vector3 {
+                x: 1.0,
+                y: 1.0,
+                z: 1.0,
+            },
+            color: ColorRGBA {
+                r: 1.0,
+                g: 1.0,
+                b: 1.0,
+                a: 1.0,
+            },
             points,
             colors,
             text: self.text(),
@@ -308,9 +386,25 @@ impl PlateMarker {
             kind: Marker::ARROW,
             action: Marker::ADD,
             pose: Default::default(),
-            scale: Vector3 { x: d, y: 2.0 * d, z: 3.0 * d },
-            color: ColorRGBA { r: 0.1, g: 0.6, b: 0.1, a: 1.0 },
-            points: vec![Point { x: -s * f[0], y: -s * f[1], z: -s * f[2] }, Point::default()],
+            scale: Vector3 {
+                x: d,
+                y: 2.0 * d,
+                z: 3.0 * d,
+            },
+            color: ColorRGBA {
+                r: 0.1,
+                g: 0.6,
+                b: 0.1,
+                a: 1.0,
+            },
+            points: vec![
+                Point {
+                    x: -s * f[0],
+                    y: -s * f[1],
+                    z: -s * f[2],
+                },
+                Point::default(),
+            ],
             text: format!("force_n={:e}", norm(f)),
             ..Marker::default()
         }
@@ -340,6 +434,13 @@ mod tests {
         let s = MarkerSettings::default();
         assert_eq!(s.every(1000.0), Some(33));
         assert_eq!(MarkerSettings { rate_hz: 0.0, ..s }.every(1000.0), None);
-        assert_eq!(MarkerSettings { rate_hz: 5000.0, ..s }.every(1000.0), Some(1));
+        assert_eq!(
+            MarkerSettings {
+                rate_hz: 5000.0,
+                ..s
+            }
+            .every(1000.0),
+            Some(1)
+        );
     }
 }

@@ -69,7 +69,11 @@ pub enum ArgsError {
     /// Not a ROS argument (inside `--ros-args`), or outside of any block.
     Unknown { arg: String },
     /// A remap or parameter rule without `:=`.
-    BadRule { flag: String, rule: String, reason: String },
+    BadRule {
+        flag: String,
+        rule: String,
+        reason: String,
+    },
     /// An invalid node name, namespace or topic name.
     BadName { name: String, reason: String },
     /// `ROS_DOMAIN_ID` is not an integer in 0..=232.
@@ -102,7 +106,11 @@ impl RosArgs {
     /// Parse ROS arguments (see the module documentation).
     pub fn parse<S: AsRef<str>>(args: &[S]) -> Result<RosArgs, ArgsError> {
         let args: Vec<&str> = args.iter().map(AsRef::as_ref).collect();
-        let mut out = RosArgs { rosout_logs: true, stdout_logs: true, ..RosArgs::default() };
+        let mut out = RosArgs {
+            rosout_logs: true,
+            stdout_logs: true,
+            ..RosArgs::default()
+        };
         let has_marker = args.contains(&"--ros-args");
         let mut in_block = !has_marker;
         let mut i = 0;
@@ -114,14 +122,21 @@ impl RosArgs {
                 continue;
             }
             if !in_block {
-                return Err(ArgsError::Unknown { arg: arg.to_string() });
+                return Err(ArgsError::Unknown {
+                    arg: arg.to_string(),
+                });
             }
             if arg == "--" {
                 in_block = !has_marker;
                 continue;
             }
             let mut value = |flag: &str| -> Result<&str, ArgsError> {
-                let v = args.get(i).copied().ok_or_else(|| ArgsError::MissingValue { flag: flag.to_string() })?;
+                let v = args
+                    .get(i)
+                    .copied()
+                    .ok_or_else(|| ArgsError::MissingValue {
+                        flag: flag.to_string(),
+                    })?;
                 i += 1;
                 Ok(v)
             };
@@ -136,7 +151,11 @@ impl RosArgs {
                     if name.is_empty() {
                         return Err(bad_rule(arg, rule, "the parameter name is empty"));
                     }
-                    out.params.push(ParamArg { node, name: name.to_string(), value: v.to_string() });
+                    out.params.push(ParamArg {
+                        node,
+                        name: name.to_string(),
+                        value: v.to_string(),
+                    });
                 }
                 "--params-file" => out.params_files.push(PathBuf::from(value(arg)?)),
                 "--log-level" => {
@@ -153,7 +172,11 @@ impl RosArgs {
                     value(arg)?;
                 }
                 _ if IGNORED_FLAGS.contains(&arg) => {}
-                _ => return Err(ArgsError::Unknown { arg: arg.to_string() }),
+                _ => {
+                    return Err(ArgsError::Unknown {
+                        arg: arg.to_string(),
+                    })
+                }
             }
         }
         Ok(out)
@@ -170,14 +193,22 @@ impl RosArgs {
                 self.node_renames.push((node, to.to_string()));
             }
             "__ns" => {
-                let ns = if to.starts_with('/') { to.to_string() } else { format!("/{to}") };
+                let ns = if to.starts_with('/') {
+                    to.to_string()
+                } else {
+                    format!("/{to}")
+                };
                 check_namespace(&ns)?;
                 self.namespace_rules.push((node, ns));
             }
             _ => {
                 check_topic_name(from)?;
                 check_topic_name(to)?;
-                self.remaps.push(Remap { node, from: from.to_string(), to: to.to_string() });
+                self.remaps.push(Remap {
+                    node,
+                    from: from.to_string(),
+                    to: to.to_string(),
+                });
             }
         }
         Ok(())
@@ -205,18 +236,35 @@ impl RosArgs {
     }
 
     /// Parameters given with `-p` for this node, in order (later ones win).
-    pub fn params_for<'a>(&'a self, node_name: &'a str, default_node_name: &'a str) -> impl Iterator<Item = &'a ParamArg> + 'a {
-        self.params.iter().filter(move |p| p.node.as_deref().is_none_or(|n| n == node_name || n == default_node_name))
+    pub fn params_for<'a>(
+        &'a self,
+        node_name: &'a str,
+        default_node_name: &'a str,
+    ) -> impl Iterator<Item = &'a ParamArg> + 'a {
+        self.params.iter().filter(move |p| {
+            p.node
+                .as_deref()
+                .is_none_or(|n| n == node_name || n == default_node_name)
+        })
     }
 }
 
 fn bad_rule(flag: &str, rule: &str, reason: &str) -> ArgsError {
-    ArgsError::BadRule { flag: flag.to_string(), rule: rule.to_string(), reason: reason.to_string() }
+    ArgsError::BadRule {
+        flag: flag.to_string(),
+        rule: rule.to_string(),
+        reason: reason.to_string(),
+    }
 }
 
 /// `[node:]left:=right` → (node, left, right).
-fn split_rule<'a>(flag: &str, rule: &'a str) -> Result<(Option<String>, &'a str, &'a str), ArgsError> {
-    let (left, right) = rule.split_once(":=").ok_or_else(|| bad_rule(flag, rule, "expected `name:=value`"))?;
+fn split_rule<'a>(
+    flag: &str,
+    rule: &'a str,
+) -> Result<(Option<String>, &'a str, &'a str), ArgsError> {
+    let (left, right) = rule
+        .split_once(":=")
+        .ok_or_else(|| bad_rule(flag, rule, "expected `name:=value`"))?;
     match left.split_once(':') {
         Some((node, name)) => {
             if node.is_empty() {
@@ -241,7 +289,9 @@ fn check_base_name(name: &str) -> Result<(), ArgsError> {
     } else {
         Err(ArgsError::BadName {
             name: name.to_string(),
-            reason: "a node name is letters, digits and single underscores, not starting with a digit".into(),
+            reason:
+                "a node name is letters, digits and single underscores, not starting with a digit"
+                    .into(),
         })
     }
 }
@@ -250,7 +300,12 @@ fn check_namespace(ns: &str) -> Result<(), ArgsError> {
     if ns == "/" {
         return Ok(());
     }
-    let bad = |reason: &str| Err(ArgsError::BadName { name: ns.to_string(), reason: reason.to_string() });
+    let bad = |reason: &str| {
+        Err(ArgsError::BadName {
+            name: ns.to_string(),
+            reason: reason.to_string(),
+        })
+    };
     if ns.ends_with('/') {
         return bad("a namespace must not end with `/`");
     }
@@ -275,7 +330,9 @@ fn check_topic_name(name: &str) -> Result<(), ArgsError> {
     if rest.is_empty() || !rest.split('/').all(valid_token) {
         return Err(ArgsError::BadName {
             name: name.to_string(),
-            reason: "each token is letters, digits and single underscores, not starting with a digit".into(),
+            reason:
+                "each token is letters, digits and single underscores, not starting with a digit"
+                    .into(),
         });
     }
     Ok(())
@@ -298,10 +355,18 @@ impl NameResolver {
         let namespace = args.namespace(default_node);
         check_base_name(&node)?;
         check_namespace(&namespace)?;
-        let mut r = NameResolver { node, namespace, remaps: Vec::new() };
+        let mut r = NameResolver {
+            node,
+            namespace,
+            remaps: Vec::new(),
+        };
         let mut remaps = Vec::new();
         for rule in &args.remaps {
-            if rule.node.as_deref().is_some_and(|n| n != default_node && n != r.node) {
+            if rule
+                .node
+                .as_deref()
+                .is_some_and(|n| n != default_node && n != r.node)
+            {
                 continue;
             }
             remaps.push((r.expand(&rule.from)?, r.expand(&rule.to)?));
@@ -347,7 +412,11 @@ impl NameResolver {
     /// The fully qualified name after remapping.
     pub fn resolve(&self, name: &str) -> Result<String, ArgsError> {
         let expanded = self.expand(name)?;
-        Ok(self.remaps.iter().find(|(from, _)| *from == expanded).map_or(expanded, |(_, to)| to.clone()))
+        Ok(self
+            .remaps
+            .iter()
+            .find(|(from, _)| *from == expanded)
+            .map_or(expanded, |(_, to)| to.clone()))
     }
 }
 
@@ -357,7 +426,9 @@ pub fn domain_id_from_env(value: Option<&str>) -> Result<u16, ArgsError> {
         None | Some("") => Ok(0),
         Some(v) => match v.parse::<u16>() {
             Ok(d) if d <= 232 => Ok(d),
-            _ => Err(ArgsError::BadDomainId { value: v.to_string() }),
+            _ => Err(ArgsError::BadDomainId {
+                value: v.to_string(),
+            }),
         },
     }
 }
@@ -390,13 +461,23 @@ mod tests {
         assert_eq!(a.node_name("annular_plate"), "brake");
         assert_eq!(a.namespace("annular_plate"), "/bench");
         assert_eq!(a.params_files, vec![PathBuf::from("/tmp/p.yaml")]);
-        assert_eq!(a.params, vec![ParamArg { node: None, name: "simulation.rate_hz".into(), value: "500.0".into() }]);
+        assert_eq!(
+            a.params,
+            vec![ParamArg {
+                node: None,
+                name: "simulation.rate_hz".into(),
+                value: "500.0".into()
+            }]
+        );
         assert_eq!(a.log_level.as_deref(), Some("warn"));
         assert!(a.rosout_logs);
         let r = NameResolver::new(&a, "annular_plate").unwrap();
         assert_eq!(r.fully_qualified_node_name(), "/bench/brake");
         assert_eq!(r.resolve("/joint_states").unwrap(), "/plate/joint_states");
-        assert_eq!(r.resolve("~/speed_command").unwrap(), "/bench/brake/speed_command");
+        assert_eq!(
+            r.resolve("~/speed_command").unwrap(),
+            "/bench/brake/speed_command"
+        );
         assert_eq!(r.resolve("tf").unwrap(), "/bench/tf");
         assert_eq!(r.resolve("/tf").unwrap(), "/tf");
     }
@@ -407,19 +488,32 @@ mod tests {
         assert_eq!(a.node_name("annular_plate"), "annular_plate");
         assert_eq!(a.namespace("annular_plate"), "/");
         let r = NameResolver::new(&a, "annular_plate").unwrap();
-        assert_eq!(r.resolve("~/ale_1/wrench").unwrap(), "/annular_plate/ale_1/wrench");
+        assert_eq!(
+            r.resolve("~/ale_1/wrench").unwrap(),
+            "/annular_plate/ale_1/wrench"
+        );
         assert_eq!(r.resolve("~").unwrap(), "/annular_plate");
         assert_eq!(r.resolve("clock").unwrap(), "/clock");
     }
 
     #[test]
     fn blocks_end_with_double_dash_and_may_repeat() {
-        let a = parse(&["--ros-args", "-r", "__node:=a", "--", "--ros-args", "--remap", "__name:=b"]);
+        let a = parse(&[
+            "--ros-args",
+            "-r",
+            "__node:=a",
+            "--",
+            "--ros-args",
+            "--remap",
+            "__name:=b",
+        ]);
         assert_eq!(a.node_name("x"), "b");
         // Outside a block nothing is accepted.
         assert_eq!(
             RosArgs::parse(&["--ros-args", "-r", "__node:=a", "--", "stray"]),
-            Err(ArgsError::Unknown { arg: "stray".into() })
+            Err(ArgsError::Unknown {
+                arg: "stray".into()
+            })
         );
     }
 
@@ -433,7 +527,15 @@ mod tests {
 
     #[test]
     fn relative_remaps_resolve_in_the_namespace() {
-        let a = parse(&["--ros-args", "-r", "__ns:=/ns", "-r", "~/speed_command:=cmd", "-r", "joint_states:=/js"]);
+        let a = parse(&[
+            "--ros-args",
+            "-r",
+            "__ns:=/ns",
+            "-r",
+            "~/speed_command:=cmd",
+            "-r",
+            "joint_states:=/js",
+        ]);
         let r = NameResolver::new(&a, "annular_plate").unwrap();
         assert_eq!(r.resolve("~/speed_command").unwrap(), "/ns/cmd");
         assert_eq!(r.resolve("joint_states").unwrap(), "/js");
@@ -442,7 +544,16 @@ mod tests {
 
     #[test]
     fn node_prefixed_rules_apply_only_to_that_node() {
-        let a = parse(&["-r", "other:__node:=x", "-r", "annular_plate:__ns:=/mine", "-r", "other:/tf:=/tf2", "-p", "other:a:=1"]);
+        let a = parse(&[
+            "-r",
+            "other:__node:=x",
+            "-r",
+            "annular_plate:__ns:=/mine",
+            "-r",
+            "other:/tf:=/tf2",
+            "-p",
+            "other:a:=1",
+        ]);
         assert_eq!(a.node_name("annular_plate"), "annular_plate");
         assert_eq!(a.namespace("annular_plate"), "/mine");
         let r = NameResolver::new(&a, "annular_plate").unwrap();
@@ -459,14 +570,39 @@ mod tests {
 
     #[test]
     fn errors_name_the_problem() {
-        assert_eq!(RosArgs::parse(&["--ros-args", "-r"]), Err(ArgsError::MissingValue { flag: "-r".into() }));
-        assert_eq!(RosArgs::parse(&["--ros-args", "--bogus"]), Err(ArgsError::Unknown { arg: "--bogus".into() }));
-        assert!(matches!(RosArgs::parse(&["-r", "a=b"]), Err(ArgsError::BadRule { .. })));
-        assert!(matches!(RosArgs::parse(&["-r", "__node:=1abc"]), Err(ArgsError::BadName { .. })));
-        assert!(matches!(RosArgs::parse(&["-r", "__ns:=/a/"]), Err(ArgsError::BadName { .. })));
-        assert!(matches!(RosArgs::parse(&["-r", "/a/1b:=/c"]), Err(ArgsError::BadName { .. })));
-        assert!(matches!(RosArgs::parse(&["-p", ":=3"]), Err(ArgsError::BadRule { .. })));
-        let msg = RosArgs::parse(&["--ros-args", "--bogus"]).unwrap_err().to_string();
+        assert_eq!(
+            RosArgs::parse(&["--ros-args", "-r"]),
+            Err(ArgsError::MissingValue { flag: "-r".into() })
+        );
+        assert_eq!(
+            RosArgs::parse(&["--ros-args", "--bogus"]),
+            Err(ArgsError::Unknown {
+                arg: "--bogus".into()
+            })
+        );
+        assert!(matches!(
+            RosArgs::parse(&["-r", "a=b"]),
+            Err(ArgsError::BadRule { .. })
+        ));
+        assert!(matches!(
+            RosArgs::parse(&["-r", "__node:=1abc"]),
+            Err(ArgsError::BadName { .. })
+        ));
+        assert!(matches!(
+            RosArgs::parse(&["-r", "__ns:=/a/"]),
+            Err(ArgsError::BadName { .. })
+        ));
+        assert!(matches!(
+            RosArgs::parse(&["-r", "/a/1b:=/c"]),
+            Err(ArgsError::BadName { .. })
+        ));
+        assert!(matches!(
+            RosArgs::parse(&["-p", ":=3"]),
+            Err(ArgsError::BadRule { .. })
+        ));
+        let msg = RosArgs::parse(&["--ros-args", "--bogus"])
+            .unwrap_err()
+            .to_string();
         assert!(msg.contains("--bogus"), "{msg}");
     }
 
@@ -491,7 +627,12 @@ mod tests {
 
     #[test]
     fn parameter_values_keep_their_text() {
-        let a = parse(&["-p", "plate.nodal_diameters:=[0, 1, 2]", "-p", "annular_plate:ros.publish_clock:=true"]);
+        let a = parse(&[
+            "-p",
+            "plate.nodal_diameters:=[0, 1, 2]",
+            "-p",
+            "annular_plate:ros.publish_clock:=true",
+        ]);
         assert_eq!(a.params[0].value, "[0, 1, 2]");
         assert_eq!(a.params[1].node.as_deref(), Some("annular_plate"));
         assert_eq!(a.params[1].name, "ros.publish_clock");

@@ -13,8 +13,8 @@
 
 use super::clock::StepClock;
 use super::types::{
-    Clock, Header, JointState, ModalAmplitudes, PadStates, Quaternion, TFMessage, Time, ToolState, Transform,
-    TransformStamped, Vector3,
+    Clock, Header, JointState, ModalAmplitudes, PadStates, Quaternion, TFMessage, Time, ToolState,
+    Transform, TransformStamped, Vector3,
 };
 use crate::dynamics::load_models::Pads;
 use crate::dynamics::{Pose, Simulation};
@@ -41,8 +41,12 @@ impl FrameNames {
             base: format!("{prefix}plate_base"),
             rotor: format!("{prefix}plate_rotor"),
             joint: format!("{prefix}plate_joint"),
-            ale: (1..=n_ale).map(|j| format!("{prefix}plate_ale_{j}")).collect(),
-            lagrange: (1..=n_lagrange).map(|j| format!("{prefix}plate_lagrange_{j}")).collect(),
+            ale: (1..=n_ale)
+                .map(|j| format!("{prefix}plate_ale_{j}"))
+                .collect(),
+            lagrange: (1..=n_lagrange)
+                .map(|j| format!("{prefix}plate_lagrange_{j}"))
+                .collect(),
         }
     }
 }
@@ -91,19 +95,32 @@ fn shape_code(s: AngularShape) -> u8 {
 }
 
 fn transform(p: &Pose) -> Transform {
-    Transform { translation: Vector3::from_array(p.translation), rotation: Quaternion::from_xyzw(p.rotation) }
+    Transform {
+        translation: Vector3::from_array(p.translation),
+        rotation: Quaternion::from_xyzw(p.rotation),
+    }
 }
 
 /// Rotation by `angle` about z as a quaternion.
 pub fn z_rotation(angle: f64) -> Quaternion {
     let (s, c) = (0.5 * angle).sin_cos();
-    Quaternion { x: 0.0, y: 0.0, z: s, w: c }
+    Quaternion {
+        x: 0.0,
+        y: 0.0,
+        z: s,
+        w: c,
+    }
 }
 
 /// Rotation by `angle` about x as a quaternion.
 pub fn x_rotation(angle: f64) -> Quaternion {
     let (s, c) = (0.5 * angle).sin_cos();
-    Quaternion { x: s, y: 0.0, z: 0.0, w: c }
+    Quaternion {
+        x: s,
+        y: 0.0,
+        z: 0.0,
+        w: c,
+    }
 }
 
 /// The per-step messages, preallocated for one scene.
@@ -122,7 +139,10 @@ pub struct OutputMessages {
 
 impl OutputMessages {
     pub fn new(sim: &Simulation, names: &FrameNames) -> Self {
-        let header = |frame: &str| Header { stamp: Time::default(), frame_id: frame.to_string() };
+        let header = |frame: &str| Header {
+            stamp: Time::default(),
+            frame_id: frame.to_string(),
+        };
         let joint_state = JointState {
             header: header(""),
             name: vec![names.joint.clone()],
@@ -179,7 +199,12 @@ impl OutputMessages {
                 pad_compression_bottom: vec![0.0; if pads.is_massive() { n_pads } else { 0 }],
             })
         });
-        let tool_state = sim.has_tool().then(|| Shared::new(ToolState { header: header(&names.base), ..ToolState::default() }));
+        let tool_state = sim.has_tool().then(|| {
+            Shared::new(ToolState {
+                header: header(&names.base),
+                ..ToolState::default()
+            })
+        });
         let mut out = OutputMessages {
             joint_state: Shared::new(joint_state),
             tf: Shared::new(TFMessage { transforms }),
@@ -206,7 +231,10 @@ impl OutputMessages {
         for (i, t) in tf.transforms.iter_mut().enumerate() {
             t.header.stamp = stamp;
             t.transform = if i == 0 {
-                Transform { translation: Vector3::default(), rotation: z_rotation(sim.rotor_angle()) }
+                Transform {
+                    translation: Vector3::default(),
+                    rotation: z_rotation(sim.rotor_angle()),
+                }
             } else if i <= n_ale {
                 transform(&sim.ale_node_pose(i - 1))
             } else {
@@ -263,16 +291,24 @@ impl OutputMessages {
 pub fn static_transforms(names: &FrameNames, tilt: f64, stamp: Time) -> TFMessage {
     TFMessage {
         transforms: vec![TransformStamped {
-            header: Header { stamp, frame_id: names.world.clone() },
+            header: Header {
+                stamp,
+                frame_id: names.world.clone(),
+            },
             child_frame_id: names.base.clone(),
-            transform: Transform { translation: Vector3::default(), rotation: x_rotation(tilt) },
+            transform: Transform {
+                translation: Vector3::default(),
+                rotation: x_rotation(tilt),
+            },
         }],
     }
 }
 
 /// The `/clock` message for the clock's current time.
 pub fn clock_message(clock: &StepClock) -> Clock {
-    Clock { clock: clock.sim_time() }
+    Clock {
+        clock: clock.sim_time(),
+    }
 }
 
 #[cfg(test)]

@@ -12,7 +12,9 @@ use ros2_client::QosProfile;
 
 const fn reliable(depth: usize, durability: Durability) -> QosProfile {
     QosProfile::subscription_default()
-        .reliability(Reliability::Reliable { when_full: WhenFull::Fail })
+        .reliability(Reliability::Reliable {
+            when_full: WhenFull::Fail,
+        })
         .durability(durability)
         .history(History::KeepLast { depth })
 }
@@ -58,6 +60,8 @@ pub const INPUT: QosProfile = reliable(10, Durability::Volatile);
 /// Services (requests and replies): reliable, volatile, keep last 10, as
 /// rclcpp's `rmw_qos_profile_services_default`.
 pub const SERVICE: QosProfile = QosProfile::subscription_default()
-    .reliability(Reliability::Reliable { when_full: WhenFull::DEFAULT })
+    .reliability(Reliability::Reliable {
+        when_full: WhenFull::DEFAULT,
+    })
     .durability(Durability::Volatile)
     .history(History::KeepLast { depth: 10 });

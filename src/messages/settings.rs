@@ -11,8 +11,8 @@ use crate::config::{ParamValue, Params};
 use ros2_client::ServiceMapping;
 use std::fmt;
 
-use crate::config::table;
 use super::marker::{MarkerScale, MarkerSettings, MAX_CELLS};
+use crate::config::table;
 
 /// Validated `ros.*` settings.
 #[derive(Debug, Clone, PartialEq)]
@@ -75,11 +75,16 @@ impl fmt::Display for SettingsError {
 impl std::error::Error for SettingsError {}
 
 fn err(key: &str, message: impl Into<String>) -> SettingsError {
-    SettingsError { key: key.to_string(), message: message.into() }
+    SettingsError {
+        key: key.to_string(),
+        message: message.into(),
+    }
 }
 
 fn frame_chars_ok(s: &str) -> bool {
-    s.chars().all(|c| c.is_ascii_alphanumeric() || matches!(c, '_' | '/' | '-' | '.')) && !s.starts_with('/')
+    s.chars()
+        .all(|c| c.is_ascii_alphanumeric() || matches!(c, '_' | '/' | '-' | '.'))
+        && !s.starts_with('/')
 }
 
 impl RosSettings {
@@ -90,24 +95,40 @@ impl RosSettings {
         for (name, _) in params.iter() {
             if name.starts_with("ros.") && table::find(name).is_none() {
                 let known = table::keys("ros");
-                return Err(err(name, format!("unknown parameter (the ros.* keys are {})", known.join(", "))));
+                return Err(err(
+                    name,
+                    format!(
+                        "unknown parameter (the ros.* keys are {})",
+                        known.join(", ")
+                    ),
+                ));
             }
             if name.starts_with("ros.") || name == "use_sim_time" {
-                crate::config::check(name, params.get(name).expect("iterated")).map_err(|e| err(name, e.to_string()))?;
+                crate::config::check(name, params.get(name).expect("iterated"))
+                    .map_err(|e| err(name, e.to_string()))?;
             }
         }
         let string = |key: &str| -> Result<Option<String>, SettingsError> {
             match params.get(key) {
                 None => Ok(None),
                 Some(ParamValue::String(v)) => Ok(Some(v.clone())),
-                Some(other) => Err(err(key, format!("expected a string, found {} {other}", other.type_name()))),
+                Some(other) => Err(err(
+                    key,
+                    format!("expected a string, found {} {other}", other.type_name()),
+                )),
             }
         };
         let boolean = |key: &str| -> Result<Option<bool>, SettingsError> {
             match params.get(key) {
                 None => Ok(None),
                 Some(ParamValue::Bool(v)) => Ok(Some(*v)),
-                Some(other) => Err(err(key, format!("expected true or false, found {} {other}", other.type_name()))),
+                Some(other) => Err(err(
+                    key,
+                    format!(
+                        "expected true or false, found {} {other}",
+                        other.type_name()
+                    ),
+                )),
             }
         };
         let double = |key: &str| -> Result<Option<f64>, SettingsError> {
@@ -115,7 +136,10 @@ impl RosSettings {
                 None => Ok(None),
                 Some(ParamValue::Double(v)) => Ok(Some(*v)),
                 Some(ParamValue::Integer(v)) => Ok(Some(*v as f64)),
-                Some(other) => Err(err(key, format!("expected a number, found {} {other}", other.type_name()))),
+                Some(other) => Err(err(
+                    key,
+                    format!("expected a number, found {} {other}", other.type_name()),
+                )),
             }
         };
 
@@ -161,14 +185,24 @@ impl RosSettings {
                 "enhanced" => ServiceMapping::Enhanced,
                 "cyclone" => ServiceMapping::Cyclone,
                 "basic" => ServiceMapping::Basic,
-                other => return Err(err("ros.service_mapping", format!("`{other}` is not one of enhanced, cyclone, basic"))),
+                other => {
+                    return Err(err(
+                        "ros.service_mapping",
+                        format!("`{other}` is not one of enhanced, cyclone, basic"),
+                    ))
+                }
             };
         }
         if let Some(r) = string("ros.input_reception")? {
             s.step_aligned_reception = match r.as_str() {
                 "on_arrival" => false,
                 "step_aligned" => true,
-                other => return Err(err("ros.input_reception", format!("`{other}` is not one of on_arrival, step_aligned"))),
+                other => {
+                    return Err(err(
+                        "ros.input_reception",
+                        format!("`{other}` is not one of on_arrival, step_aligned"),
+                    ))
+                }
             };
         }
         Ok(s)
@@ -185,13 +219,31 @@ impl RosSettings {
     /// The effective value of every `ros.*` key, for the parameter services.
     pub fn effective_params(&self) -> Vec<(&'static str, ParamValue)> {
         vec![
-            ("ros.frame_prefix", ParamValue::String(self.frame_prefix.clone())),
-            ("ros.world_frame", ParamValue::String(self.world_frame.clone())),
-            ("ros.wrench_timeout", ParamValue::Double(self.wrench_timeout)),
-            ("ros.max_clock_jump", ParamValue::Double(self.max_clock_jump)),
+            (
+                "ros.frame_prefix",
+                ParamValue::String(self.frame_prefix.clone()),
+            ),
+            (
+                "ros.world_frame",
+                ParamValue::String(self.world_frame.clone()),
+            ),
+            (
+                "ros.wrench_timeout",
+                ParamValue::Double(self.wrench_timeout),
+            ),
+            (
+                "ros.max_clock_jump",
+                ParamValue::Double(self.max_clock_jump),
+            ),
             ("ros.start_paused", ParamValue::Bool(self.start_paused)),
-            ("ros.diagnostics_period", ParamValue::Double(self.diagnostics_period)),
-            ("ros.reject_log_period", ParamValue::Double(self.reject_log_period)),
+            (
+                "ros.diagnostics_period",
+                ParamValue::Double(self.diagnostics_period),
+            ),
+            (
+                "ros.reject_log_period",
+                ParamValue::Double(self.reject_log_period),
+            ),
             (
                 "ros.service_mapping",
                 ParamValue::String(
@@ -205,11 +257,27 @@ impl RosSettings {
             ),
             (
                 "ros.input_reception",
-                ParamValue::String(if self.step_aligned_reception { "step_aligned" } else { "on_arrival" }.to_string()),
+                ParamValue::String(
+                    if self.step_aligned_reception {
+                        "step_aligned"
+                    } else {
+                        "on_arrival"
+                    }
+                    .to_string(),
+                ),
             ),
-            ("ros.marker_rate_hz", ParamValue::Double(self.marker.rate_hz)),
-            ("ros.marker_rings", ParamValue::Integer(self.marker.rings as i64)),
-            ("ros.marker_sectors", ParamValue::Integer(self.marker.sectors as i64)),
+            (
+                "ros.marker_rate_hz",
+                ParamValue::Double(self.marker.rate_hz),
+            ),
+            (
+                "ros.marker_rings",
+                ParamValue::Integer(self.marker.rings as i64),
+            ),
+            (
+                "ros.marker_sectors",
+                ParamValue::Integer(self.marker.sectors as i64),
+            ),
             (
                 "ros.marker_scale",
                 match self.marker.scale {
@@ -228,12 +296,20 @@ fn read_marker(params: &Params) -> Result<MarkerSettings, SettingsError> {
         None => {}
         Some(ParamValue::Double(v)) if v.is_finite() && *v >= 0.0 => m.rate_hz = *v,
         Some(ParamValue::Integer(v)) if *v >= 0 => m.rate_hz = *v as f64,
-        Some(other) => return Err(err("ros.marker_rate_hz", format!("{other} must be a finite number >= 0 (0 = no marker)"))),
+        Some(other) => {
+            return Err(err(
+                "ros.marker_rate_hz",
+                format!("{other} must be a finite number >= 0 (0 = no marker)"),
+            ))
+        }
     }
     let integer = |key: &str, default: u32, low: i64, high: i64| match params.get(key) {
         None => Ok(default),
         Some(ParamValue::Integer(v)) if (low..=high).contains(v) => Ok(*v as u32),
-        Some(other) => Err(err(key, format!("{other} must be an integer in {low} ..= {high}"))),
+        Some(other) => Err(err(
+            key,
+            format!("{other} must be an integer in {low} ..= {high}"),
+        )),
     };
     m.rings = integer("ros.marker_rings", m.rings, 1, 200)?;
     m.sectors = integer("ros.marker_sectors", m.sectors, 8, 4096)?;
@@ -245,7 +321,12 @@ fn read_marker(params: &Params) -> Result<MarkerSettings, SettingsError> {
         Some(ParamValue::String(s)) if s == "auto" => MarkerScale::Auto,
         Some(ParamValue::Double(v)) if v.is_finite() && *v > 0.0 => MarkerScale::Fixed(*v),
         Some(ParamValue::Integer(v)) if *v > 0 => MarkerScale::Fixed(*v as f64),
-        Some(other) => return Err(err("ros.marker_scale", format!("{other} must be `auto` or a finite number > 0"))),
+        Some(other) => {
+            return Err(err(
+                "ros.marker_scale",
+                format!("{other} must be `auto` or a finite number > 0"),
+            ))
+        }
     };
     Ok(m)
 }
@@ -264,7 +345,10 @@ mod tests {
 
     #[test]
     fn defaults() {
-        assert_eq!(RosSettings::from_params(&Params::new()).unwrap(), RosSettings::default());
+        assert_eq!(
+            RosSettings::from_params(&Params::new()).unwrap(),
+            RosSettings::default()
+        );
     }
 
     #[test]
@@ -285,17 +369,31 @@ mod tests {
         assert_eq!(s.diagnostics_period, 2.0);
         assert_eq!(s.service_mapping, ServiceMapping::Cyclone);
         assert!(s.step_aligned_reception);
-        assert!(!RosSettings::default().step_aligned_reception, "inputs are read on arrival unless asked");
+        assert!(
+            !RosSettings::default().step_aligned_reception,
+            "inputs are read on arrival unless asked"
+        );
         let follow = RosSettings::from_params(&params(&[("use_sim_time", "true")])).unwrap();
-        assert!(follow.use_sim_time && !follow.sim_time, "use_sim_time follows /clock, it does not publish one");
+        assert!(
+            follow.use_sim_time && !follow.sim_time,
+            "use_sim_time follows /clock, it does not publish one"
+        );
     }
 
     #[test]
     fn use_sim_time_and_publish_clock_together_are_refused() {
-        let e = RosSettings::from_params(&params(&[("use_sim_time", "true"), ("ros.publish_clock", "true")])).unwrap_err();
+        let e = RosSettings::from_params(&params(&[
+            ("use_sim_time", "true"),
+            ("ros.publish_clock", "true"),
+        ]))
+        .unwrap_err();
         assert_eq!(e.key, "ros.publish_clock");
         assert!(e.message.contains("use_sim_time"), "{e}");
-        let s = RosSettings::from_params(&params(&[("use_sim_time", "true"), ("ros.publish_clock", "false")])).unwrap();
+        let s = RosSettings::from_params(&params(&[
+            ("use_sim_time", "true"),
+            ("ros.publish_clock", "false"),
+        ]))
+        .unwrap();
         assert!(s.use_sim_time && !s.sim_time);
     }
 
@@ -324,10 +422,17 @@ mod tests {
 
     #[test]
     fn reads_its_keys_from_the_whole_parameter_set() {
-        let p = params(&[("ros.frame_prefix", "a"), ("plate.thickness", "0.01"), ("use_sim_time", "true")]);
+        let p = params(&[
+            ("ros.frame_prefix", "a"),
+            ("plate.thickness", "0.01"),
+            ("use_sim_time", "true"),
+        ]);
         let s = RosSettings::from_params(&p).unwrap();
         assert_eq!(s.frame_prefix, "a");
         assert!(s.use_sim_time);
-        assert!(crate::config::Config::from_params(&p).is_ok(), "the config accepts the ros.* names too");
+        assert!(
+            crate::config::Config::from_params(&p).is_ok(),
+            "the config accepts the ros.* names too"
+        );
     }
 }

@@ -27,11 +27,17 @@ impl SimResult {
     pub const RESULT_OPERATION_FAILED: u8 = 4;
 
     pub fn ok(message: impl Into<String>) -> Self {
-        SimResult { result: Self::RESULT_OK, error_message: message.into() }
+        SimResult {
+            result: Self::RESULT_OK,
+            error_message: message.into(),
+        }
     }
 
     pub fn code(result: u8, message: impl Into<String>) -> Self {
-        SimResult { result, error_message: message.into() }
+        SimResult {
+            result,
+            error_message: message.into(),
+        }
     }
 }
 

@@ -75,11 +75,29 @@ mod tests {
         use crate::messages::names::{NameResolver, RosArgs};
         let resolve = |args: &[&str], topic: &str| {
             let a = RosArgs::parse(args).unwrap();
-            NameResolver::new(&a, "annular_plate").unwrap().resolve(topic).unwrap()
+            NameResolver::new(&a, "annular_plate")
+                .unwrap()
+                .resolve(topic)
+                .unwrap()
         };
         assert_eq!(resolve(&[], JOINT_STATES), "/joint_states");
-        assert_eq!(resolve(&["--ros-args", "-r", "__ns:=/bench"], JOINT_STATES), "/bench/joint_states");
+        assert_eq!(
+            resolve(&["--ros-args", "-r", "__ns:=/bench"], JOINT_STATES),
+            "/bench/joint_states"
+        );
         assert_eq!(resolve(&["--ros-args", "-r", "__ns:=/bench"], TF), "/tf");
-        assert_eq!(resolve(&["--ros-args", "-r", "__ns:=/bench", "-r", "/bench/joint_states:=/joint_states"], JOINT_STATES), "/joint_states");
+        assert_eq!(
+            resolve(
+                &[
+                    "--ros-args",
+                    "-r",
+                    "__ns:=/bench",
+                    "-r",
+                    "/bench/joint_states:=/joint_states"
+                ],
+                JOINT_STATES
+            ),
+            "/joint_states"
+        );
     }
 }

@@ -46,7 +46,10 @@ impl Time {
     /// From nanoseconds (non-negative; negative values clamp to zero).
     pub fn from_nanos(nanos: i64) -> Time {
         let n = nanos.max(0);
-        Time { sec: (n / 1_000_000_000).min(i32::MAX as i64) as i32, nanosec: (n % 1_000_000_000) as u32 }
+        Time {
+            sec: (n / 1_000_000_000).min(i32::MAX as i64) as i32,
+            nanosec: (n % 1_000_000_000) as u32,
+        }
     }
 
     pub fn to_nanos(self) -> i64 {
@@ -59,7 +62,9 @@ impl Time {
 
     /// The wall clock (system time since the Unix epoch).
     pub fn wall_now() -> Time {
-        let d = std::time::SystemTime::now().duration_since(std::time::UNIX_EPOCH).unwrap_or_default();
+        let d = std::time::SystemTime::now()
+            .duration_since(std::time::UNIX_EPOCH)
+            .unwrap_or_default();
         Time::from_nanos(d.as_nanos().min(i64::MAX as u128) as i64)
     }
 }
@@ -93,7 +98,11 @@ pub struct Vector3 {
 
 impl Vector3 {
     pub fn from_array(a: [f64; 3]) -> Vector3 {
-        Vector3 { x: a[0], y: a[1], z: a[2] }
+        Vector3 {
+            x: a[0],
+            y: a[1],
+            z: a[2],
+        }
     }
     pub fn to_array(self) -> [f64; 3] {
         [self.x, self.y, self.z]
@@ -111,14 +120,24 @@ pub struct Quaternion {
 
 impl Default for Quaternion {
     fn default() -> Self {
-        Quaternion { x: 0.0, y: 0.0, z: 0.0, w: 1.0 }
+        Quaternion {
+            x: 0.0,
+            y: 0.0,
+            z: 0.0,
+            w: 1.0,
+        }
     }
 }
 
 impl Quaternion {
     /// From `[x, y, z, w]`.
     pub fn from_xyzw(q: [f64; 4]) -> Quaternion {
-        Quaternion { x: q[0], y: q[1], z: q[2], w: q[3] }
+        Quaternion {
+            x: q[0],
+            y: q[1],
+            z: q[2],
+            w: q[3],
+        }
     }
 }
 
@@ -373,7 +392,13 @@ mod tests {
     #[test]
     fn time_round_trips_nanos() {
         let t = Time::from_nanos(3_000_000_123);
-        assert_eq!(t, Time { sec: 3, nanosec: 123 });
+        assert_eq!(
+            t,
+            Time {
+                sec: 3,
+                nanosec: 123
+            }
+        );
         assert_eq!(t.to_nanos(), 3_000_000_123);
         assert_eq!(Time::from_nanos(-5), Time::default());
     }

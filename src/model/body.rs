@@ -59,8 +59,14 @@ impl BodyData {
             inertia,
             first_moments,
             modal_mass: modes.iter().map(|m| m.modal_mass).collect(),
-            modal_stiffness: modes.iter().map(|m| m.modal_mass * m.omega * m.omega).collect(),
-            modal_damping: modes.iter().map(|m| 2.0 * m.damping * m.omega * m.modal_mass).collect(),
+            modal_stiffness: modes
+                .iter()
+                .map(|m| m.modal_mass * m.omega * m.omega)
+                .collect(),
+            modal_damping: modes
+                .iter()
+                .map(|m| 2.0 * m.damping * m.omega * m.modal_mass)
+                .collect(),
         }
     }
 
@@ -77,7 +83,11 @@ impl BodyData {
 
     /// Centre of mass d_CM(q) = C_tᵀ q / m (first order).
     pub fn center_of_mass(&self, q: &[f64]) -> [f64; 3] {
-        let z: f64 = q.iter().zip(&self.first_moments).map(|(qi, s)| qi * s[2]).sum();
+        let z: f64 = q
+            .iter()
+            .zip(&self.first_moments)
+            .map(|(qi, s)| qi * s[2])
+            .sum();
         [0.0, 0.0, z / self.mass]
     }
 

@@ -45,7 +45,12 @@ impl BSplineBasis {
             knots.push(a + h * i as f64);
         }
         knots.extend(std::iter::repeat_n(b, DEGREE + 1));
-        BSplineBasis { a, b, n: n_uniform + extra, knots }
+        BSplineBasis {
+            a,
+            b,
+            n: n_uniform + extra,
+            knots,
+        }
     }
 
     /// Cubic B-splines on the given strictly increasing breakpoints (first and
@@ -59,12 +64,19 @@ impl BSplineBasis {
         knots.extend(std::iter::repeat_n(a, DEGREE));
         knots.extend_from_slice(breaks);
         knots.extend(std::iter::repeat_n(b, DEGREE));
-        BSplineBasis { a, b, n: breaks.len() + DEGREE - 1, knots }
+        BSplineBasis {
+            a,
+            b,
+            n: breaks.len() + DEGREE - 1,
+            knots,
+        }
     }
 
     /// Greville abscissae ξ*_j = (t_{j+1} + t_{j+2} + t_{j+3})/3: Σ ξ*_j N_j(r) = r.
     pub fn greville(&self) -> Vec<f64> {
-        (0..self.n).map(|j| (self.knots[j + 1] + self.knots[j + 2] + self.knots[j + 3]) / 3.0).collect()
+        (0..self.n)
+            .map(|j| (self.knots[j + 1] + self.knots[j + 2] + self.knots[j + 3]) / 3.0)
+            .collect()
     }
 
     pub fn len(&self) -> usize {
@@ -131,7 +143,11 @@ impl BSplineBasis {
                     d = a[s2][0] * ndu[rk as usize][pk];
                 }
                 let j1 = if rk >= -1 { 1 } else { (-rk) as usize };
-                let j2 = if (r as isize - 1) <= pk as isize { k - 1 } else { P - r };
+                let j2 = if (r as isize - 1) <= pk as isize {
+                    k - 1
+                } else {
+                    P - r
+                };
                 for j in j1..=j2 {
                     let idx = (rk + j as isize) as usize;
                     a[s2][j] = (a[s1][j] - a[s1][j - 1]) / ndu[pk + 1][idx];
@@ -198,7 +214,11 @@ mod tests {
             let vm = b.eval_combination(&c, x - h);
             for order in 0..3 {
                 let fd = (vp[order] - vm[order]) / (2.0 * h);
-                assert!((fd - v[order + 1]).abs() < 1e-4 * (1.0 + v[order + 1].abs()), "order {order} at {x}: {fd} vs {}", v[order + 1]);
+                assert!(
+                    (fd - v[order + 1]).abs() < 1e-4 * (1.0 + v[order + 1].abs()),
+                    "order {order} at {x}: {fd} vs {}",
+                    v[order + 1]
+                );
             }
         }
     }
@@ -212,7 +232,10 @@ mod tests {
             let x = 1e-4 + (0.15 - 1e-4) * (k as f64 / 500.0).powi(3);
             let s = b.span_of(x);
             let (lo, hi) = b.span_bounds(s);
-            assert!(lo <= x && (x < hi || s == b.spans() - 1), "{x} not in span {s} [{lo}, {hi})");
+            assert!(
+                lo <= x && (x < hi || s == b.spans() - 1),
+                "{x} not in span {s} [{lo}, {hi})"
+            );
             let d = b.eval_span(s, x);
             assert!((d[0].iter().sum::<f64>() - 1.0).abs() < 1e-13);
             let r: f64 = (0..4).map(|j| g[s + j] * d[0][j]).sum();

@@ -44,20 +44,32 @@ pub(super) fn build(plate: &PlateConfig) -> Result<PlateModel, ModelError> {
     let mut entries: Vec<(u32, u32, f64, Entry)> = Vec::new();
     let count = max_l as usize + 1;
     // `auto`: every k's count and eigenpairs first (resolution.rs); fixed: one basis for all k.
-    let fixed_disc = plate.radial_splines.fixed().map(|n| RadialDiscretisation::new(plate, rigidity, n));
+    let fixed_disc = plate
+        .radial_splines
+        .fixed()
+        .map(|n| RadialDiscretisation::new(plate, rigidity, n));
     let (mut chosen, mut discs) = match fixed_disc {
-        Some(_) => (Vec::new(), resolution::Discretisations::new(plate, rigidity)),
+        Some(_) => (
+            Vec::new(),
+            resolution::Discretisations::new(plate, rigidity),
+        ),
         None => resolution::choose_all(plate, rigidity, sigma, &ks, count)?,
     };
     chosen.reverse();
     for &k in &ks {
         let (splines, pairs) = match &fixed_disc {
             Some(disc) => {
-                radial_resolution.push(KResolution { k, splines: plate.radial_splines.fixed().unwrap_or(0), estimated_error: None });
+                radial_resolution.push(KResolution {
+                    k,
+                    splines: plate.radial_splines.fixed().unwrap_or(0),
+                    estimated_error: None,
+                });
                 (None, fixed(disc, k, sigma, count)?)
             }
             None => {
-                let Some(Resolved { pairs, resolution }) = chosen.pop() else { unreachable!("one resolution per k") };
+                let Some(Resolved { pairs, resolution }) = chosen.pop() else {
+                    unreachable!("one resolution per k")
+                };
                 radial_resolution.push(resolution);
                 (Some(resolution.splines), pairs)
             }
@@ -74,21 +86,48 @@ pub(super) fn build(plate: &PlateConfig) -> Result<PlateModel, ModelError> {
             }
             let w2 = pairs.omega_squared[l as usize];
             if !w2.is_finite() || w2 <= 0.0 {
-                return Err(ModelError::NonFiniteMode { k, l, omega_squared: w2, hint: degenerate_hint(plate) });
+                return Err(ModelError::NonFiniteMode {
+                    k,
+                    l,
+                    omega_squared: w2,
+                    hint: degenerate_hint(plate),
+                });
             }
             let col = pairs.vectors.col(l as usize);
             let coefficients = disc.expand((0..col.nrows()).map(|i| col[i]));
-            let mut shape = RadialShape { k, l, omega: w2.sqrt(), basis: disc.basis.clone(), coefficients };
+            let mut shape = RadialShape {
+                k,
+                l,
+                omega: w2.sqrt(),
+                basis: disc.basis.clone(),
+                coefficients,
+            };
             let (_, peak) = shape.peak();
             if peak == 0.0 || !peak.is_finite() {
-                return Err(ModelError::NonFiniteMode { k, l, omega_squared: w2, hint: degenerate_hint(plate) });
+                return Err(ModelError::NonFiniteMode {
+                    k,
+                    l,
+                    omega_squared: w2,
+                    hint: degenerate_hint(plate),
+                });
             }
             shape.coefficients.iter_mut().for_each(|c| *c /= peak);
             // The eigenvector was M̄-normalised (M̄ includes ρh c_k): modal mass of the unit-peak shape.
             let modal_mass = 1.0 / (peak * peak);
-            debug_assert!((modal_mass - rho_h * angular_norm(k) * radial_moment(&shape, 2, 1)).abs() < 1e-6 * modal_mass);
+            debug_assert!(
+                (modal_mass - rho_h * angular_norm(k) * radial_moment(&shape, 2, 1)).abs()
+                    < 1e-6 * modal_mass
+            );
             radial_shapes.push(shape);
-            entries.push((k, l, w2.sqrt(), Entry { radial: radial_shapes.len() - 1, modal_mass }));
+            entries.push((
+                k,
+                l,
+                w2.sqrt(),
+                Entry {
+                    radial: radial_shapes.len() - 1,
+                    modal_mass,
+                },
+            ));
         }
     }
     if entries.is_empty() {
@@ -97,7 +136,11 @@ pub(super) fn build(plate: &PlateConfig) -> Result<PlateModel, ModelError> {
     // Expand into modes: one per k = 0, a cos/sin pair otherwise; sort by frequency, then k, then cos before sin.
     let mut modes: Vec<Mode> = Vec::new();
     for (k, l, omega, e) in &entries {
-        let shapes: &[AngularShape] = if *k == 0 { &[AngularShape::Axisymmetric] } else { &[AngularShape::Cos, AngularShape::Sin] };
+        let shapes: &[AngularShape] = if *k == 0 {
+            &[AngularShape::Axisymmetric]
+        } else {
+            &[AngularShape::Cos, AngularShape::Sin]
+        };
         for &shape in shapes {
             modes.push(Mode {
                 k: *k,
@@ -112,23 +155,52 @@ pub(super) fn build(plate: &PlateConfig) -> Result<PlateModel, ModelError> {
             });
         }
     }
-    modes.sort_by(|a, b| a.omega.total_cmp(&b.omega).then(a.k.cmp(&b.k)).then(a.shape.cmp(&b.shape)).then(a.l.cmp(&b.l)));
+    modes.sort_by(|a, b| {
+        a.omega
+            .total_cmp(&b.omega)
+            .then(a.k.cmp(&b.k))
+            .then(a.shape.cmp(&b.shape))
+            .then(a.l.cmp(&b.l))
+    });
     for i in 0..modes.len() {
-        modes[i].damping = if plate.damping.len() == 1 { plate.damping[0] } else { plate.damping.get(i).copied().unwrap_or(0.0) };
+        modes[i].damping = if plate.damping.len() == 1 {
+            plate.damping[0]
+        } else {
+            plate.damping.get(i).copied().unwrap_or(0.0)
+        };
         if modes[i].k > 0 {
-            modes[i].partner = modes.iter().position(|m| m.k == modes[i].k && m.l == modes[i].l && m.shape != modes[i].shape);
+            modes[i].partner = modes
+                .iter()
+                .position(|m| m.k == modes[i].k && m.l == modes[i].l && m.shape != modes[i].shape);
         }
     }
     let body = BodyData::new(plate, &modes, &radial_shapes);
-    Ok(PlateModel { plate: plate.clone(), rigidity, modes, radial_shapes, skipped_rigid_body_modes: skipped, body, radial_resolution })
+    Ok(PlateModel {
+        plate: plate.clone(),
+        rigidity,
+        modes,
+        radial_shapes,
+        skipped_rigid_body_modes: skipped,
+        body,
+        radial_resolution,
+    })
 }
 
 /// A fixed spline count: the dense eigenproblem of k on the shared basis.
-fn fixed(disc: &RadialDiscretisation, k: u32, sigma: f64, count: usize) -> Result<EigenPairs, ModelError> {
+fn fixed(
+    disc: &RadialDiscretisation,
+    k: u32,
+    sigma: f64,
+    count: usize,
+) -> Result<EigenPairs, ModelError> {
     let (kk, mm) = disc.assemble(k);
     lowest_modes(&kk, &mm, sigma, count).map_err(|e| match e {
-        EigenFailure::MassNotPositiveDefinite(reason) => ModelError::MassNotPositiveDefinite { k, reason },
-        EigenFailure::ShiftedNotPositiveDefinite(reason) | EigenFailure::Decomposition(reason) => ModelError::Eigenproblem { k, reason },
+        EigenFailure::MassNotPositiveDefinite(reason) => {
+            ModelError::MassNotPositiveDefinite { k, reason }
+        }
+        EigenFailure::ShiftedNotPositiveDefinite(reason) | EigenFailure::Decomposition(reason) => {
+            ModelError::Eigenproblem { k, reason }
+        }
     })
 }
 
@@ -136,7 +208,13 @@ fn fixed(disc: &RadialDiscretisation, k: u32, sigma: f64, count: usize) -> Resul
 /// the width and the outer radius.
 pub(super) fn eigen_shift(plate: &PlateConfig, rigidity: f64) -> f64 {
     let width = plate.outer_radius - plate.inner_radius;
-    rigidity / (plate.density * plate.thickness * width * width * plate.outer_radius * plate.outer_radius)
+    rigidity
+        / (plate.density
+            * plate.thickness
+            * width
+            * width
+            * plate.outer_radius
+            * plate.outer_radius)
 }
 
 fn degenerate_hint(plate: &PlateConfig) -> String {

@@ -45,15 +45,28 @@ pub struct CampbellDiagram {
 
 /// The retained ⟨k, l⟩ of `model`, ascending k then l, rigid-body motions left out.
 fn retained(model: &PlateModel) -> Vec<(u32, u32, f64)> {
-    let mut v: Vec<(u32, u32, f64)> = model.radial_shapes().iter().map(|s| (s.k, s.l, s.omega)).collect();
+    let mut v: Vec<(u32, u32, f64)> = model
+        .radial_shapes()
+        .iter()
+        .map(|s| (s.k, s.l, s.omega))
+        .collect();
     v.sort_by_key(|&(k, l, _)| (k, l));
     v
 }
 
 /// The critical speeds of `model` (ω/k without stiffening), ascending k then l.
-pub fn critical_speeds(model: &PlateModel, centrifugal: &CentrifugalConfig) -> Result<Vec<CriticalSpeed>, ModelError> {
+pub fn critical_speeds(
+    model: &PlateModel,
+    centrifugal: &CentrifugalConfig,
+) -> Result<Vec<CriticalSpeed>, ModelError> {
     let mut out = Vec::new();
-    let max_l = model.plate().nodal_circles.iter().copied().max().unwrap_or(0) as usize;
+    let max_l = model
+        .plate()
+        .nodal_circles
+        .iter()
+        .copied()
+        .max()
+        .unwrap_or(0) as usize;
     let mut spectrum: Option<SpinningSpectrum> = None;
     for (k, l, omega) in retained(model) {
         if k == 0 {
@@ -61,9 +74,17 @@ pub fn critical_speeds(model: &PlateModel, centrifugal: &CentrifugalConfig) -> R
         }
         let rad_s = if centrifugal.stiffening {
             if spectrum.as_ref().is_none_or(|s| s.k() != k) {
-                spectrum = Some(SpinningSpectrum::new(model.plate(), centrifugal, k, max_l + 1));
+                spectrum = Some(SpinningSpectrum::new(
+                    model.plate(),
+                    centrifugal,
+                    k,
+                    max_l + 1,
+                ));
             }
-            spectrum.as_ref().expect("built above").critical_speed(l as usize)?
+            spectrum
+                .as_ref()
+                .expect("built above")
+                .critical_speed(l as usize)?
         } else {
             Some(omega / k as f64)
         };
@@ -75,21 +96,36 @@ pub fn critical_speeds(model: &PlateModel, centrifugal: &CentrifugalConfig) -> R
 }
 
 /// The diagram over `speeds` (rad/s).
-pub fn campbell(model: &PlateModel, centrifugal: &CentrifugalConfig, speeds: &[f64]) -> Result<CampbellDiagram, ModelError> {
+pub fn campbell(
+    model: &PlateModel,
+    centrifugal: &CentrifugalConfig,
+    speeds: &[f64],
+) -> Result<CampbellDiagram, ModelError> {
     let plate = model.plate();
     let max_l = plate.nodal_circles.iter().copied().max().unwrap_or(0) as usize;
     let mut modes = Vec::new();
     let mut spectrum: Option<(u32, Vec<Vec<f64>>)> = None;
     for (k, l, omega) in retained(model) {
-        debug_assert!(!is_rigid_body(plate.inner_boundary, plate.outer_boundary, k, l));
+        debug_assert!(!is_rigid_body(
+            plate.inner_boundary,
+            plate.outer_boundary,
+            k,
+            l
+        ));
         let rotating: Vec<f64> = if centrifugal.stiffening {
             if spectrum.as_ref().is_none_or(|(sk, _)| *sk != k) {
                 let s = SpinningSpectrum::new(plate, centrifugal, k, max_l + 1);
-                let per_speed = speeds.iter().map(|&w| s.omega_squared(w)).collect::<Result<Vec<_>, _>>()?;
+                let per_speed = speeds
+                    .iter()
+                    .map(|&w| s.omega_squared(w))
+                    .collect::<Result<Vec<_>, _>>()?;
                 spectrum = Some((k, per_speed));
             }
             let (_, per_speed) = spectrum.as_ref().expect("built above");
-            per_speed.iter().map(|w2| w2[l as usize].max(0.0).sqrt() / TAU).collect()
+            per_speed
+                .iter()
+                .map(|w2| w2[l as usize].max(0.0).sqrt() / TAU)
+                .collect()
         } else {
             vec![omega / TAU; speeds.len()]
         };
@@ -97,10 +133,22 @@ pub fn campbell(model: &PlateModel, centrifugal: &CentrifugalConfig, speeds: &[f
         modes.push(CampbellMode {
             k,
             l,
-            forward_hz: rotating.iter().zip(speeds).map(|(f, &w)| f + shift(w)).collect(),
-            backward_hz: rotating.iter().zip(speeds).map(|(f, &w)| f - shift(w)).collect(),
+            forward_hz: rotating
+                .iter()
+                .zip(speeds)
+                .map(|(f, &w)| f + shift(w))
+                .collect(),
+            backward_hz: rotating
+                .iter()
+                .zip(speeds)
+                .map(|(f, &w)| f - shift(w))
+                .collect(),
             rotating_hz: rotating,
         });
     }
-    Ok(CampbellDiagram { speeds_rad_s: speeds.to_vec(), modes, critical_speeds: critical_speeds(model, centrifugal)? })
+    Ok(CampbellDiagram {
+        speeds_rad_s: speeds.to_vec(),
+        modes,
+        critical_speeds: critical_speeds(model, centrifugal)?,
+    })
 }

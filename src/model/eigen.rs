@@ -24,12 +24,20 @@ pub enum EigenFailure {
 }
 
 /// The `count` lowest eigenpairs of K v = ω² M v with shift `sigma` > 0.
-pub fn lowest_modes(k: &Mat<f64>, m: &Mat<f64>, sigma: f64, count: usize) -> Result<EigenPairs, EigenFailure> {
+pub fn lowest_modes(
+    k: &Mat<f64>,
+    m: &Mat<f64>,
+    sigma: f64,
+    count: usize,
+) -> Result<EigenPairs, EigenFailure> {
     let n = k.nrows();
     let count = count.min(n);
-    m.llt(Side::Lower).map_err(|e| EigenFailure::MassNotPositiveDefinite(format!("{e:?}")))?;
+    m.llt(Side::Lower)
+        .map_err(|e| EigenFailure::MassNotPositiveDefinite(format!("{e:?}")))?;
     let a = Mat::<f64>::from_fn(n, n, |i, j| k[(i, j)] + sigma * m[(i, j)]);
-    let llt = a.llt(Side::Lower).map_err(|e| EigenFailure::ShiftedNotPositiveDefinite(format!("{e:?}")))?;
+    let llt = a
+        .llt(Side::Lower)
+        .map_err(|e| EigenFailure::ShiftedNotPositiveDefinite(format!("{e:?}")))?;
     let l = llt.L();
     // C = L⁻¹ M L⁻ᵀ: X = L⁻¹ M, then C = (L⁻¹ Xᵀ)ᵀ = L⁻¹ M L⁻ᵀ (M symmetric).
     let mut x = m.to_owned();
@@ -37,7 +45,9 @@ pub fn lowest_modes(k: &Mat<f64>, m: &Mat<f64>, sigma: f64, count: usize) -> Res
     let mut xt = x.transpose().to_owned();
     faer::linalg::triangular_solve::solve_lower_triangular_in_place(l, xt.as_mut(), faer::Par::Seq);
     let c = Mat::<f64>::from_fn(n, n, |i, j| 0.5 * (xt[(i, j)] + xt[(j, i)]));
-    let evd = c.self_adjoint_eigen(Side::Lower).map_err(|e| EigenFailure::Decomposition(format!("{e:?}")))?;
+    let evd = c
+        .self_adjoint_eigen(Side::Lower)
+        .map_err(|e| EigenFailure::Decomposition(format!("{e:?}")))?;
     let s = evd.S();
     let u = evd.U();
     // Ascending μ from faer: the largest μ (lowest ω²) are last.
@@ -48,7 +58,11 @@ pub fn lowest_modes(k: &Mat<f64>, m: &Mat<f64>, sigma: f64, count: usize) -> Res
         omega_squared.push(1.0 / mu - sigma);
         // v = L⁻ᵀ y; then scale so that vᵀ M v = 1.
         let mut y = Mat::<f64>::from_fn(n, 1, |i, _| u[(i, idx)]);
-        faer::linalg::triangular_solve::solve_upper_triangular_in_place(l.transpose(), y.as_mut(), faer::Par::Seq);
+        faer::linalg::triangular_solve::solve_upper_triangular_in_place(
+            l.transpose(),
+            y.as_mut(),
+            faer::Par::Seq,
+        );
         let mv = m * &y;
         let norm2: f64 = (0..n).map(|i| y[(i, 0)] * mv[(i, 0)]).sum();
         let scale = 1.0 / norm2.sqrt();
@@ -56,5 +70,8 @@ pub fn lowest_modes(k: &Mat<f64>, m: &Mat<f64>, sigma: f64, count: usize) -> Res
             vectors[(i, col)] = y[(i, 0)] * scale;
         }
     }
-    Ok(EigenPairs { omega_squared, vectors })
+    Ok(EigenPairs {
+        omega_squared,
+        vectors,
+    })
 }

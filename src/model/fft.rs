@@ -29,7 +29,10 @@ fn fft(x: &mut [C]) {
         }
     }
     // Twiddles e^{−2πi t/N}, each from its own angle (no accumulated rotation).
-    let twiddles: Vec<C> = (0..n / 2).map(|t| (-2.0 * PI * t as f64 / n as f64).sin_cos()).map(|(s, c)| (c, s)).collect();
+    let twiddles: Vec<C> = (0..n / 2)
+        .map(|t| (-2.0 * PI * t as f64 / n as f64).sin_cos())
+        .map(|(s, c)| (c, s))
+        .collect();
     let mut len = 2;
     while len <= n {
         let stride = n / len;
@@ -51,7 +54,10 @@ fn fft(x: &mut [C]) {
 /// power of two.
 pub fn cosine_sine_on_grid(a: &[f64], b: &[f64]) -> (Vec<f64>, Vec<f64>) {
     let m = a.len() - 1;
-    assert!(m.is_power_of_two() && b.len() == m + 1, "cosine_sine_on_grid: M = {m} must be a power of two");
+    assert!(
+        m.is_power_of_two() && b.len() == m + 1,
+        "cosine_sine_on_grid: M = {m} must be a power of two"
+    );
     let n = 2 * m;
     let mut z = vec![(0.0, 0.0); n];
     z[0].0 = a[0];
@@ -79,16 +85,36 @@ mod tests {
     #[test]
     fn the_transforms_equal_the_direct_sums() {
         for m in [1usize, 2, 8, 64, 256] {
-            let a: Vec<f64> = (0..=m).map(|k| 1.0 / (1.0 + k as f64).powi(2) + 0.3 * (k as f64).sin()).collect();
-            let b: Vec<f64> = (0..=m).map(|k| (0.7 * k as f64).cos() / (1.0 + k as f64)).collect();
+            let a: Vec<f64> = (0..=m)
+                .map(|k| 1.0 / (1.0 + k as f64).powi(2) + 0.3 * (k as f64).sin())
+                .collect();
+            let b: Vec<f64> = (0..=m)
+                .map(|k| (0.7 * k as f64).cos() / (1.0 + k as f64))
+                .collect();
             let (c, s) = cosine_sine_on_grid(&a, &b);
             let scale: f64 = a.iter().chain(&b).map(|v| v.abs()).sum();
             for j in 0..=m {
                 let x = PI * j as f64 / m as f64;
-                let dc: f64 = a.iter().enumerate().map(|(k, v)| v * (k as f64 * x).cos()).sum();
-                let ds: f64 = b.iter().enumerate().map(|(k, v)| v * (k as f64 * x).sin()).sum();
-                assert!((c[j] - dc).abs() < 1e-14 * scale, "M = {m}, c_{j}: {} vs {dc}", c[j]);
-                assert!((s[j] - ds).abs() < 1e-14 * scale, "M = {m}, s_{j}: {} vs {ds}", s[j]);
+                let dc: f64 = a
+                    .iter()
+                    .enumerate()
+                    .map(|(k, v)| v * (k as f64 * x).cos())
+                    .sum();
+                let ds: f64 = b
+                    .iter()
+                    .enumerate()
+                    .map(|(k, v)| v * (k as f64 * x).sin())
+                    .sum();
+                assert!(
+                    (c[j] - dc).abs() < 1e-14 * scale,
+                    "M = {m}, c_{j}: {} vs {dc}",
+                    c[j]
+                );
+                assert!(
+                    (s[j] - ds).abs() < 1e-14 * scale,
+                    "M = {m}, s_{j}: {} vs {ds}",
+                    s[j]
+                );
             }
         }
     }

@@ -40,13 +40,26 @@ impl Envelope {
         let mut start = Vec::with_capacity(n);
         let (mut va, mut vb) = (Vec::new(), Vec::new());
         for i in 0..n {
-            let f = (0..i).find(|&j| rev(a, i, j) != 0.0 || rev(b, i, j) != 0.0).unwrap_or(i);
+            let f = (0..i)
+                .find(|&j| rev(a, i, j) != 0.0 || rev(b, i, j) != 0.0)
+                .unwrap_or(i);
             first.push(f);
             start.push(va.len());
             va.extend((f..=i).map(|j| rev(a, i, j) + shift * rev(b, i, j)));
             vb.extend((f..=i).map(|j| rev(b, i, j)));
         }
-        (Envelope { first: first.clone(), start: start.clone(), values: va }, Envelope { first, start, values: vb })
+        (
+            Envelope {
+                first: first.clone(),
+                start: start.clone(),
+                values: va,
+            },
+            Envelope {
+                first,
+                start,
+                values: vb,
+            },
+        )
     }
 
     fn n(&self) -> usize {
@@ -132,12 +145,20 @@ fn dot(a: &[f64], b: &[f64]) -> f64 {
 /// (ω² ascending, M-orthonormal vectors), or `None` when the recurrence
 /// cannot deliver them (an invariant subspace before `count` converged
 /// pairs); the caller then solves densely.
-pub fn lowest_modes_lanczos(k: &Mat<f64>, m: &Mat<f64>, sigma: f64, count: usize) -> Result<Option<EigenPairs>, EigenFailure> {
+pub fn lowest_modes_lanczos(
+    k: &Mat<f64>,
+    m: &Mat<f64>,
+    sigma: f64,
+    count: usize,
+) -> Result<Option<EigenPairs>, EigenFailure> {
     let n = k.nrows();
     let count = count.min(n);
     let (shifted, mass) = Envelope::reversed_pair(k, m, sigma);
-    mass.clone_factor().map_err(EigenFailure::MassNotPositiveDefinite)?;
-    let l = shifted.factor().map_err(EigenFailure::ShiftedNotPositiveDefinite)?;
+    mass.clone_factor()
+        .map_err(EigenFailure::MassNotPositiveDefinite)?;
+    let l = shifted
+        .factor()
+        .map_err(EigenFailure::ShiftedNotPositiveDefinite)?;
     let apply = |q: &[f64], out: &mut [f64], tmp: &mut [f64]| {
         tmp.copy_from_slice(q);
         l.solve_upper(tmp);
@@ -148,7 +169,9 @@ pub fn lowest_modes_lanczos(k: &Mat<f64>, m: &Mat<f64>, sigma: f64, count: usize
     let mut seed = 0x9E37_79B9_7F4A_7C15u64;
     let mut q0: Vec<f64> = (0..n)
         .map(|_| {
-            seed = seed.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+            seed = seed
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
             0.5 + (seed >> 11) as f64 / (1u64 << 53) as f64
         })
         .collect();
@@ -202,7 +225,12 @@ pub fn lowest_modes_lanczos(k: &Mat<f64>, m: &Mat<f64>, sigma: f64, count: usize
 impl Envelope {
     /// Factor a copy (only to check positive definiteness).
     fn clone_factor(&self) -> Result<Envelope, String> {
-        Envelope { first: self.first.clone(), start: self.start.clone(), values: self.values.clone() }.factor()
+        Envelope {
+            first: self.first.clone(),
+            start: self.start.clone(),
+            values: self.values.clone(),
+        }
+        .factor()
     }
 }
 
@@ -210,7 +238,16 @@ impl Envelope {
 /// converged (residual `b_last |s_last|` ≤ [`RESIDUAL_TOLERANCE`] θ), mapped
 /// back to ω² and M-normalised eigenvectors of the original order.
 #[allow(clippy::too_many_arguments)]
-fn ritz_pairs(alpha: &[f64], beta: &[f64], b_last: f64, basis: &[Vec<f64>], count: usize, l: &Envelope, mass: &Envelope, sigma: f64) -> Result<Option<EigenPairs>, EigenFailure> {
+fn ritz_pairs(
+    alpha: &[f64],
+    beta: &[f64],
+    b_last: f64,
+    basis: &[Vec<f64>],
+    count: usize,
+    l: &Envelope,
+    mass: &Envelope,
+    sigma: f64,
+) -> Result<Option<EigenPairs>, EigenFailure> {
     let m = alpha.len();
     if m < count {
         return Ok(None);
@@ -226,10 +263,15 @@ fn ritz_pairs(alpha: &[f64], beta: &[f64], b_last: f64, basis: &[Vec<f64>], coun
             0.0
         }
     });
-    let evd = t.self_adjoint_eigen(Side::Lower).map_err(|e| EigenFailure::Decomposition(format!("{e:?}")))?;
+    let evd = t
+        .self_adjoint_eigen(Side::Lower)
+        .map_err(|e| EigenFailure::Decomposition(format!("{e:?}")))?;
     let (s, u) = (evd.S(), evd.U());
     let wanted: Vec<usize> = (0..count).map(|c| m - 1 - c).collect();
-    if wanted.iter().any(|&idx| (b_last * u[(m - 1, idx)]).abs() > RESIDUAL_TOLERANCE * s[idx].abs()) {
+    if wanted
+        .iter()
+        .any(|&idx| (b_last * u[(m - 1, idx)]).abs() > RESIDUAL_TOLERANCE * s[idx].abs())
+    {
         return Ok(None);
     }
     let n = l.n();
@@ -250,5 +292,8 @@ fn ritz_pairs(alpha: &[f64], beta: &[f64], b_last: f64, basis: &[Vec<f64>], coun
             vectors[(n - 1 - i, col)] = y[i] * scale;
         }
     }
-    Ok(Some(EigenPairs { omega_squared, vectors }))
+    Ok(Some(EigenPairs {
+        omega_squared,
+        vectors,
+    }))
 }

@@ -8,13 +8,13 @@
 //! eq. (11) ([`body`]). Immutable once built; no ROS, no time stepping.
 
 pub mod body;
-pub mod campbell;
-mod build;
 pub mod bspline;
+mod build;
+pub mod campbell;
 pub mod eigen;
+mod error;
 pub mod fft;
 pub mod lanczos;
-mod error;
 pub mod modes;
 pub mod nodal_lines;
 pub mod prestress;

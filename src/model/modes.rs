@@ -92,7 +92,8 @@ impl RadialShape {
     /// R, R', R'', R''' at r (clamped to [r_i, r_a]).
     pub fn eval(&self, r: f64) -> [f64; 4] {
         let (a, b) = self.basis.interval();
-        self.basis.eval_combination(&self.coefficients, r.clamp(a, b))
+        self.basis
+            .eval_combination(&self.coefficients, r.clamp(a, b))
     }
     pub fn value(&self, r: f64) -> f64 {
         self.eval(r)[0]
@@ -115,7 +116,11 @@ impl RadialShape {
         };
         // |R| ≤ max |c_j| of the span's four B-splines (convex hull): spans
         // that cannot beat the best value so far are skipped, largest first.
-        let bound = |s: usize| self.coefficients[s..s + 4].iter().fold(0.0f64, |m, c| m.max(c.abs()));
+        let bound = |s: usize| {
+            self.coefficients[s..s + 4]
+                .iter()
+                .fold(0.0f64, |m, c| m.max(c.abs()))
+        };
         let mut spans: Vec<usize> = (0..self.basis.spans()).collect();
         spans.sort_by(|&a, &b| bound(b).total_cmp(&bound(a)).then(a.cmp(&b)));
         for s in spans {
@@ -161,6 +166,7 @@ pub fn radial_moment(shape: &RadialShape, power: i32, r_power: i32) -> f64 {
         let (lo, hi) = shape.basis.span_bounds(s);
         super::quadrature::radial_points(lo, hi, &mut pts);
     }
-    pts.iter().map(|&(r, w)| w * shape.value(r).powi(power) * r.powi(r_power)).sum()
+    pts.iter()
+        .map(|&(r, w)| w * shape.value(r).powi(power) * r.powi(r_power))
+        .sum()
 }
-

@@ -11,7 +11,9 @@ pub fn nodal_radii(model: &PlateModel, mode: usize) -> Vec<f64> {
     let shape = &model.radial_shapes()[m.radial];
     let (ri, ra) = (model.plate().inner_radius, model.plate().outer_radius);
     let n = 4000;
-    let peak = (0..=n).map(|i| shape.value(ri + (ra - ri) * i as f64 / n as f64).abs()).fold(0.0, f64::max);
+    let peak = (0..=n)
+        .map(|i| shape.value(ri + (ra - ri) * i as f64 / n as f64).abs())
+        .fold(0.0, f64::max);
     let tiny = 1e-9 * peak;
     let mut roots = Vec::new();
     let mut prev: Option<(f64, f64)> = None;
@@ -47,7 +49,9 @@ pub fn nodal_angles(k: u32, shape: AngularShape) -> Vec<f64> {
     let kf = k as f64;
     match shape {
         AngularShape::Axisymmetric => vec![],
-        AngularShape::Cos => (0..2 * k).map(|j| (0.5 * PI + j as f64 * PI) / kf).collect(),
+        AngularShape::Cos => (0..2 * k)
+            .map(|j| (0.5 * PI + j as f64 * PI) / kf)
+            .collect(),
         AngularShape::Sin => (0..2 * k).map(|j| j as f64 * PI / kf).collect(),
     }
 }

@@ -29,17 +29,33 @@ impl LamePrestress {
     /// The prestress of `plate` with the in-plane inner condition of `centrifugal`.
     pub fn new(plate: &PlateConfig, centrifugal: &CentrifugalConfig) -> LamePrestress {
         let inner_fixed = centrifugal.in_plane_inner.is_fixed(plate.inner_boundary);
-        let (ri, ra, nu, e) = (plate.inner_radius, plate.outer_radius, plate.poisson_ratio, plate.youngs_modulus);
+        let (ri, ra, nu, e) = (
+            plate.inner_radius,
+            plate.outer_radius,
+            plate.poisson_ratio,
+            plate.youngs_modulus,
+        );
         let c = -(1.0 - nu * nu) * plate.density / (8.0 * e);
         // σ_r/Ē at r as a row of (A, B) plus the c term; u at r likewise.
         let stress_row = |r: f64| [(1.0 + nu), -(1.0 - nu) / (r * r), (3.0 + nu) * c * r * r];
         let outer = stress_row(ra);
-        let inner = if inner_fixed { [ri, 1.0 / ri, c * ri * ri * ri] } else { stress_row(ri) };
+        let inner = if inner_fixed {
+            [ri, 1.0 / ri, c * ri * ri * ri]
+        } else {
+            stress_row(ri)
+        };
         // Solve [outer; inner] (A, B) = −(c terms) by Cramer's rule.
         let det = outer[0] * inner[1] - outer[1] * inner[0];
         let a = (-outer[2] * inner[1] + outer[1] * inner[2]) / det;
         let b = (-outer[0] * inner[2] + outer[2] * inner[0]) / det;
-        LamePrestress { a, b, c, e_bar: e / (1.0 - nu * nu), nu, inner_fixed }
+        LamePrestress {
+            a,
+            b,
+            c,
+            e_bar: e / (1.0 - nu * nu),
+            nu,
+            inner_fixed,
+        }
     }
 
     /// (σ_r, σ_θ) at radius r, per unit Ω².

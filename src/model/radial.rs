@@ -72,7 +72,8 @@ impl RadialDiscretisation {
     /// of a small pinned hole) with the plate's edge conditions.
     pub fn new(plate: &PlateConfig, rigidity: f64, splines: usize) -> Self {
         let (ri, ra) = (plate.inner_radius, plate.outer_radius);
-        let pinned_small_hole = plate.inner_boundary != Boundary::Free && ri / ra < SMALL_HOLE_RATIO;
+        let pinned_small_hole =
+            plate.inner_boundary != Boundary::Free && ri / ra < SMALL_HOLE_RATIO;
         let basis = if pinned_small_hole {
             BSplineBasis::graded(ri, ra, splines, GRADED_KNOTS, 0.25 * ri)
         } else {
@@ -86,8 +87,10 @@ impl RadialDiscretisation {
         for (pos, &g) in free.iter().enumerate() {
             slot[g] = Some(pos);
         }
-        let free_free = plate.inner_boundary == Boundary::Free && plate.outer_boundary == Boundary::Free;
-        let rigid_functions = (free_free && ri / ra >= RING_RATIO).then_some((0.5 * (ri + ra), ra - ri));
+        let free_free =
+            plate.inner_boundary == Boundary::Free && plate.outer_boundary == Boundary::Free;
+        let rigid_functions =
+            (free_free && ri / ra >= RING_RATIO).then_some((0.5 * (ri + ra), ra - ri));
         let mut points = Vec::new();
         let mut buf = Vec::new();
         for s in 0..basis.spans() {
@@ -95,7 +98,12 @@ impl RadialDiscretisation {
             buf.clear();
             radial_points(lo, hi, &mut buf);
             for &(r, weight) in &buf {
-                points.push(QuadPoint { span: s, r, weight, ders: basis.eval_span(s, r) });
+                points.push(QuadPoint {
+                    span: s,
+                    r,
+                    weight,
+                    ders: basis.eval_span(s, r),
+                });
             }
         }
         RadialDiscretisation {
@@ -141,7 +149,8 @@ impl RadialDiscretisation {
                 for j in 0..count {
                     let (gj, [vj, ..]) = local[j];
                     let [aj, bj, cj] = abc[j];
-                    let stiff = (ai + bi) * (aj + bj) - (1.0 - nu) * (ai * bj + bi * aj) + 2.0 * (1.0 - nu) * k2 * ci * cj;
+                    let stiff = (ai + bi) * (aj + bj) - (1.0 - nu) * (ai * bj + bi * aj)
+                        + 2.0 * (1.0 - nu) * k2 * ci * cj;
                     kk[(gi, gj)] += self.rigidity * w * stiff;
                     mm[(gi, gj)] += self.areal_density * w * vi * vj;
                 }
@@ -177,7 +186,12 @@ impl RadialDiscretisation {
     /// `stresses(r)` for nodal-diameter number k, over the free coefficients:
     /// U_g = ½ c_k h ∫ (σ_r R'² + σ_θ k² R²/r²) r dr (DESIGN.md "Spinning
     /// prestress"; docs/rotor_dynamics.md).
-    pub fn assemble_geometric(&self, k: u32, thickness: f64, stresses: impl Fn(f64) -> (f64, f64)) -> Mat<f64> {
+    pub fn assemble_geometric(
+        &self,
+        k: u32,
+        thickness: f64,
+        stresses: impl Fn(f64) -> (f64, f64),
+    ) -> Mat<f64> {
         let n = self.n_free();
         let mut kg = Mat::<f64>::zeros(n, n);
         let k2 = (k as f64) * (k as f64);

@@ -82,7 +82,9 @@ impl ResidualKernel {
         if let Some((a, b)) = self.tail_fit {
             if delta.rem_euclid(std::f64::consts::TAU) == 0.0 {
                 let kk = self.coefficients.len() as f64;
-                return self.coefficients.iter().sum::<f64>() + a * hurwitz_zeta(3.0, kk) + b * hurwitz_zeta(4.0, kk);
+                return self.coefficients.iter().sum::<f64>()
+                    + a * hurwitz_zeta(3.0, kk)
+                    + b * hurwitz_zeta(4.0, kk);
             }
         }
         let n = self.series_len();
@@ -159,7 +161,10 @@ fn folded_sums(a: &[f64], b: &[f64]) -> (Vec<f64>, Vec<f64>) {
     let m_max = a.len() - 1;
     let period = 2 * m_max;
     let step = std::f64::consts::PI / m_max as f64;
-    let (cos_table, sin_table): (Vec<f64>, Vec<f64>) = (0..period).map(|i| (i as f64 * step).sin_cos()).map(|(s, c)| (c, s)).unzip();
+    let (cos_table, sin_table): (Vec<f64>, Vec<f64>) = (0..period)
+        .map(|i| (i as f64 * step).sin_cos())
+        .map(|(s, c)| (c, s))
+        .unzip();
     let (mut values, mut slopes) = (Vec::with_capacity(m_max + 1), Vec::with_capacity(m_max + 1));
     for j in 0..=m_max {
         let (mut c, mut d, mut index) = (0.0, 0.0, 0);
@@ -205,7 +210,8 @@ fn sine_sum(d: impl Fn(usize) -> f64, n: usize, x: f64) -> f64 {
 
 /// Σ_{k ≥ n} k^{−s} (Euler–Maclaurin; n ≥ 8 gives far below 1e-12 relative).
 fn hurwitz_zeta(s: f64, n: f64) -> f64 {
-    n.powf(1.0 - s) / (s - 1.0) + 0.5 * n.powf(-s) + s / 12.0 * n.powf(-s - 1.0) - s * (s + 1.0) * (s + 2.0) / 720.0 * n.powf(-s - 3.0)
+    n.powf(1.0 - s) / (s - 1.0) + 0.5 * n.powf(-s) + s / 12.0 * n.powf(-s - 1.0)
+        - s * (s + 1.0) * (s + 2.0) / 720.0 * n.powf(-s - 3.0)
 }
 
 impl PlateModel {
@@ -223,12 +229,22 @@ impl PlateModel {
     /// The residual compliance of the subset of this model's modes with
     /// `retained(k, l)` (the modes left out count as truncated): for
     /// comparing mode sets from one large model (`study`).
-    pub fn residual_kernel_of(&self, h: &StaticHarmonics, a: usize, b: usize, retained: impl Fn(u32, u32) -> bool) -> ResidualKernel {
+    pub fn residual_kernel_of(
+        &self,
+        h: &StaticHarmonics,
+        a: usize,
+        b: usize,
+        retained: impl Fn(u32, u32) -> bool,
+    ) -> ResidualKernel {
         let (ra, rb) = (h.radii[a], h.radii[b]);
         let mut coefficients: Vec<f64> = (0..=HARMONICS).map(|k| h.get(k, a, b)).collect();
         let stiffness = &self.body().modal_stiffness;
         for (i, m) in self.modes().iter().enumerate() {
-            if m.shape == AngularShape::Sin || h.skipped.contains(&m.k) || m.k > HARMONICS || !retained(m.k, m.l) {
+            if m.shape == AngularShape::Sin
+                || h.skipped.contains(&m.k)
+                || m.k > HARMONICS
+                || !retained(m.k, m.l)
+            {
                 continue;
             }
             let shape = &self.radial_shapes()[m.radial];
@@ -246,7 +262,10 @@ impl PlateModel {
         });
         // The direct sum covers k = 0..=K; the tail starts at K + 1.
         coefficients.truncate(HARMONICS as usize + 1);
-        ResidualKernel { coefficients, tail_fit }
+        ResidualKernel {
+            coefficients,
+            tail_fit,
+        }
     }
 }
 
@@ -310,7 +329,14 @@ impl BandedStiffness {
                 let d = basis.eval_span(s, r);
                 let w = rigidity * wq * r;
                 // Per function: a = R'', e = R'/r, f = R/r², c = R'/r − R/r².
-                let f4: [[f64; 4]; 4] = std::array::from_fn(|j| [d[2][j], d[1][j] / r, d[0][j] / (r * r), d[1][j] / r - d[0][j] / (r * r)]);
+                let f4: [[f64; 4]; 4] = std::array::from_fn(|j| {
+                    [
+                        d[2][j],
+                        d[1][j] / r,
+                        d[0][j] / (r * r),
+                        d[1][j] / r - d[0][j] / (r * r),
+                    ]
+                });
                 for i in 0..4 {
                     let gi = s + i;
                     if gi < drop_inner || gi - drop_inner >= n {
@@ -324,7 +350,9 @@ impl BandedStiffness {
                         let [ai, ei, fi, ci] = f4[i];
                         let [aj, ej, fj, cj] = f4[j];
                         let k0 = (ai + ei) * (aj + ej) - (1.0 - nu) * (ai * ej + ei * aj);
-                        let k1 = -((ai + ei) * fj + fi * (aj + ej)) + (1.0 - nu) * (ai * fj + fi * aj) + 2.0 * (1.0 - nu) * ci * cj;
+                        let k1 = -((ai + ei) * fj + fi * (aj + ej))
+                            + (1.0 - nu) * (ai * fj + fi * aj)
+                            + 2.0 * (1.0 - nu) * ci * cj;
                         let k2 = fi * fj;
                         let (row, dd) = (gi - drop_inner, j - i);
                         parts[0][row][dd] += w * k0;
@@ -334,7 +362,12 @@ impl BandedStiffness {
                 }
             }
         }
-        BandedStiffness { basis, drop_inner, n, parts }
+        BandedStiffness {
+            basis,
+            drop_inner,
+            n,
+            parts,
+        }
     }
 
     /// The free B-splines non-zero at r: (free index, value).
@@ -437,14 +470,20 @@ fn static_harmonics(plate: &PlateConfig, rigidity: f64, radii: &[f64]) -> Static
     let (ri, ra) = (plate.inner_radius, plate.outer_radius);
     let radii: Vec<f64> = radii.iter().map(|r| r.clamp(ri, ra)).collect();
     let nr = radii.len();
-    let free_free = plate.inner_boundary == Boundary::Free && plate.outer_boundary == Boundary::Free;
+    let free_free =
+        plate.inner_boundary == Boundary::Free && plate.outer_boundary == Boundary::Free;
     let mut g = Vec::with_capacity(HARMONICS as usize + 1);
     let mut skipped = Vec::new();
     let mut l = Vec::new();
     let mut k = 0;
     for &k_band in &BANDS {
-        let stiffness = BandedStiffness::new(plate, rigidity, BSplineBasis::with_breakpoints(&breakpoints(ri, ra, &radii, k_band)));
-        let loads: Vec<[(usize, f64); 4]> = radii.iter().map(|&r| stiffness.load_vector(r)).collect();
+        let stiffness = BandedStiffness::new(
+            plate,
+            rigidity,
+            BSplineBasis::with_breakpoints(&breakpoints(ri, ra, &radii, k_band)),
+        );
+        let loads: Vec<[(usize, f64); 4]> =
+            radii.iter().map(|&r| stiffness.load_vector(r)).collect();
         let mut x = vec![0.0; stiffness.n];
         while k <= k_band {
             let mut gk = vec![0.0; nr * nr];
@@ -463,7 +502,11 @@ fn static_harmonics(plate: &PlateConfig, rigidity: f64, radii: &[f64]) -> Static
                 }
                 band_solve(&l, &mut x);
                 for a in 0..nr {
-                    gk[a * nr + b] = loads[a].iter().filter(|(i, _)| *i != usize::MAX).map(|&(i, v)| v * x[i]).sum();
+                    gk[a * nr + b] = loads[a]
+                        .iter()
+                        .filter(|(i, _)| *i != usize::MAX)
+                        .map(|&(i, v)| v * x[i])
+                        .sum();
                 }
             }
             // Symmetrise (Maxwell–Betti holds to round-off).
@@ -491,19 +534,33 @@ mod tests {
         let n = 12;
         let dense = |i: usize, j: usize| -> f64 {
             let d = i.abs_diff(j);
-            match d { 0 => 10.0 + i as f64, 1 => -2.0, 2 => 0.5, 3 => -0.25, _ => 0.0 }
+            match d {
+                0 => 10.0 + i as f64,
+                1 => -2.0,
+                2 => 0.5,
+                3 => -0.25,
+                _ => 0.0,
+            }
         };
         let bs = BandedStiffness {
             basis: BSplineBasis::new(1.0, 2.0, 4),
             drop_inner: 0,
             n,
-            parts: [(0..n).map(|i| std::array::from_fn(|d| if i + d < n { dense(i, i + d) } else { 0.0 })).collect(), vec![[0.0; 4]; n], vec![[0.0; 4]; n]],
+            parts: [
+                (0..n)
+                    .map(|i| std::array::from_fn(|d| if i + d < n { dense(i, i + d) } else { 0.0 }))
+                    .collect(),
+                vec![[0.0; 4]; n],
+                vec![[0.0; 4]; n],
+            ],
         };
         let mut l = Vec::new();
         bs.factor(0, &mut l).unwrap();
         let xs: Vec<f64> = (0..n).map(|i| (i as f64 * 0.7).sin()).collect();
         let c0 = angular_norm(0);
-        let mut b: Vec<f64> = (0..n).map(|i| (0..n).map(|j| c0 * dense(i, j) * xs[j]).sum()).collect();
+        let mut b: Vec<f64> = (0..n)
+            .map(|i| (0..n).map(|j| c0 * dense(i, j) * xs[j]).sum())
+            .collect();
         band_solve(&l, &mut b);
         for (u, v) in b.iter().zip(&xs) {
             assert!((u - v).abs() < 1e-13, "{u} vs {v}");
@@ -516,7 +573,9 @@ mod tests {
         let (k2, ck) = ((k as f64).powi(2), angular_norm(k));
         let n = bs.n;
         let mut l = vec![[0.0; 4]; n];
-        let a = |i: usize, d: usize| ck * (bs.parts[0][i][d] + k2 * bs.parts[1][i][d] + k2 * k2 * bs.parts[2][i][d]);
+        let a = |i: usize, d: usize| {
+            ck * (bs.parts[0][i][d] + k2 * bs.parts[1][i][d] + k2 * k2 * bs.parts[2][i][d])
+        };
         for i in 0..n {
             for d in (1..4).rev() {
                 if d > i {
@@ -568,29 +627,70 @@ mod tests {
         // The static solve of a steel annulus graded towards its rim (the
         // lathe disc's residual), every band, and small systems (n < 4).
         let plate = PlateConfig::lathe_disc();
-        let rigidity = crate::config::bending_rigidity(plate.youngs_modulus, plate.thickness, plate.poisson_ratio);
+        let rigidity = crate::config::bending_rigidity(
+            plate.youngs_modulus,
+            plate.thickness,
+            plate.poisson_ratio,
+        );
         let mut systems = Vec::new();
         for &k_band in &BANDS {
-            let basis = BSplineBasis::with_breakpoints(&breakpoints(0.075, 0.15, &[0.15, 0.1], k_band));
+            let basis =
+                BSplineBasis::with_breakpoints(&breakpoints(0.075, 0.15, &[0.15, 0.1], k_band));
             systems.push((BandedStiffness::new(&plate, rigidity, basis), k_band));
         }
         for n in 1..6 {
-            let dense = |i: usize, j: usize| match i.abs_diff(j) { 0 => 10.0 + i as f64, 1 => -2.0, 2 => 0.5, 3 => -0.25, _ => 0.0 };
-            let parts = [(0..n).map(|i| std::array::from_fn(|d| if i + d < n { dense(i, i + d) } else { 0.0 })).collect(), vec![[0.1; 4]; n], vec![[0.01; 4]; n]];
-            systems.push((BandedStiffness { basis: BSplineBasis::new(1.0, 2.0, 4), drop_inner: 0, n, parts }, 8));
+            let dense = |i: usize, j: usize| match i.abs_diff(j) {
+                0 => 10.0 + i as f64,
+                1 => -2.0,
+                2 => 0.5,
+                3 => -0.25,
+                _ => 0.0,
+            };
+            let parts = [
+                (0..n)
+                    .map(|i| std::array::from_fn(|d| if i + d < n { dense(i, i + d) } else { 0.0 }))
+                    .collect(),
+                vec![[0.1; 4]; n],
+                vec![[0.01; 4]; n],
+            ];
+            systems.push((
+                BandedStiffness {
+                    basis: BSplineBasis::new(1.0, 2.0, 4),
+                    drop_inner: 0,
+                    n,
+                    parts,
+                },
+                8,
+            ));
         }
         let mut l = Vec::new();
         for (bs, k_band) in &systems {
             for k in [0, 1, 2, 3, k_band / 2 + 1, *k_band] {
                 let reference = factor_loops(bs, k);
-                assert_eq!(bs.factor(k, &mut l).is_some(), reference.is_some(), "k = {k}, n = {}", bs.n);
+                assert_eq!(
+                    bs.factor(k, &mut l).is_some(),
+                    reference.is_some(),
+                    "k = {k}, n = {}",
+                    bs.n
+                );
                 let Some(reference) = reference else { continue };
-                assert!(l.iter().flatten().zip(reference.iter().flatten()).all(|(a, b)| a.to_bits() == b.to_bits()), "factor k = {k}, n = {}", bs.n);
+                assert!(
+                    l.iter()
+                        .flatten()
+                        .zip(reference.iter().flatten())
+                        .all(|(a, b)| a.to_bits() == b.to_bits()),
+                    "factor k = {k}, n = {}",
+                    bs.n
+                );
                 let b: Vec<f64> = (0..bs.n).map(|i| (i as f64 * 0.37 + 0.1).sin()).collect();
                 let (mut x, mut y) = (b.clone(), b);
                 band_solve(&l, &mut x);
                 band_solve_loops(&reference, &mut y);
-                assert!(x.iter().zip(&y).all(|(a, b)| a.to_bits() == b.to_bits()), "solve k = {k}, n = {}", bs.n);
+                assert!(
+                    x.iter().zip(&y).all(|(a, b)| a.to_bits() == b.to_bits()),
+                    "solve k = {k}, n = {}",
+                    bs.n
+                );
             }
         }
     }
@@ -599,9 +699,18 @@ mod tests {
     fn cosine_and_sine_sums_match_direct_evaluation() {
         let c: Vec<f64> = (0..50).map(|k| 1.0 / (1.0 + k as f64).powi(3)).collect();
         for x in [0.0, 0.3, 1.0, 2.5, 3.1] {
-            let direct: f64 = c.iter().enumerate().map(|(k, v)| v * (k as f64 * x).cos()).sum();
+            let direct: f64 = c
+                .iter()
+                .enumerate()
+                .map(|(k, v)| v * (k as f64 * x).cos())
+                .sum();
             assert!((cosine_sum(|k| c[k], c.len(), x) - direct).abs() < 1e-14);
-            let direct: f64 = c.iter().enumerate().skip(1).map(|(k, v)| v * (k as f64 * x).sin()).sum();
+            let direct: f64 = c
+                .iter()
+                .enumerate()
+                .skip(1)
+                .map(|(k, v)| v * (k as f64 * x).sin())
+                .sum();
             assert!((sine_sum(|k| c[k], c.len(), x) - direct).abs() < 1e-14);
         }
     }
@@ -611,16 +720,34 @@ mod tests {
         // Both ways sum the same 8 × 65 terms: they differ by round-off only.
         // M = 128 by FFT, M = 96 summed directly.
         let coefficients: Vec<f64> = (0..=64).map(|k| 1.0 / (1.0 + k as f64).powi(3)).collect();
-        for (tail_fit, m) in [(Some((1.0, 0.5)), 96), (None, 96), (Some((1.0, 0.5)), 128), (None, 128)] {
-            let kernel = ResidualKernel { coefficients: coefficients.clone(), tail_fit };
+        for (tail_fit, m) in [
+            (Some((1.0, 0.5)), 96),
+            (None, 96),
+            (Some((1.0, 0.5)), 128),
+            (None, 128),
+        ] {
+            let kernel = ResidualKernel {
+                coefficients: coefficients.clone(),
+                tail_fit,
+            };
             let (values, slopes) = kernel.on_grid(m);
             assert_eq!((values.len(), slopes.len()), (m + 1, m + 1));
             assert_eq!(values[0], kernel.at(0.0));
             let scale = kernel.at(0.0).abs();
             for j in 0..=m {
                 let x = j as f64 * std::f64::consts::PI / m as f64;
-                assert!((values[j] - kernel.at(x)).abs() < 1e-14 * scale, "C at j = {j}: {} vs {}", values[j], kernel.at(x));
-                assert!((slopes[j] - kernel.derivative(x)).abs() < 1e-13 * scale, "C' at j = {j}: {} vs {}", slopes[j], kernel.derivative(x));
+                assert!(
+                    (values[j] - kernel.at(x)).abs() < 1e-14 * scale,
+                    "C at j = {j}: {} vs {}",
+                    values[j],
+                    kernel.at(x)
+                );
+                assert!(
+                    (slopes[j] - kernel.derivative(x)).abs() < 1e-13 * scale,
+                    "C' at j = {j}: {} vs {}",
+                    slopes[j],
+                    kernel.derivative(x)
+                );
             }
         }
     }
@@ -628,16 +755,26 @@ mod tests {
     #[test]
     fn kernel_tail_is_summed_away_from_zero_and_its_slope_is_the_derivative() {
         let coefficients: Vec<f64> = (0..=64).map(|k| 1.0 / (1.0 + k as f64).powi(3)).collect();
-        let kernel = ResidualKernel { coefficients, tail_fit: Some((1.0, 0.5)) };
+        let kernel = ResidualKernel {
+            coefficients,
+            tail_fit: Some((1.0, 0.5)),
+        };
         // At Δ = 0 the zeta tail, near it the tail summed to 8 × 65 terms: they differ
         // by the remainder Σ_{k ≥ 520} (k⁻³ + k⁻⁴/2) ≈ 1/(2 · 520²).
         let (at0, near) = (kernel.at(0.0), kernel.at(1e-9));
         let remainder = 1.0 / (2.0 * 520.0f64.powi(2));
-        assert!(((at0 - near) - remainder).abs() < 2e-8, "{at0} − {near} vs {remainder}");
+        assert!(
+            ((at0 - near) - remainder).abs() < 2e-8,
+            "{at0} − {near} vs {remainder}"
+        );
         for x in [0.2, 1.0, 2.9] {
             let h = 1e-5;
             let fd = (kernel.at(x + h) - kernel.at(x - h)) / (2.0 * h);
-            assert!((fd - kernel.derivative(x)).abs() < 1e-6, "{fd} vs {}", kernel.derivative(x));
+            assert!(
+                (fd - kernel.derivative(x)).abs() < 1e-6,
+                "{fd} vs {}",
+                kernel.derivative(x)
+            );
         }
     }
 }

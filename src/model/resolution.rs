@@ -65,7 +65,11 @@ pub struct Discretisations<'a> {
 
 impl<'a> Discretisations<'a> {
     pub fn new(plate: &'a PlateConfig, rigidity: f64) -> Self {
-        Discretisations { plate, rigidity, built: Vec::new() }
+        Discretisations {
+            plate,
+            rigidity,
+            built: Vec::new(),
+        }
     }
 
     /// Take over the discretisations `other` built.
@@ -82,7 +86,10 @@ impl<'a> Discretisations<'a> {
         let i = match self.built.iter().position(|(n, _)| *n == splines) {
             Some(i) => i,
             None => {
-                self.built.push((splines, RadialDiscretisation::new(self.plate, self.rigidity, splines)));
+                self.built.push((
+                    splines,
+                    RadialDiscretisation::new(self.plate, self.rigidity, splines),
+                ));
                 self.built.len() - 1
             }
         };
@@ -91,11 +98,20 @@ impl<'a> Discretisations<'a> {
 }
 
 /// The eigenproblem of k on `disc`: the `count` lowest pairs.
-pub fn solve(disc: &RadialDiscretisation, sigma: f64, k: u32, count: usize) -> Result<EigenPairs, ModelError> {
+pub fn solve(
+    disc: &RadialDiscretisation,
+    sigma: f64,
+    k: u32,
+    count: usize,
+) -> Result<EigenPairs, ModelError> {
     let (kk, mm) = disc.assemble(k);
     let pairs = lowest_pairs(&kk, &mm, sigma, count).map_err(|e| match e {
-        EigenFailure::MassNotPositiveDefinite(reason) => ModelError::MassNotPositiveDefinite { k, reason },
-        EigenFailure::ShiftedNotPositiveDefinite(reason) | EigenFailure::Decomposition(reason) => ModelError::Eigenproblem { k, reason },
+        EigenFailure::MassNotPositiveDefinite(reason) => {
+            ModelError::MassNotPositiveDefinite { k, reason }
+        }
+        EigenFailure::ShiftedNotPositiveDefinite(reason) | EigenFailure::Decomposition(reason) => {
+            ModelError::Eigenproblem { k, reason }
+        }
     })?;
     Ok(pairs)
 }
@@ -107,14 +123,23 @@ pub const PARALLEL_FROM: usize = 16;
 
 /// `auto` for every k of `ks` (ascending): each k starts where the previous
 /// k of its chain ended.
-pub fn choose_all<'a>(plate: &'a PlateConfig, rigidity: f64, sigma: f64, ks: &[u32], count: usize) -> Result<(Vec<Resolved>, Discretisations<'a>), ModelError> {
+pub fn choose_all<'a>(
+    plate: &'a PlateConfig,
+    rigidity: f64,
+    sigma: f64,
+    ks: &[u32],
+    count: usize,
+) -> Result<(Vec<Resolved>, Discretisations<'a>), ModelError> {
     let chain = |part: &[u32]| -> Result<(Vec<Resolved>, Discretisations<'a>), ModelError> {
         let mut discs = Discretisations::new(plate, rigidity);
         let mut start = first_guess(plate);
         let mut out = Vec::with_capacity(part.len());
         for &k in part {
             let ls: Vec<u32> = (0..count as u32)
-                .filter(|l| plate.nodal_circles.contains(l) && !is_rigid_body(plate.inner_boundary, plate.outer_boundary, k, *l))
+                .filter(|l| {
+                    plate.nodal_circles.contains(l)
+                        && !is_rigid_body(plate.inner_boundary, plate.outer_boundary, k, *l)
+                })
                 .collect();
             let r = choose(&mut discs, sigma, k, &ls, count, start)?;
             start = predicted(r.resolution, plate.frequency_tolerance);
@@ -140,7 +165,12 @@ pub fn choose_all<'a>(plate: &'a PlateConfig, rigidity: f64, sigma: f64, ks: &[u
 
 /// Dense below [`DENSE_LIMIT`] free coefficients, Lanczos above (dense if it
 /// does not converge).
-fn lowest_pairs(kk: &faer::Mat<f64>, mm: &faer::Mat<f64>, sigma: f64, count: usize) -> Result<EigenPairs, EigenFailure> {
+fn lowest_pairs(
+    kk: &faer::Mat<f64>,
+    mm: &faer::Mat<f64>,
+    sigma: f64,
+    count: usize,
+) -> Result<EigenPairs, EigenFailure> {
     if kk.nrows() > DENSE_LIMIT {
         if let Some(pairs) = lowest_modes_lanczos(kk, mm, sigma, count)? {
             return Ok(pairs);
@@ -153,7 +183,10 @@ fn lowest_pairs(kk: &faer::Mat<f64>, mm: &faer::Mat<f64>, sigma: f64, count: usi
 /// nodal circle (about what l needs for 1e-6 on the lathe disc).
 pub fn first_guess(plate: &PlateConfig) -> usize {
     let max_l = plate.nodal_circles.iter().copied().max().unwrap_or(0) as usize;
-    (crate::config::DEFAULT_RADIAL_SPLINES).max(12 * max_l + 16).max(plate.min_radial_splines()).min(MAX_AUTO_SPLINES)
+    (crate::config::DEFAULT_RADIAL_SPLINES)
+        .max(12 * max_l + 16)
+        .max(plate.min_radial_splines())
+        .min(MAX_AUTO_SPLINES)
 }
 
 /// Richardson estimate of the largest relative error of the fine solve's
@@ -162,7 +195,10 @@ pub fn estimate(coarse: (usize, &EigenPairs), fine: (usize, &EigenPairs), ls: &[
     let rho = ((coarse.0 as f64 - 3.0) / (fine.0 as f64 - 3.0)).powf(ORDER);
     ls.iter()
         .map(|&l| {
-            let (wc, wf) = (coarse.1.omega_squared[l as usize].max(0.0).sqrt(), fine.1.omega_squared[l as usize].max(0.0).sqrt());
+            let (wc, wf) = (
+                coarse.1.omega_squared[l as usize].max(0.0).sqrt(),
+                fine.1.omega_squared[l as usize].max(0.0).sqrt(),
+            );
             (wc - wf).abs() / wf * rho / (1.0 - rho)
         })
         .fold(0.0, f64::max)
@@ -182,7 +218,14 @@ fn coarse_of(fine: usize) -> usize {
 
 /// `auto` for one k: the elastic requested `ls` (the eigenproblem returns
 /// `count` = max l + 1 pairs) to `plate.frequency_tolerance`, starting at `start`.
-pub fn choose(discs: &mut Discretisations, sigma: f64, k: u32, ls: &[u32], count: usize, start: usize) -> Result<Resolved, ModelError> {
+pub fn choose(
+    discs: &mut Discretisations,
+    sigma: f64,
+    k: u32,
+    ls: &[u32],
+    count: usize,
+    start: usize,
+) -> Result<Resolved, ModelError> {
     let plate = discs.plate;
     let tolerance = plate.frequency_tolerance;
     let min = plate.min_radial_splines();
@@ -195,10 +238,22 @@ pub fn choose(discs: &mut Discretisations, sigma: f64, k: u32, ls: &[u32], count
         let pairs = solve(discs.get(fine_n), sigma, k, count)?;
         let e = estimate((coarse.0, &coarse.1), (fine_n, &pairs), ls);
         if e <= tolerance {
-            return Ok(Resolved { pairs, resolution: KResolution { k, splines: fine_n, estimated_error: Some(e) } });
+            return Ok(Resolved {
+                pairs,
+                resolution: KResolution {
+                    k,
+                    splines: fine_n,
+                    estimated_error: Some(e),
+                },
+            });
         }
         if fine_n >= MAX_AUTO_SPLINES {
-            return Err(ModelError::FrequencyToleranceNotReached { k, tolerance, reached: e, splines: fine_n });
+            return Err(ModelError::FrequencyToleranceNotReached {
+                k,
+                tolerance,
+                reached: e,
+                splines: fine_n,
+            });
         }
         let grow = ((e / tolerance).powf(1.0 / ORDER) * GROWTH_MARGIN).clamp(1.2, MAX_GROWTH);
         let next = 3 + ((fine_n - 3) as f64 * grow).ceil() as usize;

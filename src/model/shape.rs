@@ -30,7 +30,11 @@ impl PlateModel {
         let m = &self.modes()[i];
         let rr = self.radial_shapes()[m.radial].eval(r);
         let (t, dt) = m.shape.eval(m.k, phi);
-        ShapeValue { w: rr[0] * t, w_r: rr[1] * t, w_phi: rr[0] * dt }
+        ShapeValue {
+            w: rr[0] * t,
+            w_r: rr[1] * t,
+            w_phi: rr[0] * dt,
+        }
     }
 
     /// The deflection Σ w_i q_i at (r, φ).
@@ -50,6 +54,10 @@ impl PlateModel {
     pub fn displacement(&self, q: &[f64], r: f64, phi: f64, z: f64) -> [f64; 3] {
         let d = self.deflection(q, r, phi);
         let (s, c) = phi.sin_cos();
-        [-z * (c * d.w_r - s / r * d.w_phi), -z * (s * d.w_r + c / r * d.w_phi), d.w]
+        [
+            -z * (c * d.w_r - s / r * d.w_phi),
+            -z * (s * d.w_r + c / r * d.w_phi),
+            d.w,
+        ]
     }
 }

@@ -35,14 +35,27 @@ pub struct SpinningSpectrum {
 
 impl SpinningSpectrum {
     /// The spectrum of nodal-diameter number k with the `count` lowest l.
-    pub fn new(plate: &PlateConfig, centrifugal: &CentrifugalConfig, k: u32, count: usize) -> SpinningSpectrum {
-        let rigidity = super::bending_rigidity(plate.youngs_modulus, plate.thickness, plate.poisson_ratio);
+    pub fn new(
+        plate: &PlateConfig,
+        centrifugal: &CentrifugalConfig,
+        k: u32,
+        count: usize,
+    ) -> SpinningSpectrum {
+        let rigidity =
+            super::bending_rigidity(plate.youngs_modulus, plate.thickness, plate.poisson_ratio);
         let splines = spectrum_splines(plate, rigidity, k, count);
         let disc = RadialDiscretisation::new(plate, rigidity, splines);
         let (stiffness, mass) = disc.assemble(k);
         let prestress = LamePrestress::new(plate, centrifugal);
         let geometric = disc.assemble_geometric(k, plate.thickness, |r| prestress.stresses(r));
-        SpinningSpectrum { k, stiffness, mass, geometric, shift: eigen_shift(plate, rigidity), count }
+        SpinningSpectrum {
+            k,
+            stiffness,
+            mass,
+            geometric,
+            shift: eigen_shift(plate, rigidity),
+            count,
+        }
     }
 
     /// The nodal-diameter number.
@@ -54,9 +67,15 @@ impl SpinningSpectrum {
     pub fn omega_squared(&self, spin: f64) -> Result<Vec<f64>, ModelError> {
         let s = spin * spin;
         let n = self.stiffness.nrows();
-        let k_total = Mat::<f64>::from_fn(n, n, |i, j| self.stiffness[(i, j)] + s * self.geometric[(i, j)]);
-        let pairs = lowest_modes(&k_total, &self.mass, self.shift, self.count)
-            .map_err(|e| ModelError::Eigenproblem { k: self.k, reason: format!("spinning at {spin} rad/s: {e:?}") })?;
+        let k_total = Mat::<f64>::from_fn(n, n, |i, j| {
+            self.stiffness[(i, j)] + s * self.geometric[(i, j)]
+        });
+        let pairs = lowest_modes(&k_total, &self.mass, self.shift, self.count).map_err(|e| {
+            ModelError::Eigenproblem {
+                k: self.k,
+                reason: format!("spinning at {spin} rad/s: {e:?}"),
+            }
+        })?;
         Ok(pairs.omega_squared)
     }
 
@@ -68,7 +87,9 @@ impl SpinningSpectrum {
             return Ok(None);
         }
         let k2 = (self.k as f64).powi(2);
-        let gap = |spin: f64| -> Result<f64, ModelError> { Ok(self.omega_squared(spin)?[l] - k2 * spin * spin) };
+        let gap = |spin: f64| -> Result<f64, ModelError> {
+            Ok(self.omega_squared(spin)?[l] - k2 * spin * spin)
+        };
         let w0 = self.omega_squared(0.0)?[l].max(0.0).sqrt();
         let first = w0 / self.k as f64;
         let (mut lo, mut hi) = (0.0, first);
@@ -99,10 +120,20 @@ fn spectrum_splines(plate: &PlateConfig, rigidity: f64, k: u32, count: usize) ->
     if let Some(n) = plate.radial_splines.fixed() {
         return n;
     }
-    let ls: Vec<u32> = (0..count as u32).filter(|&l| !super::modes::is_rigid_body(plate.inner_boundary, plate.outer_boundary, k, l)).collect();
+    let ls: Vec<u32> = (0..count as u32)
+        .filter(|&l| !super::modes::is_rigid_body(plate.inner_boundary, plate.outer_boundary, k, l))
+        .collect();
     let sigma = eigen_shift(plate, rigidity);
     let mut discs = resolution::Discretisations::new(plate, rigidity);
-    resolution::choose(&mut discs, sigma, k, &ls, count, resolution::first_guess(plate)).map_or(resolution::MAX_AUTO_SPLINES, |r| r.resolution.splines)
+    resolution::choose(
+        &mut discs,
+        sigma,
+        k,
+        &ls,
+        count,
+        resolution::first_guess(plate),
+    )
+    .map_or(resolution::MAX_AUTO_SPLINES, |r| r.resolution.splines)
 }
 
 /// K̄_g projected on the retained modes, per k (per unit Ω²).
@@ -136,7 +167,8 @@ impl ModalGeometricStiffness {
         let blocks = ks
             .into_iter()
             .map(|k| {
-                let mut radial: Vec<usize> = (0..shapes.len()).filter(|&i| shapes[i].k == k).collect();
+                let mut radial: Vec<usize> =
+                    (0..shapes.len()).filter(|&i| shapes[i].k == k).collect();
                 radial.sort_by_key(|&i| shapes[i].l);
                 let ls: Vec<u32> = radial.iter().map(|&i| shapes[i].l).collect();
                 // The radial basis of this k (with `auto` each k has its own).
@@ -155,12 +187,18 @@ impl ModalGeometricStiffness {
                     let vals: Vec<[f64; 4]> = radial.iter().map(|&i| shapes[i].eval(r)).collect();
                     for a in 0..n {
                         for b in 0..n {
-                            let integrand = sr * vals[a][1] * vals[b][1] + st * k2 * vals[a][0] * vals[b][0] / (r * r);
+                            let integrand = sr * vals[a][1] * vals[b][1]
+                                + st * k2 * vals[a][0] * vals[b][0] / (r * r);
                             matrix[a * n + b] += scale * w * r * integrand;
                         }
                     }
                 }
-                GeometricBlock { k, ls, radial, matrix }
+                GeometricBlock {
+                    k,
+                    ls,
+                    radial,
+                    matrix,
+                }
             })
             .collect();
         ModalGeometricStiffness { prestress, blocks }

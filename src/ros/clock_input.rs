@@ -19,10 +19,18 @@ use std::sync::mpsc::{SyncSender, TrySendError};
 use tokio::task::JoinHandle;
 
 /// Subscribe `resolved` (normally `/clock`) and feed the loop.
-pub fn spawn(node: &mut Node, resolved: &str, tx: SyncSender<Command>) -> Result<JoinHandle<()>, NodeError> {
+pub fn spawn(
+    node: &mut Node,
+    resolved: &str,
+    tx: SyncSender<Command>,
+) -> Result<JoinHandle<()>, NodeError> {
     let name = Name::parse(resolved).map_err(|e| NodeError::dds(format!("topic {resolved}"), e))?;
     let topic = node
-        .create_topic(&name, MessageTypeName::new(Clock::PACKAGE, Clock::NAME), &crate::messages::qos::CLOCK_SUBSCRIPTION)
+        .create_topic(
+            &name,
+            MessageTypeName::new(Clock::PACKAGE, Clock::NAME),
+            &crate::messages::qos::CLOCK_SUBSCRIPTION,
+        )
         .map_err(|e| NodeError::dds(format!("cannot create the topic {resolved}"), e))?;
     let sub = node
         .create_subscription::<Clock>(&topic, Some(crate::messages::qos::CLOCK_SUBSCRIPTION))

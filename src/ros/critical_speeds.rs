@@ -16,9 +16,16 @@ use ros2_client::Publisher;
 /// by the node with [`qos::CRITICAL_SPEEDS`](crate::messages::qos::CRITICAL_SPEEDS);
 /// it must live as long as the node: a transient-local writer serves late
 /// joiners from its history). Returns the list for the loop's status.
-pub fn publish(publisher: &Publisher<CriticalSpeeds>, sim: &Simulation, config: &Config, logger: &Logger) -> Vec<CriticalSpeed> {
+pub fn publish(
+    publisher: &Publisher<CriticalSpeeds>,
+    sim: &Simulation,
+    config: &Config,
+    logger: &Logger,
+) -> Vec<CriticalSpeed> {
     let speeds = critical_speeds(sim.model(), &config.centrifugal).unwrap_or_else(|e| {
-        logger.warn(&format!("~/critical_speeds: cannot compute the critical speeds ({e}); publishing none"));
+        logger.warn(&format!(
+            "~/critical_speeds: cannot compute the critical speeds ({e}); publishing none"
+        ));
         Vec::new()
     });
     if let Err(e) = publisher.publish(message(&speeds, config.centrifugal.stiffening)) {

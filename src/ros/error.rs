@@ -16,13 +16,19 @@ pub enum NodeError {
     Args(#[from] ArgsError),
     /// A scene or parameter file (`source`: its path, `-p` or the built-in scene).
     #[error("{source_name}: {error}")]
-    Config { source_name: String, error: ConfigError },
+    Config {
+        source_name: String,
+        error: ConfigError,
+    },
     /// The node's own `ros.*` settings in the scene.
     #[error("{scene}: {error}")]
     Settings { scene: String, error: SettingsError },
     /// The scene cannot be simulated as configured.
     #[error("{scene}: {error}")]
-    Simulation { scene: String, error: SimulationError },
+    Simulation {
+        scene: String,
+        error: SimulationError,
+    },
     /// `--record DIR`.
     #[error("--record: {0}")]
     Record(String),
@@ -33,7 +39,10 @@ pub enum NodeError {
     Dds { what: String, detail: String },
     /// An operating-system resource (runtime, thread, signal handler).
     #[error("{what}: {error}")]
-    System { what: &'static str, error: std::io::Error },
+    System {
+        what: &'static str,
+        error: std::io::Error,
+    },
     #[error("the simulation thread ended abnormally")]
     SimulationThread,
     /// The loop stopped for a reason other than a signal.
@@ -44,6 +53,9 @@ pub enum NodeError {
 impl NodeError {
     /// A DDS failure with its context.
     pub fn dds(what: impl Into<String>, detail: impl std::fmt::Debug) -> NodeError {
-        NodeError::Dds { what: what.into(), detail: format!("{detail:?}") }
+        NodeError::Dds {
+            what: what.into(),
+            detail: format!("{detail:?}"),
+        }
     }
 }

@@ -34,8 +34,10 @@ pub fn trim() -> bool {
 
 /// Start the trimming thread; it ends with the process.
 pub fn spawn_trimmer() -> std::io::Result<std::thread::JoinHandle<()>> {
-    std::thread::Builder::new().name("annular_plate-heap".into()).spawn(|| loop {
-        std::thread::sleep(TRIM_PERIOD);
-        trim();
-    })
+    std::thread::Builder::new()
+        .name("annular_plate-heap".into())
+        .spawn(|| loop {
+            std::thread::sleep(TRIM_PERIOD);
+            trim();
+        })
 }

@@ -66,7 +66,13 @@ where
                     Err(r) => self.ctx.reject(&self.topic, r),
                 },
                 Ok(None) => return,
-                Err(e) => self.ctx.reject(&self.topic, Rejection { reason: RejectReason::Undecodable, detail: format!("{e:?}") }),
+                Err(e) => self.ctx.reject(
+                    &self.topic,
+                    Rejection {
+                        reason: RejectReason::Undecodable,
+                        detail: format!("{e:?}"),
+                    },
+                ),
             }
         }
     }
@@ -74,11 +80,23 @@ where
 
 /// The input topic `topic` read through `sub`: `check` converts and checks a
 /// message into an input and its header stamp (ns, 0: none).
-pub fn polled<M, F>(sub: Subscription<M>, topic: String, source: Source, ctx: InputContext, check: F) -> Box<dyn PolledInput>
+pub fn polled<M, F>(
+    sub: Subscription<M>,
+    topic: String,
+    source: Source,
+    ctx: InputContext,
+    check: F,
+) -> Box<dyn PolledInput>
 where
     M: DeserializeOwned + Send + 'static,
     F: Fn(&InputValidator, M) -> Result<(Input, i64), Rejection> + Send + 'static,
     Subscription<M>: Send,
 {
-    Box::new(Polled { sub, topic, source, ctx, check })
+    Box::new(Polled {
+        sub,
+        topic,
+        source,
+        ctx,
+        check,
+    })
 }

@@ -15,8 +15,11 @@
 //! A rejected input changes nothing; it is counted (visible in
 //! /diagnostics) and logged at most once per `ros.reject_log_period` per kind.
 
+use crate::dynamics::{
+    check, check_batch, BatchError, Checked, CheckedBatch, Command, InputError, InputRules,
+    NodeKind, Wrench,
+};
 pub use crate::messages::input_stats::{InputStats, RejectReason, Source};
-use crate::dynamics::{check, check_batch, BatchError, Checked, CheckedBatch, Command, InputError, InputRules, NodeKind, Wrench};
 use std::sync::Mutex;
 use std::time::{Duration, Instant};
 
@@ -29,7 +32,10 @@ pub struct Rejection {
 
 impl Rejection {
     fn new(reason: RejectReason, detail: impl Into<String>) -> Self {
-        Rejection { reason, detail: detail.into() }
+        Rejection {
+            reason,
+            detail: detail.into(),
+        }
     }
 
     pub fn from_input_error(e: InputError) -> Self {
@@ -71,7 +77,11 @@ pub struct InputValidator {
 impl InputValidator {
     /// `ale_frames[j]` / `lagrange_frames[j]`: the frame id of node j + 1.
     pub fn new(ale_frames: Vec<String>, lagrange_frames: Vec<String>, rules: InputRules) -> Self {
-        InputValidator { ale_frames, lagrange_frames, rules }
+        InputValidator {
+            ale_frames,
+            lagrange_frames,
+            rules,
+        }
     }
 
     fn frames(&self, kind: NodeKind) -> &[String] {
@@ -82,7 +92,9 @@ impl InputValidator {
     }
 
     fn one(&self, command: Command) -> Result<Input, Rejection> {
-        check(&self.rules, command).map(Input::One).map_err(Rejection::from_input_error)
+        check(&self.rules, command)
+            .map(Input::One)
+            .map_err(Rejection::from_input_error)
     }
 
     pub fn speed(&self, omega: f64) -> Result<Input, Rejection> {
@@ -90,7 +102,13 @@ impl InputValidator {
     }
 
     /// A WrenchStamped on the topic of node `node` (0-based).
-    pub fn wrench_stamped(&self, kind: NodeKind, node: usize, frame_id: &str, wrench: Wrench) -> Result<Input, Rejection> {
+    pub fn wrench_stamped(
+        &self,
+        kind: NodeKind,
+        node: usize,
+        frame_id: &str,
+        wrench: Wrench,
+    ) -> Result<Input, Rejection> {
         if let Some(expected) = self.frames(kind).get(node) {
             if !frame_id.is_empty() && frame_id != expected {
                 return Err(Rejection::new(
@@ -107,7 +125,10 @@ impl InputValidator {
     }
 
     /// A NodeWrenchArray: (kind, 1-based index, wrench) per element.
-    pub fn batch(&self, entries: impl IntoIterator<Item = (u8, u32, Wrench)>) -> Result<Input, Rejection> {
+    pub fn batch(
+        &self,
+        entries: impl IntoIterator<Item = (u8, u32, Wrench)>,
+    ) -> Result<Input, Rejection> {
         let mut commands = Vec::new();
         for (position, (kind, index, wrench)) in entries.into_iter().enumerate() {
             let kind = match kind {
@@ -126,29 +147,64 @@ impl InputValidator {
                     format!("wrenches[{position}].index = 0, but node numbers start at 1; the array was not applied"),
                 ));
             }
-            commands.push(Command::Wrench { kind, node: index as usize - 1, wrench });
+            commands.push(Command::Wrench {
+                kind,
+                node: index as usize - 1,
+                wrench,
+            });
         }
-        check_batch(&self.rules, commands.iter().copied()).map(Input::Batch).map_err(|e| {
-            batch_rejection(e, "wrenches", |position| match commands[position] {
-                Command::Wrench { kind, node, .. } => format!("wrenches[{position}] names {}_{} a second time", kind.name(), node + 1),
-                _ => unreachable!("a wrench array holds wrenches"),
+        check_batch(&self.rules, commands.iter().copied())
+            .map(Input::Batch)
+            .map_err(|e| {
+                batch_rejection(e, "wrenches", |position| match commands[position] {
+                    Command::Wrench { kind, node, .. } => format!(
+                        "wrenches[{position}] names {}_{} a second time",
+                        kind.name(),
+                        node + 1
+                    ),
+                    _ => unreachable!("a wrench array holds wrenches"),
+                })
             })
-        })
     }
 
     /// Command `command` of load model `model` for instance `instance` (0-based).
-    pub fn load_command(&self, model: usize, command: usize, instance: usize, value: f64) -> Result<Input, Rejection> {
-        self.one(Command::Load { model, command, instance, value })
+    pub fn load_command(
+        &self,
+        model: usize,
+        command: usize,
+        instance: usize,
+        value: f64,
+    ) -> Result<Input, Rejection> {
+        self.one(Command::Load {
+            model,
+            command,
+            instance,
+            value,
+        })
     }
 
     /// A batch of one indexed load-model command: instance numbers (from 1)
     /// and their values (a PadClampForces message), applied whole or not at all.
-    pub fn load_batch(&self, model: usize, command: usize, numbers: &[u32], values: &[f64]) -> Result<Input, Rejection> {
-        let instance = self.rules.load_commands().find(|c| c.0 == model && c.1 == command).map_or("entry", |c| c.2.instance);
+    pub fn load_batch(
+        &self,
+        model: usize,
+        command: usize,
+        numbers: &[u32],
+        values: &[f64],
+    ) -> Result<Input, Rejection> {
+        let instance = self
+            .rules
+            .load_commands()
+            .find(|c| c.0 == model && c.1 == command)
+            .map_or("entry", |c| c.2.instance);
         if numbers.len() != values.len() {
             return Err(Rejection::new(
                 RejectReason::MalformedBatch,
-                format!("{instance} has {} entries but the values {}; the array was not applied", numbers.len(), values.len()),
+                format!(
+                    "{instance} has {} entries but the values {}; the array was not applied",
+                    numbers.len(),
+                    values.len()
+                ),
             ));
         }
         if let Some(position) = numbers.iter().position(|&p| p == 0) {
@@ -157,10 +213,25 @@ impl InputValidator {
                 format!("{instance}[{position}] = 0, but {instance} numbers start at 1; the array was not applied"),
             ));
         }
-        let commands = numbers.iter().zip(values).map(|(&n, &value)| Command::Load { model, command, instance: n as usize - 1, value });
-        check_batch(&self.rules, commands).map(Input::Batch).map_err(|e| {
-            batch_rejection(e, "entry", |position| format!("{instance}[{position}] names {instance} {} a second time", numbers[position]))
-        })
+        let commands = numbers
+            .iter()
+            .zip(values)
+            .map(|(&n, &value)| Command::Load {
+                model,
+                command,
+                instance: n as usize - 1,
+                value,
+            });
+        check_batch(&self.rules, commands)
+            .map(Input::Batch)
+            .map_err(|e| {
+                batch_rejection(e, "entry", |position| {
+                    format!(
+                        "{instance}[{position}] names {instance} {} a second time",
+                        numbers[position]
+                    )
+                })
+            })
     }
 
     /// The model named `name` (`pads`, `tool`), if the scene has it.
@@ -172,7 +243,11 @@ impl InputValidator {
     pub fn clamp_force(&self, pad: usize, newtons: f64) -> Result<Input, Rejection> {
         match self.model("pads") {
             Some(model) => self.load_command(model, 0, pad, newtons),
-            None => Err(Rejection::from_input_error(InputError::NoSuchInstance { instance: "pad", index: pad + 1, count: 0 })),
+            None => Err(Rejection::from_input_error(InputError::NoSuchInstance {
+                instance: "pad",
+                index: pad + 1,
+                count: 0,
+            })),
         }
     }
 
@@ -180,8 +255,14 @@ impl InputValidator {
     pub fn clamp_forces(&self, pads: &[u32], forces: &[f64]) -> Result<Input, Rejection> {
         match self.model("pads") {
             Some(model) => self.load_batch(model, 0, pads, forces),
-            None if pads.is_empty() && forces.is_empty() => Ok(Input::Batch(CheckedBatch::default())),
-            None => Err(Rejection::from_input_error(InputError::NoSuchInstance { instance: "pad", index: pads.first().map_or(1, |&p| p as usize), count: 0 })),
+            None if pads.is_empty() && forces.is_empty() => {
+                Ok(Input::Batch(CheckedBatch::default()))
+            }
+            None => Err(Rejection::from_input_error(InputError::NoSuchInstance {
+                instance: "pad",
+                index: pads.first().map_or(1, |&p| p as usize),
+                count: 0,
+            })),
         }
     }
 
@@ -189,7 +270,10 @@ impl InputValidator {
     pub fn tool_feed(&self, rate: f64) -> Result<Input, Rejection> {
         match self.model("tool") {
             Some(model) => self.load_command(model, 0, 0, rate),
-            None => Err(Rejection::from_input_error(InputError::NoSuchModel { model: "tool", key: "tool.ale_node" })),
+            None => Err(Rejection::from_input_error(InputError::NoSuchModel {
+                model: "tool",
+                key: "tool.ale_node",
+            })),
         }
     }
 }
@@ -199,13 +283,21 @@ impl InputValidator {
 fn batch_rejection(e: BatchError, what: &str, duplicate: impl Fn(usize) -> String) -> Rejection {
     match e {
         BatchError::Invalid { position, error } => {
-            let place = if what == "entry" { format!("entry {position}") } else { format!("{what}[{position}]") };
+            let place = if what == "entry" {
+                format!("entry {position}")
+            } else {
+                format!("{what}[{position}]")
+            };
             let r = Rejection::from_input_error(error);
-            Rejection { detail: format!("{place}: {}; the array was not applied", r.detail), ..r }
+            Rejection {
+                detail: format!("{place}: {}; the array was not applied", r.detail),
+                ..r
+            }
         }
-        BatchError::Duplicate { position, .. } => {
-            Rejection::new(RejectReason::MalformedBatch, format!("{}; the array was not applied", duplicate(position)))
-        }
+        BatchError::Duplicate { position, .. } => Rejection::new(
+            RejectReason::MalformedBatch,
+            format!("{}; the array was not applied", duplicate(position)),
+        ),
     }
 }
 
@@ -219,7 +311,10 @@ pub struct RateLimiter {
 
 impl RateLimiter {
     pub fn new(period: Duration) -> Self {
-        RateLimiter { period, state: Mutex::new([(None, 0); RejectReason::ALL.len()]) }
+        RateLimiter {
+            period,
+            state: Mutex::new([(None, 0); RejectReason::ALL.len()]),
+        }
     }
 
     /// `Some(suppressed since the last line)` when a line may be written now.
@@ -251,7 +346,11 @@ pub struct StaleWrenches {
 impl StaleWrenches {
     /// `timeout` in s; 0 disables.
     pub fn new(timeout: f64, n_ale: usize, n_lagrange: usize) -> Self {
-        StaleWrenches { timeout, ale: vec![None; n_ale], lagrange: vec![None; n_lagrange] }
+        StaleWrenches {
+            timeout,
+            ale: vec![None; n_ale],
+            lagrange: vec![None; n_lagrange],
+        }
     }
 
     fn slots(&mut self, kind: NodeKind) -> &mut Vec<Option<f64>> {
@@ -275,7 +374,10 @@ impl StaleWrenches {
 
     /// Forget every set time (after a reset: the file's loads are held again).
     pub fn clear(&mut self) {
-        self.ale.iter_mut().chain(self.lagrange.iter_mut()).for_each(|s| *s = None);
+        self.ale
+            .iter_mut()
+            .chain(self.lagrange.iter_mut())
+            .for_each(|s| *s = None);
     }
 
     /// Call `expire(kind, node)` for each wrench older than the timeout at
@@ -284,7 +386,10 @@ impl StaleWrenches {
         if self.timeout <= 0.0 {
             return;
         }
-        for (kind, slots) in [(NodeKind::Ale, &mut self.ale), (NodeKind::Lagrange, &mut self.lagrange)] {
+        for (kind, slots) in [
+            (NodeKind::Ale, &mut self.ale),
+            (NodeKind::Lagrange, &mut self.lagrange),
+        ] {
             for (node, slot) in slots.iter_mut().enumerate() {
                 if let Some(set_at) = *slot {
                     // A small tolerance keeps "timeout = k steps" exact in floating point.
@@ -306,7 +411,12 @@ mod tests {
     use crate::dynamics::load_models::{pad::CLAMP_FORCE, tool::FEED_RATE};
 
     fn rules(pads: usize, tool: bool) -> InputRules {
-        let limits = LimitsConfig { max_force: 1e4, max_moment: 1e3, max_speed: 500.0, ..LimitsConfig::default() };
+        let limits = LimitsConfig {
+            max_force: 1e4,
+            max_moment: 1e3,
+            max_speed: 500.0,
+            ..LimitsConfig::default()
+        };
         let pad_commands = [(CLAMP_FORCE, pads)];
         let tool_commands = [(FEED_RATE, 1)];
         let mut models: Vec<(&'static str, &[_])> = Vec::new();
@@ -320,7 +430,11 @@ mod tests {
     }
 
     fn validator_with(pads: usize, tool: bool) -> InputValidator {
-        InputValidator::new(vec!["plate_ale_1".into(), "plate_ale_2".into()], vec!["plate_lagrange_1".into()], rules(pads, tool))
+        InputValidator::new(
+            vec!["plate_ale_1".into(), "plate_ale_2".into()],
+            vec!["plate_lagrange_1".into()],
+            rules(pads, tool),
+        )
     }
 
     fn validator() -> InputValidator {
@@ -332,7 +446,10 @@ mod tests {
     }
 
     fn w(fz: f64) -> Wrench {
-        Wrench { force: [0.0, 0.0, fz], moment: [0.0; 3] }
+        Wrench {
+            force: [0.0, 0.0, fz],
+            moment: [0.0; 3],
+        }
     }
 
     #[test]
@@ -340,8 +457,14 @@ mod tests {
         let v = validator();
         assert_eq!(cmds(v.speed(25.0)), Ok(vec![Command::Speed(25.0)]));
         assert_eq!(cmds(v.speed(-500.0)), Ok(vec![Command::Speed(-500.0)]));
-        assert_eq!(v.speed(f64::NAN).unwrap_err().reason, RejectReason::NonFinite);
-        assert_eq!(v.speed(f64::INFINITY).unwrap_err().reason, RejectReason::NonFinite);
+        assert_eq!(
+            v.speed(f64::NAN).unwrap_err().reason,
+            RejectReason::NonFinite
+        );
+        assert_eq!(
+            v.speed(f64::INFINITY).unwrap_err().reason,
+            RejectReason::NonFinite
+        );
         assert_eq!(v.speed(501.0).unwrap_err().reason, RejectReason::Absurd);
     }
 
@@ -349,43 +472,128 @@ mod tests {
     fn wrench_stamped_rules() {
         let v = validator();
         assert!(v.wrench_stamped(NodeKind::Ale, 0, "", w(-100.0)).is_ok());
-        assert!(v.wrench_stamped(NodeKind::Ale, 1, "plate_ale_2", w(-100.0)).is_ok());
-        assert_eq!(v.wrench_stamped(NodeKind::Ale, 0, "plate_ale_2", w(1.0)).unwrap_err().reason, RejectReason::UnknownFrame);
-        assert_eq!(v.wrench_stamped(NodeKind::Ale, 0, "map", w(1.0)).unwrap_err().reason, RejectReason::UnknownFrame);
-        assert_eq!(v.wrench_stamped(NodeKind::Ale, 0, "", w(f64::NAN)).unwrap_err().reason, RejectReason::NonFinite);
-        assert_eq!(v.wrench_stamped(NodeKind::Ale, 0, "", w(2e4)).unwrap_err().reason, RejectReason::Absurd);
-        let moment = Wrench { force: [0.0; 3], moment: [2e3, 0.0, 0.0] };
-        assert_eq!(v.wrench_stamped(NodeKind::Lagrange, 0, "", moment).unwrap_err().reason, RejectReason::Absurd);
-        assert_eq!(v.wrench_stamped(NodeKind::Lagrange, 1, "", w(1.0)).unwrap_err().reason, RejectReason::NoSuchNode);
+        assert!(v
+            .wrench_stamped(NodeKind::Ale, 1, "plate_ale_2", w(-100.0))
+            .is_ok());
+        assert_eq!(
+            v.wrench_stamped(NodeKind::Ale, 0, "plate_ale_2", w(1.0))
+                .unwrap_err()
+                .reason,
+            RejectReason::UnknownFrame
+        );
+        assert_eq!(
+            v.wrench_stamped(NodeKind::Ale, 0, "map", w(1.0))
+                .unwrap_err()
+                .reason,
+            RejectReason::UnknownFrame
+        );
+        assert_eq!(
+            v.wrench_stamped(NodeKind::Ale, 0, "", w(f64::NAN))
+                .unwrap_err()
+                .reason,
+            RejectReason::NonFinite
+        );
+        assert_eq!(
+            v.wrench_stamped(NodeKind::Ale, 0, "", w(2e4))
+                .unwrap_err()
+                .reason,
+            RejectReason::Absurd
+        );
+        let moment = Wrench {
+            force: [0.0; 3],
+            moment: [2e3, 0.0, 0.0],
+        };
+        assert_eq!(
+            v.wrench_stamped(NodeKind::Lagrange, 0, "", moment)
+                .unwrap_err()
+                .reason,
+            RejectReason::Absurd
+        );
+        assert_eq!(
+            v.wrench_stamped(NodeKind::Lagrange, 1, "", w(1.0))
+                .unwrap_err()
+                .reason,
+            RejectReason::NoSuchNode
+        );
     }
 
     #[test]
     fn batch_is_all_or_nothing() {
         let v = validator();
-        let ok = cmds(v.batch([(KIND_ALE, 1, w(-10.0)), (KIND_ALE, 2, w(-20.0)), (KIND_LAGRANGE, 1, w(5.0))])).unwrap();
+        let ok = cmds(v.batch([
+            (KIND_ALE, 1, w(-10.0)),
+            (KIND_ALE, 2, w(-20.0)),
+            (KIND_LAGRANGE, 1, w(5.0)),
+        ]))
+        .unwrap();
         let wrench = |kind, node, wrench| Command::Wrench { kind, node, wrench };
-        assert_eq!(ok, vec![wrench(NodeKind::Ale, 0, w(-10.0)), wrench(NodeKind::Ale, 1, w(-20.0)), wrench(NodeKind::Lagrange, 0, w(5.0))]);
+        assert_eq!(
+            ok,
+            vec![
+                wrench(NodeKind::Ale, 0, w(-10.0)),
+                wrench(NodeKind::Ale, 1, w(-20.0)),
+                wrench(NodeKind::Lagrange, 0, w(5.0))
+            ]
+        );
         assert_eq!(cmds(v.batch([])), Ok(vec![]));
         let reason = |entries: Vec<(u8, u32, Wrench)>| v.batch(entries).unwrap_err().reason;
-        assert_eq!(reason(vec![(KIND_ALE, 1, w(1.0)), (7, 1, w(1.0))]), RejectReason::MalformedBatch);
-        assert_eq!(reason(vec![(KIND_ALE, 1, w(1.0)), (KIND_ALE, 1, w(2.0))]), RejectReason::MalformedBatch);
-        assert_eq!(reason(vec![(KIND_ALE, 0, w(1.0))]), RejectReason::NoSuchNode);
-        assert_eq!(reason(vec![(KIND_ALE, 3, w(1.0))]), RejectReason::NoSuchNode);
-        assert_eq!(reason(vec![(KIND_ALE, 1, w(1.0)), (KIND_LAGRANGE, 1, w(f64::NEG_INFINITY))]), RejectReason::NonFinite);
-        let e = v.batch([(KIND_ALE, 2, w(1.0)), (KIND_ALE, 3, w(1.0))]).unwrap_err();
-        assert!(e.detail.contains("wrenches[1]") && e.detail.contains("not applied"), "{}", e.detail);
+        assert_eq!(
+            reason(vec![(KIND_ALE, 1, w(1.0)), (7, 1, w(1.0))]),
+            RejectReason::MalformedBatch
+        );
+        assert_eq!(
+            reason(vec![(KIND_ALE, 1, w(1.0)), (KIND_ALE, 1, w(2.0))]),
+            RejectReason::MalformedBatch
+        );
+        assert_eq!(
+            reason(vec![(KIND_ALE, 0, w(1.0))]),
+            RejectReason::NoSuchNode
+        );
+        assert_eq!(
+            reason(vec![(KIND_ALE, 3, w(1.0))]),
+            RejectReason::NoSuchNode
+        );
+        assert_eq!(
+            reason(vec![
+                (KIND_ALE, 1, w(1.0)),
+                (KIND_LAGRANGE, 1, w(f64::NEG_INFINITY))
+            ]),
+            RejectReason::NonFinite
+        );
+        let e = v
+            .batch([(KIND_ALE, 2, w(1.0)), (KIND_ALE, 3, w(1.0))])
+            .unwrap_err();
+        assert!(
+            e.detail.contains("wrenches[1]") && e.detail.contains("not applied"),
+            "{}",
+            e.detail
+        );
     }
 
     #[test]
     fn load_model_commands_follow_the_dynamics_rules() {
         let v = validator_with(2, false);
-        let clamp = |instance, value| Ok(vec![Command::Load { model: 0, command: 0, instance, value }]);
+        let clamp = |instance, value| {
+            Ok(vec![Command::Load {
+                model: 0,
+                command: 0,
+                instance,
+                value,
+            }])
+        };
         assert_eq!(cmds(v.clamp_force(1, 5000.0)), clamp(1, 5000.0));
         assert_eq!(cmds(v.clamp_force(0, 0.0)), clamp(0, 0.0));
-        assert_eq!(cmds(v.clamp_force(0, 1e4)), clamp(0, 1e4), "limits.max_force itself is allowed");
+        assert_eq!(
+            cmds(v.clamp_force(0, 1e4)),
+            clamp(0, 1e4),
+            "limits.max_force itself is allowed"
+        );
         let reason = |r: Result<Input, Rejection>| r.unwrap_err().reason;
         assert_eq!(reason(v.clamp_force(0, f64::NAN)), RejectReason::NonFinite);
-        assert_eq!(reason(v.clamp_force(0, f64::NEG_INFINITY)), RejectReason::NonFinite);
+        assert_eq!(
+            reason(v.clamp_force(0, f64::NEG_INFINITY)),
+            RejectReason::NonFinite
+        );
         assert_eq!(reason(v.clamp_force(0, -1.0)), RejectReason::Absurd);
         assert_eq!(reason(v.clamp_force(0, 1.5e4)), RejectReason::Absurd);
         assert_eq!(reason(v.clamp_force(2, 1.0)), RejectReason::NoSuchNode);
@@ -394,7 +602,15 @@ mod tests {
         // The tool: none in this scene; with one, the feed rule.
         assert_eq!(reason(v.tool_feed(1e-3)), RejectReason::NoSuchNode);
         let t = validator_with(0, true);
-        assert_eq!(cmds(t.tool_feed(-2e-3)), Ok(vec![Command::Load { model: 0, command: 0, instance: 0, value: -2e-3 }]));
+        assert_eq!(
+            cmds(t.tool_feed(-2e-3)),
+            Ok(vec![Command::Load {
+                model: 0,
+                command: 0,
+                instance: 0,
+                value: -2e-3
+            }])
+        );
         assert_eq!(reason(t.tool_feed(f64::NAN)), RejectReason::NonFinite);
         assert_eq!(reason(t.tool_feed(1.5)), RejectReason::Absurd);
         assert_eq!(reason(t.clamp_force(0, 1.0)), RejectReason::NoSuchNode);
@@ -403,8 +619,16 @@ mod tests {
     #[test]
     fn clamp_force_arrays_are_all_or_nothing() {
         let v = validator_with(2, false);
-        let clamp = |instance, value| Command::Load { model: 0, command: 0, instance, value };
-        assert_eq!(cmds(v.clamp_forces(&[2, 1], &[10.0, 20.0])), Ok(vec![clamp(1, 10.0), clamp(0, 20.0)]));
+        let clamp = |instance, value| Command::Load {
+            model: 0,
+            command: 0,
+            instance,
+            value,
+        };
+        assert_eq!(
+            cmds(v.clamp_forces(&[2, 1], &[10.0, 20.0])),
+            Ok(vec![clamp(1, 10.0), clamp(0, 20.0)])
+        );
         assert_eq!(cmds(v.clamp_forces(&[], &[])), Ok(vec![]));
         let reason = |p: &[u32], f: &[f64]| v.clamp_forces(p, f).unwrap_err().reason;
         assert_eq!(reason(&[1], &[1.0, 2.0]), RejectReason::MalformedBatch);
@@ -414,7 +638,11 @@ mod tests {
         assert_eq!(reason(&[1, 2], &[1.0, f64::NAN]), RejectReason::NonFinite);
         assert_eq!(reason(&[1, 2], &[1.0, -5.0]), RejectReason::Absurd);
         let e = v.clamp_forces(&[1, 2], &[1.0, 2e4]).unwrap_err();
-        assert!(e.detail.contains("entry 1") && e.detail.contains("not applied"), "{}", e.detail);
+        assert!(
+            e.detail.contains("entry 1") && e.detail.contains("not applied"),
+            "{}",
+            e.detail
+        );
     }
 
     #[test]
@@ -422,11 +650,23 @@ mod tests {
         let r = RateLimiter::new(Duration::from_secs(1));
         let t0 = Instant::now();
         assert_eq!(r.permit(RejectReason::NonFinite, t0), Some(0));
-        assert_eq!(r.permit(RejectReason::NonFinite, t0 + Duration::from_millis(10)), None);
-        assert_eq!(r.permit(RejectReason::NonFinite, t0 + Duration::from_millis(20)), None);
+        assert_eq!(
+            r.permit(RejectReason::NonFinite, t0 + Duration::from_millis(10)),
+            None
+        );
+        assert_eq!(
+            r.permit(RejectReason::NonFinite, t0 + Duration::from_millis(20)),
+            None
+        );
         // Other reasons have their own budget.
-        assert_eq!(r.permit(RejectReason::Absurd, t0 + Duration::from_millis(20)), Some(0));
-        assert_eq!(r.permit(RejectReason::NonFinite, t0 + Duration::from_millis(1001)), Some(2));
+        assert_eq!(
+            r.permit(RejectReason::Absurd, t0 + Duration::from_millis(20)),
+            Some(0)
+        );
+        assert_eq!(
+            r.permit(RejectReason::NonFinite, t0 + Duration::from_millis(1001)),
+            Some(2)
+        );
     }
 
     #[test]

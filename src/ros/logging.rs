@@ -32,8 +32,20 @@ pub fn parse_level(text: Option<&str>) -> u8 {
 
 impl Logger {
     /// `name`: the logger name (the node's name, as rclcpp uses).
-    pub fn new(handle: Option<NodeLoggingHandle>, name: &str, stderr: bool, min_level: u8, reject_period: Duration) -> Self {
-        Logger { handle, name: name.to_string(), stderr, min_level, limiter: RateLimiter::new(reject_period) }
+    pub fn new(
+        handle: Option<NodeLoggingHandle>,
+        name: &str,
+        stderr: bool,
+        min_level: u8,
+        reject_period: Duration,
+    ) -> Self {
+        Logger {
+            handle,
+            name: name.to_string(),
+            stderr,
+            min_level,
+            limiter: RateLimiter::new(reject_period),
+        }
     }
 
     pub fn log(&self, level: LogLevel, msg: &str) {
@@ -51,7 +63,15 @@ impl Logger {
             eprintln!("[{tag}] [{}]: {msg}", self.name);
         }
         if let Some(h) = &self.handle {
-            h.rosout_raw(ros2_client::builtin_interfaces::Time::now(), level, &self.name, msg, file!(), "", line!());
+            h.rosout_raw(
+                ros2_client::builtin_interfaces::Time::now(),
+                level,
+                &self.name,
+                msg,
+                file!(),
+                "",
+                line!(),
+            );
         }
     }
 
@@ -70,8 +90,16 @@ impl Logger {
     /// A rejected input on `topic`: at most one line per kind per period.
     pub fn rejection(&self, topic: &str, r: &Rejection) {
         if let Some(suppressed) = self.limiter.permit(r.reason, Instant::now()) {
-            let more = if suppressed > 0 { format!(" ({suppressed} more of this kind since the last report)") } else { String::new() };
-            self.warn(&format!("rejected input on {topic} [{}]: {}{more}", r.reason.name(), r.detail));
+            let more = if suppressed > 0 {
+                format!(" ({suppressed} more of this kind since the last report)")
+            } else {
+                String::new()
+            };
+            self.warn(&format!(
+                "rejected input on {topic} [{}]: {}{more}",
+                r.reason.name(),
+                r.detail
+            ));
         }
     }
 }

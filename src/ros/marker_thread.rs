@@ -58,7 +58,15 @@ pub fn start(
     let join = std::thread::Builder::new()
         .name("annular_plate-marker".into())
         .spawn(move || serve(marker, rx, pool_tx, publisher, recorder))?;
-    Ok((MarkerFeed { every, tx, pool, skipped: 0 }, join))
+    Ok((
+        MarkerFeed {
+            every,
+            tx,
+            pool,
+            skipped: 0,
+        },
+        join,
+    ))
 }
 
 fn serve(

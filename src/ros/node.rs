@@ -2,30 +2,32 @@
 //! entities, spawns the input and service tasks and the simulation thread,
 //! and shuts everything down in order on SIGINT or SIGTERM.
 
-use crate::messages::names::{domain_id_from_env, NameResolver, RosArgs};
+use super::error::NodeError;
 use super::input_polling::{polled, InputContext, PolledInput};
 use super::inputs::{InputStats, InputValidator, Source};
 use super::logging::{parse_level, Logger};
-use crate::messages::types::{
-    CriticalSpeeds,
-    Clock, DiagnosticArray, Float64, JointState, ModalAmplitudes, NodeWrenchArray, PadClampForces, PadStates, RosType,
-    TFMessage, Time, ToolState, WrenchStamped,
-};
-use crate::messages::outputs::{static_transforms, FrameNames, OutputMessages, Shared};
+use super::marker_thread::MarkerFeed;
 use super::params_service::{effective_parameters, ParamStore};
 use super::services::{self, Command};
-use crate::messages::settings::RosSettings;
 use super::sim_loop::{LoopSettings, Publishers, SimLoop};
 use super::step_aligned_receive::StepAlignedReceive;
-use super::marker_thread::MarkerFeed;
-use crate::messages::marker::PlateMarker;
-use crate::messages::visualization::MarkerArray;
-use crate::messages::{qos, topics};
 use crate::bag::recorder::{NodeBag, NodeTopics, Recorder, RecorderThread, Sample};
 use crate::config::{Config, ConfigError, Params};
 use crate::dynamics::{InputRules, NodeKind, Simulation, Wrench};
-use super::error::NodeError;
-use ros2_client::{Context, ContextOptions, MessageTypeName, Name, Node, NodeName, NodeOptions, Publisher, QosProfile, Subscription};
+use crate::messages::marker::PlateMarker;
+use crate::messages::names::{domain_id_from_env, NameResolver, RosArgs};
+use crate::messages::outputs::{static_transforms, FrameNames, OutputMessages, Shared};
+use crate::messages::settings::RosSettings;
+use crate::messages::types::{
+    Clock, CriticalSpeeds, DiagnosticArray, Float64, JointState, ModalAmplitudes, NodeWrenchArray,
+    PadClampForces, PadStates, RosType, TFMessage, Time, ToolState, WrenchStamped,
+};
+use crate::messages::visualization::MarkerArray;
+use crate::messages::{qos, topics};
+use ros2_client::{
+    Context, ContextOptions, MessageTypeName, Name, Node, NodeName, NodeOptions, Publisher,
+    QosProfile, Subscription,
+};
 use serde::Serialize;
 use std::path::{Path, PathBuf};
 use std::sync::mpsc::{sync_channel, SyncSender};
@@ -62,11 +64,16 @@ pub struct NodeSetup {
 /// Whether a parameter set describes a scene: any key besides the node's own
 /// (`ros.*`) and `use_sim_time`, which launch files set for every node.
 fn holds_a_scene(params: &Params) -> bool {
-    params.iter().any(|(k, _)| !k.starts_with("ros.") && k != "use_sim_time")
+    params
+        .iter()
+        .any(|(k, _)| !k.starts_with("ros.") && k != "use_sim_time")
 }
 
 fn config_error(source: &str, e: ConfigError) -> NodeError {
-    NodeError::Config { source_name: source.to_string(), error: e }
+    NodeError::Config {
+        source_name: source.to_string(),
+        error: e,
+    }
 }
 
 impl NodeSetup {
@@ -90,50 +97,93 @@ impl NodeSetup {
             }
         }
         let (mut params, scene_name) = match scene {
-            Some(path) => (Params::from_file(path, &fqn).map_err(|e| config_error(&path.display().to_string(), e))?, path.display().to_string()),
+            Some(path) => (
+                Params::from_file(path, &fqn)
+                    .map_err(|e| config_error(&path.display().to_string(), e))?,
+                path.display().to_string(),
+            ),
             None => match files.iter().position(|(_, p)| holds_a_scene(p)) {
                 Some(i) => {
                     let (name, p) = files.remove(i);
                     (p, name)
                 }
                 None => (
-                    Params::from_yaml_str(DEFAULT_SCENE, &fqn).map_err(|e| config_error("built-in config/brake_bench.yaml", e))?,
+                    Params::from_yaml_str(DEFAULT_SCENE, &fqn)
+                        .map_err(|e| config_error("built-in config/brake_bench.yaml", e))?,
                     "built-in config/brake_bench.yaml".to_string(),
                 ),
             },
         };
         for (file, extra) in &files {
             for (k, v) in extra.iter() {
-                params.set(k, v.clone()).map_err(|e| config_error(file, e))?;
+                params
+                    .set(k, v.clone())
+                    .map_err(|e| config_error(file, e))?;
             }
         }
         for p in args.params_for(names.node_name(), DEFAULT_NODE_NAME) {
-            params.set_override(&p.name, &p.value).map_err(|e| config_error("-p", e))?;
+            params
+                .set_override(&p.name, &p.value)
+                .map_err(|e| config_error("-p", e))?;
         }
         // One parameter set for both: the config accepts the `ros.*` names, the
         // node's settings read only theirs (and `use_sim_time`).
-        let settings = RosSettings::from_params(&params).map_err(|error| NodeError::Settings { scene: scene_name.clone(), error })?;
+        let settings = RosSettings::from_params(&params).map_err(|error| NodeError::Settings {
+            scene: scene_name.clone(),
+            error,
+        })?;
         let config = Config::from_params(&params).map_err(|e| config_error(&scene_name, e))?;
-        settings.check_against_rate(config.simulation.rate_hz).map_err(|error| NodeError::Settings { scene: scene_name.clone(), error })?;
-        Ok(NodeSetup { args, names, params, config, settings, scene: scene_name })
+        settings
+            .check_against_rate(config.simulation.rate_hz)
+            .map_err(|error| NodeError::Settings {
+                scene: scene_name.clone(),
+                error,
+            })?;
+        Ok(NodeSetup {
+            args,
+            names,
+            params,
+            config,
+            settings,
+            scene: scene_name,
+        })
     }
 
     pub fn frame_names(&self) -> FrameNames {
-        FrameNames::new(&self.settings.frame_prefix, &self.settings.world_frame, self.config.nodes.ale.len(), self.config.nodes.lagrange.len())
+        FrameNames::new(
+            &self.settings.frame_prefix,
+            &self.settings.world_frame,
+            self.config.nodes.ale.len(),
+            self.config.nodes.lagrange.len(),
+        )
     }
 }
 
 /// Run the node until SIGINT or SIGTERM (see the module documentation of
 /// `ros`); with `record`, also write its topics into that new rosbag2
 /// directory (`run --record DIR`).
-pub fn run_node(scene: Option<PathBuf>, ros_args: &[String], record: Option<PathBuf>) -> Result<(), NodeError> {
+pub fn run_node(
+    scene: Option<PathBuf>,
+    ros_args: &[String],
+    record: Option<PathBuf>,
+) -> Result<(), NodeError> {
     let setup = NodeSetup::load(scene.as_deref(), ros_args)?;
     let domain = domain_id_from_env(std::env::var("ROS_DOMAIN_ID").ok().as_deref())?;
-    let sim = Simulation::new(setup.config.clone()).map_err(|error| NodeError::Simulation { scene: setup.scene.clone(), error })?;
+    let sim = Simulation::new(setup.config.clone()).map_err(|error| NodeError::Simulation {
+        scene: setup.scene.clone(),
+        error,
+    })?;
     // The bag first: a directory that exists is refused before any DDS traffic.
     let bag = match &record {
         Some(dir) => {
-            let topics = NodeTopics::resolve(&setup.names, setup.settings.sim_time, sim.pad_count() > 0, sim.has_tool(), setup.settings.marker.every(1.0 / sim.dt()).is_some()).map_err(NodeError::Record)?;
+            let topics = NodeTopics::resolve(
+                &setup.names,
+                setup.settings.sim_time,
+                sim.pad_count() > 0,
+                sim.has_tool(),
+                setup.settings.marker.every(1.0 / sim.dt()).is_some(),
+            )
+            .map_err(NodeError::Record)?;
             Some(NodeBag::create(dir, &topics)?)
         }
         None => None,
@@ -143,43 +193,101 @@ pub fn run_node(scene: Option<PathBuf>, ros_args: &[String], record: Option<Path
         .thread_name("annular_plate-io")
         .enable_all()
         .build()
-        .map_err(|error| NodeError::System { what: "cannot start the tokio runtime", error })?;
+        .map_err(|error| NodeError::System {
+            what: "cannot start the tokio runtime",
+            error,
+        })?;
     rt.block_on(serve(setup, sim, domain, bag))
 }
 
-fn publisher<T: RosType, P: Serialize>(node: &mut Node, names: &NameResolver, topic: &str, qos: &QosProfile) -> Result<Publisher<P>, NodeError> {
+fn publisher<T: RosType, P: Serialize>(
+    node: &mut Node,
+    names: &NameResolver,
+    topic: &str,
+    qos: &QosProfile,
+) -> Result<Publisher<P>, NodeError> {
     let resolved = names.resolve(topic)?;
-    let name = Name::parse(&resolved).map_err(|e| NodeError::dds(format!("topic {resolved}"), e))?;
+    let name =
+        Name::parse(&resolved).map_err(|e| NodeError::dds(format!("topic {resolved}"), e))?;
     let t = node
         .create_topic(&name, MessageTypeName::new(T::PACKAGE, T::NAME), qos)
         .map_err(|e| NodeError::dds(format!("cannot create the topic {resolved}"), e))?;
-    node.create_publisher::<P>(&t, Some(qos.clone())).map_err(|e| NodeError::dds(format!("cannot publish {resolved}"), e))
+    node.create_publisher::<P>(&t, Some(qos.clone()))
+        .map_err(|e| NodeError::dds(format!("cannot publish {resolved}"), e))
 }
 
-fn subscription<T: RosType + 'static>(node: &mut Node, resolved: &str, qos: &QosProfile) -> Result<Subscription<T>, NodeError> {
+fn subscription<T: RosType + 'static>(
+    node: &mut Node,
+    resolved: &str,
+    qos: &QosProfile,
+) -> Result<Subscription<T>, NodeError> {
     let name = Name::parse(resolved).map_err(|e| NodeError::dds(format!("topic {resolved}"), e))?;
     let t = node
         .create_topic(&name, MessageTypeName::new(T::PACKAGE, T::NAME), qos)
         .map_err(|e| NodeError::dds(format!("cannot create the topic {resolved}"), e))?;
-    node.create_subscription::<T>(&t, Some(qos.clone())).map_err(|e| NodeError::dds(format!("cannot subscribe {resolved}"), e))
+    node.create_subscription::<T>(&t, Some(qos.clone()))
+        .map_err(|e| NodeError::dds(format!("cannot subscribe {resolved}"), e))
 }
 
 fn to_wrench(w: &crate::messages::types::Wrench) -> Wrench {
-    Wrench { force: w.force.to_array(), moment: w.torque.to_array() }
+    Wrench {
+        force: w.force.to_array(),
+        moment: w.torque.to_array(),
+    }
 }
 
 /// The node's output publishers (the pad and tool states only for scenes with them).
-fn create_publishers(node: &mut Node, names: &NameResolver, settings: &RosSettings, sim: &Simulation) -> Result<Publishers, NodeError> {
+fn create_publishers(
+    node: &mut Node,
+    names: &NameResolver,
+    settings: &RosSettings,
+    sim: &Simulation,
+) -> Result<Publishers, NodeError> {
     Ok(Publishers {
-        joint_states: publisher::<JointState, Shared<JointState>>(node, names, topics::JOINT_STATES, &qos::STATE)?,
+        joint_states: publisher::<JointState, Shared<JointState>>(
+            node,
+            names,
+            topics::JOINT_STATES,
+            &qos::STATE,
+        )?,
         tf: publisher::<TFMessage, Shared<TFMessage>>(node, names, topics::TF, &qos::TF)?,
-        modal: publisher::<ModalAmplitudes, Shared<ModalAmplitudes>>(node, names, topics::MODAL_AMPLITUDES, &qos::STATE)?,
+        modal: publisher::<ModalAmplitudes, Shared<ModalAmplitudes>>(
+            node,
+            names,
+            topics::MODAL_AMPLITUDES,
+            &qos::STATE,
+        )?,
         pad_states: (sim.pad_count() > 0)
-            .then(|| publisher::<PadStates, Shared<PadStates>>(node, names, topics::PAD_STATES, &qos::STATE))
+            .then(|| {
+                publisher::<PadStates, Shared<PadStates>>(
+                    node,
+                    names,
+                    topics::PAD_STATES,
+                    &qos::STATE,
+                )
+            })
             .transpose()?,
-        tool_state: sim.has_tool().then(|| publisher::<ToolState, Shared<ToolState>>(node, names, topics::TOOL_STATE, &qos::STATE)).transpose()?,
-        clock: settings.sim_time.then(|| publisher::<Clock, Clock>(node, names, topics::CLOCK, &qos::CLOCK)).transpose()?,
-        diagnostics: publisher::<DiagnosticArray, DiagnosticArray>(node, names, topics::DIAGNOSTICS, &qos::DIAGNOSTICS)?,
+        tool_state: sim
+            .has_tool()
+            .then(|| {
+                publisher::<ToolState, Shared<ToolState>>(
+                    node,
+                    names,
+                    topics::TOOL_STATE,
+                    &qos::STATE,
+                )
+            })
+            .transpose()?,
+        clock: settings
+            .sim_time
+            .then(|| publisher::<Clock, Clock>(node, names, topics::CLOCK, &qos::CLOCK))
+            .transpose()?,
+        diagnostics: publisher::<DiagnosticArray, DiagnosticArray>(
+            node,
+            names,
+            topics::DIAGNOSTICS,
+            &qos::DIAGNOSTICS,
+        )?,
     })
 }
 
@@ -192,81 +300,177 @@ fn start_marker(
     recorder: Option<Recorder>,
 ) -> Result<Option<(MarkerFeed, std::thread::JoinHandle<()>)>, NodeError> {
     let rate_hz = 1.0 / sim.dt();
-    let Some(every) = setup.settings.marker.every(rate_hz) else { return Ok(None) };
-    let publisher = publisher::<MarkerArray, Shared<MarkerArray>>(node, &setup.names, topics::PLATE_MARKER, &qos::MARKER)?;
-    let marker = PlateMarker::new(sim.model(), frames, &setup.settings.marker, rate_hz / every as f64);
-    let started = super::marker_thread::start(sim, marker, every, publisher, recorder)
-        .map_err(|error| NodeError::System { what: "cannot start the marker thread", error })?;
+    let Some(every) = setup.settings.marker.every(rate_hz) else {
+        return Ok(None);
+    };
+    let publisher = publisher::<MarkerArray, Shared<MarkerArray>>(
+        node,
+        &setup.names,
+        topics::PLATE_MARKER,
+        &qos::MARKER,
+    )?;
+    let marker = PlateMarker::new(
+        sim.model(),
+        frames,
+        &setup.settings.marker,
+        rate_hz / every as f64,
+    );
+    let started =
+        super::marker_thread::start(sim, marker, every, publisher, recorder).map_err(|error| {
+            NodeError::System {
+                what: "cannot start the marker thread",
+                error,
+            }
+        })?;
     Ok(Some(started))
 }
 
 /// `run --record`: the writer thread, fed by the loop; /tf_static goes first.
-fn start_recording(bag: Option<NodeBag>, static_msg: &TFMessage, stamp: Time, logger: &Logger) -> Result<Option<(Recorder, RecorderThread)>, NodeError> {
+fn start_recording(
+    bag: Option<NodeBag>,
+    static_msg: &TFMessage,
+    stamp: Time,
+    logger: &Logger,
+) -> Result<Option<(Recorder, RecorderThread)>, NodeError> {
     let Some(bag) = bag else { return Ok(None) };
     let dir = bag.dir().display().to_string();
     let (recorder, thread) =
-        Recorder::start(bag, RECORD_QUEUE).map_err(|error| NodeError::System { what: "cannot start the bag writer thread", error })?;
+        Recorder::start(bag, RECORD_QUEUE).map_err(|error| NodeError::System {
+            what: "cannot start the bag writer thread",
+            error,
+        })?;
     recorder.record(Sample::TfStatic(static_msg.clone()), stamp);
     logger.info(&format!("recording the node's topics to {dir}"));
     Ok(Some((recorder, thread)))
 }
 
 /// The input topics the loop reads (`ros/input_polling.rs`): the speed command, the node wrenches, the wrench array.
-fn subscribe_inputs(node: &mut Node, names: &NameResolver, frames: &FrameNames, ctx: &InputContext) -> Result<Vec<Box<dyn PolledInput>>, NodeError> {
+fn subscribe_inputs(
+    node: &mut Node,
+    names: &NameResolver,
+    frames: &FrameNames,
+    ctx: &InputContext,
+) -> Result<Vec<Box<dyn PolledInput>>, NodeError> {
     let mut inputs = Vec::new();
     let topic = names.resolve(topics::SPEED_COMMAND)?;
     let sub = subscription::<Float64>(node, &topic, &qos::INPUT)?;
-    inputs.push(polled(sub, topic, Source::SpeedCommand, ctx.clone(), |v, m: Float64| Ok((v.speed(m.data)?, 0))));
-    for (kind, count) in [(NodeKind::Ale, frames.ale.len()), (NodeKind::Lagrange, frames.lagrange.len())] {
+    inputs.push(polled(
+        sub,
+        topic,
+        Source::SpeedCommand,
+        ctx.clone(),
+        |v, m: Float64| Ok((v.speed(m.data)?, 0)),
+    ));
+    for (kind, count) in [
+        (NodeKind::Ale, frames.ale.len()),
+        (NodeKind::Lagrange, frames.lagrange.len()),
+    ] {
         for node_index in 0..count {
             let topic = names.resolve(&topics::node_wrench(kind, node_index + 1))?;
             let sub = subscription::<WrenchStamped>(node, &topic, &qos::INPUT)?;
-            inputs.push(polled(sub, topic, Source::NodeWrench, ctx.clone(), move |v, m: WrenchStamped| {
-                let stamp = m.header.stamp.to_nanos();
-                Ok((v.wrench_stamped(kind, node_index, &m.header.frame_id, to_wrench(&m.wrench))?, stamp))
-            }));
+            inputs.push(polled(
+                sub,
+                topic,
+                Source::NodeWrench,
+                ctx.clone(),
+                move |v, m: WrenchStamped| {
+                    let stamp = m.header.stamp.to_nanos();
+                    Ok((
+                        v.wrench_stamped(
+                            kind,
+                            node_index,
+                            &m.header.frame_id,
+                            to_wrench(&m.wrench),
+                        )?,
+                        stamp,
+                    ))
+                },
+            ));
         }
     }
     let topic = names.resolve(topics::WRENCHES)?;
     let sub = subscription::<NodeWrenchArray>(node, &topic, &qos::INPUT)?;
-    inputs.push(polled(sub, topic, Source::WrenchArray, ctx.clone(), |v, m: NodeWrenchArray| {
-        let stamp = m.header.stamp.to_nanos();
-        Ok((v.batch(m.wrenches.iter().map(|w| (w.kind, w.index, to_wrench(&w.wrench))))?, stamp))
-    }));
+    inputs.push(polled(
+        sub,
+        topic,
+        Source::WrenchArray,
+        ctx.clone(),
+        |v, m: NodeWrenchArray| {
+            let stamp = m.header.stamp.to_nanos();
+            Ok((
+                v.batch(
+                    m.wrenches
+                        .iter()
+                        .map(|w| (w.kind, w.index, to_wrench(&w.wrench))),
+                )?,
+                stamp,
+            ))
+        },
+    ));
     Ok(inputs)
 }
 
 /// The load models' commands, discovered from their specs: a std_msgs/Float64
 /// topic per instance (`~/pad_<j>/clamp_force`, `~/tool_feed`) and, for
 /// numbered instances, one batch topic (`~/pad_clamp_forces`, PadClampForces).
-fn subscribe_load_commands(node: &mut Node, names: &NameResolver, rules: &InputRules, ctx: &InputContext) -> Result<Vec<Box<dyn PolledInput>>, NodeError> {
+fn subscribe_load_commands(
+    node: &mut Node,
+    names: &NameResolver,
+    rules: &InputRules,
+    ctx: &InputContext,
+) -> Result<Vec<Box<dyn PolledInput>>, NodeError> {
     let mut inputs = Vec::new();
     for (model, command, spec, instances) in rules.load_commands() {
         let source = Source::of_load_command(spec.indexed, false);
         for instance in 0..instances {
             let topic = names.resolve(&topics::load_command(spec, instance + 1))?;
             let sub = subscription::<Float64>(node, &topic, &qos::INPUT)?;
-            inputs.push(polled(sub, topic, source, ctx.clone(), move |v, m: Float64| {
-                Ok((v.load_command(model, command, instance, m.data)?, 0))
-            }));
+            inputs.push(polled(
+                sub,
+                topic,
+                source,
+                ctx.clone(),
+                move |v, m: Float64| Ok((v.load_command(model, command, instance, m.data)?, 0)),
+            ));
         }
         if spec.indexed {
             let topic = names.resolve(&topics::load_batch(spec))?;
             let sub = subscription::<PadClampForces>(node, &topic, &qos::INPUT)?;
-            inputs.push(polled(sub, topic, Source::of_load_command(true, true), ctx.clone(), move |v, m: PadClampForces| {
-                Ok((v.load_batch(model, command, &m.pad, &m.clamp_force)?, m.header.stamp.to_nanos()))
-            }));
+            inputs.push(polled(
+                sub,
+                topic,
+                Source::of_load_command(true, true),
+                ctx.clone(),
+                move |v, m: PadClampForces| {
+                    Ok((
+                        v.load_batch(model, command, &m.pad, &m.clamp_force)?,
+                        m.header.stamp.to_nanos(),
+                    ))
+                },
+            ));
         }
     }
     Ok(inputs)
 }
 
 /// Reset, pause and step services and the six parameter services.
-fn start_services(node: &mut Node, setup: &NodeSetup, tx: &SyncSender<Command>) -> Result<Vec<JoinHandle<()>>, NodeError> {
+fn start_services(
+    node: &mut Node,
+    setup: &NodeSetup,
+    tx: &SyncSender<Command>,
+) -> Result<Vec<JoinHandle<()>>, NodeError> {
     let (names, settings) = (&setup.names, &setup.settings);
-    let service_names = [names.resolve(services::RESET)?, names.resolve(services::SET_PAUSED)?, names.resolve(services::STEP)?];
-    let mut tasks =
-        services::spawn(node, settings.service_mapping, [&service_names[0], &service_names[1], &service_names[2]], tx.clone())?;
+    let service_names = [
+        names.resolve(services::RESET)?,
+        names.resolve(services::SET_PAUSED)?,
+        names.resolve(services::STEP)?,
+    ];
+    let mut tasks = services::spawn(
+        node,
+        settings.service_mapping,
+        [&service_names[0], &service_names[1], &service_names[2]],
+        tx.clone(),
+    )?;
     use super::sim_services as si;
     let si_names = [
         names.resolve(si::RESET_SIMULATION)?,
@@ -274,9 +478,23 @@ fn start_services(node: &mut Node, setup: &NodeSetup, tx: &SyncSender<Command>) 
         names.resolve(si::GET_SIMULATION_STATE)?,
         names.resolve(si::SET_SIMULATION_STATE)?,
     ];
-    tasks.extend(si::spawn(node, settings.service_mapping, [&si_names[0], &si_names[1], &si_names[2], &si_names[3]], tx.clone())?);
-    let store = Arc::new(Mutex::new(ParamStore::new(effective_parameters(&setup.params, settings))));
-    tasks.extend(super::params_service::spawn(node, settings.service_mapping, &names.fully_qualified_node_name(), store, tx.clone())?);
+    tasks.extend(si::spawn(
+        node,
+        settings.service_mapping,
+        [&si_names[0], &si_names[1], &si_names[2], &si_names[3]],
+        tx.clone(),
+    )?);
+    let store = Arc::new(Mutex::new(ParamStore::new(effective_parameters(
+        &setup.params,
+        settings,
+    ))));
+    tasks.extend(super::params_service::spawn(
+        node,
+        settings.service_mapping,
+        &names.fully_qualified_node_name(),
+        store,
+        tx.clone(),
+    )?);
     Ok(tasks)
 }
 
@@ -297,7 +515,15 @@ fn loop_settings(setup: &NodeSetup) -> LoopSettings {
 }
 
 /// The simulation thread; the receiver fires when its loop ends.
-fn start_loop(sim_loop: SimLoop) -> Result<(std::thread::JoinHandle<()>, tokio::sync::oneshot::Receiver<()>), NodeError> {
+fn start_loop(
+    sim_loop: SimLoop,
+) -> Result<
+    (
+        std::thread::JoinHandle<()>,
+        tokio::sync::oneshot::Receiver<()>,
+    ),
+    NodeError,
+> {
     let (done_tx, done_rx) = tokio::sync::oneshot::channel::<()>();
     let thread = std::thread::Builder::new()
         .name("annular_plate-sim".into())
@@ -305,7 +531,10 @@ fn start_loop(sim_loop: SimLoop) -> Result<(std::thread::JoinHandle<()>, tokio::
             sim_loop.run();
             let _ = done_tx.send(());
         })
-        .map_err(|error| NodeError::System { what: "cannot start the simulation thread", error })?;
+        .map_err(|error| NodeError::System {
+            what: "cannot start the simulation thread",
+            error,
+        })?;
     Ok((thread, done_rx))
 }
 
@@ -331,10 +560,18 @@ fn startup_line(setup: &NodeSetup, sim: &Simulation, domain: u16) -> String {
 }
 
 /// Wait for SIGINT, SIGTERM or the loop's end; say which.
-async fn wait_for_stop(done_rx: tokio::sync::oneshot::Receiver<()>) -> Result<&'static str, NodeError> {
+async fn wait_for_stop(
+    done_rx: tokio::sync::oneshot::Receiver<()>,
+) -> Result<&'static str, NodeError> {
     use tokio::signal::unix::{signal, SignalKind};
-    let mut sigint = signal(SignalKind::interrupt()).map_err(|error| NodeError::System { what: "cannot handle SIGINT", error })?;
-    let mut sigterm = signal(SignalKind::terminate()).map_err(|error| NodeError::System { what: "cannot handle SIGTERM", error })?;
+    let mut sigint = signal(SignalKind::interrupt()).map_err(|error| NodeError::System {
+        what: "cannot handle SIGINT",
+        error,
+    })?;
+    let mut sigterm = signal(SignalKind::terminate()).map_err(|error| NodeError::System {
+        what: "cannot handle SIGTERM",
+        error,
+    })?;
     Ok(tokio::select! {
         _ = sigint.recv() => "SIGINT",
         _ = sigterm.recv() => "SIGTERM",
@@ -344,7 +581,9 @@ async fn wait_for_stop(done_rx: tokio::sync::oneshot::Receiver<()>) -> Result<&'
 
 /// Let the writer thread finish the bag; `Err` with the reason if it could not.
 async fn finish_recording(thread: RecorderThread, logger: &Logger) -> Result<(), String> {
-    let r = tokio::task::spawn_blocking(move || thread.finish()).await.map_err(|e| format!("the bag writer thread failed: {e}"))?;
+    let r = tokio::task::spawn_blocking(move || thread.finish())
+        .await
+        .map_err(|e| format!("the bag writer thread failed: {e}"))?;
     match &r.summary {
         Ok(s) => {
             let msg = format!(
@@ -357,7 +596,13 @@ async fn finish_recording(thread: RecorderThread, logger: &Logger) -> Result<(),
                 r.dropped
             );
             if r.dropped > 0 || r.error.is_some() {
-                logger.warn(&format!("{msg}{}", r.error.as_ref().map(|e| format!("; stopped early: {e}")).unwrap_or_default()));
+                logger.warn(&format!(
+                    "{msg}{}",
+                    r.error
+                        .as_ref()
+                        .map(|e| format!("; stopped early: {e}"))
+                        .unwrap_or_default()
+                ));
             } else {
                 logger.info(&msg);
             }
@@ -370,15 +615,23 @@ async fn finish_recording(thread: RecorderThread, logger: &Logger) -> Result<(),
     }
 }
 
-async fn serve(setup: NodeSetup, sim: Simulation, domain: u16, bag: Option<NodeBag>) -> Result<(), NodeError> {
+async fn serve(
+    setup: NodeSetup,
+    sim: Simulation,
+    domain: u16,
+    bag: Option<NodeBag>,
+) -> Result<(), NodeError> {
     let (names, settings) = (&setup.names, &setup.settings);
     let context = Context::with_options(ContextOptions::new().domain_id(domain))
         .map_err(|e| NodeError::dds(format!("cannot join DDS domain {domain}"), e))?;
     let mut node = context
         .new_node(
-            NodeName::new(names.namespace(), names.node_name()).map_err(|e| NodeError::dds("node name", e))?,
+            NodeName::new(names.namespace(), names.node_name())
+                .map_err(|e| NodeError::dds("node name", e))?,
             // No Spinner and no built-in parameter services: see messages/clock.rs.
-            NodeOptions::new().enable_rosout(setup.args.rosout_logs).start_parameter_services(false),
+            NodeOptions::new()
+                .enable_rosout(setup.args.rosout_logs)
+                .start_parameter_services(false),
         )
         .map_err(|e| NodeError::dds("cannot create the node", e))?;
     let logger = Arc::new(Logger::new(
@@ -391,40 +644,80 @@ async fn serve(setup: NodeSetup, sim: Simulation, domain: u16, bag: Option<NodeB
     let frames = setup.frame_names();
 
     let pubs = create_publishers(&mut node, names, settings, &sim)?;
-    let tf_static = publisher::<TFMessage, TFMessage>(&mut node, names, topics::TF_STATIC, &qos::TF_STATIC)?;
-    let static_stamp = if settings.sim_time || settings.use_sim_time { Time::default() } else { Time::wall_now() };
+    let tf_static =
+        publisher::<TFMessage, TFMessage>(&mut node, names, topics::TF_STATIC, &qos::TF_STATIC)?;
+    let static_stamp = if settings.sim_time || settings.use_sim_time {
+        Time::default()
+    } else {
+        Time::wall_now()
+    };
     let static_msg = static_transforms(&frames, setup.config.reference.tilt, static_stamp);
     let recording = start_recording(bag, &static_msg, static_stamp, &logger)?;
     if let Err(e) = tf_static.publish(static_msg) {
         logger.warn(&format!("could not publish /tf_static: {e:?}"));
     }
-    let critical_pub = publisher::<CriticalSpeeds, CriticalSpeeds>(&mut node, names, topics::CRITICAL_SPEEDS, &qos::CRITICAL_SPEEDS)?;
+    let critical_pub = publisher::<CriticalSpeeds, CriticalSpeeds>(
+        &mut node,
+        names,
+        topics::CRITICAL_SPEEDS,
+        &qos::CRITICAL_SPEEDS,
+    )?;
     let critical = super::critical_speeds::publish(&critical_pub, &sim, &setup.config, &logger);
 
     // The loop's queue, shared by inputs and services.
     let (tx, rx) = sync_channel::<Command>(COMMAND_QUEUE);
     let stats = Arc::new(InputStats::default());
     let ctx = InputContext {
-        validator: Arc::new(InputValidator::new(frames.ale.clone(), frames.lagrange.clone(), sim.scene().rules.clone())),
+        validator: Arc::new(InputValidator::new(
+            frames.ale.clone(),
+            frames.lagrange.clone(),
+            sim.scene().rules.clone(),
+        )),
         stats: Arc::clone(&stats),
         logger: Arc::clone(&logger),
     };
     let mut inputs = subscribe_inputs(&mut node, names, &frames, &ctx)?;
-    inputs.extend(subscribe_load_commands(&mut node, names, &sim.scene().rules, &ctx)?);
+    inputs.extend(subscribe_load_commands(
+        &mut node,
+        names,
+        &sim.scene().rules,
+        &ctx,
+    )?);
     let mut tasks = start_services(&mut node, &setup, &tx)?;
     if settings.use_sim_time {
-        tasks.push(super::clock_input::spawn(&mut node, &names.resolve(topics::CLOCK)?, tx.clone())?);
+        tasks.push(super::clock_input::spawn(
+            &mut node,
+            &names.resolve(topics::CLOCK)?,
+            tx.clone(),
+        )?);
     }
 
     let line = startup_line(&setup, &sim, domain);
     let outputs = OutputMessages::new(&sim, &frames);
-    let mut sim_loop =
-        SimLoop::new(sim, outputs, pubs, rx, Arc::clone(&stats), Arc::clone(&logger), loop_settings(&setup)).with_inputs(inputs).with_critical_speeds(critical);
+    let mut sim_loop = SimLoop::new(
+        sim,
+        outputs,
+        pubs,
+        rx,
+        Arc::clone(&stats),
+        Arc::clone(&logger),
+        loop_settings(&setup),
+    )
+    .with_inputs(inputs)
+    .with_critical_speeds(critical);
     if settings.step_aligned_reception {
-        sim_loop = sim_loop.with_step_aligned_receive(StepAlignedReceive::new(context.domain_participant().receive_gate()));
+        sim_loop = sim_loop.with_step_aligned_receive(StepAlignedReceive::new(
+            context.domain_participant().receive_gate(),
+        ));
     }
     let (recorder, record_thread) = recording.unzip();
-    let marker_thread = match start_marker(&mut node, &setup, sim_loop.simulation(), &frames, recorder.clone())? {
+    let marker_thread = match start_marker(
+        &mut node,
+        &setup,
+        sim_loop.simulation(),
+        &frames,
+        recorder.clone(),
+    )? {
         Some((feed, join)) => {
             sim_loop = sim_loop.with_marker(feed);
             Some(join)
@@ -435,7 +728,10 @@ async fn serve(setup: NodeSetup, sim: Simulation, domain: u16, bag: Option<NodeB
         sim_loop = sim_loop.with_recorder(recorder);
     }
     let (sim_thread, done_rx) = start_loop(sim_loop)?;
-    super::heap::spawn_trimmer().map_err(|error| NodeError::System { what: "cannot start the heap-trimming thread", error })?;
+    super::heap::spawn_trimmer().map_err(|error| NodeError::System {
+        what: "cannot start the heap-trimming thread",
+        error,
+    })?;
     logger.info(&line);
 
     let why = wait_for_stop(done_rx).await?;

@@ -22,8 +22,14 @@ use std::collections::BTreeMap;
 
 /// Keys that `set_parameters` may change while the node runs, with their rule.
 pub const RUNTIME_KEYS: &[(&str, &str)] = &[
-    ("simulation.realtime_factor", "a double: 0 (as fast as possible) or in [1e-6, 1e6]"),
-    ("ros.wrench_timeout", "a double, finite and >= 0 s (0 = hold wrenches until replaced)"),
+    (
+        "simulation.realtime_factor",
+        "a double: 0 (as fast as possible) or in [1e-6, 1e6]",
+    ),
+    (
+        "ros.wrench_timeout",
+        "a double, finite and >= 0 s (0 = hold wrenches until replaced)",
+    ),
 ];
 
 pub use super::services::RuntimeChange;
@@ -71,8 +77,14 @@ fn type_code(v: &ParamValue) -> u8 {
 /// The effective parameters: the given values, and every declared key's
 /// default (`config::table`; a load model's keys only when its section is
 /// on); `use_sim_time` and every `ros.*` key are always present.
-pub fn effective_parameters(given: &Params, settings: &RosSettings) -> BTreeMap<String, ParamValue> {
-    let mut out: BTreeMap<String, ParamValue> = given.iter().map(|(k, v)| (k.to_string(), v.clone())).collect();
+pub fn effective_parameters(
+    given: &Params,
+    settings: &RosSettings,
+) -> BTreeMap<String, ParamValue> {
+    let mut out: BTreeMap<String, ParamValue> = given
+        .iter()
+        .map(|(k, v)| (k.to_string(), v.clone()))
+        .collect();
     for section in table::SECTIONS {
         if table::enabled_by(section.name).is_some_and(|key| given.get(key).is_none()) {
             continue;
@@ -83,8 +95,10 @@ pub fn effective_parameters(given: &Params, settings: &RosSettings) -> BTreeMap<
             }
         }
     }
-    out.entry("use_sim_time".to_string()).or_insert(ParamValue::Bool(false));
-    out.entry("ros.publish_clock".to_string()).or_insert(ParamValue::Bool(false));
+    out.entry("use_sim_time".to_string())
+        .or_insert(ParamValue::Bool(false));
+    out.entry("ros.publish_clock".to_string())
+        .or_insert(ParamValue::Bool(false));
     for (k, v) in settings.effective_params() {
         out.insert(k.to_string(), v);
     }
@@ -93,9 +107,20 @@ pub fn effective_parameters(given: &Params, settings: &RosSettings) -> BTreeMap<
 
 /// A declared parameter in one line: meaning, unit, rule (docs/parameters.md).
 fn describe(p: &table::Param) -> String {
-    let unit = if p.unit.is_empty() || p.unit == "—" { String::new() } else { format!(" [{}]", p.unit) };
-    let meaning = if p.meaning.is_empty() { p.rule } else { p.meaning };
-    format!("{meaning}{unit}; rule: {}; default: {} (docs/parameters.md)", p.rule, p.default_text)
+    let unit = if p.unit.is_empty() || p.unit == "—" {
+        String::new()
+    } else {
+        format!(" [{}]", p.unit)
+    };
+    let meaning = if p.meaning.is_empty() {
+        p.rule
+    } else {
+        p.meaning
+    };
+    format!(
+        "{meaning}{unit}; rule: {}; default: {} (docs/parameters.md)",
+        p.rule, p.default_text
+    )
 }
 
 /// Parameter values and descriptions behind the six services.
@@ -138,15 +163,33 @@ impl ParamStore {
                 }
             }
         }
-        ListParametersResult { names, prefixes: out_prefixes }
+        ListParametersResult {
+            names,
+            prefixes: out_prefixes,
+        }
     }
 
     pub fn get_values(&self, names: &[String]) -> Vec<raw::ParameterValue> {
-        names.iter().map(|n| self.values.get(n).map_or(RosValue::NotSet, to_ros_value).into()).collect()
+        names
+            .iter()
+            .map(|n| {
+                self.values
+                    .get(n)
+                    .map_or(RosValue::NotSet, to_ros_value)
+                    .into()
+            })
+            .collect()
     }
 
     pub fn get_types(&self, names: &[String]) -> Vec<u8> {
-        names.iter().map(|n| self.values.get(n).map_or(raw::ParameterType::NOT_SET, type_code)).collect()
+        names
+            .iter()
+            .map(|n| {
+                self.values
+                    .get(n)
+                    .map_or(raw::ParameterType::NOT_SET, type_code)
+            })
+            .collect()
     }
 
     pub fn describe(&self, names: &[String]) -> Vec<raw::ParameterDescriptor> {
@@ -177,7 +220,11 @@ impl ParamStore {
     }
 
     /// Check one assignment (a raw rcl_interfaces value) without applying it.
-    fn check_raw(&self, name: &str, value: raw::ParameterValue) -> Result<(ParamValue, RuntimeChange), String> {
+    fn check_raw(
+        &self,
+        name: &str,
+        value: raw::ParameterValue,
+    ) -> Result<(ParamValue, RuntimeChange), String> {
         if value.ptype > raw::ParameterType::STRING_ARRAY {
             return Err(format!(
                 "`{name}`: type code {} is not a ROS 2 parameter type (rcl_interfaces/msg/ParameterType: 0 = not set … 9 = string array)",
@@ -205,15 +252,25 @@ impl ParamStore {
         };
         crate::config::check(name, &value).map_err(|e| e.to_string())?;
         let change = match (name, &value) {
-            ("simulation.realtime_factor", ParamValue::Double(x)) => RuntimeChange::RealtimeFactor(*x),
+            ("simulation.realtime_factor", ParamValue::Double(x)) => {
+                RuntimeChange::RealtimeFactor(*x)
+            }
             ("ros.wrench_timeout", ParamValue::Double(x)) => RuntimeChange::WrenchTimeout(*x),
-            _ => return Err(format!("`{name}`: {} is not a run-time value of this key", value.type_name())),
+            _ => {
+                return Err(format!(
+                    "`{name}`: {} is not a run-time value of this key",
+                    value.type_name()
+                ))
+            }
         };
         Ok((value, change))
     }
 
     /// `set_parameters`: each assignment on its own.
-    pub fn set(&mut self, params: Vec<raw::Parameter>) -> (Vec<raw::SetParametersResult>, Vec<RuntimeChange>) {
+    pub fn set(
+        &mut self,
+        params: Vec<raw::Parameter>,
+    ) -> (Vec<raw::SetParametersResult>, Vec<RuntimeChange>) {
         let mut results = Vec::new();
         let mut changes = Vec::new();
         for p in params {
@@ -221,23 +278,37 @@ impl ParamStore {
                 Ok((v, change)) => {
                     self.values.insert(p.name, v);
                     changes.push(change);
-                    results.push(raw::SetParametersResult { successful: true, reason: String::new() });
+                    results.push(raw::SetParametersResult {
+                        successful: true,
+                        reason: String::new(),
+                    });
                 }
-                Err(reason) => results.push(raw::SetParametersResult { successful: false, reason }),
+                Err(reason) => results.push(raw::SetParametersResult {
+                    successful: false,
+                    reason,
+                }),
             }
         }
         (results, changes)
     }
 
     /// `set_parameters_atomically`: all or none.
-    pub fn set_atomically(&mut self, params: Vec<raw::Parameter>) -> (SetParametersAtomicallyResponse, Vec<RuntimeChange>) {
+    pub fn set_atomically(
+        &mut self,
+        params: Vec<raw::Parameter>,
+    ) -> (SetParametersAtomicallyResponse, Vec<RuntimeChange>) {
         let mut checked = Vec::new();
         for p in params {
             match self.check_raw(&p.name, p.value) {
                 Ok((v, change)) => checked.push((p.name, v, change)),
                 Err(reason) => {
                     return (
-                        SetParametersAtomicallyResponse { result: raw::SetParametersResult { successful: false, reason } },
+                        SetParametersAtomicallyResponse {
+                            result: raw::SetParametersResult {
+                                successful: false,
+                                reason,
+                            },
+                        },
                         Vec::new(),
                     )
                 }
@@ -248,7 +319,15 @@ impl ParamStore {
             self.values.insert(name, v);
             changes.push(change);
         }
-        (SetParametersAtomicallyResponse { result: raw::SetParametersResult { successful: true, reason: String::new() } }, changes)
+        (
+            SetParametersAtomicallyResponse {
+                result: raw::SetParametersResult {
+                    successful: true,
+                    reason: String::new(),
+                },
+            },
+            changes,
+        )
     }
 }
 
@@ -269,33 +348,73 @@ pub fn spawn(
     let name = |n: &str| format!("{}/{n}", fqn.trim_end_matches('/'));
     let mut handles = Vec::new();
 
-    let server = create_server::<ListParametersRequest, ListParametersResponse>(node, mapping, &name("list_parameters"), "rcl_interfaces", "ListParameters")?;
+    let server = create_server::<ListParametersRequest, ListParametersResponse>(
+        node,
+        mapping,
+        &name("list_parameters"),
+        "rcl_interfaces",
+        "ListParameters",
+    )?;
     let st = store.clone();
-    handles.push(spawn_server(server, name("list_parameters"), move |req: ListParametersRequest| {
-        let result = lock(&st).list(&req.prefixes, req.depth);
-        async move { ListParametersResponse { result } }
-    }));
+    handles.push(spawn_server(
+        server,
+        name("list_parameters"),
+        move |req: ListParametersRequest| {
+            let result = lock(&st).list(&req.prefixes, req.depth);
+            async move { ListParametersResponse { result } }
+        },
+    ));
 
-    let server = create_server::<GetParametersRequest, GetParametersResponse>(node, mapping, &name("get_parameters"), "rcl_interfaces", "GetParameters")?;
+    let server = create_server::<GetParametersRequest, GetParametersResponse>(
+        node,
+        mapping,
+        &name("get_parameters"),
+        "rcl_interfaces",
+        "GetParameters",
+    )?;
     let st = store.clone();
-    handles.push(spawn_server(server, name("get_parameters"), move |req: GetParametersRequest| {
-        let values = lock(&st).get_values(&req.names);
-        async move { GetParametersResponse { values } }
-    }));
+    handles.push(spawn_server(
+        server,
+        name("get_parameters"),
+        move |req: GetParametersRequest| {
+            let values = lock(&st).get_values(&req.names);
+            async move { GetParametersResponse { values } }
+        },
+    ));
 
-    let server = create_server::<GetParameterTypesRequest, GetParameterTypesResponse>(node, mapping, &name("get_parameter_types"), "rcl_interfaces", "GetParameterTypes")?;
+    let server = create_server::<GetParameterTypesRequest, GetParameterTypesResponse>(
+        node,
+        mapping,
+        &name("get_parameter_types"),
+        "rcl_interfaces",
+        "GetParameterTypes",
+    )?;
     let st = store.clone();
-    handles.push(spawn_server(server, name("get_parameter_types"), move |req: GetParameterTypesRequest| {
-        let values = lock(&st).get_types(&req.names);
-        async move { GetParameterTypesResponse { values } }
-    }));
+    handles.push(spawn_server(
+        server,
+        name("get_parameter_types"),
+        move |req: GetParameterTypesRequest| {
+            let values = lock(&st).get_types(&req.names);
+            async move { GetParameterTypesResponse { values } }
+        },
+    ));
 
-    let server = create_server::<DescribeParametersRequest, DescribeParametersResponse>(node, mapping, &name("describe_parameters"), "rcl_interfaces", "DescribeParameters")?;
+    let server = create_server::<DescribeParametersRequest, DescribeParametersResponse>(
+        node,
+        mapping,
+        &name("describe_parameters"),
+        "rcl_interfaces",
+        "DescribeParameters",
+    )?;
     let st = store.clone();
-    handles.push(spawn_server(server, name("describe_parameters"), move |req: DescribeParametersRequest| {
-        let values = lock(&st).describe(&req.names);
-        async move { DescribeParametersResponse { values } }
-    }));
+    handles.push(spawn_server(
+        server,
+        name("describe_parameters"),
+        move |req: DescribeParametersRequest| {
+            let values = lock(&st).describe(&req.names);
+            async move { DescribeParametersResponse { values } }
+        },
+    ));
 
     let forward = |tx: &std::sync::mpsc::SyncSender<Command>, changes: Vec<RuntimeChange>| {
         for c in changes {
@@ -303,21 +422,47 @@ pub fn spawn(
         }
     };
 
-    let server = create_server::<SetParametersRequest, SetParametersResponse>(node, mapping, &name("set_parameters"), "rcl_interfaces", "SetParameters")?;
+    let server = create_server::<SetParametersRequest, SetParametersResponse>(
+        node,
+        mapping,
+        &name("set_parameters"),
+        "rcl_interfaces",
+        "SetParameters",
+    )?;
     let (st, tx1) = (store.clone(), tx.clone());
-    handles.push(spawn_server(server, name("set_parameters"), move |req: SetParametersRequest| {
-        let (results, changes) = st.lock().unwrap_or_else(|e| e.into_inner()).set(req.parameter);
-        forward(&tx1, changes);
-        async move { SetParametersResponse { results } }
-    }));
+    handles.push(spawn_server(
+        server,
+        name("set_parameters"),
+        move |req: SetParametersRequest| {
+            let (results, changes) = st
+                .lock()
+                .unwrap_or_else(|e| e.into_inner())
+                .set(req.parameter);
+            forward(&tx1, changes);
+            async move { SetParametersResponse { results } }
+        },
+    ));
 
-    let server = create_server::<SetParametersRequest, SetParametersAtomicallyResponse>(node, mapping, &name("set_parameters_atomically"), "rcl_interfaces", "SetParametersAtomically")?;
+    let server = create_server::<SetParametersRequest, SetParametersAtomicallyResponse>(
+        node,
+        mapping,
+        &name("set_parameters_atomically"),
+        "rcl_interfaces",
+        "SetParametersAtomically",
+    )?;
     let (st, tx2) = (store, tx);
-    handles.push(spawn_server(server, name("set_parameters_atomically"), move |req: SetParametersRequest| {
-        let (response, changes) = st.lock().unwrap_or_else(|e| e.into_inner()).set_atomically(req.parameter);
-        forward(&tx2, changes);
-        async move { response }
-    }));
+    handles.push(spawn_server(
+        server,
+        name("set_parameters_atomically"),
+        move |req: SetParametersRequest| {
+            let (response, changes) = st
+                .lock()
+                .unwrap_or_else(|e| e.into_inner())
+                .set_atomically(req.parameter);
+            forward(&tx2, changes);
+            async move { response }
+        },
+    ));
     Ok(handles)
 }
 
@@ -327,7 +472,13 @@ mod tests {
 
     fn store() -> ParamStore {
         let mut v = BTreeMap::new();
-        for (k, x) in [("a", 0.0), ("a.b", 0.0), ("a.b.c", 0.0), ("ab", 0.0), ("x.y", 0.0)] {
+        for (k, x) in [
+            ("a", 0.0),
+            ("a.b", 0.0),
+            ("a.b.c", 0.0),
+            ("ab", 0.0),
+            ("x.y", 0.0),
+        ] {
             v.insert(k.to_string(), ParamValue::Double(x));
         }
         v.insert("simulation.realtime_factor".into(), ParamValue::Double(1.0));
@@ -342,7 +493,17 @@ mod tests {
     fn list_matches_rclcpp() {
         let st = store();
         let all = st.list(&[], 0);
-        assert_eq!(all.names, s(&["a", "a.b", "a.b.c", "ab", "simulation.realtime_factor", "x.y"]));
+        assert_eq!(
+            all.names,
+            s(&[
+                "a",
+                "a.b",
+                "a.b.c",
+                "ab",
+                "simulation.realtime_factor",
+                "x.y"
+            ])
+        );
         assert_eq!(all.prefixes, s(&["a", "a.b", "simulation", "x"]));
         assert_eq!(st.list(&[], 1).names, s(&["a", "ab"]));
         assert_eq!(st.list(&s(&["a"]), 0).names, s(&["a", "a.b", "a.b.c"]));
@@ -353,7 +514,10 @@ mod tests {
     #[test]
     fn get_types_and_values() {
         let st = store();
-        assert_eq!(st.get_types(&s(&["a", "nope"])), vec![raw::ParameterType::DOUBLE, raw::ParameterType::NOT_SET]);
+        assert_eq!(
+            st.get_types(&s(&["a", "nope"])),
+            vec![raw::ParameterType::DOUBLE, raw::ParameterType::NOT_SET]
+        );
         let v = st.get_values(&s(&["simulation.realtime_factor", "nope"]));
         assert_eq!(v[0].ptype, raw::ParameterType::DOUBLE);
         assert_eq!(v[0].double_value, 1.0);
@@ -363,7 +527,10 @@ mod tests {
     }
 
     fn param(name: &str, v: RosValue) -> raw::Parameter {
-        raw::Parameter { name: name.into(), value: v.into() }
+        raw::Parameter {
+            name: name.into(),
+            value: v.into(),
+        }
     }
 
     #[test]
@@ -374,28 +541,55 @@ mod tests {
             param("zzz", RosValue::Double(2.0)),
             param("simulation.realtime_factor", RosValue::Double(0.0)),
             param("simulation.realtime_factor", RosValue::Integer(0)),
-            param("simulation.realtime_factor", RosValue::String("fast".into())),
+            param(
+                "simulation.realtime_factor",
+                RosValue::String("fast".into()),
+            ),
         ]);
-        assert!(!r[0].successful && r[0].reason.contains("read only") && r[0].reason.contains("-p a:="));
+        assert!(
+            !r[0].successful && r[0].reason.contains("read only") && r[0].reason.contains("-p a:=")
+        );
         assert!(!r[1].successful && r[1].reason.contains("not declared"));
         // A type code outside rcl_interfaces' is named as such, not as an unset value.
-        let mut bad = raw::Parameter { name: "ros.wrench_timeout".into(), value: raw::ParameterValue::from(RosValue::Double(1.0)) };
+        let mut bad = raw::Parameter {
+            name: "ros.wrench_timeout".into(),
+            value: raw::ParameterValue::from(RosValue::Double(1.0)),
+        };
         bad.value.ptype = 99;
         let (r99, _) = st.set(vec![bad]);
-        assert!(!r99[0].successful && r99[0].reason.contains("type code 99 is not a ROS 2 parameter type"), "{}", r99[0].reason);
+        assert!(
+            !r99[0].successful
+                && r99[0]
+                    .reason
+                    .contains("type code 99 is not a ROS 2 parameter type"),
+            "{}",
+            r99[0].reason
+        );
         assert!(r[2].successful);
         assert!(!r[3].successful && !r[4].successful);
         assert_eq!(c, vec![RuntimeChange::RealtimeFactor(0.0)]);
-        assert_eq!(st.get("simulation.realtime_factor"), Some(&ParamValue::Double(0.0)));
+        assert_eq!(
+            st.get("simulation.realtime_factor"),
+            Some(&ParamValue::Double(0.0))
+        );
     }
 
     #[test]
     fn atomic_set_is_all_or_nothing() {
         let mut st = store();
-        let (r, c) = st.set_atomically(vec![param("simulation.realtime_factor", RosValue::Double(2.0)), param("a", RosValue::Double(1.0))]);
+        let (r, c) = st.set_atomically(vec![
+            param("simulation.realtime_factor", RosValue::Double(2.0)),
+            param("a", RosValue::Double(1.0)),
+        ]);
         assert!(!r.result.successful && c.is_empty());
-        assert_eq!(st.get("simulation.realtime_factor"), Some(&ParamValue::Double(1.0)));
-        let (r, c) = st.set_atomically(vec![param("simulation.realtime_factor", RosValue::Double(2.0))]);
+        assert_eq!(
+            st.get("simulation.realtime_factor"),
+            Some(&ParamValue::Double(1.0))
+        );
+        let (r, c) = st.set_atomically(vec![param(
+            "simulation.realtime_factor",
+            RosValue::Double(2.0),
+        )]);
         assert!(r.result.successful);
         assert_eq!(c, vec![RuntimeChange::RealtimeFactor(2.0)]);
     }
@@ -407,9 +601,18 @@ mod tests {
         let cfg = crate::config::Config::default();
         let eff = effective_parameters(&given, &RosSettings::default());
         assert_eq!(eff.get("joint.speed"), Some(&ParamValue::Double(3.0)));
-        assert_eq!(eff.get("simulation.rate_hz"), Some(&ParamValue::Double(cfg.simulation.rate_hz)));
+        assert_eq!(
+            eff.get("simulation.rate_hz"),
+            Some(&ParamValue::Double(cfg.simulation.rate_hz))
+        );
         assert_eq!(eff.get("use_sim_time"), Some(&ParamValue::Bool(false)));
-        assert_eq!(eff.get("ros.frame_prefix"), Some(&ParamValue::String(String::new())));
-        assert_eq!(eff.get("plate.inner_boundary"), Some(&ParamValue::String("clamped".into())));
+        assert_eq!(
+            eff.get("ros.frame_prefix"),
+            Some(&ParamValue::String(String::new()))
+        );
+        assert_eq!(
+            eff.get("plate.inner_boundary"),
+            Some(&ParamValue::String("clamped".into()))
+        );
     }
 }

@@ -12,8 +12,10 @@
 //! response always describes the state after the request.
 
 use super::inputs::{Input, Source};
-use crate::messages::types::{SetBoolRequest, SetBoolResponse, StepRequest, StepResponse, TriggerRequest, TriggerResponse};
 use crate::messages::qos;
+use crate::messages::types::{
+    SetBoolRequest, SetBoolResponse, StepRequest, StepResponse, TriggerRequest, TriggerResponse,
+};
 use ros2_client::{Message, Name, Node, Server, ServiceMapping, ServiceTypeName};
 use std::future::Future;
 use std::sync::mpsc::{SyncSender, TrySendError};
@@ -41,7 +43,11 @@ pub struct LoopStatus {
 #[derive(Debug)]
 pub enum Command {
     /// A checked input from a topic.
-    Input(Input, Source, /* stamp of the input's header, ns (0: none) */ i64),
+    Input(
+        Input,
+        Source,
+        /* stamp of the input's header, ns (0: none) */ i64,
+    ),
     Reset(oneshot::Sender<TriggerResponse>),
     SetPaused(bool, oneshot::Sender<SetBoolResponse>),
     Step(u32, oneshot::Sender<StepResponse>),
@@ -60,7 +66,11 @@ pub const STEP: &str = "~/step";
 
 /// Serve `server` until the task is aborted: each request is answered with
 /// `handler(request).await`. Undecodable requests are skipped.
-pub fn spawn_server<Req, Resp, F, Fut>(server: Server<Req, Resp>, name: String, mut handler: F) -> JoinHandle<()>
+pub fn spawn_server<Req, Resp, F, Fut>(
+    server: Server<Req, Resp>,
+    name: String,
+    mut handler: F,
+) -> JoinHandle<()>
 where
     Req: Message + Clone + Send + Sync + 'static,
     Resp: Message + Send + Sync + 'static,
@@ -94,14 +104,25 @@ where
     Req: Message + Clone + 'static,
     Resp: Message + 'static,
 {
-    let name = Name::parse(resolved_name).map_err(|e| super::error::NodeError::dds(format!("service name {resolved_name}"), e))?;
-    node.create_server::<Req, Resp>(mapping, &name, &ServiceTypeName::new(package, type_name), qos::SERVICE, qos::SERVICE)
-        .map_err(|e| super::error::NodeError::dds(format!("cannot create the service {resolved_name}"), e))
+    let name = Name::parse(resolved_name)
+        .map_err(|e| super::error::NodeError::dds(format!("service name {resolved_name}"), e))?;
+    node.create_server::<Req, Resp>(
+        mapping,
+        &name,
+        &ServiceTypeName::new(package, type_name),
+        qos::SERVICE,
+        qos::SERVICE,
+    )
+    .map_err(|e| {
+        super::error::NodeError::dds(format!("cannot create the service {resolved_name}"), e)
+    })
 }
 
 pub(crate) fn busy<T>(e: TrySendError<T>) -> String {
     match e {
-        TrySendError::Full(_) => "the simulation is busy (command queue full); try again".to_string(),
+        TrySendError::Full(_) => {
+            "the simulation is busy (command queue full); try again".to_string()
+        }
         TrySendError::Disconnected(_) => "the simulation has stopped".to_string(),
     }
 }
@@ -113,9 +134,19 @@ pub fn spawn(
     names: [&str; 3],
     tx: SyncSender<Command>,
 ) -> Result<Vec<JoinHandle<()>>, super::error::NodeError> {
-    let reset = create_server::<TriggerRequest, TriggerResponse>(node, mapping, names[0], "std_srvs", "Trigger")?;
-    let paused = create_server::<SetBoolRequest, SetBoolResponse>(node, mapping, names[1], "std_srvs", "SetBool")?;
-    let step = create_server::<StepRequest, StepResponse>(node, mapping, names[2], "annular_plate", "Step")?;
+    let reset = create_server::<TriggerRequest, TriggerResponse>(
+        node, mapping, names[0], "std_srvs", "Trigger",
+    )?;
+    let paused = create_server::<SetBoolRequest, SetBoolResponse>(
+        node, mapping, names[1], "std_srvs", "SetBool",
+    )?;
+    let step = create_server::<StepRequest, StepResponse>(
+        node,
+        mapping,
+        names[2],
+        "annular_plate",
+        "Step",
+    )?;
 
     let tx1 = tx.clone();
     let h1 = spawn_server(reset, names[0].to_string(), move |_req: TriggerRequest| {
@@ -123,19 +154,33 @@ pub fn spawn(
         let sent = tx1.try_send(Command::Reset(otx)).map_err(busy);
         async move {
             match sent {
-                Ok(()) => orx.await.unwrap_or_else(|_| TriggerResponse { success: false, message: "the simulation has stopped".into() }),
-                Err(message) => TriggerResponse { success: false, message },
+                Ok(()) => orx.await.unwrap_or_else(|_| TriggerResponse {
+                    success: false,
+                    message: "the simulation has stopped".into(),
+                }),
+                Err(message) => TriggerResponse {
+                    success: false,
+                    message,
+                },
             }
         }
     });
     let tx2 = tx.clone();
     let h2 = spawn_server(paused, names[1].to_string(), move |req: SetBoolRequest| {
         let (otx, orx) = oneshot::channel();
-        let sent = tx2.try_send(Command::SetPaused(req.data, otx)).map_err(busy);
+        let sent = tx2
+            .try_send(Command::SetPaused(req.data, otx))
+            .map_err(busy);
         async move {
             match sent {
-                Ok(()) => orx.await.unwrap_or_else(|_| SetBoolResponse { success: false, message: "the simulation has stopped".into() }),
-                Err(message) => SetBoolResponse { success: false, message },
+                Ok(()) => orx.await.unwrap_or_else(|_| SetBoolResponse {
+                    success: false,
+                    message: "the simulation has stopped".into(),
+                }),
+                Err(message) => SetBoolResponse {
+                    success: false,
+                    message,
+                },
             }
         }
     });
@@ -150,7 +195,11 @@ pub fn spawn(
                     message: "the simulation has stopped".into(),
                     ..StepResponse::default()
                 }),
-                Err(message) => StepResponse { success: false, message, ..StepResponse::default() },
+                Err(message) => StepResponse {
+                    success: false,
+                    message,
+                    ..StepResponse::default()
+                },
             }
         }
     });

@@ -12,23 +12,23 @@
 //! with `run --record`, hand the same message handles to the bag writer
 //! thread without waiting (`bag::recorder`).
 
-use crate::messages::clock::{Pacer, StepClock};
-use crate::messages::clock_follower::ClockUpdate;
-use crate::messages::diagnostics::{self, LoopReport, Timing};
 use super::input_polling::PolledInput;
 use super::inputs::{Input, InputStats, Source, StaleWrenches};
 use super::logging::Logger;
-use crate::messages::types::{
-    Clock, DiagnosticArray, JointState, ModalAmplitudes, PadStates, SetBoolResponse, StepResponse, TFMessage, Time,
-    ToolState, TriggerResponse,
-};
-use crate::messages::outputs::{clock_message, OutputMessages, Shared};
+use super::marker_thread::MarkerFeed;
 use super::params_service::RuntimeChange;
 use super::services::{Command, LoopStatus};
-use super::marker_thread::MarkerFeed;
 use super::step_aligned_receive::{StepAlignedReceive, ON_ARRIVAL};
 use crate::bag::recorder::{Recorder, Sample};
 use crate::dynamics::{Checked, Command as SimCommand, NodeKind, Simulation, Wrench};
+use crate::messages::clock::{Pacer, StepClock};
+use crate::messages::clock_follower::ClockUpdate;
+use crate::messages::diagnostics::{self, LoopReport, Timing};
+use crate::messages::outputs::{clock_message, OutputMessages, Shared};
+use crate::messages::types::{
+    Clock, DiagnosticArray, JointState, ModalAmplitudes, PadStates, SetBoolResponse, StepResponse,
+    TFMessage, Time, ToolState, TriggerResponse,
+};
 use ros2_client::dds::rustdds::defer_wakes;
 use ros2_client::Publisher;
 use std::collections::VecDeque;
@@ -130,9 +130,17 @@ impl SimLoop {
         let now = Instant::now();
         let dt = sim.dt();
         SimLoop {
-            clock: if settings.follow_clock { StepClock::following(dt, settings.max_clock_jump) } else { StepClock::new(settings.sim_time, dt) },
+            clock: if settings.follow_clock {
+                StepClock::following(dt, settings.max_clock_jump)
+            } else {
+                StepClock::new(settings.sim_time, dt)
+            },
             pacer: Pacer::new(dt, settings.realtime_factor, now),
-            stale: StaleWrenches::new(settings.wrench_timeout, sim.n_ale_nodes(), sim.n_lagrange_nodes()),
+            stale: StaleWrenches::new(
+                settings.wrench_timeout,
+                sim.n_ale_nodes(),
+                sim.n_lagrange_nodes(),
+            ),
             paused: settings.start_paused,
             sim,
             outputs,
@@ -174,7 +182,10 @@ impl SimLoop {
     }
 
     /// Report `<node>: critical speeds` against these (`ros/critical_speeds.rs`).
-    pub fn with_critical_speeds(mut self, speeds: Vec<crate::model::campbell::CriticalSpeed>) -> Self {
+    pub fn with_critical_speeds(
+        mut self,
+        speeds: Vec<crate::model::campbell::CriticalSpeed>,
+    ) -> Self {
         self.critical_speeds = speeds;
         self
     }
@@ -233,7 +244,9 @@ impl SimLoop {
                 // Not stepping: the input topics are read every
                 // PAUSED_INPUT_POLL, so inputs take hold (and are counted)
                 // before the next ~/step.
-                let wait = self.next_diagnostics.saturating_duration_since(Instant::now());
+                let wait = self
+                    .next_diagnostics
+                    .saturating_duration_since(Instant::now());
                 self.wait_command(wait.min(PAUSED_INPUT_POLL));
                 self.take_inputs();
                 if !self.paused && self.diverged.is_none() {
@@ -243,7 +256,9 @@ impl SimLoop {
                 // use_sim_time: the steps the external clock's advance holds.
                 self.release_receive();
                 if due == 0 {
-                    let wait = self.next_diagnostics.saturating_duration_since(Instant::now());
+                    let wait = self
+                        .next_diagnostics
+                        .saturating_duration_since(Instant::now());
                     self.wait_command(wait);
                     continue;
                 }
@@ -336,9 +351,16 @@ impl SimLoop {
         if self.paused && self.diverged.is_none() {
             return false;
         }
-        let reason = if self.diverged.is_some() { "the simulation diverged" } else { "the simulation was resumed" };
+        let reason = if self.diverged.is_some() {
+            "the simulation diverged"
+        } else {
+            "the simulation was resumed"
+        };
         while let Some((left, reply)) = self.step_requests.pop_front() {
-            let _ = reply.send(self.step_response(false, format!("{reason}; {left} requested steps were not taken")));
+            let _ = reply.send(self.step_response(
+                false,
+                format!("{reason}; {left} requested steps were not taken"),
+            ));
         }
         true
     }
@@ -356,11 +378,20 @@ impl SimLoop {
 
     fn step_response(&self, success: bool, message: String) -> StepResponse {
         let message = if message.is_empty() {
-            format!("at step {} (t = {} s)", self.sim.step_count(), self.sim.time())
+            format!(
+                "at step {} (t = {} s)",
+                self.sim.step_count(),
+                self.sim.time()
+            )
         } else {
             message
         };
-        StepResponse { success, message, step: self.sim.step_count(), sim_time: self.sim.time() }
+        StepResponse {
+            success,
+            message,
+            step: self.sim.step_count(),
+            sim_time: self.sim.time(),
+        }
     }
 
     fn handle(&mut self, cmd: Command) {
@@ -372,7 +403,10 @@ impl SimLoop {
                 self.diverged = None;
                 self.pacer.restart(Instant::now());
                 self.logger.info("reset to the initial state");
-                let _ = reply.send(TriggerResponse { success: true, message: "reset to t = 0 (the ROS clock keeps counting)".into() });
+                let _ = reply.send(TriggerResponse {
+                    success: true,
+                    message: "reset to t = 0 (the ROS clock keeps counting)".into(),
+                });
             }
             Command::SetPaused(pause, reply) => {
                 let was = self.paused;
@@ -386,7 +420,10 @@ impl SimLoop {
                     (_, true) => "already paused".to_string(),
                     (_, false) => "already running".to_string(),
                 };
-                let _ = reply.send(SetBoolResponse { success: true, message });
+                let _ = reply.send(SetBoolResponse {
+                    success: true,
+                    message,
+                });
             }
             Command::Step(n, reply) => {
                 if self.clock.follower().is_some() {
@@ -407,7 +444,14 @@ impl SimLoop {
                 }
             }
             Command::Runtime(change) => {
-                let line = apply_runtime(change, &mut self.settings.realtime_factor, &mut self.pacer, &mut self.stale, self.sim.dt(), Instant::now());
+                let line = apply_runtime(
+                    change,
+                    &mut self.settings.realtime_factor,
+                    &mut self.pacer,
+                    &mut self.stale,
+                    self.sim.dt(),
+                    Instant::now(),
+                );
                 self.logger.info(&line);
             }
             Command::Clock(t_ns) => self.follow_clock(t_ns),
@@ -426,7 +470,9 @@ impl SimLoop {
     /// A `/clock` message: what it makes due (skipped while paused or diverged).
     fn follow_clock(&mut self, t_ns: i64) {
         let (paused, diverged) = (self.paused, self.diverged.is_some());
-        let Some(f) = self.clock.follower_mut() else { return };
+        let Some(f) = self.clock.follower_mut() else {
+            return;
+        };
         let update = f.observe(t_ns);
         if paused || diverged {
             f.skip();
@@ -494,7 +540,11 @@ impl SimLoop {
                 // first while the others are still being written.
                 defer_wakes(|| {
                     self.publish_clock();
-                    if self.clock.total_steps().is_multiple_of(self.settings.publish_divisor.max(1) as u64) {
+                    if self
+                        .clock
+                        .total_steps()
+                        .is_multiple_of(self.settings.publish_divisor.max(1) as u64)
+                    {
                         self.publish_state();
                     }
                 });
@@ -506,7 +556,12 @@ impl SimLoop {
                 self.diverged = Some(msg);
             }
         }
-        self.timing.record(start, deadline, deadline.and(self.pacer.period()), start.elapsed());
+        self.timing.record(
+            start,
+            deadline,
+            deadline.and(self.pacer.period()),
+            start.elapsed(),
+        );
     }
 
     fn offer_marker(&mut self) {
@@ -532,9 +587,15 @@ impl SimLoop {
         self.outputs.update(&self.sim, stamp);
         self.outputs.modal.get_mut().input_stamp = Time::from_nanos(self.input_stamp);
         let failures = [
-            self.pubs.joint_states.publish(self.outputs.joint_state.handle()).is_err(),
+            self.pubs
+                .joint_states
+                .publish(self.outputs.joint_state.handle())
+                .is_err(),
             self.pubs.tf.publish(self.outputs.tf.handle()).is_err(),
-            self.pubs.modal.publish(self.outputs.modal.handle()).is_err(),
+            self.pubs
+                .modal
+                .publish(self.outputs.modal.handle())
+                .is_err(),
         ];
         self.publish_failures += failures.iter().filter(|f| **f).count() as u64;
         if let (Some(p), Some(m)) = (&self.pubs.pad_states, &self.outputs.pad_states) {
@@ -572,7 +633,10 @@ impl SimLoop {
             rate_hz: 1.0 / self.sim.dt(),
             realtime_factor: self.settings.realtime_factor,
             clock_jumps: self.clock.follower().map(|f| f.jumps_forward()),
-            new_clock_jumps: self.clock.follower().map_or(0, |f| f.jumps_forward() - self.clock_jumps_at_last_report),
+            new_clock_jumps: self
+                .clock
+                .follower()
+                .map_or(0, |f| f.jumps_forward() - self.clock_jumps_at_last_report),
             publish_failures: self.publish_failures,
             markers_skipped: self.marker.as_ref().map_or(0, |m| m.skipped),
             timing: self.timing.report(now),
@@ -587,12 +651,19 @@ impl SimLoop {
             diagnostics::simulation_status(name, &report),
             diagnostics::inputs_status(name, &self.stats, new_rejected, Some(reception)),
         ];
-        status.push(crate::messages::critical_speeds::status(name, &self.critical_speeds, self.sim.joint().velocity));
+        status.push(crate::messages::critical_speeds::status(
+            name,
+            &self.critical_speeds,
+            self.sim.joint().velocity,
+        ));
         if let Some(r) = &self.recorder {
             let rec = r.report(self.dropped_at_last_report);
             self.dropped_at_last_report = rec.dropped;
             if rec.new_dropped > 0 {
-                self.logger.warn(&format!("recording: {} messages dropped (the bag writer fell behind)", rec.new_dropped));
+                self.logger.warn(&format!(
+                    "recording: {} messages dropped (the bag writer fell behind)",
+                    rec.new_dropped
+                ));
             }
             status.push(diagnostics::recording_status(name, &rec));
         }
@@ -611,7 +682,14 @@ impl SimLoop {
 /// service through `config::check`) to the loop's pacing and wrench
 /// timeout; the log line it makes. Every accepted value keeps the loop
 /// stepping (`tests/parameter_services_cannot_stop_the_node.rs`).
-pub fn apply_runtime(change: RuntimeChange, realtime_factor: &mut f64, pacer: &mut Pacer, stale: &mut StaleWrenches, dt: f64, now: Instant) -> String {
+pub fn apply_runtime(
+    change: RuntimeChange,
+    realtime_factor: &mut f64,
+    pacer: &mut Pacer,
+    stale: &mut StaleWrenches,
+    dt: f64,
+    now: Instant,
+) -> String {
     match change {
         RuntimeChange::RealtimeFactor(f) => {
             *realtime_factor = f;

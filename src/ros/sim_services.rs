@@ -16,8 +16,9 @@
 use super::error::NodeError;
 use super::services::{busy, create_server, spawn_server, Command, LoopStatus};
 use crate::messages::simulation_interfaces::{
-    GetSimulationStateRequest, GetSimulationStateResponse, ResetSimulationRequest, ResetSimulationResponse, SetSimulationStateRequest,
-    SetSimulationStateResponse, SimResult, SimulationState, StepSimulationRequest, StepSimulationResponse,
+    GetSimulationStateRequest, GetSimulationStateResponse, ResetSimulationRequest,
+    ResetSimulationResponse, SetSimulationStateRequest, SetSimulationStateResponse, SimResult,
+    SimulationState, StepSimulationRequest, StepSimulationResponse,
 };
 use ros2_client::{Node, ServiceMapping};
 use std::sync::mpsc::SyncSender;
@@ -33,10 +34,14 @@ pub const SET_SIMULATION_STATE: &str = "~/set_simulation_state";
 const PACKAGE: &str = "simulation_interfaces";
 
 /// Hand the loop one command and wait for its answer.
-async fn ask<R>(tx: &SyncSender<Command>, command: impl FnOnce(oneshot::Sender<R>) -> Command) -> Result<R, String> {
+async fn ask<R>(
+    tx: &SyncSender<Command>,
+    command: impl FnOnce(oneshot::Sender<R>) -> Command,
+) -> Result<R, String> {
     let (otx, orx) = oneshot::channel();
     tx.try_send(command(otx)).map_err(busy)?;
-    orx.await.map_err(|_| "the simulation has stopped".to_string())
+    orx.await
+        .map_err(|_| "the simulation has stopped".to_string())
 }
 
 fn failed(message: String) -> SimResult {
@@ -44,7 +49,8 @@ fn failed(message: String) -> SimResult {
 }
 
 async fn reset(tx: &SyncSender<Command>, scope: u8) -> SimResult {
-    let resets_state = scope == ResetSimulationRequest::SCOPE_DEFAULT || scope & ResetSimulationRequest::SCOPE_STATE != 0;
+    let resets_state = scope == ResetSimulationRequest::SCOPE_DEFAULT
+        || scope & ResetSimulationRequest::SCOPE_STATE != 0;
     if !resets_state {
         return SimResult::code(
             SimResult::RESULT_FEATURE_UNSUPPORTED,
@@ -85,9 +91,17 @@ async fn get_state(tx: &SyncSender<Command>) -> GetSimulationStateResponse {
             if let Some(why) = &s.diverged {
                 message.push_str(&format!("; diverged ({why}): reset it"));
             }
-            GetSimulationStateResponse { state: SimulationState { state: state_of(&s) }, result: SimResult::ok(message) }
+            GetSimulationStateResponse {
+                state: SimulationState {
+                    state: state_of(&s),
+                },
+                result: SimResult::ok(message),
+            }
         }
-        Err(e) => GetSimulationStateResponse { state: SimulationState::default(), result: failed(e) },
+        Err(e) => GetSimulationStateResponse {
+            state: SimulationState::default(),
+            result: failed(e),
+        },
     }
 }
 
@@ -98,7 +112,10 @@ async fn set_paused(tx: &SyncSender<Command>, pause: bool) -> SimResult {
         Err(e) => return failed(e),
     };
     match ask(tx, |reply| Command::SetPaused(pause, reply)).await {
-        Ok(r) if before == pause => SimResult::code(SetSimulationStateResponse::ALREADY_IN_TARGET_STATE, r.message),
+        Ok(r) if before == pause => SimResult::code(
+            SetSimulationStateResponse::ALREADY_IN_TARGET_STATE,
+            r.message,
+        ),
         Ok(r) => SimResult::ok(r.message),
         Err(e) => failed(e),
     }
@@ -128,29 +145,86 @@ async fn set_state(tx: &SyncSender<Command>, state: u8) -> SimResult {
 }
 
 /// Spawn the four services. `names` = resolved (reset, step, get state, set state).
-pub fn spawn(node: &mut Node, mapping: ServiceMapping, names: [&str; 4], tx: SyncSender<Command>) -> Result<Vec<JoinHandle<()>>, NodeError> {
-    let reset_srv = create_server::<ResetSimulationRequest, ResetSimulationResponse>(node, mapping, names[0], PACKAGE, "ResetSimulation")?;
-    let step_srv = create_server::<StepSimulationRequest, StepSimulationResponse>(node, mapping, names[1], PACKAGE, "StepSimulation")?;
-    let get_srv = create_server::<GetSimulationStateRequest, GetSimulationStateResponse>(node, mapping, names[2], PACKAGE, "GetSimulationState")?;
-    let set_srv = create_server::<SetSimulationStateRequest, SetSimulationStateResponse>(node, mapping, names[3], PACKAGE, "SetSimulationState")?;
+pub fn spawn(
+    node: &mut Node,
+    mapping: ServiceMapping,
+    names: [&str; 4],
+    tx: SyncSender<Command>,
+) -> Result<Vec<JoinHandle<()>>, NodeError> {
+    let reset_srv = create_server::<ResetSimulationRequest, ResetSimulationResponse>(
+        node,
+        mapping,
+        names[0],
+        PACKAGE,
+        "ResetSimulation",
+    )?;
+    let step_srv = create_server::<StepSimulationRequest, StepSimulationResponse>(
+        node,
+        mapping,
+        names[1],
+        PACKAGE,
+        "StepSimulation",
+    )?;
+    let get_srv = create_server::<GetSimulationStateRequest, GetSimulationStateResponse>(
+        node,
+        mapping,
+        names[2],
+        PACKAGE,
+        "GetSimulationState",
+    )?;
+    let set_srv = create_server::<SetSimulationStateRequest, SetSimulationStateResponse>(
+        node,
+        mapping,
+        names[3],
+        PACKAGE,
+        "SetSimulationState",
+    )?;
     let (t1, t2, t3, t4) = (tx.clone(), tx.clone(), tx.clone(), tx);
     Ok(vec![
-        spawn_server(reset_srv, names[0].to_string(), move |req: ResetSimulationRequest| {
-            let tx = t1.clone();
-            async move { ResetSimulationResponse { result: reset(&tx, req.scope).await } }
-        }),
-        spawn_server(step_srv, names[1].to_string(), move |req: StepSimulationRequest| {
-            let tx = t2.clone();
-            async move { StepSimulationResponse { result: step(&tx, req.steps).await } }
-        }),
-        spawn_server(get_srv, names[2].to_string(), move |_req: GetSimulationStateRequest| {
-            let tx = t3.clone();
-            async move { get_state(&tx).await }
-        }),
-        spawn_server(set_srv, names[3].to_string(), move |req: SetSimulationStateRequest| {
-            let tx = t4.clone();
-            async move { SetSimulationStateResponse { result: set_state(&tx, req.state.state).await } }
-        }),
+        spawn_server(
+            reset_srv,
+            names[0].to_string(),
+            move |req: ResetSimulationRequest| {
+                let tx = t1.clone();
+                async move {
+                    ResetSimulationResponse {
+                        result: reset(&tx, req.scope).await,
+                    }
+                }
+            },
+        ),
+        spawn_server(
+            step_srv,
+            names[1].to_string(),
+            move |req: StepSimulationRequest| {
+                let tx = t2.clone();
+                async move {
+                    StepSimulationResponse {
+                        result: step(&tx, req.steps).await,
+                    }
+                }
+            },
+        ),
+        spawn_server(
+            get_srv,
+            names[2].to_string(),
+            move |_req: GetSimulationStateRequest| {
+                let tx = t3.clone();
+                async move { get_state(&tx).await }
+            },
+        ),
+        spawn_server(
+            set_srv,
+            names[3].to_string(),
+            move |req: SetSimulationStateRequest| {
+                let tx = t4.clone();
+                async move {
+                    SetSimulationStateResponse {
+                        result: set_state(&tx, req.state.state).await,
+                    }
+                }
+            },
+        ),
     ])
 }
 
@@ -160,9 +234,17 @@ mod tests {
 
     #[test]
     fn a_paused_or_diverged_loop_is_paused_a_running_one_playing() {
-        let s = |paused, diverged: Option<&str>| LoopStatus { paused, diverged: diverged.map(String::from), step: 0, sim_time: 0.0 };
+        let s = |paused, diverged: Option<&str>| LoopStatus {
+            paused,
+            diverged: diverged.map(String::from),
+            step: 0,
+            sim_time: 0.0,
+        };
         assert_eq!(state_of(&s(true, None)), SimulationState::STATE_PAUSED);
-        assert_eq!(state_of(&s(false, Some("NaN"))), SimulationState::STATE_PAUSED);
+        assert_eq!(
+            state_of(&s(false, Some("NaN"))),
+            SimulationState::STATE_PAUSED
+        );
         assert_eq!(state_of(&s(false, None)), SimulationState::STATE_PLAYING);
     }
 }

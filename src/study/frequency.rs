@@ -70,7 +70,11 @@ pub struct FrequencyAxis {
 
 /// Frequencies (rad/s) per ⟨k, l⟩ of a model.
 fn omegas(model: &PlateModel) -> BTreeMap<(u32, u32), f64> {
-    model.radial_shapes().iter().map(|s| ((s.k, s.l), s.omega)).collect()
+    model
+        .radial_shapes()
+        .iter()
+        .map(|s| ((s.k, s.l), s.omega))
+        .collect()
 }
 
 fn with_splines(plate: &PlateConfig, n: usize) -> PlateConfig {
@@ -79,7 +83,10 @@ fn with_splines(plate: &PlateConfig, n: usize) -> PlateConfig {
     p
 }
 
-fn max_error(got: &BTreeMap<(u32, u32), f64>, reference: &BTreeMap<(u32, u32), f64>) -> (f64, ModeId) {
+fn max_error(
+    got: &BTreeMap<(u32, u32), f64>,
+    reference: &BTreeMap<(u32, u32), f64>,
+) -> (f64, ModeId) {
     let mut worst = (-1.0, ModeId { k: 0, l: 0 });
     for (&(k, l), &w_ref) in reference {
         let e = (got[&(k, l)] - w_ref).abs() / w_ref;
@@ -103,19 +110,31 @@ pub fn spline_grid(plate: &PlateConfig, plan: &StudyPlan) -> Vec<usize> {
     grid
 }
 
-pub fn run(plate: &PlateConfig, plan: &StudyPlan, tick: &mut dyn FnMut(&str)) -> Result<FrequencyAxis, StudyError> {
+pub fn run(
+    plate: &PlateConfig,
+    plan: &StudyPlan,
+    tick: &mut dyn FnMut(&str),
+) -> Result<FrequencyAxis, StudyError> {
     let grid = spline_grid(plate, plan);
-    let largest = *grid.last().ok_or(StudyError::EmptyGrid { axis: "radial_splines" })?;
-    let reference_splines = (plan.spline_reference_factor * largest).min(crate::study::MAX_RADIAL_SPLINES);
+    let largest = *grid.last().ok_or(StudyError::EmptyGrid {
+        axis: "radial_splines",
+    })?;
+    let reference_splines =
+        (plan.spline_reference_factor * largest).min(crate::study::MAX_RADIAL_SPLINES);
     let check_splines = reference_splines / 2;
-    tick(&format!("reference model, {reference_splines} radial splines"));
+    tick(&format!(
+        "reference model, {reference_splines} radial splines"
+    ));
     let reference = PlateModel::new(&with_splines(plate, reference_splines))?;
     let check = PlateModel::new(&with_splines(plate, check_splines))?;
     let w_ref = omegas(&reference);
     let (uncertainty, _) = max_error(&omegas(&check), &w_ref);
 
     let mut rows = Vec::new();
-    let settings = grid.iter().map(|&n| RadialSplines::Fixed(n)).chain(std::iter::once(RadialSplines::Auto));
+    let settings = grid
+        .iter()
+        .map(|&n| RadialSplines::Fixed(n))
+        .chain(std::iter::once(RadialSplines::Auto));
     for setting in settings {
         tick(&format!("{setting} radial splines"));
         let mut p = plate.clone();
@@ -125,9 +144,18 @@ pub fn run(plate: &PlateConfig, plan: &StudyPlan, tick: &mut dyn FnMut(&str)) ->
         let build_time_s = min_time(plan.timing_budget, 3, 10_000, || {
             std::hint::black_box(PlateModel::new(std::hint::black_box(&p)).ok());
         });
-        rows.push(FrequencyRow { radial_splines: setting, max_relative_error: e, worst_mode: worst, build_time_s, pareto: false });
+        rows.push(FrequencyRow {
+            radial_splines: setting,
+            max_relative_error: e,
+            worst_mode: worst,
+            build_time_s,
+            pareto: false,
+        });
     }
-    let points: Vec<(f64, f64)> = rows.iter().map(|r| (r.max_relative_error, r.build_time_s)).collect();
+    let points: Vec<(f64, f64)> = rows
+        .iter()
+        .map(|r| (r.max_relative_error, r.build_time_s))
+        .collect();
     for (r, p) in rows.iter_mut().zip(mark_pareto(&points)) {
         r.pareto = p;
     }
@@ -137,22 +165,30 @@ pub fn run(plate: &PlateConfig, plan: &StudyPlan, tick: &mut dyn FnMut(&str)) ->
             error: r.max_relative_error,
             uncertainty,
             cost: r.build_time_s,
-            setting: FrequencySetting { radial_splines: r.radial_splines },
+            setting: FrequencySetting {
+                radial_splines: r.radial_splines,
+            },
             is_default: r.radial_splines == plate.radial_splines,
         }),
     );
     Ok(FrequencyAxis {
         what: "natural-frequency error of the requested ⟨k, l⟩ against plate.radial_splines",
-        error_measure: "max over the requested ⟨k, l⟩ of |f − f_ref| / f_ref, f_ref from the reference model",
+        error_measure:
+            "max over the requested ⟨k, l⟩ of |f − f_ref| / f_ref, f_ref from the reference model",
         cost_measure: "model build time (PlateModel::new), s",
         reference: FrequencyReference {
             radial_splines: reference_splines,
             check_radial_splines: check_splines,
             uncertainty,
-            frequencies_hz: w_ref.iter().map(|(&(k, l), &w)| (ModeId { k, l }, w / std::f64::consts::TAU)).collect(),
+            frequencies_hz: w_ref
+                .iter()
+                .map(|(&(k, l), &w)| (ModeId { k, l }, w / std::f64::consts::TAU))
+                .collect(),
         },
         rows,
         recommendations,
-        default_setting: FrequencySetting { radial_splines: plate.radial_splines },
+        default_setting: FrequencySetting {
+            radial_splines: plate.radial_splines,
+        },
     })
 }

@@ -101,7 +101,11 @@ impl StudyPlan {
             l_max: vec![0, 1, 2, 3, 4, 6, 8, 12, 16],
             response_reference: (200, 48),
             response_splines: 96,
-            integrators: vec![IntegratorKind::Exponential, IntegratorKind::ImplicitMidpoint, IntegratorKind::Rk4],
+            integrators: vec![
+                IntegratorKind::Exponential,
+                IntegratorKind::ImplicitMidpoint,
+                IntegratorKind::Rk4,
+            ],
             rates_hz: vec![1e3, 2e3, 5e3, 1e4, 2e4, 5e4, 1e5],
             sample_rate_hz: 1e3,
             trajectory_reference_rate_hz: 1e6,
@@ -120,7 +124,11 @@ impl StudyPlan {
             l_max: vec![0, 1, 2],
             response_reference: (60, 8),
             response_splines: 48,
-            integrators: vec![IntegratorKind::Exponential, IntegratorKind::ImplicitMidpoint, IntegratorKind::Rk4],
+            integrators: vec![
+                IntegratorKind::Exponential,
+                IntegratorKind::ImplicitMidpoint,
+                IntegratorKind::Rk4,
+            ],
             rates_hz: vec![1e3, 2e3, 5e3, 1e4, 2e4],
             sample_rate_hz: 1e3,
             trajectory_reference_rate_hz: 1e5,
@@ -134,7 +142,8 @@ impl StudyPlan {
     pub fn units(&self, config: &Config) -> usize {
         let a = 2 + frequency::spline_grid(&config.plate, self).len();
         let (k_ref, l_ref) = self.response_reference;
-        let b = 1 + self.k_max.iter().filter(|&&k| k <= k_ref).count() * self.l_max.iter().filter(|&&l| l <= l_ref).count();
+        let b = 1 + self.k_max.iter().filter(|&&k| k <= k_ref).count()
+            * self.l_max.iter().filter(|&&l| l <= l_ref).count();
         let c = 3 + self.integrators.len() * self.rates_hz.len();
         a + b + c
     }
@@ -169,15 +178,24 @@ pub struct Candidate<S> {
 
 /// For each target the cheapest candidate with error + uncertainty ≤ target;
 /// ties in cost go to the smaller claimed error.
-pub fn recommend<S: Clone>(targets: &[f64], candidates: impl Iterator<Item = Candidate<S>>) -> Vec<Recommendation<S>> {
+pub fn recommend<S: Clone>(
+    targets: &[f64],
+    candidates: impl Iterator<Item = Candidate<S>>,
+) -> Vec<Recommendation<S>> {
     let candidates: Vec<Candidate<S>> = candidates.collect();
     targets
         .iter()
         .map(|&target| {
             let best = candidates
                 .iter()
-                .filter(|c| c.error.is_finite() && c.cost.is_finite() && c.error + c.uncertainty <= target)
-                .min_by(|a, b| a.cost.total_cmp(&b.cost).then((a.error + a.uncertainty).total_cmp(&(b.error + b.uncertainty))));
+                .filter(|c| {
+                    c.error.is_finite() && c.cost.is_finite() && c.error + c.uncertainty <= target
+                })
+                .min_by(|a, b| {
+                    a.cost
+                        .total_cmp(&b.cost)
+                        .then((a.error + a.uncertainty).total_cmp(&(b.error + b.uncertainty)))
+                });
             match best {
                 Some(c) => Recommendation {
                     target,
@@ -187,7 +205,14 @@ pub fn recommend<S: Clone>(targets: &[f64], candidates: impl Iterator<Item = Can
                     cost: Some(c.cost),
                     is_default: c.is_default,
                 },
-                None => Recommendation { target, setting: None, error: None, claimed_error: None, cost: None, is_default: false },
+                None => Recommendation {
+                    target,
+                    setting: None,
+                    error: None,
+                    claimed_error: None,
+                    cost: None,
+                    is_default: false,
+                },
             }
         })
         .collect()
@@ -195,7 +220,16 @@ pub fn recommend<S: Clone>(targets: &[f64], candidates: impl Iterator<Item = Can
 
 /// Which (error, cost) points no other point beats in both.
 pub fn mark_pareto(points: &[(f64, f64)]) -> Vec<bool> {
-    points.iter().map(|&(e, c)| e.is_finite() && c.is_finite() && !points.iter().any(|&(e2, c2)| (e2 <= e && c2 < c) || (e2 < e && c2 <= c))).collect()
+    points
+        .iter()
+        .map(|&(e, c)| {
+            e.is_finite()
+                && c.is_finite()
+                && !points
+                    .iter()
+                    .any(|&(e2, c2)| (e2 <= e && c2 < c) || (e2 < e && c2 <= c))
+        })
+        .collect()
 }
 
 /// The scene a study runs on, in brief.
@@ -238,17 +272,30 @@ pub struct StudyReport {
 pub fn lathe_scene() -> Config {
     let mut c = Config::default();
     c.plate.damping = vec![0.02];
-    c.nodes.ale = vec![NodePosition { radial: 1.0, angular: 0.0 }];
-    c.loads.ale = vec![WrenchConfig { force: [0.0, 0.0, -100.0], moment: [0.0; 3] }];
+    c.nodes.ale = vec![NodePosition {
+        radial: 1.0,
+        angular: 0.0,
+    }];
+    c.loads.ale = vec![WrenchConfig {
+        force: [0.0, 0.0, -100.0],
+        moment: [0.0; 3],
+    }];
     c.joint.speed = 100.0 / 60.0 / 0.15;
     c.simulation.realtime_factor = 0.0;
     c
 }
 
 /// Run the whole study. `progress(done, total, what)` is called before each unit of work.
-pub fn run(config: &Config, source: &str, plan: &StudyPlan, progress: &mut dyn FnMut(usize, usize, &str)) -> Result<StudyReport, StudyError> {
+pub fn run(
+    config: &Config,
+    source: &str,
+    plan: &StudyPlan,
+    progress: &mut dyn FnMut(usize, usize, &str),
+) -> Result<StudyReport, StudyError> {
     if plan.targets.iter().any(|t| !(t.is_finite() && *t > 0.0)) {
-        return Err(StudyError::BadPlan { detail: format!("targets must be positive, got {:?}", plan.targets) });
+        return Err(StudyError::BadPlan {
+            detail: format!("targets must be positive, got {:?}", plan.targets),
+        });
     }
     let started = Instant::now();
     let total = plan.units(config);

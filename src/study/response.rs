@@ -62,36 +62,74 @@ pub struct LoadCase {
 /// Returns the (possibly extended) configuration and the case.
 pub fn load_case(config: &Config) -> (Config, LoadCase) {
     let mut c = config.clone();
-    let loaded: Vec<usize> = (0..c.nodes.ale.len()).filter(|&j| c.loads.ale.get(j).is_some_and(|w| *w != WrenchConfig::default())).collect();
+    let loaded: Vec<usize> = (0..c.nodes.ale.len())
+        .filter(|&j| {
+            c.loads
+                .ale
+                .get(j)
+                .is_some_and(|w| *w != WrenchConfig::default())
+        })
+        .collect();
     let mut note = None;
     let point_index = if let Some(&j) = loaded.first() {
         j
     } else {
         let j = if c.nodes.ale.is_empty() {
-            c.nodes.ale.push(NodePosition { radial: 1.0, angular: 0.0 });
+            c.nodes.ale.push(NodePosition {
+                radial: 1.0,
+                angular: 0.0,
+            });
             note = Some("the scene has no ALE node: a 1 N force (−z) at ξ = (1, 0) (rim, θ = 0) was added as the load".to_string());
             0
         } else {
             note = Some("the scene's ALE nodes carry no load: a 1 N force (−z) at ALE node 1 was added as the load".to_string());
             0
         };
-        c.loads.ale.resize(c.nodes.ale.len(), WrenchConfig::default());
-        c.loads.ale[j] = WrenchConfig { force: [0.0, 0.0, -1.0], moment: [0.0; 3] };
+        c.loads
+            .ale
+            .resize(c.nodes.ale.len(), WrenchConfig::default());
+        c.loads.ale[j] = WrenchConfig {
+            force: [0.0, 0.0, -1.0],
+            moment: [0.0; 3],
+        };
         j
     };
     let loads = (0..c.nodes.ale.len())
         .filter_map(|j| {
             let w = c.loads.ale.get(j).copied().unwrap_or_default();
-            (w != WrenchConfig::default()).then(|| (c.nodes.ale[j], [w.force[0], w.force[1], w.force[2], w.moment[0], w.moment[1], w.moment[2]]))
+            (w != WrenchConfig::default()).then(|| {
+                (
+                    c.nodes.ale[j],
+                    [
+                        w.force[0],
+                        w.force[1],
+                        w.force[2],
+                        w.moment[0],
+                        w.moment[1],
+                        w.moment[2],
+                    ],
+                )
+            })
         })
         .collect();
-    let case = LoadCase { point: c.nodes.ale[point_index], ale_node: point_index + 1, loads, speed_rad_s: c.joint.speed, note };
+    let case = LoadCase {
+        point: c.nodes.ale[point_index],
+        ale_node: point_index + 1,
+        loads,
+        speed_rad_s: c.joint.speed,
+        note,
+    };
     (c, case)
 }
 
 /// Per ⟨k, l⟩ contribution of a model to the steady response at the load point.
 /// Indexed [k][l]; modes the model lacks (rigid-body) contribute 0.
-pub fn contributions(model: &PlateModel, case: &LoadCase, damping: f64, off_axis_rate_squared: f64) -> Vec<Vec<f64>> {
+pub fn contributions(
+    model: &PlateModel,
+    case: &LoadCase,
+    damping: f64,
+    off_axis_rate_squared: f64,
+) -> Vec<Vec<f64>> {
     let k_max = model.modes().iter().map(|m| m.k).max().unwrap_or(0) as usize;
     let l_max = model.modes().iter().map(|m| m.l).max().unwrap_or(0) as usize;
     let mut out = vec![vec![0.0; l_max + 1]; k_max + 1];
@@ -127,7 +165,8 @@ pub fn contributions(model: &PlateModel, case: &LoadCase, damping: f64, off_axis
                 let det = a * a + b * b;
                 let qc = (a * fc - b * fs) / det;
                 let qs = (b * fc + a * fs) / det;
-                out[m.k as usize][m.l as usize] += qc * model.mode_shape(i, rp, tp).w + qs * model.mode_shape(j, rp, tp).w;
+                out[m.k as usize][m.l as usize] +=
+                    qc * model.mode_shape(i, rp, tp).w + qs * model.mode_shape(j, rp, tp).w;
             }
             AngularShape::Sin => {}
         }
@@ -137,7 +176,10 @@ pub fn contributions(model: &PlateModel, case: &LoadCase, damping: f64, off_axis
 
 /// The response of the set k ≤ k_max, l ≤ l_max from per-⟨k, l⟩ contributions.
 pub fn partial_sum(c: &[Vec<f64>], k_max: u32, l_max: u32) -> f64 {
-    c.iter().take(k_max as usize + 1).map(|row| row.iter().take(l_max as usize + 1).sum::<f64>()).sum()
+    c.iter()
+        .take(k_max as usize + 1)
+        .map(|row| row.iter().take(l_max as usize + 1).sum::<f64>())
+        .sum()
 }
 
 /// The damping ratio the axis uses for every mode: the scene's, if one for
@@ -235,8 +277,13 @@ pub fn default_mode_set(config: &Config) -> Option<DefaultModeSet> {
     let p = &config.plate;
     let k_max = *p.nodal_diameters.iter().max()?;
     let l_max = *p.nodal_circles.iter().max()?;
-    let rectangular = p.nodal_diameters.iter().copied().eq(0..=k_max) && p.nodal_circles.iter().copied().eq(0..=l_max);
-    rectangular.then_some(DefaultModeSet { k_max, l_max, residual_flexibility: p.residual_flexibility })
+    let rectangular = p.nodal_diameters.iter().copied().eq(0..=k_max)
+        && p.nodal_circles.iter().copied().eq(0..=l_max);
+    rectangular.then_some(DefaultModeSet {
+        k_max,
+        l_max,
+        residual_flexibility: p.residual_flexibility,
+    })
 }
 
 /// Number of elastic modes of the set on this plate (rigid-body modes of a free–free plate excluded).
@@ -253,15 +300,27 @@ pub fn scene_with_set(config: &Config, k_max: u32, l_max: u32, damping: f64) -> 
     c.plate.nodal_diameters = (0..=k_max).collect();
     c.plate.nodal_circles = (0..=l_max).collect();
     c.plate.damping = vec![damping];
-    c.plate.radial_splines = c.plate.radial_splines.at_least(c.plate.min_radial_splines());
+    c.plate.radial_splines = c
+        .plate
+        .radial_splines
+        .at_least(c.plate.min_radial_splines());
     c
 }
 
-pub fn run(config: &Config, plan: &StudyPlan, tick: &mut dyn FnMut(&str)) -> Result<ResponseAxis, StudyError> {
+pub fn run(
+    config: &Config,
+    plan: &StudyPlan,
+    tick: &mut dyn FnMut(&str),
+) -> Result<ResponseAxis, StudyError> {
     let (scene, case) = load_case(config);
     let (damping, damping_note) = scalar_damping(&scene);
     let mut notes: Vec<String> = case.note.iter().cloned().chain(damping_note).collect();
-    if !scene.loads.lagrange.iter().all(|w| *w == WrenchConfig::default()) {
+    if !scene
+        .loads
+        .lagrange
+        .iter()
+        .all(|w| *w == WrenchConfig::default())
+    {
         notes.push("Lagrangian-node loads turn with the plate and have no steady state in the space-fixed frame: this axis leaves them out".into());
     }
     let (k_ref, l_ref) = (plan.response_reference.0, plan.response_reference.1);
@@ -271,20 +330,32 @@ pub fn run(config: &Config, plan: &StudyPlan, tick: &mut dyn FnMut(&str)) -> Res
     big.damping = vec![damping];
     let splines = plan.response_splines.max(big.min_radial_splines());
     big.radial_splines = RadialSplines::Fixed(splines);
-    tick(&format!("reference model k ≤ {k_ref}, l ≤ {l_ref}, {splines} radial splines"));
+    tick(&format!(
+        "reference model k ≤ {k_ref}, l ≤ {l_ref}, {splines} radial splines"
+    ));
     let model = PlateModel::new(&big)?;
     let w = scene.reference.angular_velocity;
     let soft = w[0] * w[0] + w[1] * w[1];
     let contrib = contributions(&model, &case, damping, soft);
     let reference = partial_sum(&contrib, k_ref, l_ref);
     if reference == 0.0 || !reference.is_finite() {
-        return Err(StudyError::NoResponse { detail: format!("the steady deflection at the load point is {reference:e} m") });
+        return Err(StudyError::NoResponse {
+            detail: format!("the steady deflection at the load point is {reference:e} m"),
+        });
     }
     let residual_case = case.clone();
     let residual = residual_of_sets(&model, &residual_case);
     let reference_with_residual = reference + residual(k_ref, l_ref);
     // Nested sets for the reference's own error.
-    let nested: Vec<((u32, u32), f64)> = [4, 2, 1].iter().map(|&d| ((k_ref / d, l_ref / d), partial_sum(&contrib, k_ref / d, l_ref / d))).collect();
+    let nested: Vec<((u32, u32), f64)> = [4, 2, 1]
+        .iter()
+        .map(|&d| {
+            (
+                (k_ref / d, l_ref / d),
+                partial_sum(&contrib, k_ref / d, l_ref / d),
+            )
+        })
+        .collect();
     let d1 = nested[1].1 - nested[0].1;
     let d2 = nested[2].1 - nested[1].1;
     let (uncertainty, uncertainty_method) = if d1 * d2 > 0.0 && (d1 / d2) > 1.2 {
@@ -294,7 +365,10 @@ pub fn run(config: &Config, plan: &StudyPlan, tick: &mut dyn FnMut(&str)) -> Res
             format!("geometric tail of the nested sets, ratio of differences ρ = {rho:.2}: {SAFETY_FACTOR} |d₂|/(ρ − 1)"),
         )
     } else {
-        (d1.abs().max(d2.abs()) / reference.abs(), "nested sets not in a geometric regime: the larger difference".to_string())
+        (
+            d1.abs().max(d2.abs()) / reference.abs(),
+            "nested sets not in a geometric regime: the larger difference".to_string(),
+        )
     };
 
     // The corrected reference: its change from the nested set (K/2, L/2) is what
@@ -302,8 +376,10 @@ pub fn run(config: &Config, plan: &StudyPlan, tick: &mut dyn FnMut(&str)) -> Res
     // tail the correction replaces.
     let (k_half, l_half) = nested[1].0;
     let half_with_residual = nested[1].1 + residual(k_half, l_half);
-    let uncertainty_with_residual =
-        uncertainty.max(SAFETY_FACTOR * (reference_with_residual - half_with_residual).abs() / reference_with_residual.abs());
+    let uncertainty_with_residual = uncertainty.max(
+        SAFETY_FACTOR * (reference_with_residual - half_with_residual).abs()
+            / reference_with_residual.abs(),
+    );
 
     let mut rows = Vec::new();
     let mut rk4_fallback_noted = false;
@@ -344,7 +420,8 @@ pub fn run(config: &Config, plan: &StudyPlan, tick: &mut dyn FnMut(&str)) -> Res
                 response_m: r,
                 relative_error: (r - reference).abs() / reference.abs(),
                 response_with_residual_m: rc,
-                relative_error_with_residual: (rc - reference_with_residual).abs() / reference_with_residual.abs(),
+                relative_error_with_residual: (rc - reference_with_residual).abs()
+                    / reference_with_residual.abs(),
                 step_time_s: times[0],
                 step_time_with_residual_s: times[1],
                 pareto: false,
@@ -355,7 +432,10 @@ pub fn run(config: &Config, plan: &StudyPlan, tick: &mut dyn FnMut(&str)) -> Res
     let points: Vec<(f64, f64)> = rows
         .iter()
         .map(|r| (r.relative_error, r.step_time_s))
-        .chain(rows.iter().map(|r| (r.relative_error_with_residual, r.step_time_with_residual_s)))
+        .chain(
+            rows.iter()
+                .map(|r| (r.relative_error_with_residual, r.step_time_with_residual_s)),
+        )
         .collect();
     let front = mark_pareto(&points);
     let n = rows.len();
@@ -365,16 +445,36 @@ pub fn run(config: &Config, plan: &StudyPlan, tick: &mut dyn FnMut(&str)) -> Res
     }
     let default_setting = default_mode_set(config);
     let is_default = |k_max: u32, l_max: u32, residual_flexibility: bool| {
-        default_setting.as_ref().is_some_and(|d| d.k_max == k_max && d.l_max == l_max && d.residual_flexibility == residual_flexibility)
+        default_setting.as_ref().is_some_and(|d| {
+            d.k_max == k_max && d.l_max == l_max && d.residual_flexibility == residual_flexibility
+        })
     };
     let recommendations = recommend(
         &plan.targets,
         rows.iter().flat_map(|r| {
             [false, true].map(|with_residual| Candidate {
-                error: if with_residual { r.relative_error_with_residual } else { r.relative_error },
-                uncertainty: if with_residual { uncertainty_with_residual } else { uncertainty },
-                cost: if with_residual { r.step_time_with_residual_s } else { r.step_time_s },
-                setting: ModeSetSetting { k_max: r.k_max, l_max: r.l_max, modes: r.modes, radial_splines: splines, residual_flexibility: with_residual },
+                error: if with_residual {
+                    r.relative_error_with_residual
+                } else {
+                    r.relative_error
+                },
+                uncertainty: if with_residual {
+                    uncertainty_with_residual
+                } else {
+                    uncertainty
+                },
+                cost: if with_residual {
+                    r.step_time_with_residual_s
+                } else {
+                    r.step_time_s
+                },
+                setting: ModeSetSetting {
+                    k_max: r.k_max,
+                    l_max: r.l_max,
+                    modes: r.modes,
+                    radial_splines: splines,
+                    residual_flexibility: with_residual,
+                },
                 is_default: is_default(r.k_max, r.l_max, with_residual),
             })
         }),
@@ -406,7 +506,10 @@ pub fn run(config: &Config, plan: &StudyPlan, tick: &mut dyn FnMut(&str)) -> Res
 
 /// The residual flexibility at the load point of the set k ≤ k_max, l ≤ l_max
 /// of `model`'s modes under the load case's transverse forces, m.
-fn residual_of_sets<'a>(model: &'a PlateModel, case: &'a LoadCase) -> impl Fn(u32, u32) -> f64 + 'a {
+fn residual_of_sets<'a>(
+    model: &'a PlateModel,
+    case: &'a LoadCase,
+) -> impl Fn(u32, u32) -> f64 + 'a {
     let at = |xi: NodePosition| (model.radius_at(xi.radial), xi.angular * TAU);
     let (rp, tp) = at(case.point);
     let mut radii = vec![rp];
@@ -418,7 +521,8 @@ fn residual_of_sets<'a>(model: &'a PlateModel, case: &'a LoadCase) -> impl Fn(u3
             .enumerate()
             .filter(|(_, (_, w))| w[2] != 0.0)
             .map(|(j, &(xi, w))| {
-                let kernel = model.residual_kernel_of(&harmonics, 0, j + 1, |k, l| k <= k_max && l <= l_max);
+                let kernel =
+                    model.residual_kernel_of(&harmonics, 0, j + 1, |k, l| k <= k_max && l <= l_max);
                 w[2] * kernel.at(tp - at(xi).1)
             })
             .sum()

@@ -7,7 +7,12 @@ use std::time::{Duration, Instant};
 /// Seconds per call of `f`: `f` is called once, then repeated until `budget`
 /// has passed (at least `min_repeats` calls in all, at most `max_repeats`);
 /// the fastest call counts.
-pub fn min_time(budget: Duration, min_repeats: usize, max_repeats: usize, mut f: impl FnMut()) -> f64 {
+pub fn min_time(
+    budget: Duration,
+    min_repeats: usize,
+    max_repeats: usize,
+    mut f: impl FnMut(),
+) -> f64 {
     let start = Instant::now();
     let mut best = f64::INFINITY;
     let mut calls = 0;

@@ -51,25 +51,36 @@ pub fn scene_at(config: &Config, integrator: IntegratorKind, rate_hz: f64) -> Co
 fn steps_per_sample(rate_hz: f64, sample_rate_hz: f64) -> Result<u64, StudyError> {
     let m = rate_hz / sample_rate_hz;
     if m < 1.0 - 1e-9 || (m - m.round()).abs() > 1e-9 * m {
-        return Err(StudyError::BadPlan { detail: format!("rate {rate_hz} Hz is not a whole multiple of the sample rate {sample_rate_hz} Hz") });
+        return Err(StudyError::BadPlan {
+            detail: format!(
+                "rate {rate_hz} Hz is not a whole multiple of the sample rate {sample_rate_hz} Hz"
+            ),
+        });
     }
     Ok(m.round() as u64)
 }
 
 /// Run `config` for `samples` samples of `every` steps, recording the ALE amplitudes.
-pub fn record(config: &Config, every: u64, samples: usize) -> Result<(Samples, Simulation), (RunStatus, String)> {
+pub fn record(
+    config: &Config,
+    every: u64,
+    samples: usize,
+) -> Result<(Samples, Simulation), (RunStatus, String)> {
     let mut sim = match Simulation::new(config.clone()) {
         Ok(s) => s,
-        Err(e @ (SimulationError::TooManySubsteps { .. } | SimulationError::ModelTooStiffForIntegrator { .. } | SimulationError::ContinuousStateNeedsRk4 { .. })) => {
-            return Err((RunStatus::Refused, e.to_string()))
-        }
+        Err(
+            e @ (SimulationError::TooManySubsteps { .. }
+            | SimulationError::ModelTooStiffForIntegrator { .. }
+            | SimulationError::ContinuousStateNeedsRk4 { .. }),
+        ) => return Err((RunStatus::Refused, e.to_string())),
         Err(e) => return Err((RunStatus::Diverged, e.to_string())),
     };
     let mut out = Vec::with_capacity(samples + 1);
     out.push(sim.q_ale().to_vec());
     for _ in 0..samples {
         for _ in 0..every {
-            sim.step().map_err(|e| (RunStatus::Diverged, e.to_string()))?;
+            sim.step()
+                .map_err(|e| (RunStatus::Diverged, e.to_string()))?;
         }
         out.push(sim.q_ale().to_vec());
     }
@@ -80,7 +91,17 @@ pub fn record(config: &Config, every: u64, samples: usize) -> Result<(Samples, S
 pub fn relative_error(a: &Samples, b: &Samples) -> f64 {
     let norm = |v: &[f64]| v.iter().map(|x| x * x).sum::<f64>().sqrt();
     let scale = b.iter().map(|v| norm(v)).fold(0.0, f64::max);
-    let diff = a.iter().zip(b).map(|(x, y)| x.iter().zip(y).map(|(p, q)| (p - q) * (p - q)).sum::<f64>().sqrt()).fold(0.0, f64::max);
+    let diff = a
+        .iter()
+        .zip(b)
+        .map(|(x, y)| {
+            x.iter()
+                .zip(y)
+                .map(|(p, q)| (p - q) * (p - q))
+                .sum::<f64>()
+                .sqrt()
+        })
+        .fold(0.0, f64::max);
     diff / scale
 }
 
@@ -140,36 +161,59 @@ pub struct TrajectoryAxis {
     pub notes: Vec<String>,
 }
 
-pub fn run(config: &Config, plan: &StudyPlan, tick: &mut dyn FnMut(&str)) -> Result<TrajectoryAxis, StudyError> {
+pub fn run(
+    config: &Config,
+    plan: &StudyPlan,
+    tick: &mut dyn FnMut(&str),
+) -> Result<TrajectoryAxis, StudyError> {
     let samples = (plan.duration_s * plan.sample_rate_hz).round() as usize;
     if samples == 0 {
-        return Err(StudyError::BadPlan { detail: format!("duration {} s is shorter than one sample ({} Hz)", plan.duration_s, plan.sample_rate_hz) });
+        return Err(StudyError::BadPlan {
+            detail: format!(
+                "duration {} s is shorter than one sample ({} Hz)",
+                plan.duration_s, plan.sample_rate_hz
+            ),
+        });
     }
     let duration = samples as f64 / plan.sample_rate_hz;
     let ref_rate = plan.trajectory_reference_rate_hz;
     let mut notes = Vec::new();
     let mut scene = config.clone();
     let ref_integrator = reference_integrator(&scene, ref_rate);
-    tick(&format!("reference: {} at {ref_rate} Hz", ref_integrator.name()));
+    tick(&format!(
+        "reference: {} at {ref_rate} Hz",
+        ref_integrator.name()
+    ));
     let reference_run = |scene: &Config| -> Result<Samples, StudyError> {
         let every = steps_per_sample(ref_rate, plan.sample_rate_hz)?;
         record(&scene_at(scene, ref_integrator, ref_rate), every, samples)
             .map(|(s, _)| s)
-            .map_err(|(_, detail)| StudyError::NoResponse { detail: format!("the reference run failed: {detail}") })
+            .map_err(|(_, detail)| StudyError::NoResponse {
+                detail: format!("the reference run failed: {detail}"),
+            })
     };
     let mut reference = reference_run(&scene)?;
-    let peak = |s: &Samples| s.iter().map(|v| v.iter().map(|x| x * x).sum::<f64>().sqrt()).fold(0.0, f64::max);
+    let peak = |s: &Samples| {
+        s.iter()
+            .map(|v| v.iter().map(|x| x * x).sum::<f64>().sqrt())
+            .fold(0.0, f64::max)
+    };
     if peak(&reference) == 0.0 {
         let (loaded, case) = super::response::load_case(&scene);
         scene = loaded;
-        notes.push(format!("the scene stays at rest without a load; {}", case.note.unwrap_or_default()));
+        notes.push(format!(
+            "the scene stays at rest without a load; {}",
+            case.note.unwrap_or_default()
+        ));
         reference = reference_run(&scene)?;
     }
     let checks = if ref_integrator == IntegratorKind::Exponential {
         exponential_checks(&scene, plan, samples, &reference, &mut notes, tick)?
     } else {
         notes.push("the scene's load models have state only rk4 integrates (pads.mass): the reference is rk4, checked against rk4 at half its inner step".into());
-        vec![rk4_half_step_check(&scene, plan, samples, &reference, tick)?]
+        vec![rk4_half_step_check(
+            &scene, plan, samples, &reference, tick,
+        )?]
     };
     let uncertainty = checks.iter().map(|c| c.difference).fold(0.0, f64::max);
     let modes = reference.first().map_or(0, |v| v.len());
@@ -214,17 +258,33 @@ pub fn run(config: &Config, plan: &StudyPlan, tick: &mut dyn FnMut(&str)) -> Res
             rows.push(row);
         }
     }
-    let ok: Vec<usize> = (0..rows.len()).filter(|&i| rows[i].status == RunStatus::Ok).collect();
-    let points: Vec<(f64, f64)> = ok.iter().map(|&i| (rows[i].relative_error.unwrap(), rows[i].wall_s_per_simulated_s.unwrap())).collect();
+    let ok: Vec<usize> = (0..rows.len())
+        .filter(|&i| rows[i].status == RunStatus::Ok)
+        .collect();
+    let points: Vec<(f64, f64)> = ok
+        .iter()
+        .map(|&i| {
+            (
+                rows[i].relative_error.unwrap(),
+                rows[i].wall_s_per_simulated_s.unwrap(),
+            )
+        })
+        .collect();
     for (&i, p) in ok.iter().zip(mark_pareto(&points)) {
         rows[i].pareto = p;
     }
-    let default_setting = IntegratorSetting { integrator: config.simulation.integrator.name(), rate_hz: config.simulation.rate_hz };
+    let default_setting = IntegratorSetting {
+        integrator: config.simulation.integrator.name(),
+        rate_hz: config.simulation.rate_hz,
+    };
     let recommendations = recommend(
         &plan.targets,
         ok.iter().map(|&i| {
             let r = &rows[i];
-            let setting = IntegratorSetting { integrator: r.integrator, rate_hz: r.rate_hz };
+            let setting = IntegratorSetting {
+                integrator: r.integrator,
+                rate_hz: r.rate_hz,
+            };
             Candidate {
                 error: r.relative_error.unwrap(),
                 uncertainty,
@@ -268,22 +328,50 @@ fn reference_integrator(scene: &Config, rate_hz: f64) -> IntegratorKind {
 /// same step (rk4 shares no integration code with it), and the same method
 /// at twice the step (catches step errors both methods share, e.g. a load
 /// model updated once per step). Their larger difference is the uncertainty.
-fn exponential_checks(scene: &Config, plan: &StudyPlan, samples: usize, reference: &Samples, notes: &mut Vec<String>, tick: &mut dyn FnMut(&str)) -> Result<Vec<Check>, StudyError> {
+fn exponential_checks(
+    scene: &Config,
+    plan: &StudyPlan,
+    samples: usize,
+    reference: &Samples,
+    notes: &mut Vec<String>,
+    tick: &mut dyn FnMut(&str),
+) -> Result<Vec<Check>, StudyError> {
     let ref_rate = plan.trajectory_reference_rate_hz;
-    let run_check = |integrator: IntegratorKind, rate: f64| -> Result<Result<Samples, String>, StudyError> {
-        Ok(record(&scene_at(scene, integrator, rate), steps_per_sample(rate, plan.sample_rate_hz)?, samples).map(|(s, _)| s).map_err(|(_, d)| d))
-    };
+    let run_check =
+        |integrator: IntegratorKind, rate: f64| -> Result<Result<Samples, String>, StudyError> {
+            Ok(record(
+                &scene_at(scene, integrator, rate),
+                steps_per_sample(rate, plan.sample_rate_hz)?,
+                samples,
+            )
+            .map(|(s, _)| s)
+            .map_err(|(_, d)| d))
+        };
     let mut checks = Vec::new();
     tick(&format!("check: rk4 at {ref_rate} Hz"));
     match run_check(IntegratorKind::Rk4, ref_rate)? {
-        Ok(s) => checks.push(Check { integrator: IntegratorKind::Rk4.name(), rate_hz: ref_rate, difference: relative_error(&s, reference) }),
-        Err(detail) => notes.push(format!("rk4 could not run as a check of the reference ({detail})")),
+        Ok(s) => checks.push(Check {
+            integrator: IntegratorKind::Rk4.name(),
+            rate_hz: ref_rate,
+            difference: relative_error(&s, reference),
+        }),
+        Err(detail) => notes.push(format!(
+            "rk4 could not run as a check of the reference ({detail})"
+        )),
     }
     let half = ref_rate / 2.0;
     tick(&format!("check: exponential at {half} Hz"));
     match run_check(IntegratorKind::Exponential, half)? {
-        Ok(s) => checks.push(Check { integrator: IntegratorKind::Exponential.name(), rate_hz: half, difference: relative_error(&s, reference) }),
-        Err(detail) => return Err(StudyError::NoResponse { detail: format!("the check run at {half} Hz failed: {detail}") }),
+        Ok(s) => checks.push(Check {
+            integrator: IntegratorKind::Exponential.name(),
+            rate_hz: half,
+            difference: relative_error(&s, reference),
+        }),
+        Err(detail) => {
+            return Err(StudyError::NoResponse {
+                detail: format!("the check run at {half} Hz failed: {detail}"),
+            })
+        }
     }
     Ok(checks)
 }
@@ -292,12 +380,28 @@ fn exponential_checks(scene: &Config, plan: &StudyPlan, samples: usize, referenc
 /// step (`simulation.rk4_step_limit` halved, so the step halves also where
 /// the stability bound, not the rate, sets it); for order 4 the difference
 /// is 15/16 of the reference's own error.
-fn rk4_half_step_check(scene: &Config, plan: &StudyPlan, samples: usize, reference: &Samples, tick: &mut dyn FnMut(&str)) -> Result<Check, StudyError> {
+fn rk4_half_step_check(
+    scene: &Config,
+    plan: &StudyPlan,
+    samples: usize,
+    reference: &Samples,
+    tick: &mut dyn FnMut(&str),
+) -> Result<Check, StudyError> {
     let ref_rate = plan.trajectory_reference_rate_hz;
     tick(&format!("check: rk4 at {ref_rate} Hz, half the inner step"));
     let mut finer = scene_at(scene, IntegratorKind::Rk4, ref_rate);
     finer.simulation.rk4_step_limit *= 0.5;
-    let s = record(&finer, steps_per_sample(ref_rate, plan.sample_rate_hz)?, samples)
-        .map_err(|(_, detail)| StudyError::NoResponse { detail: format!("the check run at half the inner step failed: {detail}") })?;
-    Ok(Check { integrator: "rk4, half the inner step", rate_hz: ref_rate, difference: relative_error(&s.0, reference) })
+    let s = record(
+        &finer,
+        steps_per_sample(ref_rate, plan.sample_rate_hz)?,
+        samples,
+    )
+    .map_err(|(_, detail)| StudyError::NoResponse {
+        detail: format!("the check run at half the inner step failed: {detail}"),
+    })?;
+    Ok(Check {
+        integrator: "rk4, half the inner step",
+        rate_hz: ref_rate,
+        difference: relative_error(&s.0, reference),
+    })
 }

@@ -34,7 +34,9 @@ pub fn node_binary() -> PathBuf {
 }
 
 fn run_ok(cmd: &mut Command, what: &str) -> Result<(), String> {
-    let out = cmd.output().map_err(|e| format!("{what}: cannot run {cmd:?}: {e}"))?;
+    let out = cmd
+        .output()
+        .map_err(|e| format!("{what}: cannot run {cmd:?}: {e}"))?;
     if out.status.success() {
         Ok(())
     } else {
@@ -64,7 +66,8 @@ fn install_peer() -> Result<PathBuf, String> {
     let venv = repo().join("target/peer-venv");
     let python = venv.join("bin/python");
     let requirements = repo().join("tests/peer/requirements.txt");
-    let wanted = std::fs::read_to_string(&requirements).map_err(|e| format!("{}: {e}", requirements.display()))?;
+    let wanted = std::fs::read_to_string(&requirements)
+        .map_err(|e| format!("{}: {e}", requirements.display()))?;
     // The venv remembers the requirements it was made from; a change installs again.
     let stamp = venv.join("requirements.installed");
     let current = std::fs::read_to_string(&stamp).ok();
@@ -74,16 +77,28 @@ fn install_peer() -> Result<PathBuf, String> {
     if !python.exists() {
         let _ = std::fs::remove_dir_all(&venv);
         let host_python = std::env::var("PYTHON").unwrap_or_else(|_| "python3".to_string());
-        run_ok(Command::new(&host_python).args(["-m", "venv"]).arg(&venv), "creating the peer's venv")?;
+        run_ok(
+            Command::new(&host_python).args(["-m", "venv"]).arg(&venv),
+            "creating the peer's venv",
+        )?;
     }
     run_ok(
         Command::new(&python)
-            .args(["-m", "pip", "install", "--disable-pip-version-check", "-q", "-r"])
+            .args([
+                "-m",
+                "pip",
+                "install",
+                "--disable-pip-version-check",
+                "-q",
+                "-r",
+            ])
             .arg(&requirements),
         "pip install -r tests/peer/requirements.txt",
     )?;
     if !peer_ready(&python) {
-        return Err(format!("tests/peer/requirements.txt was installed but `{PEER_IMPORTS}` fails"));
+        return Err(format!(
+            "tests/peer/requirements.txt was installed but `{PEER_IMPORTS}` fails"
+        ));
     }
     std::fs::write(&stamp, wanted).map_err(|e| format!("{}: {e}", stamp.display()))?;
     Ok(python)
@@ -119,13 +134,21 @@ impl Netns {
 
     fn start(setup: &str) -> Netns {
         let mut holder = Command::new("unshare")
-            .args(["-n", "--", "sh", "-c", &format!("{setup} && echo ready && exec sleep 100000")])
+            .args([
+                "-n",
+                "--",
+                "sh",
+                "-c",
+                &format!("{setup} && echo ready && exec sleep 100000"),
+            ])
             .stdout(Stdio::piped())
             .stderr(Stdio::piped())
             .spawn()
             .expect("cannot run `unshare -n` (the wire tests need root and util-linux)");
         let mut line = String::new();
-        BufReader::new(holder.stdout.take().expect("piped")).read_line(&mut line).expect("read from unshare");
+        BufReader::new(holder.stdout.take().expect("piped"))
+            .read_line(&mut line)
+            .expect("read from unshare");
         if line.trim() != "ready" {
             let mut err = String::new();
             if let Some(mut e) = holder.stderr.take() {
@@ -139,7 +162,9 @@ impl Netns {
     /// A command that runs inside the namespace.
     pub fn command(&self, program: impl AsRef<OsStr>) -> Command {
         let mut c = Command::new("nsenter");
-        c.arg(format!("--net=/proc/{}/ns/net", self.holder.id())).arg("--").arg(program);
+        c.arg(format!("--net=/proc/{}/ns/net", self.holder.id()))
+            .arg("--")
+            .arg(program);
         c
     }
 }
@@ -180,21 +205,43 @@ pub fn start_node(ns: &Netns, domain: u16, ros_args: &[&str]) -> NodeProcess {
 }
 
 /// Start `annular_plate run <scene> <run_args> --ros-args <ros_args>` (e.g. `--record DIR`).
-pub fn start_node_with(ns: &Netns, domain: u16, run_args: &[&OsStr], ros_args: &[&str]) -> NodeProcess {
+pub fn start_node_with(
+    ns: &Netns,
+    domain: u16,
+    run_args: &[&OsStr],
+    ros_args: &[&str],
+) -> NodeProcess {
     start_node_on(ns, domain, &scene(), run_args, ros_args)
 }
 
 /// Start `annular_plate run <scene_file> <run_args> --ros-args <ros_args>` (another scene than the default).
-pub fn start_node_on(ns: &Netns, domain: u16, scene_file: &Path, run_args: &[&OsStr], ros_args: &[&str]) -> NodeProcess {
+pub fn start_node_on(
+    ns: &Netns,
+    domain: u16,
+    scene_file: &Path,
+    run_args: &[&OsStr],
+    ros_args: &[&str],
+) -> NodeProcess {
     start_node_tagged(ns, domain, "", scene_file, run_args, ros_args)
 }
 
 /// The same, for one of several nodes on one domain (`tag` names its stderr file).
-pub fn start_node_tagged(ns: &Netns, domain: u16, tag: &str, scene_file: &Path, run_args: &[&OsStr], ros_args: &[&str]) -> NodeProcess {
+pub fn start_node_tagged(
+    ns: &Netns,
+    domain: u16,
+    tag: &str,
+    scene_file: &Path,
+    run_args: &[&OsStr],
+    ros_args: &[&str],
+) -> NodeProcess {
     let stderr_path = temp_dir().join(format!("node-domain{domain}{tag}.stderr"));
     let stderr = std::fs::File::create(&stderr_path).expect("create the node's stderr file");
     let mut cmd = ns.command(node_binary());
-    cmd.arg("run").arg(scene_file).args(run_args).arg("--ros-args").args(ros_args);
+    cmd.arg("run")
+        .arg(scene_file)
+        .args(run_args)
+        .arg("--ros-args")
+        .args(ros_args);
     let child = cmd
         .env("ROS_DOMAIN_ID", domain.to_string())
         .stdin(Stdio::null())
@@ -202,7 +249,11 @@ pub fn start_node_tagged(ns: &Netns, domain: u16, tag: &str, scene_file: &Path, 
         .stderr(stderr)
         .spawn()
         .expect("cannot start the node binary");
-    NodeProcess { child, stderr_path, domain }
+    NodeProcess {
+        child,
+        stderr_path,
+        domain,
+    }
 }
 
 impl NodeProcess {
@@ -215,7 +266,10 @@ impl NodeProcess {
     }
 
     pub fn signal(&self, sig: &str) {
-        let ok = Command::new("kill").args(["-s", sig, &self.pid().to_string()]).status().map(|s| s.success());
+        let ok = Command::new("kill")
+            .args(["-s", sig, &self.pid().to_string()])
+            .status()
+            .map(|s| s.success());
         assert_eq!(ok.ok(), Some(true), "kill -s {sig} failed");
     }
 
@@ -246,13 +300,32 @@ impl Drop for NodeProcess {
 }
 
 /// Run a peer scenario in `ns` against the node on `domain`; returns its JSON.
-pub fn peer(ns: &Netns, node: &NodeProcess, scenario: &str, node_name: &str, args: serde_json::Value) -> serde_json::Value {
+pub fn peer(
+    ns: &Netns,
+    node: &NodeProcess,
+    scenario: &str,
+    node_name: &str,
+    args: serde_json::Value,
+) -> serde_json::Value {
     let python = python();
     let mut cmd = ns.command(&python);
     cmd.arg(repo().join("tests/peer/peer.py"))
         .arg(scenario)
-        .args(["--domain", &node.domain.to_string(), "--node", node_name, "--args", &args.to_string()])
-        .env("CYCLONEDDS_URI", format!("file://{}", repo().join("tests/peer/cyclonedds.xml").display()))
+        .args([
+            "--domain",
+            &node.domain.to_string(),
+            "--node",
+            node_name,
+            "--args",
+            &args.to_string(),
+        ])
+        .env(
+            "CYCLONEDDS_URI",
+            format!(
+                "file://{}",
+                repo().join("tests/peer/cyclonedds.xml").display()
+            ),
+        )
         .stdin(Stdio::null())
         .stdout(Stdio::piped())
         .stderr(Stdio::piped());
@@ -279,13 +352,22 @@ pub fn peer(ns: &Netns, node: &NodeProcess, scenario: &str, node_name: &str, arg
             node_binary().display()
         );
     }
-    let context = || format!("peer `{scenario}`:\n--- stdout\n{out}\n--- stderr\n{err}\n--- node stderr\n{}", node.stderr());
+    let context = || {
+        format!(
+            "peer `{scenario}`:\n--- stdout\n{out}\n--- stderr\n{err}\n--- node stderr\n{}",
+            node.stderr()
+        )
+    };
     match status {
         Some(s) if s.success() => {}
         Some(s) => panic!("{} failed ({s})", context()),
         None => panic!("{} timed out", context()),
     }
-    let last = out.lines().rev().find(|l| !l.trim().is_empty()).unwrap_or_else(|| panic!("{} printed nothing", context()));
+    let last = out
+        .lines()
+        .rev()
+        .find(|l| !l.trim().is_empty())
+        .unwrap_or_else(|| panic!("{} printed nothing", context()));
     serde_json::from_str(last).unwrap_or_else(|e| panic!("{}: not JSON: {e}", context()))
 }
 
@@ -298,11 +380,16 @@ pub fn f(v: &serde_json::Value, path: &str) -> f64 {
             Err(_) => &x[p],
         };
     }
-    x.as_f64().unwrap_or_else(|| panic!("{path} is not a number in {v}"))
+    x.as_f64()
+        .unwrap_or_else(|| panic!("{path} is not a number in {v}"))
 }
 
 pub fn floats(v: &serde_json::Value) -> Vec<f64> {
-    v.as_array().unwrap_or_else(|| panic!("not an array: {v}")).iter().map(|x| x.as_f64().expect("number")).collect()
+    v.as_array()
+        .unwrap_or_else(|| panic!("not an array: {v}"))
+        .iter()
+        .map(|x| x.as_f64().expect("number"))
+        .collect()
 }
 
 /// Read a bag with `tests/peer/bag_read.py` (`reader`: "rosbags" or
@@ -326,7 +413,8 @@ pub fn read_bag(path: &Path, reader: &str, full: &[&str]) -> serde_json::Value {
         String::from_utf8_lossy(&out.stderr)
     );
     let text = String::from_utf8_lossy(&out.stdout);
-    serde_json::from_str(text.trim()).unwrap_or_else(|e| panic!("bag_read.py printed no JSON ({e}): {text:.2000}"))
+    serde_json::from_str(text.trim())
+        .unwrap_or_else(|e| panic!("bag_read.py printed no JSON ({e}): {text:.2000}"))
 }
 
 /// A fresh (not yet existing) path under `target/bag-tests/`.

@@ -31,16 +31,30 @@ fn make_env() -> Result<PathBuf, String> {
         .stdin(Stdio::null())
         .output()
         .map_err(|e| format!("cannot run bash scripts/rclpy_env.sh: {e}"))?;
-    let text = format!("{}{}", String::from_utf8_lossy(&out.stdout), String::from_utf8_lossy(&out.stderr));
+    let text = format!(
+        "{}{}",
+        String::from_utf8_lossy(&out.stdout),
+        String::from_utf8_lossy(&out.stderr)
+    );
     if !out.status.success() {
-        return Err(format!("scripts/rclpy_env.sh failed ({}):\n{text}", out.status));
+        return Err(format!(
+            "scripts/rclpy_env.sh failed ({}):\n{text}",
+            out.status
+        ));
     }
     // What the environment costs this run (0.9 s when up to date; pip and
     // colcon on a clean checkout).
-    println!("rclpy environment: scripts/rclpy_env.sh took {:.1} s\n{}", t0.elapsed().as_secs_f64(), text.trim_end());
+    println!(
+        "rclpy environment: scripts/rclpy_env.sh took {:.1} s\n{}",
+        t0.elapsed().as_secs_f64(),
+        text.trim_end()
+    );
     let env = repo().join("target/rclpy-ws/env.sh");
     if !env.exists() {
-        return Err(format!("scripts/rclpy_env.sh succeeded but wrote no {}:\n{text}", env.display()));
+        return Err(format!(
+            "scripts/rclpy_env.sh succeeded but wrote no {}:\n{text}",
+            env.display()
+        ));
     }
     Ok(env)
 }
@@ -90,7 +104,9 @@ pub fn run_python(ns: &Netns, domain: u16, args: &[&OsStr], timeout: Duration) -
     let mut all: Vec<&OsStr> = vec![OsStr::new("python3")];
     all.extend_from_slice(args);
     let mut cmd = command(ns, domain, &all);
-    cmd.stdin(Stdio::null()).stdout(Stdio::piped()).stderr(Stdio::piped());
+    cmd.stdin(Stdio::null())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped());
     let t0 = Instant::now();
     let mut child = cmd.spawn().expect("cannot start bash for the rclpy peer");
     let out_thread = read_in_background(child.stdout.take().expect("piped"));
@@ -116,17 +132,44 @@ pub fn run_python(ns: &Netns, domain: u16, args: &[&OsStr], timeout: Duration) -
 }
 
 /// Run a scenario of `tests/rclpy/peer.py` against `node`; its JSON.
-pub fn rclpy_peer(ns: &Netns, node: &NodeProcess, scenario: &str, node_name: &str, args: serde_json::Value) -> serde_json::Value {
-    rclpy_peer_timeout(ns, node, scenario, node_name, args, Duration::from_secs(600))
+pub fn rclpy_peer(
+    ns: &Netns,
+    node: &NodeProcess,
+    scenario: &str,
+    node_name: &str,
+    args: serde_json::Value,
+) -> serde_json::Value {
+    rclpy_peer_timeout(
+        ns,
+        node,
+        scenario,
+        node_name,
+        args,
+        Duration::from_secs(600),
+    )
 }
 
-pub fn rclpy_peer_timeout(ns: &Netns, node: &NodeProcess, scenario: &str, node_name: &str, args: serde_json::Value, timeout: Duration) -> serde_json::Value {
+pub fn rclpy_peer_timeout(
+    ns: &Netns,
+    node: &NodeProcess,
+    scenario: &str,
+    node_name: &str,
+    args: serde_json::Value,
+    timeout: Duration,
+) -> serde_json::Value {
     let script = repo().join("tests/rclpy/peer.py");
     let a = args.to_string();
     let run = run_python(
         ns,
         node.domain,
-        &[script.as_os_str(), OsStr::new(scenario), OsStr::new("--node"), OsStr::new(node_name), OsStr::new("--args"), OsStr::new(&a)],
+        &[
+            script.as_os_str(),
+            OsStr::new(scenario),
+            OsStr::new("--node"),
+            OsStr::new(node_name),
+            OsStr::new("--args"),
+            OsStr::new(&a),
+        ],
         timeout,
     );
     let context = || {
@@ -143,7 +186,12 @@ pub fn rclpy_peer_timeout(ns: &Netns, node: &NodeProcess, scenario: &str, node_n
         Some(s) => panic!("{} failed ({s})", context()),
         None => panic!("{} timed out", context()),
     }
-    let last = run.stdout.lines().rev().find(|l| !l.trim().is_empty()).unwrap_or_else(|| panic!("{} printed nothing", context()));
+    let last = run
+        .stdout
+        .lines()
+        .rev()
+        .find(|l| !l.trim().is_empty())
+        .unwrap_or_else(|| panic!("{} printed nothing", context()));
     serde_json::from_str(last).unwrap_or_else(|e| panic!("{}: not JSON: {e}", context()))
 }
 

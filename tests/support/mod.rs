@@ -1,10 +1,10 @@
 //! Shared helpers for the integration tests (each test crate does `mod support;`).
 pub mod bessel;
-pub mod exact_plate;
-pub mod scenes;
-pub mod static_plate;
-pub mod scene_files;
-pub mod squeal;
-pub mod library_plate;
-pub mod fourth_order;
 pub mod bounded_run;
+pub mod exact_plate;
+pub mod fourth_order;
+pub mod library_plate;
+pub mod scene_files;
+pub mod scenes;
+pub mod squeal;
+pub mod static_plate;

@@ -9,7 +9,9 @@ use std::path::{Path, PathBuf};
 pub const NODE: &str = "annular_plate";
 
 pub fn path(file: &str) -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("config").join(file)
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("config")
+        .join(file)
 }
 
 pub fn text(file: &str) -> String {
@@ -17,7 +19,8 @@ pub fn text(file: &str) -> String {
 }
 
 pub fn load(file: &str) -> Config {
-    Config::from_params_file(&path(file), NODE).unwrap_or_else(|e| panic!("config/{file} is valid: {e}"))
+    Config::from_params_file(&path(file), NODE)
+        .unwrap_or_else(|e| panic!("config/{file} is valid: {e}"))
 }
 
 /// The scene file with `from` replaced by `to`; must be rejected naming `key`.
@@ -25,18 +28,34 @@ pub fn load(file: &str) -> Config {
 pub fn rejected(file: &str, from: &str, to: &str, key: &str) -> ConfigError {
     let text = text(file);
     assert!(text.contains(from), "config/{file} has no `{from}`");
-    let e = Config::from_yaml_str(&text.replacen(from, to, 1), NODE).expect_err("a bad scene file was accepted");
-    assert!(e.to_string().contains(key), "the message does not name {key}: {e}");
+    let e = Config::from_yaml_str(&text.replacen(from, to, 1), NODE)
+        .expect_err("a bad scene file was accepted");
+    assert!(
+        e.to_string().contains(key),
+        "the message does not name {key}: {e}"
+    );
     e
 }
 
 /// `annular_plate simulate config/<file> --duration S --csv -`: the CSV text.
 pub fn simulate_csv(file: &str, duration: f64) -> String {
     let out = std::process::Command::new(env!("CARGO_BIN_EXE_annular_plate"))
-        .args(["simulate", path(file).to_str().unwrap(), "--duration", &duration.to_string(), "--csv", "-", "--quiet"])
+        .args([
+            "simulate",
+            path(file).to_str().unwrap(),
+            "--duration",
+            &duration.to_string(),
+            "--csv",
+            "-",
+            "--quiet",
+        ])
         .output()
         .unwrap();
-    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
     String::from_utf8(out.stdout).unwrap()
 }
 

@@ -22,9 +22,17 @@ pub struct Growth {
 /// |z̄| = |(q̄_cos, q̄_sin)| — for a linear run exactly e^{Re λ t}.
 pub fn simulated_growth(sim: &mut Simulation, peak: f64, steps: usize) -> Growth {
     let pads = sim.config().pads.clone().expect("a scene with pads");
-    let mode = stability::critical_mode(sim.scene(), sim.config().joint.speed, pads.friction_coefficient, &pads.clamp_force);
+    let mode = stability::critical_mode(
+        sim.scene(),
+        sim.config().joint.speed,
+        pads.friction_coefficient,
+        &pads.clamp_force,
+    );
     let n = sim.model().n_modes();
-    let top = mode.vector[..n].iter().map(|v| v.norm()).fold(0.0, f64::max);
+    let top = mode.vector[..n]
+        .iter()
+        .map(|v| v.norm())
+        .fold(0.0, f64::max);
     let mut state = sim.state().clone();
     for i in 0..n {
         state.q[i] = peak * mode.vector[i].re / top;
@@ -32,7 +40,18 @@ pub fn simulated_growth(sim: &mut Simulation, peak: f64, steps: usize) -> Growth
     }
     state.rederive(sim.scene());
     sim.restore(state);
-    let pair = sim.scene().layout.pairs.iter().copied().max_by(|a, b| mode.vector[a.cos].norm().total_cmp(&mode.vector[b.cos].norm())).unwrap();
+    let pair = sim
+        .scene()
+        .layout
+        .pairs
+        .iter()
+        .copied()
+        .max_by(|a, b| {
+            mode.vector[a.cos]
+                .norm()
+                .total_cmp(&mode.vector[b.cos].norm())
+        })
+        .unwrap();
     let (mut ts, mut logs) = (Vec::new(), Vec::new());
     for _ in 0..steps {
         sim.step().unwrap();
@@ -40,7 +59,20 @@ pub fn simulated_growth(sim: &mut Simulation, peak: f64, steps: usize) -> Growth
         logs.push(sim.q_ale()[pair.cos].hypot(sim.q_ale()[pair.sin]).ln());
     }
     let count = ts.len() as f64;
-    let (mt, ml) = (ts.iter().sum::<f64>() / count, logs.iter().sum::<f64>() / count);
-    let simulated = ts.iter().zip(&logs).map(|(t, l)| (t - mt) * (l - ml)).sum::<f64>() / ts.iter().map(|t| (t - mt).powi(2)).sum::<f64>();
-    Growth { rate: mode.eigenvalue.re, omega: mode.eigenvalue.im, k: pair.k, simulated }
+    let (mt, ml) = (
+        ts.iter().sum::<f64>() / count,
+        logs.iter().sum::<f64>() / count,
+    );
+    let simulated = ts
+        .iter()
+        .zip(&logs)
+        .map(|(t, l)| (t - mt) * (l - ml))
+        .sum::<f64>()
+        / ts.iter().map(|t| (t - mt).powi(2)).sum::<f64>();
+    Growth {
+        rate: mode.eigenvalue.re,
+        omega: mode.eigenvalue.im,
+        k: pair.k,
+        simulated,
+    }
 }

@@ -75,15 +75,25 @@ struct Grid {
 impl Grid {
     fn new(model: &PlateModel) -> Grid {
         let p = model.plate();
-        let radii: Vec<f64> = (0..=RINGS).map(|j| p.inner_radius + (p.outer_radius - p.inner_radius) * j as f64 / RINGS as f64).collect();
+        let radii: Vec<f64> = (0..=RINGS)
+            .map(|j| p.inner_radius + (p.outer_radius - p.inner_radius) * j as f64 / RINGS as f64)
+            .collect();
         let mut radial = Vec::new();
         let mut angular = Vec::new();
         for m in model.modes() {
             let shape = &model.radial_shapes()[m.radial];
             radial.extend(radii.iter().map(|&r| shape.value(r)));
-            angular.extend((0..SECTORS).map(|s| m.shape.eval(m.k, std::f64::consts::TAU * s as f64 / SECTORS as f64).0));
+            angular.extend((0..SECTORS).map(|s| {
+                m.shape
+                    .eval(m.k, std::f64::consts::TAU * s as f64 / SECTORS as f64)
+                    .0
+            }));
         }
-        Grid { radii, radial, angular }
+        Grid {
+            radii,
+            radial,
+            angular,
+        }
     }
 
     /// w[j * SECTORS + s] at ring j, material angle 2π s / SECTORS.
@@ -104,17 +114,30 @@ impl Grid {
 
 /// The Lagrangian amplitudes of the rows `rows`: columns q1…qN.
 fn amplitudes(data: &CsvData, n: usize, rows: &[usize]) -> CliResult<Vec<Vec<f64>>> {
-    let cols: Vec<&[f64]> = (1..=n).map(|i| data.column(&format!("q{i}"))).collect::<CliResult<_>>().map_err(|e| {
-        CliError::Usage(format!("{e} (the params file has {n} modes: is it the scene of this run?)"))
-    })?;
+    let cols: Vec<&[f64]> = (1..=n)
+        .map(|i| data.column(&format!("q{i}")))
+        .collect::<CliResult<_>>()
+        .map_err(|e| {
+            CliError::Usage(format!(
+                "{e} (the params file has {n} modes: is it the scene of this run?)"
+            ))
+        })?;
     if data.header.iter().any(|h| h == &format!("q{}", n + 1)) {
         return Err(CliError::Usage(format!("{} has more modal columns than the {n} modes of the params file: is it the scene of this run?", data.path.display())));
     }
-    Ok(rows.iter().map(|&row| cols.iter().map(|c| c[row]).collect()).collect())
+    Ok(rows
+        .iter()
+        .map(|&row| cols.iter().map(|c| c[row]).collect())
+        .collect())
 }
 
 /// Rows of the frames: round(span × slowdown × fps) frames, first and last rows included.
-pub fn frame_rows(times: &[f64], fps: u32, slowdown: f64, max_frames: usize) -> CliResult<Vec<usize>> {
+pub fn frame_rows(
+    times: &[f64],
+    fps: u32,
+    slowdown: f64,
+    max_frames: usize,
+) -> CliResult<Vec<usize>> {
     let (t0, t1) = (times[0], *times.last().unwrap());
     let n = ((t1 - t0) * slowdown * fps as f64).round();
     if n.is_nan() || n < 2.0 {
@@ -144,8 +167,15 @@ pub fn frame_rows(times: &[f64], fps: u32, slowdown: f64, max_frames: usize) -> 
 
 /// Render the animation of `data` (a `simulate` CSV of `config`'s scene) to `out`.
 /// `progress(done, total)` is called with 0 done before any work, then after each frame.
-pub fn animate(data: &CsvData, config: &Config, anim: &Animation, out: &Path, mut progress: impl FnMut(usize, usize)) -> CliResult<AnimationInfo> {
-    let model = PlateModel::new(&config.plate).map_err(|e| CliError::Usage(format!("the params file's plate: {e}")))?;
+pub fn animate(
+    data: &CsvData,
+    config: &Config,
+    anim: &Animation,
+    out: &Path,
+    mut progress: impl FnMut(usize, usize),
+) -> CliResult<AnimationInfo> {
+    let model = PlateModel::new(&config.plate)
+        .map_err(|e| CliError::Usage(format!("the params file's plate: {e}")))?;
     let times = data.column("time")?;
     let chi = data.column("joint_position")?;
     // The work is the frames' (bounded by --max-frames), not the rows'.
@@ -160,12 +190,26 @@ pub fn animate(data: &CsvData, config: &Config, anim: &Animation, out: &Path, mu
         w_ref = w.iter().fold(w_ref, |m, v| m.max(v.abs()));
     }
     let ra = model.plate().outer_radius;
-    let scale = anim.scale.unwrap_or(if w_ref > 0.0 { SIDE_FRACTION * ra / w_ref } else { 1.0 });
+    let scale = anim.scale.unwrap_or(if w_ref > 0.0 {
+        SIDE_FRACTION * ra / w_ref
+    } else {
+        1.0
+    });
     let (width, height) = (anim.size.width as usize, anim.size.height as usize);
     let half = width as f64 / 2.0;
     let px_per_m = 0.42 * half.min(height as f64 - 40.0) / ra;
     let top_centre = (half / 2.0, 30.0 + (height as f64 - 30.0) / 2.0);
-    let view = View { model: &model, grid: &grid, config, w_ref, scale, px_per_m, top_centre, width, height };
+    let view = View {
+        model: &model,
+        grid: &grid,
+        config,
+        w_ref,
+        scale,
+        px_per_m,
+        top_centre,
+        width,
+        height,
+    };
     let mut sink = FrameSink::open(out, anim, width, height)?;
     for (k, &row) in rows.iter().enumerate() {
         grid.deflection(&q[k], &mut w);
@@ -174,7 +218,14 @@ pub fn animate(data: &CsvData, config: &Config, anim: &Animation, out: &Path, mu
         progress(k + 1, rows.len());
     }
     sink.finish()?;
-    Ok(AnimationInfo { frames: rows.len(), rows, w_ref, scale, top_centre, px_per_m })
+    Ok(AnimationInfo {
+        frames: rows.len(),
+        rows,
+        w_ref,
+        scale,
+        top_centre,
+        px_per_m,
+    })
 }
 
 /// Everything a frame is drawn from.
@@ -197,12 +248,18 @@ impl View<'_> {
         self.top_view(&mut buf, w, chi);
         ensure_fonts();
         {
-            let root = BitMapBackend::with_buffer(&mut buf, (self.width as u32, self.height as u32)).into_drawing_area();
+            let root =
+                BitMapBackend::with_buffer(&mut buf, (self.width as u32, self.height as u32))
+                    .into_drawing_area();
             self.side_view(&root, w, chi)?;
             self.node_frames(&root, q, chi)?;
             let style = (FONT, 18).into_font().color(&BLACK);
-            let caption = format!("t = {t:.4} s   top: colour ±{:.3e} m   side: deflection ×{:.3e}", self.w_ref, self.scale);
-            root.draw(&Text::new(caption, (10, 6), style)).map_err(super::render::de)?;
+            let caption = format!(
+                "t = {t:.4} s   top: colour ±{:.3e} m   side: deflection ×{:.3e}",
+                self.w_ref, self.scale
+            );
+            root.draw(&Text::new(caption, (10, 6), style))
+                .map_err(super::render::de)?;
             root.present().map_err(super::render::de)?;
         }
         Ok(buf)
@@ -217,7 +274,10 @@ impl View<'_> {
         let nr = self.grid.radii.len();
         for py in (cy as i64 - reach).max(0)..(cy as i64 + reach).min(self.height as i64) {
             for px in (cx as i64 - reach).max(0)..(cx as i64 + reach).min(self.width as i64 / 2) {
-                let (x, y) = ((px as f64 + 0.5 - cx) / self.px_per_m, (cy - py as f64 - 0.5) / self.px_per_m);
+                let (x, y) = (
+                    (px as f64 + 0.5 - cx) / self.px_per_m,
+                    (cy - py as f64 - 0.5) / self.px_per_m,
+                );
                 let r = x.hypot(y);
                 if r < ri || r > ra {
                     continue;
@@ -226,7 +286,11 @@ impl View<'_> {
                 let j = (((r - ri) / (ra - ri)) * (nr - 1) as f64).round() as usize;
                 let s = ((phi / std::f64::consts::TAU) * SECTORS as f64).round() as usize % SECTORS;
                 let wv = w[j.min(nr - 1) * SECTORS + s];
-                let c = crate::colour_map::rgb8(if self.w_ref > 0.0 { wv / self.w_ref } else { 0.0 });
+                let c = crate::colour_map::rgb8(if self.w_ref > 0.0 {
+                    wv / self.w_ref
+                } else {
+                    0.0
+                });
                 let i = (py as usize * self.width + px as usize) * 3;
                 buf[i..i + 3].copy_from_slice(&c);
             }
@@ -234,42 +298,81 @@ impl View<'_> {
     }
 
     /// The plate seen from −y: each grid point at (x, scale·w), coloured.
-    fn side_view<DB: DrawingBackend>(&self, root: &DrawingArea<DB, plotters::coord::Shift>, w: &[f64], chi: f64) -> CliResult<()> {
+    fn side_view<DB: DrawingBackend>(
+        &self,
+        root: &DrawingArea<DB, plotters::coord::Shift>,
+        w: &[f64],
+        chi: f64,
+    ) -> CliResult<()> {
         let ra = self.model.plate().outer_radius;
         let cx = self.width as f64 * 0.75;
         let cy = self.top_centre.1;
         let k = self.px_per_m;
-        root.draw(&PathElement::new(vec![((cx - ra * k) as i32, cy as i32), ((cx + ra * k) as i32, cy as i32)], BLACK.mix(0.3))).map_err(super::render::de)?;
+        root.draw(&PathElement::new(
+            vec![
+                ((cx - ra * k) as i32, cy as i32),
+                ((cx + ra * k) as i32, cy as i32),
+            ],
+            BLACK.mix(0.3),
+        ))
+        .map_err(super::render::de)?;
         for (j, &r) in self.grid.radii.iter().enumerate() {
             for s in 0..SECTORS {
                 let phi = std::f64::consts::TAU * s as f64 / SECTORS as f64 + chi;
                 let wv = w[j * SECTORS + s];
-                let [red, g, b] = crate::colour_map::rgb8(if self.w_ref > 0.0 { wv / self.w_ref } else { 0.0 });
+                let [red, g, b] = crate::colour_map::rgb8(if self.w_ref > 0.0 {
+                    wv / self.w_ref
+                } else {
+                    0.0
+                });
                 let px = (cx + r * phi.cos() * k) as i32;
                 let py = (cy - self.scale * wv * k) as i32;
-                root.draw_pixel((px, py), &RGBColor(red, g, b)).map_err(super::render::de)?;
+                root.draw_pixel((px, py), &RGBColor(red, g, b))
+                    .map_err(super::render::de)?;
             }
         }
         Ok(())
     }
 
     /// ALE frames (space-fixed) as squares, Lagrangian ones (turning with χ) as circles, in both views.
-    fn node_frames<DB: DrawingBackend>(&self, root: &DrawingArea<DB, plotters::coord::Shift>, q: &[f64], chi: f64) -> CliResult<()> {
+    fn node_frames<DB: DrawingBackend>(
+        &self,
+        root: &DrawingArea<DB, plotters::coord::Shift>,
+        q: &[f64],
+        chi: f64,
+    ) -> CliResult<()> {
         let (cx, cy) = self.top_centre;
         let (k, side_cx) = (self.px_per_m, self.width as f64 * 0.75);
         let n = &self.config.nodes;
-        let nodes = n.ale.iter().map(|p| (p, true)).chain(n.lagrange.iter().map(|p| (p, false)));
+        let nodes = n
+            .ale
+            .iter()
+            .map(|p| (p, true))
+            .chain(n.lagrange.iter().map(|p| (p, false)));
         for (pos, ale) in nodes {
             let r = self.model.radius_at(pos.radial);
             let theta = std::f64::consts::TAU * pos.angular;
             // Space angle and the material angle w is taken at.
-            let (space, material) = if ale { (theta, theta - chi) } else { (theta + chi, theta) };
+            let (space, material) = if ale {
+                (theta, theta - chi)
+            } else {
+                (theta + chi, theta)
+            };
             let wv = self.model.deflection(q, r, material).w;
-            let top = ((cx + r * space.cos() * k) as i32, (cy - r * space.sin() * k) as i32);
-            let side = ((side_cx + r * space.cos() * k) as i32, (cy - self.scale * wv * k) as i32);
+            let top = (
+                (cx + r * space.cos() * k) as i32,
+                (cy - r * space.sin() * k) as i32,
+            );
+            let side = (
+                (side_cx + r * space.cos() * k) as i32,
+                (cy - self.scale * wv * k) as i32,
+            );
             for at in [top, side] {
                 let shape = if ale {
-                    root.draw(&Rectangle::new([(at.0 - 5, at.1 - 5), (at.0 + 5, at.1 + 5)], BLACK.stroke_width(2)))
+                    root.draw(&Rectangle::new(
+                        [(at.0 - 5, at.1 - 5), (at.0 + 5, at.1 + 5)],
+                        BLACK.stroke_width(2),
+                    ))
                 } else {
                     root.draw(&Circle::new(at, 5, BLACK.stroke_width(2)))
                 };
@@ -282,17 +385,35 @@ impl View<'_> {
 
 /// Where frames go: a GIF written as they come, or ffmpeg for MP4.
 enum FrameSink {
-    Gif(image::codecs::gif::GifEncoder<std::io::BufWriter<std::fs::File>>, u32, u32, u32),
+    Gif(
+        image::codecs::gif::GifEncoder<std::io::BufWriter<std::fs::File>>,
+        u32,
+        u32,
+        u32,
+    ),
     Mp4(std::process::Child),
 }
 
 impl FrameSink {
     fn open(out: &Path, anim: &Animation, width: usize, height: usize) -> CliResult<FrameSink> {
-        match out.extension().and_then(|e| e.to_str()).map(|e| e.to_ascii_lowercase()).as_deref() {
+        match out
+            .extension()
+            .and_then(|e| e.to_str())
+            .map(|e| e.to_ascii_lowercase())
+            .as_deref()
+        {
             Some("gif") => {
-                let file = std::fs::File::create(out).map_err(|error| CliError::Io { what: "create", path: out.display().to_string(), error })?;
-                let mut enc = image::codecs::gif::GifEncoder::new_with_speed(std::io::BufWriter::new(file), 10);
-                enc.set_repeat(image::codecs::gif::Repeat::Infinite).map_err(|e| CliError::Draw(e.to_string()))?;
+                let file = std::fs::File::create(out).map_err(|error| CliError::Io {
+                    what: "create",
+                    path: out.display().to_string(),
+                    error,
+                })?;
+                let mut enc = image::codecs::gif::GifEncoder::new_with_speed(
+                    std::io::BufWriter::new(file),
+                    10,
+                );
+                enc.set_repeat(image::codecs::gif::Repeat::Infinite)
+                    .map_err(|e| CliError::Draw(e.to_string()))?;
                 Ok(FrameSink::Gif(enc, width as u32, height as u32, anim.fps))
             }
             Some("mp4") => {
@@ -304,22 +425,31 @@ impl FrameSink {
                     .map_err(|e| CliError::Usage(format!("--out {}: MP4 is encoded by ffmpeg, which could not be started ({e}); install it (Debian: apt install ffmpeg) or write a .gif", out.display())))?;
                 Ok(FrameSink::Mp4(child))
             }
-            _ => Err(CliError::Usage(format!("--out {}: the name must end in .gif or .mp4", out.display()))),
+            _ => Err(CliError::Usage(format!(
+                "--out {}: the name must end in .gif or .mp4",
+                out.display()
+            ))),
         }
     }
 
     fn push(&mut self, rgb: Vec<u8>) -> CliResult<()> {
         match self {
             FrameSink::Gif(enc, w, h, fps) => {
-                let rgba: Vec<u8> = rgb.chunks_exact(3).flat_map(|c| [c[0], c[1], c[2], 255]).collect();
+                let rgba: Vec<u8> = rgb
+                    .chunks_exact(3)
+                    .flat_map(|c| [c[0], c[1], c[2], 255])
+                    .collect();
                 let img = image::RgbaImage::from_raw(*w, *h, rgba).expect("frame size");
                 let delay = image::Delay::from_numer_denom_ms(1000, *fps);
-                enc.encode_frame(image::Frame::from_parts(img, 0, 0, delay)).map_err(|e| CliError::Draw(e.to_string()))
+                enc.encode_frame(image::Frame::from_parts(img, 0, 0, delay))
+                    .map_err(|e| CliError::Draw(e.to_string()))
             }
             FrameSink::Mp4(child) => {
                 use std::io::Write;
                 let stdin = child.stdin.as_mut().expect("piped");
-                stdin.write_all(&rgb).map_err(|e| CliError::Draw(format!("ffmpeg stopped reading frames: {e}")))
+                stdin
+                    .write_all(&rgb)
+                    .map_err(|e| CliError::Draw(format!("ffmpeg stopped reading frames: {e}")))
             }
         }
     }
@@ -332,7 +462,9 @@ impl FrameSink {
             }
             FrameSink::Mp4(mut child) => {
                 drop(child.stdin.take());
-                let status = child.wait().map_err(|e| CliError::Draw(format!("ffmpeg: {e}")))?;
+                let status = child
+                    .wait()
+                    .map_err(|e| CliError::Draw(format!("ffmpeg: {e}")))?;
                 if status.success() {
                     Ok(())
                 } else {

@@ -22,8 +22,20 @@ pub struct CampbellGeometry {
 }
 
 /// Draw `diagram` to `out` (.png or .svg).
-pub fn campbell(diagram: &CampbellDiagram, stiffening: bool, out: &Path, size: Size) -> CliResult<CampbellGeometry> {
-    render(out, size, &CampbellPicture { diagram, stiffening })
+pub fn campbell(
+    diagram: &CampbellDiagram,
+    stiffening: bool,
+    out: &Path,
+    size: Size,
+) -> CliResult<CampbellGeometry> {
+    render(
+        out,
+        size,
+        &CampbellPicture {
+            diagram,
+            stiffening,
+        },
+    )
 }
 
 struct CampbellPicture<'a> {
@@ -36,7 +48,11 @@ pub const CRITICAL_MARKER_RADIUS: i32 = 6;
 
 impl Painter for CampbellPicture<'_> {
     type Out = CampbellGeometry;
-    fn paint<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>, _format: Format) -> CliResult<CampbellGeometry> {
+    fn paint<DB: DrawingBackend>(
+        &self,
+        root: &DrawingArea<DB, Shift>,
+        _format: Format,
+    ) -> CliResult<CampbellGeometry> {
         let d = self.diagram;
         let (top, rest) = root.split_vertically(44);
         let title = format!(
@@ -45,12 +61,25 @@ impl Painter for CampbellPicture<'_> {
         );
         draw_title(&top, &title, 20.0)?;
         let s = &d.speeds_rad_s;
-        let (x0, x1) = (s.first().copied().unwrap_or(0.0), s.last().copied().unwrap_or(1.0));
-        let (x0, x1) = if x1 > x0 { (x0, x1) } else { (x0 - 1.0, x0 + 1.0) };
+        let (x0, x1) = (
+            s.first().copied().unwrap_or(0.0),
+            s.last().copied().unwrap_or(1.0),
+        );
+        let (x0, x1) = if x1 > x0 {
+            (x0, x1)
+        } else {
+            (x0 - 1.0, x0 + 1.0)
+        };
         let y_max = d
             .modes
             .iter()
-            .flat_map(|m| m.rotating_hz.iter().chain(&m.forward_hz).map(|v| v.abs()).chain(m.backward_hz.iter().map(|v| v.abs())))
+            .flat_map(|m| {
+                m.rotating_hz
+                    .iter()
+                    .chain(&m.forward_hz)
+                    .map(|v| v.abs())
+                    .chain(m.backward_hz.iter().map(|v| v.abs()))
+            })
             .fold(0.0, f64::max)
             .max(1e-9)
             * 1.05;
@@ -77,27 +106,69 @@ impl Painter for CampbellPicture<'_> {
         ks.dedup();
         for &k in &ks {
             let line = vec![(x0, k as f64 * x0 / TAU), (x1, k as f64 * x1 / TAU)];
-            chart.draw_series(std::iter::once(DashedPathElement::new(line, 6, 5, RGBColor(150, 150, 150).stroke_width(1)))).map_err(de)?;
+            chart
+                .draw_series(std::iter::once(DashedPathElement::new(
+                    line,
+                    6,
+                    5,
+                    RGBColor(150, 150, 150).stroke_width(1),
+                )))
+                .map_err(de)?;
         }
         for (i, m) in d.modes.iter().enumerate() {
             let color = PALETTE[i % PALETTE.len()];
-            let pts = |v: &[f64], abs: bool| -> Vec<(f64, f64)> { s.iter().zip(v).map(|(&x, &y)| (x, if abs { y.abs() } else { y })).collect() };
+            let pts = |v: &[f64], abs: bool| -> Vec<(f64, f64)> {
+                s.iter()
+                    .zip(v)
+                    .map(|(&x, &y)| (x, if abs { y.abs() } else { y }))
+                    .collect()
+            };
             chart
-                .draw_series(LineSeries::new(pts(&m.rotating_hz, false), color.stroke_width(3)))
+                .draw_series(LineSeries::new(
+                    pts(&m.rotating_hz, false),
+                    color.stroke_width(3),
+                ))
                 .map_err(de)?
                 .label(format!("⟨{}, {}⟩", m.k, m.l))
-                .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], color.stroke_width(3)));
+                .legend(move |(x, y)| {
+                    PathElement::new(vec![(x, y), (x + 20, y)], color.stroke_width(3))
+                });
             if m.k > 0 {
-                chart.draw_series(LineSeries::new(pts(&m.forward_hz, false), color.mix(0.6).stroke_width(1))).map_err(de)?;
-                chart.draw_series(LineSeries::new(pts(&m.backward_hz, true), color.mix(0.6).stroke_width(1))).map_err(de)?;
+                chart
+                    .draw_series(LineSeries::new(
+                        pts(&m.forward_hz, false),
+                        color.mix(0.6).stroke_width(1),
+                    ))
+                    .map_err(de)?;
+                chart
+                    .draw_series(LineSeries::new(
+                        pts(&m.backward_hz, true),
+                        color.mix(0.6).stroke_width(1),
+                    ))
+                    .map_err(de)?;
             }
         }
         let mut markers = Vec::new();
-        for c in d.critical_speeds.iter().filter(|c| c.rad_s >= x0 && c.rad_s <= x1) {
+        for c in d
+            .critical_speeds
+            .iter()
+            .filter(|c| c.rad_s >= x0 && c.rad_s <= x1)
+        {
             let p = (c.rad_s, c.k as f64 * c.rad_s / TAU);
-            chart.draw_series(std::iter::once(Circle::new(p, CRITICAL_MARKER_RADIUS, BLACK.filled()))).map_err(de)?;
+            chart
+                .draw_series(std::iter::once(Circle::new(
+                    p,
+                    CRITICAL_MARKER_RADIUS,
+                    BLACK.filled(),
+                )))
+                .map_err(de)?;
             let (px, py) = chart.backend_coord(&p);
-            root.draw(&Text::new(format!("{:.0} rad/s", c.rad_s), (px + 8, py + 4), (FONT, 13).into_font())).map_err(de)?;
+            root.draw(&Text::new(
+                format!("{:.0} rad/s", c.rad_s),
+                (px + 8, py + 4),
+                (FONT, 13).into_font(),
+            ))
+            .map_err(de)?;
             markers.push((c.k, c.l, px, py));
         }
         chart

@@ -1,8 +1,8 @@
 //! Time histories from a `simulate` CSV: columns by name or pattern, panels, decimation.
 
-use crate::cli::error::{CliError, CliResult};
 use super::render::*;
 use super::Size;
+use crate::cli::error::{CliError, CliResult};
 use plotters::coord::Shift;
 use plotters::prelude::*;
 use std::path::{Path, PathBuf};
@@ -25,9 +25,17 @@ impl CsvData {
     /// Read at most [`MAX_CSV_BYTES`] of `path` (an endless or larger input is refused).
     pub fn read(path: &Path) -> CliResult<CsvData> {
         use std::io::Read;
-        let err = |error| CliError::Io { what: "read", path: path.display().to_string(), error };
+        let err = |error| CliError::Io {
+            what: "read",
+            path: path.display().to_string(),
+            error,
+        };
         let mut text = String::new();
-        std::fs::File::open(path).map_err(err)?.take(MAX_CSV_BYTES + 1).read_to_string(&mut text).map_err(err)?;
+        std::fs::File::open(path)
+            .map_err(err)?
+            .take(MAX_CSV_BYTES + 1)
+            .read_to_string(&mut text)
+            .map_err(err)?;
         if text.len() as u64 > MAX_CSV_BYTES {
             return Err(CliError::Usage(format!(
                 "{}: more than {} MiB, the most a plot reads (simulate --output-rate writes fewer rows)",
@@ -39,33 +47,66 @@ impl CsvData {
     }
 
     pub fn parse(text: &str, path: &Path) -> CliResult<CsvData> {
-        let mut lines = text.lines().enumerate().filter(|(_, l)| !l.trim().is_empty());
-        let (_, head) = lines.next().ok_or_else(|| CliError::Usage(format!("{}: empty file, expected a CSV header", path.display())))?;
+        let mut lines = text
+            .lines()
+            .enumerate()
+            .filter(|(_, l)| !l.trim().is_empty());
+        let (_, head) = lines.next().ok_or_else(|| {
+            CliError::Usage(format!(
+                "{}: empty file, expected a CSV header",
+                path.display()
+            ))
+        })?;
         let header: Vec<String> = head.split(',').map(|s| s.trim().to_string()).collect();
         if header.iter().any(|h| h.parse::<f64>().is_ok()) {
-            return Err(CliError::Usage(format!("{}: the first line must be the header (column names), found numbers", path.display())));
+            return Err(CliError::Usage(format!(
+                "{}: the first line must be the header (column names), found numbers",
+                path.display()
+            )));
         }
         let mut columns = vec![Vec::new(); header.len()];
         for (no, line) in lines {
             let cells: Vec<&str> = line.split(',').collect();
             if cells.len() != header.len() {
-                return Err(CliError::Usage(format!("{}:{}: {} cells, the header has {}", path.display(), no + 1, cells.len(), header.len())));
+                return Err(CliError::Usage(format!(
+                    "{}:{}: {} cells, the header has {}",
+                    path.display(),
+                    no + 1,
+                    cells.len(),
+                    header.len()
+                )));
             }
             for (j, c) in cells.iter().enumerate() {
-                let v = c.trim().parse::<f64>().map_err(|_| CliError::Usage(format!("{}:{}: column {} is not a number: {:?}", path.display(), no + 1, header[j], c.trim())))?;
+                let v = c.trim().parse::<f64>().map_err(|_| {
+                    CliError::Usage(format!(
+                        "{}:{}: column {} is not a number: {:?}",
+                        path.display(),
+                        no + 1,
+                        header[j],
+                        c.trim()
+                    ))
+                })?;
                 columns[j].push(v);
             }
         }
         if columns.first().is_none_or(|c| c.is_empty()) {
             return Err(CliError::Usage(format!("{}: no data rows", path.display())));
         }
-        Ok(CsvData { path: path.to_path_buf(), header, columns })
+        Ok(CsvData {
+            path: path.to_path_buf(),
+            header,
+            columns,
+        })
     }
 
     pub fn column(&self, name: &str) -> CliResult<&[f64]> {
         match self.header.iter().position(|h| h == name) {
             Some(j) => Ok(&self.columns[j]),
-            None => Err(CliError::Usage(format!("unknown column {name:?} in {}; it has {}", self.path.display(), summarize_names(&self.header)))),
+            None => Err(CliError::Usage(format!(
+                "unknown column {name:?} in {}; it has {}",
+                self.path.display(),
+                summarize_names(&self.header)
+            ))),
         }
     }
 
@@ -74,9 +115,14 @@ impl CsvData {
         let mut out = Vec::new();
         for item in spec.split(',').map(str::trim).filter(|s| !s.is_empty()) {
             if item.contains('*') {
-                let hits: Vec<&String> = self.header.iter().filter(|h| glob_match(item, h)).collect();
+                let hits: Vec<&String> =
+                    self.header.iter().filter(|h| glob_match(item, h)).collect();
                 if hits.is_empty() {
-                    return Err(CliError::Usage(format!("no column matches {item:?} in {}; it has {}", self.path.display(), summarize_names(&self.header))));
+                    return Err(CliError::Usage(format!(
+                        "no column matches {item:?} in {}; it has {}",
+                        self.path.display(),
+                        summarize_names(&self.header)
+                    )));
                 }
                 out.extend(hits.into_iter().cloned());
             } else {
@@ -98,7 +144,10 @@ pub fn glob_match(pattern: &str, s: &str) -> bool {
         return pattern == s;
     }
     let (first, last) = (parts[0], parts[parts.len() - 1]);
-    if !s.starts_with(first) || !s[first.len()..].ends_with(last) || s.len() < first.len() + last.len() {
+    if !s.starts_with(first)
+        || !s[first.len()..].ends_with(last)
+        || s.len() < first.len() + last.len()
+    {
         return false;
     }
     let mut rest = &s[first.len()..s.len() - last.len()];
@@ -118,7 +167,10 @@ pub fn summarize_names(names: &[String]) -> String {
         let b = s.as_bytes();
         match b.iter().position(|c| c.is_ascii_digit()) {
             Some(i) => {
-                let j = b[i..].iter().position(|c| !c.is_ascii_digit()).map_or(b.len(), |n| i + n);
+                let j = b[i..]
+                    .iter()
+                    .position(|c| !c.is_ascii_digit())
+                    .map_or(b.len(), |n| i + n);
                 (s[..i].to_string(), s[i..j].parse().ok(), s[j..].to_string())
             }
             None => (s.to_string(), None, String::new()),
@@ -152,7 +204,10 @@ pub fn summarize_names(names: &[String]) -> String {
 /// Default axis label for a panel's columns.
 pub fn auto_ylabel(names: &[String]) -> String {
     let all = |f: &dyn Fn(&str) -> bool| names.iter().all(|n| f(n));
-    let numbered = |n: &str, prefix: &str| n.strip_prefix(prefix).is_some_and(|r| !r.is_empty() && r.bytes().all(|c| c.is_ascii_digit()));
+    let numbered = |n: &str, prefix: &str| {
+        n.strip_prefix(prefix)
+            .is_some_and(|r| !r.is_empty() && r.bytes().all(|c| c.is_ascii_digit()))
+    };
     if all(&|n| numbered(n, "qale")) {
         "ALE modal amplitude (m)".into()
     } else if all(&|n| numbered(n, "q")) {
@@ -178,8 +233,15 @@ fn with_units(names: &[String]) -> String {
     use crate::cli::simulate::column_unit;
     let units: Vec<Option<&str>> = names.iter().map(|n| column_unit(n)).collect();
     match units.first() {
-        Some(Some(u)) if units.iter().all(|x| x == &Some(*u)) => format!("{} ({u})", names.join(", ")),
-        _ => names.iter().zip(&units).map(|(n, u)| u.map_or_else(|| n.clone(), |u| format!("{n} ({u})"))).collect::<Vec<_>>().join(", "),
+        Some(Some(u)) if units.iter().all(|x| x == &Some(*u)) => {
+            format!("{} ({u})", names.join(", "))
+        }
+        _ => names
+            .iter()
+            .zip(&units)
+            .map(|(n, u)| u.map_or_else(|| n.clone(), |u| format!("{n} ({u})")))
+            .collect::<Vec<_>>()
+            .join(", "),
     }
 }
 
@@ -199,7 +261,10 @@ impl PanelGeometry {
     pub fn to_px(&self, x: f64, y: f64) -> (f64, f64) {
         let (x0, x1) = (self.x_px.0 as f64, (self.x_px.1 - 1) as f64);
         let (y0, y1) = (self.y_px.0 as f64, (self.y_px.1 - 1) as f64);
-        (x0 + (x - self.x_range.0) / (self.x_range.1 - self.x_range.0) * (x1 - x0), y1 - (y - self.y_range.0) / (self.y_range.1 - self.y_range.0) * (y1 - y0))
+        (
+            x0 + (x - self.x_range.0) / (self.x_range.1 - self.x_range.0) * (x1 - x0),
+            y1 - (y - self.y_range.0) / (self.y_range.1 - self.y_range.0) * (y1 - y0),
+        )
     }
 }
 
@@ -226,7 +291,12 @@ impl CsvPlot<'_> {
 
 /// A 2-px polyline through pixel vertices: Bresenham per segment, a 2×2 brush,
 /// clipped to `clip` = (x0, x1, y0, y1) (exclusive ends).
-pub(super) fn thick_polyline<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, pts: &[(i32, i32)], color: RGBColor, clip: (i32, i32, i32, i32)) -> CliResult<()> {
+pub(super) fn thick_polyline<DB: DrawingBackend>(
+    area: &DrawingArea<DB, Shift>,
+    pts: &[(i32, i32)],
+    color: RGBColor,
+    clip: (i32, i32, i32, i32),
+) -> CliResult<()> {
     let dot = |x: i32, y: i32| -> CliResult<()> {
         for (dx, dy) in [(0, 0), (1, 0), (0, 1), (1, 1)] {
             let (px, py) = (x + dx, y + dy);
@@ -295,7 +365,11 @@ pub(super) fn decimate(x: &[f64], y: &[f64], x_range: (f64, f64), px: usize) -> 
 }
 
 pub(super) fn padded_range(values: impl Iterator<Item = f64>) -> (f64, f64) {
-    let (lo, hi) = values.filter(|v| v.is_finite()).fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), v| (a.min(v), b.max(v)));
+    let (lo, hi) = values
+        .filter(|v| v.is_finite())
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), v| {
+            (a.min(v), b.max(v))
+        });
     if !lo.is_finite() {
         return (-1.0, 1.0);
     }
@@ -309,7 +383,11 @@ pub(super) fn padded_range(values: impl Iterator<Item = f64>) -> (f64, f64) {
 
 impl Painter for CsvPlot<'_> {
     type Out = Vec<PanelGeometry>;
-    fn paint<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>, format: Format) -> CliResult<Vec<PanelGeometry>> {
+    fn paint<DB: DrawingBackend>(
+        &self,
+        root: &DrawingArea<DB, Shift>,
+        format: Format,
+    ) -> CliResult<Vec<PanelGeometry>> {
         let area = match &self.title {
             Some(t) => {
                 let (top, rest) = root.split_vertically(44);
@@ -321,18 +399,29 @@ impl Painter for CsvPlot<'_> {
         let x = self.data.column(self.x)?;
         let x_range = padded_range(x.iter().copied());
         let x_range = {
-            let (lo, hi) = x.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &v| (a.min(v), b.max(v)));
+            let (lo, hi) = x
+                .iter()
+                .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &v| {
+                    (a.min(v), b.max(v))
+                });
             if hi > lo {
                 (lo, hi)
             } else {
                 x_range
             }
         };
-        let x_label = if self.x == "time" { "time (s)".to_string() } else { self.x.to_string() };
+        let x_label = if self.x == "time" {
+            "time (s)".to_string()
+        } else {
+            self.x.to_string()
+        };
         let mut geometry = Vec::new();
         let areas = area.split_evenly((self.panels.len(), 1));
         for (pi, (pa, names)) in areas.iter().zip(&self.panels).enumerate() {
-            let ys: Vec<&[f64]> = names.iter().map(|n| self.data.column(n)).collect::<CliResult<_>>()?;
+            let ys: Vec<&[f64]> = names
+                .iter()
+                .map(|n| self.data.column(n))
+                .collect::<CliResult<_>>()?;
             let y_range = padded_range(ys.iter().flat_map(|c| c.iter().copied()));
             let mut chart = ChartBuilder::on(pa)
                 .margin(14)
@@ -341,7 +430,11 @@ impl Painter for CsvPlot<'_> {
                 .build_cartesian_2d(x_range.0..x_range.1, y_range.0..y_range.1)
                 .map_err(de)?;
             let (xs, ys_span) = (x_range.1 - x_range.0, y_range.1 - y_range.0);
-            let ylabel = self.ylabels.get(pi).cloned().unwrap_or_else(|| auto_ylabel(names));
+            let ylabel = self
+                .ylabels
+                .get(pi)
+                .cloned()
+                .unwrap_or_else(|| auto_ylabel(names));
             chart
                 .configure_mesh()
                 .x_desc(x_label.as_str())
@@ -376,7 +469,8 @@ impl Painter for CsvPlot<'_> {
                 let series = match format {
                     Format::Svg => chart.draw_series(LineSeries::new(pts, color.stroke_width(2))),
                     Format::Png => {
-                        let px: Vec<(i32, i32)> = pts.iter().map(|p| chart.backend_coord(p)).collect();
+                        let px: Vec<(i32, i32)> =
+                            pts.iter().map(|p| chart.backend_coord(p)).collect();
                         let clip = (px_x.start, px_x.end, px_y.start, px_y.end);
                         thick_polyline(root, &px, color, clip)?;
                         chart.draw_series(std::iter::empty::<PathElement<(f64, f64)>>())
@@ -385,7 +479,9 @@ impl Painter for CsvPlot<'_> {
                 series
                     .map_err(de)?
                     .label(name.as_str())
-                    .legend(move |(lx, ly)| PathElement::new(vec![(lx, ly), (lx + 22, ly)], color.stroke_width(3)));
+                    .legend(move |(lx, ly)| {
+                        PathElement::new(vec![(lx, ly), (lx + 22, ly)], color.stroke_width(3))
+                    });
             }
             chart
                 .configure_series_labels()
@@ -395,9 +491,13 @@ impl Painter for CsvPlot<'_> {
                 .label_font((FONT, 15))
                 .draw()
                 .map_err(de)?;
-            geometry.push(PanelGeometry { x_px: (px_x.start, px_x.end), y_px: (px_y.start, px_y.end), x_range, y_range });
+            geometry.push(PanelGeometry {
+                x_px: (px_x.start, px_x.end),
+                y_px: (px_y.start, px_y.end),
+                x_range,
+                y_range,
+            });
         }
         Ok(geometry)
     }
 }
-

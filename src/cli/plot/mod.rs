@@ -22,7 +22,6 @@ use crate::model::AngularShape;
 use std::path::{Path, PathBuf};
 use std::str::FromStr;
 
-
 mod animate;
 mod campbell;
 mod csv;
@@ -44,7 +43,6 @@ pub use self::render::*;
 pub use self::stability::*;
 pub use crate::model::nodal_lines::{nodal_angles, nodal_radii};
 
-
 // ---------------------------------------------------------------- CLI
 
 /// Picture size in pixels, `WIDTHxHEIGHT`.
@@ -59,9 +57,14 @@ impl FromStr for Size {
     fn from_str(s: &str) -> Result<Size, String> {
         let bad = || format!("size must be WIDTHxHEIGHT in pixels (e.g. 1200x800), got {s:?}");
         let (w, h) = s.split_once(['x', 'X']).ok_or_else(bad)?;
-        let (width, height) = (w.trim().parse::<u32>().map_err(|_| bad())?, h.trim().parse::<u32>().map_err(|_| bad())?);
+        let (width, height) = (
+            w.trim().parse::<u32>().map_err(|_| bad())?,
+            h.trim().parse::<u32>().map_err(|_| bad())?,
+        );
         if !(100..=10_000).contains(&width) || !(100..=10_000).contains(&height) {
-            return Err(format!("size {width}x{height}: each side must be 100..10000 pixels"));
+            return Err(format!(
+                "size {width}x{height}: each side must be 100..10000 pixels"
+            ));
         }
         Ok(Size { width, height })
     }
@@ -190,25 +193,64 @@ pub enum PlotCommand {
 
 pub fn main(cmd: PlotCommand) -> CliResult<()> {
     match cmd {
-        PlotCommand::Csv { file, columns, panels, x, ylabels, title, out, size } => {
+        PlotCommand::Csv {
+            file,
+            columns,
+            panels,
+            x,
+            ylabels,
+            title,
+            out,
+            size,
+        } => {
             let data = CsvData::read(&file)?;
             let mut specs: Vec<String> = columns.into_iter().collect();
             specs.extend(panels);
             if specs.is_empty() {
                 return Err(CliError::Usage(format!("give the columns to plot: --columns LIST (and --panel LIST for more panels); {} has {}", file.display(), summarize_names(&data.header))));
             }
-            let panels = specs.iter().map(|s| data.expand(s)).collect::<CliResult<Vec<_>>>()?;
-            let plot = CsvPlot { data: &data, x: &x, panels, ylabels, title };
+            let panels = specs
+                .iter()
+                .map(|s| data.expand(s))
+                .collect::<CliResult<Vec<_>>>()?;
+            let plot = CsvPlot {
+                data: &data,
+                x: &x,
+                panels,
+                ylabels,
+                title,
+            };
             plot.render(&out, size)?;
         }
-        PlotCommand::Modes { params, overrides, k, l, title, out, size } => {
+        PlotCommand::Modes {
+            params,
+            overrides,
+            k,
+            l,
+            title,
+            out,
+            size,
+        } => {
             let config = load_with_overrides(&params, &overrides)?;
             let ks = k.unwrap_or_else(|| first_sorted(&config.plate.nodal_diameters, 8));
             let ls = l.unwrap_or_else(|| first_sorted(&config.plate.nodal_circles, 4));
-            let size = size.unwrap_or(Size { width: (230 * ks.len() as u32).max(400) + 20, height: 250 * ls.len() as u32 + 70 });
+            let size = size.unwrap_or(Size {
+                width: (230 * ks.len() as u32).max(400) + 20,
+                height: 250 * ls.len() as u32 + 70,
+            });
             mode_grid(&config, &ks, &ls, title.as_deref(), &out, size)?;
         }
-        PlotCommand::Mode { params, overrides, index, k, l, shape, title, out, size } => {
+        PlotCommand::Mode {
+            params,
+            overrides,
+            index,
+            k,
+            l,
+            shape,
+            title,
+            out,
+            size,
+        } => {
             let config = load_with_overrides(&params, &overrides)?;
             let which = match (index, k, l) {
                 (Some(i), _, _) => ModeChoice::Index(i),
@@ -227,23 +269,56 @@ pub fn main(cmd: PlotCommand) -> CliResult<()> {
         #[cfg(feature = "ros")]
         PlotCommand::Marker { bag, at, out, size } => {
             let (t, triangles) = plot_marker(&bag, at, &out, size)?;
-            eprintln!("{}: the marker logged at {:.3} s, {triangles} triangles", out.display(), t as f64 * 1e-9);
+            eprintln!(
+                "{}: the marker logged at {:.3} s, {triangles} triangles",
+                out.display(),
+                t as f64 * 1e-9
+            );
         }
-        PlotCommand::Animate { csv, params, out, fps, slowdown, scale, size, max_frames, quiet } => {
+        PlotCommand::Animate {
+            csv,
+            params,
+            out,
+            fps,
+            slowdown,
+            scale,
+            size,
+            max_frames,
+            quiet,
+        } => {
             if fps == 0 || fps > 100 {
                 return Err(CliError::Usage(format!("--fps {fps}: must be 1 ..= 100")));
             }
-            if !(slowdown.is_finite() && slowdown > 0.0) || scale.is_some_and(|s| !(s.is_finite() && s > 0.0)) {
-                return Err(CliError::Usage("--slowdown and --scale must be finite numbers > 0".into()));
+            if !(slowdown.is_finite() && slowdown > 0.0)
+                || scale.is_some_and(|s| !(s.is_finite() && s > 0.0))
+            {
+                return Err(CliError::Usage(
+                    "--slowdown and --scale must be finite numbers > 0".into(),
+                ));
             }
             let data = CsvData::read(&csv)?;
             let config = super::load_config(&params)?;
-            let bar = if quiet { indicatif::ProgressBar::hidden() } else { indicatif::ProgressBar::new(0) };
-            let anim = Animation { fps, max_frames, slowdown, scale, size };
+            let bar = if quiet {
+                indicatif::ProgressBar::hidden()
+            } else {
+                indicatif::ProgressBar::new(0)
+            };
+            let anim = Animation {
+                fps,
+                max_frames,
+                slowdown,
+                scale,
+                size,
+            };
             let mut estimated = quiet;
             let info = animate(&data, &config, &anim, &out, |done, total| {
                 if !estimated {
-                    eprintln!("{}: {total} frames from {} rows, about {:.0} s", out.display(), data.columns[0].len(), total as f64 * animate::FRAME_SECONDS);
+                    eprintln!(
+                        "{}: {total} frames from {} rows, about {:.0} s",
+                        out.display(),
+                        data.columns[0].len(),
+                        total as f64 * animate::FRAME_SECONDS
+                    );
                     estimated = true;
                 }
                 bar.set_length(total as u64);
@@ -251,7 +326,13 @@ pub fn main(cmd: PlotCommand) -> CliResult<()> {
             })?;
             bar.finish_and_clear();
             if !quiet {
-                eprintln!("{}: {} frames at {fps} fps, colour ±{:.3e} m, side view ×{:.3e}", out.display(), info.frames, info.w_ref, info.scale);
+                eprintln!(
+                    "{}: {} frames at {fps} fps, colour ±{:.3e} m, side view ×{:.3e}",
+                    out.display(),
+                    info.frames,
+                    info.w_ref,
+                    info.scale
+                );
             }
         }
     }
@@ -269,4 +350,3 @@ fn first_sorted(v: &[u32], n: usize) -> Vec<u32> {
 pub fn load_with_overrides(path: &Path, overrides: &[String]) -> CliResult<Config> {
     super::load_config_with(path, overrides)
 }
-

@@ -1,8 +1,8 @@
 //! The study's accuracy-against-cost picture (Pareto fronts).
 
-use crate::cli::error::CliResult;
 use super::render::*;
 use super::Size;
+use crate::cli::error::CliResult;
 use crate::study::StudyReport;
 use plotters::coord::Shift;
 use plotters::element::DashedPathElement;
@@ -52,13 +52,35 @@ pub(super) fn panels(r: &StudyReport) -> [PanelData; 3] {
         series: vec![Series {
             name: "max frequency error".into(),
             color: PALETTE[0],
-            points: a.rows.iter().map(|x| (x.build_time_s, floor(x.max_relative_error), format!("{}", x.radial_splines))).collect(),
+            points: a
+                .rows
+                .iter()
+                .map(|x| {
+                    (
+                        x.build_time_s,
+                        floor(x.max_relative_error),
+                        format!("{}", x.radial_splines),
+                    )
+                })
+                .collect(),
         }],
-        front: a.rows.iter().filter(|x| x.pareto).map(|x| (x.build_time_s, floor(x.max_relative_error))).collect(),
+        front: a
+            .rows
+            .iter()
+            .filter(|x| x.pareto)
+            .map(|x| (x.build_time_s, floor(x.max_relative_error)))
+            .collect(),
         picks: a
             .recommendations
             .iter()
-            .filter_map(|x| Some((x.target, x.cost?, floor(x.error?), format!("n = {}", x.setting.as_ref()?.radial_splines))))
+            .filter_map(|x| {
+                Some((
+                    x.target,
+                    x.cost?,
+                    floor(x.error?),
+                    format!("n = {}", x.setting.as_ref()?.radial_splines),
+                ))
+            })
             .collect(),
         uncertainty: a.reference.uncertainty,
     };
@@ -75,17 +97,36 @@ pub(super) fn panels(r: &StudyReport) -> [PanelData; 3] {
             .map(|(i, &l)| Series {
                 name: format!("l ≤ {l}"),
                 color: PALETTE[i % PALETTE.len()],
-                points: b.rows.iter().filter(|x| x.l_max == l).map(|x| (x.step_time_s, floor(x.relative_error), format!("k ≤ {}", x.k_max))).collect(),
-            })
-            .chain(ls.iter().enumerate().map(|(i, &l)| Series {
-                name: format!("l ≤ {l} + residual"),
-                color: PALETTE[(i + ls.len()) % PALETTE.len()],
                 points: b
                     .rows
                     .iter()
                     .filter(|x| x.l_max == l)
-                    .map(|x| (x.step_time_with_residual_s, floor(x.relative_error_with_residual), format!("k ≤ {}", x.k_max)))
+                    .map(|x| {
+                        (
+                            x.step_time_s,
+                            floor(x.relative_error),
+                            format!("k ≤ {}", x.k_max),
+                        )
+                    })
                     .collect(),
+            })
+            .chain(ls.iter().enumerate().map(|(i, &l)| {
+                Series {
+                    name: format!("l ≤ {l} + residual"),
+                    color: PALETTE[(i + ls.len()) % PALETTE.len()],
+                    points: b
+                        .rows
+                        .iter()
+                        .filter(|x| x.l_max == l)
+                        .map(|x| {
+                            (
+                                x.step_time_with_residual_s,
+                                floor(x.relative_error_with_residual),
+                                format!("k ≤ {}", x.k_max),
+                            )
+                        })
+                        .collect(),
+                }
             }))
             .collect(),
         // One front over both variants of every set.
@@ -94,18 +135,35 @@ pub(super) fn panels(r: &StudyReport) -> [PanelData; 3] {
             .iter()
             .filter(|x| x.pareto)
             .map(|x| (x.step_time_s, floor(x.relative_error)))
-            .chain(b.rows.iter().filter(|x| x.pareto_with_residual).map(|x| (x.step_time_with_residual_s, floor(x.relative_error_with_residual))))
+            .chain(b.rows.iter().filter(|x| x.pareto_with_residual).map(|x| {
+                (
+                    x.step_time_with_residual_s,
+                    floor(x.relative_error_with_residual),
+                )
+            }))
             .collect(),
         picks: b
             .recommendations
             .iter()
             .filter_map(|x| {
                 let s = x.setting.as_ref()?;
-                let residual = if s.residual_flexibility { " + res." } else { "" };
-                Some((x.target, x.cost?, floor(x.error?), format!("k≤{}, l≤{}{residual}", s.k_max, s.l_max)))
+                let residual = if s.residual_flexibility {
+                    " + res."
+                } else {
+                    ""
+                };
+                Some((
+                    x.target,
+                    x.cost?,
+                    floor(x.error?),
+                    format!("k≤{}, l≤{}{residual}", s.k_max, s.l_max),
+                ))
             })
             .collect(),
-        uncertainty: b.reference.uncertainty_with_residual.min(b.reference.uncertainty),
+        uncertainty: b
+            .reference
+            .uncertainty_with_residual
+            .min(b.reference.uncertainty),
     };
     let c = &r.integrator;
     let mut names: Vec<&str> = c.rows.iter().map(|x| x.integrator).collect();
@@ -115,7 +173,13 @@ pub(super) fn panels(r: &StudyReport) -> [PanelData; 3] {
         "implicit_midpoint" => "midpoint".to_string(),
         other => other.to_string(),
     };
-    let khz = |hz: f64| if hz >= 1e3 { format!("{} kHz", hz / 1e3) } else { format!("{hz} Hz") };
+    let khz = |hz: f64| {
+        if hz >= 1e3 {
+            format!("{} kHz", hz / 1e3)
+        } else {
+            format!("{hz} Hz")
+        }
+    };
     let pc = PanelData {
         title: "3. trajectory vs integrator and rate".into(),
         x_desc: "wall time per simulated second (s/s)".into(),
@@ -129,17 +193,33 @@ pub(super) fn panels(r: &StudyReport) -> [PanelData; 3] {
                     .rows
                     .iter()
                     .filter(|x| x.integrator == n)
-                    .filter_map(|x| Some((x.wall_s_per_simulated_s?, floor(x.relative_error?), khz(x.rate_hz))))
+                    .filter_map(|x| {
+                        Some((
+                            x.wall_s_per_simulated_s?,
+                            floor(x.relative_error?),
+                            khz(x.rate_hz),
+                        ))
+                    })
                     .collect(),
             })
             .collect(),
-        front: c.rows.iter().filter(|x| x.pareto).filter_map(|x| Some((x.wall_s_per_simulated_s?, floor(x.relative_error?)))).collect(),
+        front: c
+            .rows
+            .iter()
+            .filter(|x| x.pareto)
+            .filter_map(|x| Some((x.wall_s_per_simulated_s?, floor(x.relative_error?))))
+            .collect(),
         picks: c
             .recommendations
             .iter()
             .filter_map(|x| {
                 let s = x.setting.as_ref()?;
-                Some((x.target, x.cost?, floor(x.error?), format!("{} {}", short(s.integrator), khz(s.rate_hz))))
+                Some((
+                    x.target,
+                    x.cost?,
+                    floor(x.error?),
+                    format!("{} {}", short(s.integrator), khz(s.rate_hz)),
+                ))
             })
             .collect(),
         uncertainty: c.reference.uncertainty,
@@ -148,16 +228,27 @@ pub(super) fn panels(r: &StudyReport) -> [PanelData; 3] {
 }
 
 pub(super) fn decade_range(values: impl Iterator<Item = f64>) -> (f64, f64) {
-    let (lo, hi) = values.filter(|v| v.is_finite() && *v > 0.0).fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), v| (a.min(v), b.max(v)));
+    let (lo, hi) = values
+        .filter(|v| v.is_finite() && *v > 0.0)
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), v| {
+            (a.min(v), b.max(v))
+        });
     if !lo.is_finite() {
         return (1e-3, 1.0);
     }
-    (10f64.powf(lo.log10().floor()), 10f64.powf(hi.log10().ceil().max(lo.log10().floor() + 1.0)))
+    (
+        10f64.powf(lo.log10().floor()),
+        10f64.powf(hi.log10().ceil().max(lo.log10().floor() + 1.0)),
+    )
 }
 
 impl Painter for ParetoPicture<'_> {
     type Out = ();
-    fn paint<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>, _format: Format) -> CliResult<()> {
+    fn paint<DB: DrawingBackend>(
+        &self,
+        root: &DrawingArea<DB, Shift>,
+        _format: Format,
+    ) -> CliResult<()> {
         let r = self.report;
         let (top, rest) = root.split_vertically(44);
         draw_title(
@@ -170,8 +261,17 @@ impl Painter for ParetoPicture<'_> {
         )?;
         let areas = rest.split_evenly((1, 3));
         for (area, panel) in areas.iter().zip(panels(r)) {
-            let xs = decade_range(panel.series.iter().flat_map(|s| s.points.iter().map(|p| p.0)));
-            let mut y_all: Vec<f64> = panel.series.iter().flat_map(|s| s.points.iter().map(|p| p.1)).collect();
+            let xs = decade_range(
+                panel
+                    .series
+                    .iter()
+                    .flat_map(|s| s.points.iter().map(|p| p.0)),
+            );
+            let mut y_all: Vec<f64> = panel
+                .series
+                .iter()
+                .flat_map(|s| s.points.iter().map(|p| p.1))
+                .collect();
             y_all.extend(r.plan.targets.iter().copied());
             let ys = decade_range(y_all.into_iter());
             let ys = (ys.0, ys.1.max(1.0));
@@ -216,23 +316,45 @@ impl Painter for ParetoPicture<'_> {
                     )))
                     .map_err(de)?
                     .label("reference uncertainty")
-                    .legend(|(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], RGBColor(200, 120, 0).stroke_width(2)));
+                    .legend(|(x, y)| {
+                        PathElement::new(
+                            vec![(x, y), (x + 20, y)],
+                            RGBColor(200, 120, 0).stroke_width(2),
+                        )
+                    });
             }
             for s in &panel.series {
                 let color = s.color;
                 let mut pts: Vec<(f64, f64)> = s.points.iter().map(|p| (p.0, p.1)).collect();
                 pts.sort_by(|a, b| a.0.total_cmp(&b.0));
-                chart.draw_series(LineSeries::new(pts.clone(), color.mix(0.5).stroke_width(1))).map_err(de)?;
+                chart
+                    .draw_series(LineSeries::new(pts.clone(), color.mix(0.5).stroke_width(1)))
+                    .map_err(de)?;
                 chart
                     // An error below the floor is not on the axis: drawn at the floor, hollow.
-                    .draw_series(pts.iter().map(|&p| Circle::new(p, 4, if p.1 <= ERROR_FLOOR { color.stroke_width(2) } else { color.filled() })))
+                    .draw_series(pts.iter().map(|&p| {
+                        Circle::new(
+                            p,
+                            4,
+                            if p.1 <= ERROR_FLOOR {
+                                color.stroke_width(2)
+                            } else {
+                                color.filled()
+                            },
+                        )
+                    }))
                     .map_err(de)?
                     .label(s.name.as_str())
                     .legend(move |(x, y)| Circle::new((x + 10, y), 4, color.filled()));
                 if panel.series.len() == 1 {
                     for p in &s.points {
                         let (px, py) = chart.backend_coord(&(p.0, p.1));
-                        root.draw(&Text::new(p.2.clone(), (px - 6, py + 8), (FONT, 13).into_font())).map_err(de)?;
+                        root.draw(&Text::new(
+                            p.2.clone(),
+                            (px - 6, py + 8),
+                            (FONT, 13).into_font(),
+                        ))
+                        .map_err(de)?;
                     }
                 }
             }
@@ -242,7 +364,9 @@ impl Painter for ParetoPicture<'_> {
                 .draw_series(LineSeries::new(front, BLACK.stroke_width(2)))
                 .map_err(de)?
                 .label("Pareto front")
-                .legend(|(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], BLACK.stroke_width(2)));
+                .legend(|(x, y)| {
+                    PathElement::new(vec![(x, y), (x + 20, y)], BLACK.stroke_width(2))
+                });
             // Recommended settings: one ring per setting, its targets listed.
             let mut merged: Vec<(f64, f64, String, Vec<f64>)> = Vec::new();
             for (target, cost, err, label) in &panel.picks {
@@ -252,19 +376,30 @@ impl Painter for ParetoPicture<'_> {
                 }
             }
             for (cost, err, label, targets) in &merged {
-                chart.draw_series(std::iter::once(Circle::new((*cost, *err), 9, RGBColor(220, 0, 0).stroke_width(2)))).map_err(de)?;
+                chart
+                    .draw_series(std::iter::once(Circle::new(
+                        (*cost, *err),
+                        9,
+                        RGBColor(220, 0, 0).stroke_width(2),
+                    )))
+                    .map_err(de)?;
                 let list: Vec<String> = targets.iter().map(|t| log_tick(*t)).collect();
-                let text =
-                    if list.len() > 2 { format!("{label}: ≤ {} … {}", list[0], list[list.len() - 1]) } else { format!("{label}: ≤ {}", list.join(", ")) };
+                let text = if list.len() > 2 {
+                    format!("{label}: ≤ {} … {}", list[0], list[list.len() - 1])
+                } else {
+                    format!("{label}: ≤ {}", list.join(", "))
+                };
                 let style = TextStyle::from((FONT, 13).into_font()).color(&RGBColor(180, 0, 0));
                 let (px, py) = chart.backend_coord(&(*cost, *err));
-                root.draw(&Text::new(text, (px + 11, py - 20), style)).map_err(de)?;
+                root.draw(&Text::new(text, (px + 11, py - 20), style))
+                    .map_err(de)?;
             }
             // The legend goes into the emptiest corner.
             let (px_x, px_y) = chart.plotting_area().get_pixel_range();
             let mid = ((px_x.start + px_x.end) / 2, (px_y.start + px_y.end) / 2);
             let mut counts = [0usize; 4]; // UL, UR, LL, LR
-            let quadrant = |(x, y): (i32, i32)| (usize::from(y > mid.1) << 1) | usize::from(x > mid.0);
+            let quadrant =
+                |(x, y): (i32, i32)| (usize::from(y > mid.1) << 1) | usize::from(x > mid.0);
             for s in &panel.series {
                 for p in &s.points {
                     counts[quadrant(chart.backend_coord(&(p.0, p.1)))] += 1;
@@ -276,8 +411,16 @@ impl Painter for ParetoPicture<'_> {
                 counts[quadrant((x, y))] += 5;
                 counts[quadrant((x + 150, y))] += 5;
             }
-            let corners = [SeriesLabelPosition::UpperLeft, SeriesLabelPosition::UpperRight, SeriesLabelPosition::LowerLeft, SeriesLabelPosition::LowerRight];
-            let best = [2usize, 3, 1, 0].into_iter().min_by_key(|&i| counts[i]).unwrap_or(2);
+            let corners = [
+                SeriesLabelPosition::UpperLeft,
+                SeriesLabelPosition::UpperRight,
+                SeriesLabelPosition::LowerLeft,
+                SeriesLabelPosition::LowerRight,
+            ];
+            let best = [2usize, 3, 1, 0]
+                .into_iter()
+                .min_by_key(|&i| counts[i])
+                .unwrap_or(2);
             chart
                 .configure_series_labels()
                 .position(corners[best].clone())
@@ -290,4 +433,3 @@ impl Painter for ParetoPicture<'_> {
         Ok(())
     }
 }
-

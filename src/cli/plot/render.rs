@@ -1,8 +1,8 @@
 //! Rendering helpers shared by every picture: output format and path checks, fonts, the
 //! PNG/SVG back ends, titles, the palette, tick labels, thick polylines.
 
-use crate::cli::error::{CliError, CliResult};
 use super::Size;
+use crate::cli::error::{CliError, CliResult};
 use plotters::coord::Shift;
 use plotters::prelude::*;
 use std::path::Path;
@@ -17,10 +17,20 @@ pub enum Format {
 }
 
 pub fn format_of(path: &Path) -> CliResult<Format> {
-    match path.extension().and_then(|e| e.to_str()).map(|e| e.to_ascii_lowercase()).as_deref() {
+    match path
+        .extension()
+        .and_then(|e| e.to_str())
+        .map(|e| e.to_ascii_lowercase())
+        .as_deref()
+    {
         Some("png") => Ok(Format::Png),
         Some("svg") => Ok(Format::Svg),
-        _ => return Err(CliError::Usage(format!("output {}: the name must end in .png or .svg", path.display()))),
+        _ => {
+            return Err(CliError::Usage(format!(
+                "output {}: the name must end in .png or .svg",
+                path.display()
+            )))
+        }
     }
 }
 
@@ -29,7 +39,11 @@ pub fn check_output_path(path: &Path) -> CliResult<()> {
     format_of(path)?;
     if let Some(dir) = path.parent().filter(|d| !d.as_os_str().is_empty()) {
         if !dir.is_dir() {
-            return Err(CliError::Usage(format!("output {}: folder {} does not exist", path.display(), dir.display())));
+            return Err(CliError::Usage(format!(
+                "output {}: folder {} does not exist",
+                path.display(),
+                dir.display()
+            )));
         }
     }
     Ok(())
@@ -54,14 +68,20 @@ pub fn ensure_fonts() {
 pub(super) trait Painter {
     type Out;
     /// `format`: what the backend writes (PNG and SVG draw thick polylines differently).
-    fn paint<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>, format: Format) -> CliResult<Self::Out>;
+    fn paint<DB: DrawingBackend>(
+        &self,
+        root: &DrawingArea<DB, Shift>,
+        format: Format,
+    ) -> CliResult<Self::Out>;
 }
 
 pub(super) fn render<P: Painter>(path: &Path, size: Size, painter: &P) -> CliResult<P::Out> {
     check_output_path(path)?;
     ensure_fonts();
     let dims = (size.width, size.height);
-    let write_err = |e: &dyn std::fmt::Debug| CliError::Usage(format!("cannot write {}: {e:?}", path.display()));
+    let write_err = |e: &dyn std::fmt::Debug| {
+        CliError::Usage(format!("cannot write {}: {e:?}", path.display()))
+    };
     match format_of(path)? {
         Format::Png => {
             // Drawn into memory, then encoded with the best PNG compression
@@ -80,7 +100,14 @@ pub(super) fn render<P: Painter>(path: &Path, size: Size, painter: &P) -> CliRes
                 image::codecs::png::CompressionType::Best,
                 image::codecs::png::FilterType::Adaptive,
             );
-            image::ImageEncoder::write_image(encoder, &pixels, size.width, size.height, image::ColorType::Rgb8).map_err(|e| write_err(&e))?;
+            image::ImageEncoder::write_image(
+                encoder,
+                &pixels,
+                size.width,
+                size.height,
+                image::ColorType::Rgb8,
+            )
+            .map_err(|e| write_err(&e))?;
             Ok(out)
         }
         Format::Svg => {
@@ -94,21 +121,33 @@ pub(super) fn render<P: Painter>(path: &Path, size: Size, painter: &P) -> CliRes
 }
 
 /// A title centred on `area`, its font shrunk until it fits the width.
-pub(super) fn draw_title<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, text: &str, size: f64) -> CliResult<()> {
+pub(super) fn draw_title<DB: DrawingBackend>(
+    area: &DrawingArea<DB, Shift>,
+    text: &str,
+    size: f64,
+) -> CliResult<()> {
     let (w, h) = area.dim_in_pixel();
     let mut size = size;
     while size > 9.0 {
-        let (tw, _) = area.estimate_text_size(text, &TextStyle::from((FONT, size).into_font())).map_err(de)?;
+        let (tw, _) = area
+            .estimate_text_size(text, &TextStyle::from((FONT, size).into_font()))
+            .map_err(de)?;
         if tw + 24 <= w {
             break;
         }
         size -= 1.0;
     }
-    let style = TextStyle::from((FONT, size).into_font()).pos(plotters::style::text_anchor::Pos::new(
-        plotters::style::text_anchor::HPos::Center,
-        plotters::style::text_anchor::VPos::Center,
-    ));
-    area.draw(&Text::new(text.to_string(), (w as i32 / 2, h as i32 / 2), style)).map_err(de)?;
+    let style =
+        TextStyle::from((FONT, size).into_font()).pos(plotters::style::text_anchor::Pos::new(
+            plotters::style::text_anchor::HPos::Center,
+            plotters::style::text_anchor::VPos::Center,
+        ));
+    area.draw(&Text::new(
+        text.to_string(),
+        (w as i32 / 2, h as i32 / 2),
+        style,
+    ))
+    .map_err(de)?;
     Ok(())
 }
 
@@ -150,4 +189,3 @@ pub(super) fn log_tick(v: f64) -> String {
         format!("{v:.0e}")
     }
 }
-

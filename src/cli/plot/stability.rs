@@ -88,10 +88,18 @@ fn edges(v: &[f64]) -> Vec<f64> {
 
 impl Painter for MapPicture<'_, '_> {
     type Out = StabilityGeometry;
-    fn paint<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>, _format: Format) -> CliResult<StabilityGeometry> {
+    fn paint<DB: DrawingBackend>(
+        &self,
+        root: &DrawingArea<DB, Shift>,
+        _format: Format,
+    ) -> CliResult<StabilityGeometry> {
         let g = self.grid;
         let (top, rest) = root.split_vertically(44);
-        draw_title(&top, "Squeal stability map — max Re λ: red growing, blue decaying; black: threshold μ_c(Ω)", 20.0)?;
+        draw_title(
+            &top,
+            "Squeal stability map — max Re λ: red growing, blue decaying; black: threshold μ_c(Ω)",
+            20.0,
+        )?;
         let (xe, ye) = (edges(g.speeds), edges(g.mu));
         let (x0, x1, y0, y1) = (xe[0], xe[xe.len() - 1], ye[0], ye[ye.len() - 1]);
         let mut chart = ChartBuilder::on(&rest)
@@ -112,16 +120,34 @@ impl Painter for MapPicture<'_, '_> {
             .draw()
             .map_err(de)?;
         let rates = g.growth_rate.iter().flatten();
-        let max_pos = rates.clone().filter(|r| **r > 0.0).fold(0.0f64, |a, &r| a.max(r));
+        let max_pos = rates
+            .clone()
+            .filter(|r| **r > 0.0)
+            .fold(0.0f64, |a, &r| a.max(r));
         let max_neg = rates.filter(|r| **r <= 0.0).fold(0.0f64, |a, &r| a.max(-r));
         let mut cells = Vec::new();
         for (s, row) in g.growth_rate.iter().enumerate() {
             for (m, &rate) in row.iter().enumerate() {
                 let growing = rate > 0.0;
-                let t = if growing { rate / max_pos } else if max_neg > 0.0 { -rate / max_neg } else { 0.0 };
+                let t = if growing {
+                    rate / max_pos
+                } else if max_neg > 0.0 {
+                    -rate / max_neg
+                } else {
+                    0.0
+                };
                 let shade = (255.0 * (0.7 - 0.55 * t.clamp(0.0, 1.0))) as u8;
-                let color = if growing { RGBColor(230, shade, shade) } else { RGBColor(shade, shade, 230) };
-                chart.draw_series(std::iter::once(Rectangle::new([(xe[s], ye[m]), (xe[s + 1], ye[m + 1])], color.filled()))).map_err(de)?;
+                let color = if growing {
+                    RGBColor(230, shade, shade)
+                } else {
+                    RGBColor(shade, shade, 230)
+                };
+                chart
+                    .draw_series(std::iter::once(Rectangle::new(
+                        [(xe[s], ye[m]), (xe[s + 1], ye[m + 1])],
+                        color.filled(),
+                    )))
+                    .map_err(de)?;
                 let (px, py) = chart.backend_coord(&(g.speeds[s], g.mu[m]));
                 cells.push((px, py, growing));
             }
@@ -133,14 +159,20 @@ impl Painter for MapPicture<'_, '_> {
         let label_style = TextStyle::from((FONT, 14).into_font()).color(&BLACK);
         let (mu_first, mu_last) = (g.mu[0], g.mu[g.mu.len() - 1]);
         for (i, (&s, t)) in g.speeds.iter().zip(g.threshold_mu).enumerate() {
-            let unstable_at_first = g.growth_rate.get(i).and_then(|r| r.first()).is_some_and(|&r| r > 0.0);
+            let unstable_at_first = g
+                .growth_rate
+                .get(i)
+                .and_then(|r| r.first())
+                .is_some_and(|&r| r > 0.0);
             // Where the threshold lies and the bound to write at the edge:
             // unstable already at the first μ, it is at or below that μ (the
             // map does not know where); stable over the range, above the last.
             let (place, bound) = match *t {
                 None if unstable_at_first => continue,
                 None => (Placement::Above, format!("> {mu_last}")),
-                Some(t) if unstable_at_first && t <= mu_first => (Placement::Below, format!("≤ {mu_first}")),
+                Some(t) if unstable_at_first && t <= mu_first => {
+                    (Placement::Below, format!("≤ {mu_first}"))
+                }
                 Some(t) => match placement(t, y0, y1) {
                     Placement::Within => (Placement::Within, String::new()),
                     Placement::Below => (Placement::Below, format!("< {}", tick(y0, y1 - y0))),
@@ -150,8 +182,16 @@ impl Painter for MapPicture<'_, '_> {
             let mu = t.unwrap_or(f64::INFINITY);
             if place == Placement::Within {
                 runs.last_mut().expect("one run at least").push((s, mu));
-                chart.draw_series(std::iter::once(Circle::new((s, mu), 4, BLACK.filled()))).map_err(de)?;
-                thresholds.push(ThresholdMark { speed: s, mu, placement: place, pixel: chart.backend_coord(&(s, mu)), label: None });
+                chart
+                    .draw_series(std::iter::once(Circle::new((s, mu), 4, BLACK.filled())))
+                    .map_err(de)?;
+                thresholds.push(ThresholdMark {
+                    speed: s,
+                    mu,
+                    placement: place,
+                    pixel: chart.backend_coord(&(s, mu)),
+                    label: None,
+                });
                 continue;
             }
             runs.push(Vec::new());
@@ -162,13 +202,34 @@ impl Painter for MapPicture<'_, '_> {
             let dir = if below { -1 } else { 1 };
             // (pixel y grows downwards: the body of a downward arrow is above its tip)
             let base = tip.1 + dir * 14;
-            root.draw(&Polygon::new(vec![tip, (tip.0 - 7, base), (tip.0 + 7, base)], BLACK.filled())).map_err(de)?;
-            root.draw(&PathElement::new(vec![(tip.0, base), (tip.0, base + dir * 12)], BLACK.stroke_width(2))).map_err(de)?;
-            root.draw(&Text::new(bound.clone(), (tip.0 + 9, base + dir * 6 - 7), label_style.clone())).map_err(de)?;
-            thresholds.push(ThresholdMark { speed: s, mu, placement: place, pixel: tip, label: Some(bound) });
+            root.draw(&Polygon::new(
+                vec![tip, (tip.0 - 7, base), (tip.0 + 7, base)],
+                BLACK.filled(),
+            ))
+            .map_err(de)?;
+            root.draw(&PathElement::new(
+                vec![(tip.0, base), (tip.0, base + dir * 12)],
+                BLACK.stroke_width(2),
+            ))
+            .map_err(de)?;
+            root.draw(&Text::new(
+                bound.clone(),
+                (tip.0 + 9, base + dir * 6 - 7),
+                label_style.clone(),
+            ))
+            .map_err(de)?;
+            thresholds.push(ThresholdMark {
+                speed: s,
+                mu,
+                placement: place,
+                pixel: tip,
+                label: Some(bound),
+            });
         }
         for run in runs.into_iter().filter(|r| r.len() > 1) {
-            chart.draw_series(LineSeries::new(run, BLACK.stroke_width(2))).map_err(de)?;
+            chart
+                .draw_series(LineSeries::new(run, BLACK.stroke_width(2)))
+                .map_err(de)?;
         }
         Ok(StabilityGeometry { cells, thresholds })
     }

@@ -67,17 +67,32 @@ impl BlockPropagator {
 
     /// Recompute e^{Âh} for the family `modes` (mode indices over l) of
     /// `block` if (h, Ω̄², ν) changed.
-    pub fn update(&mut self, block: &StiffeningBlock, modes: &[usize], consts: &[ModeConstants], h: f64, speed_sq: f64, nu: f64) {
+    pub fn update(
+        &mut self,
+        block: &StiffeningBlock,
+        modes: &[usize],
+        consts: &[ModeConstants],
+        h: f64,
+        speed_sq: f64,
+        nu: f64,
+    ) {
         if self.h == h && self.speed_sq == speed_sq && self.nu == nu {
             return;
         }
         let n = self.n;
         let d = 5 * n;
         let stiffness = |a: usize, b: usize| {
-            let own = if a == b { consts[modes[a]].omega_eff_sq } else { 0.0 };
+            let own = if a == b {
+                consts[modes[a]].omega_eff_sq
+            } else {
+                0.0
+            };
             own + speed_sq * block.g_over_m[a * n + b]
         };
-        let top = (0..n).map(|a| stiffness(a, a).abs()).fold(0.0f64, f64::max).sqrt();
+        let top = (0..n)
+            .map(|a| stiffness(a, a).abs())
+            .fold(0.0f64, f64::max)
+            .sqrt();
         let sigma = if top * h > 1e-3 { top } else { 1.0 / h };
         let a_hat = &mut self.work[0];
         a_hat.fill(0.0);
@@ -103,13 +118,21 @@ impl BlockPropagator {
     /// Take over `other`'s exponential (same constants): no allocation.
     pub fn copy_from(&mut self, other: &BlockPropagator) {
         self.exp.copy_from_slice(&other.exp);
-        (self.sigma, self.h, self.speed_sq, self.nu) = (other.sigma, other.h, other.speed_sq, other.nu);
+        (self.sigma, self.h, self.speed_sq, self.nu) =
+            (other.sigma, other.h, other.speed_sq, other.nu);
     }
 
     /// Advance the family `modes` (mode indices over l) in place under the
     /// plate-frame forces `f_const[a]` and the turning ones Re[g[a] e^{iνt}].
     #[inline]
-    pub fn advance(&mut self, consts: &[ModeConstants], modes: &[usize], q: &mut [f64], v: &mut [f64], force: impl Fn(usize) -> (f64, Complex<f64>)) {
+    pub fn advance(
+        &mut self,
+        consts: &[ModeConstants],
+        modes: &[usize],
+        q: &mut [f64],
+        v: &mut [f64],
+        force: impl Fn(usize) -> (f64, Complex<f64>),
+    ) {
         let n = self.n;
         let d = 5 * n;
         let sigma = self.sigma;
@@ -123,7 +146,13 @@ impl BlockPropagator {
             self.y_in[4 * n + a] = g.im * scale;
         }
         for (a, &i) in modes.iter().enumerate() {
-            let row = |r: usize| self.exp[r * d..(r + 1) * d].iter().zip(&self.y_in).map(|(e, y)| e * y).sum::<f64>();
+            let row = |r: usize| {
+                self.exp[r * d..(r + 1) * d]
+                    .iter()
+                    .zip(&self.y_in)
+                    .map(|(e, y)| e * y)
+                    .sum::<f64>()
+            };
             q[i] = row(a);
             v[i] = sigma * row(n + a);
         }
@@ -160,22 +189,38 @@ pub fn advance(
         let Some(p) = props.next() else { return };
         p.update(b, &b.cos, consts, h, speed_sq, nu);
         if b.k == 0 {
-            p.advance(consts, &b.cos, q, v, |a| (ale[b.cos[a]], Complex::new(0.0, 0.0)));
+            p.advance(consts, &b.cos, q, v, |a| {
+                (ale[b.cos[a]], Complex::new(0.0, 0.0))
+            });
             continue;
         }
         let (co, si) = harm[b.k as usize];
         let e0 = Complex::new(co, si);
         // As the scalar step: cos mode (f_c − i f_s) e^{ikχ₀}, sin mode (f_s + i f_c) e^{ikχ₀}.
-        p.advance(consts, &b.cos, q, v, |a| (plate[b.cos[a]], Complex::new(ale[b.cos[a]], -ale[b.sin[a]]) * e0));
+        p.advance(consts, &b.cos, q, v, |a| {
+            (
+                plate[b.cos[a]],
+                Complex::new(ale[b.cos[a]], -ale[b.sin[a]]) * e0,
+            )
+        });
         let Some(p_sin) = props.next() else { return };
-        if b.cos.iter().zip(&b.sin).all(|(&c, &s)| consts[c] == consts[s]) {
+        if b.cos
+            .iter()
+            .zip(&b.sin)
+            .all(|(&c, &s)| consts[c] == consts[s])
+        {
             if (p_sin.h, p_sin.speed_sq, p_sin.nu) != (h, speed_sq, nu) {
                 p_sin.copy_from(p);
             }
         } else {
             p_sin.update(b, &b.sin, consts, h, speed_sq, nu);
         }
-        p_sin.advance(consts, &b.sin, q, v, |a| (plate[b.sin[a]], Complex::new(ale[b.sin[a]], ale[b.cos[a]]) * e0));
+        p_sin.advance(consts, &b.sin, q, v, |a| {
+            (
+                plate[b.sin[a]],
+                Complex::new(ale[b.sin[a]], ale[b.cos[a]]) * e0,
+            )
+        });
     }
 }
 
@@ -183,8 +228,14 @@ pub fn advance(
 /// Taylor polynomial by Horner); `work` is overwritten.
 fn expm(d: usize, work: &mut [Vec<f64>; 3], out: &mut [f64]) {
     let [b, p, tmp] = work;
-    let norm = (0..d).map(|j| (0..d).map(|i| b[i * d + j].abs()).sum::<f64>()).fold(0.0f64, f64::max);
-    let squarings = if norm > SCALED_NORM { (norm / SCALED_NORM).log2().ceil() as i32 } else { 0 };
+    let norm = (0..d)
+        .map(|j| (0..d).map(|i| b[i * d + j].abs()).sum::<f64>())
+        .fold(0.0f64, f64::max);
+    let squarings = if norm > SCALED_NORM {
+        (norm / SCALED_NORM).log2().ceil() as i32
+    } else {
+        0
+    };
     let scale = 0.5f64.powi(squarings);
     b.iter_mut().for_each(|x| *x *= scale);
     // P = I; P ← I + B P / j for j = m … 1.
@@ -235,11 +286,22 @@ mod tests {
     type C = Complex<f64>;
 
     fn block(n: usize, g: Vec<f64>) -> StiffeningBlock {
-        StiffeningBlock { k: 2, cos: (0..n).collect(), sin: vec![], g_over_m: g }
+        StiffeningBlock {
+            k: 2,
+            cos: (0..n).collect(),
+            sin: vec![],
+            g_over_m: g,
+        }
     }
 
     fn consts(m: &[f64], zeta: &[f64], w: &[f64]) -> Vec<ModeConstants> {
-        (0..m.len()).map(|i| ModeConstants { mass: m[i], damping_rate: 2.0 * zeta[i] * w[i], omega_eff_sq: w[i] * w[i] }).collect()
+        (0..m.len())
+            .map(|i| ModeConstants {
+                mass: m[i],
+                damping_rate: 2.0 * zeta[i] * w[i],
+                omega_eff_sq: w[i] * w[i],
+            })
+            .collect()
     }
 
     #[test]
@@ -260,8 +322,16 @@ mod tests {
                 let zeta = c[a].damping_rate / (2.0 * w);
                 let s = ModePropagator::new(c[a].mass, zeta, w, 0.0, h, nu);
                 let (qs, vs) = s.advance(q0[a], v0[a], f[a].0, f[a].1);
-                assert!((q[a] - qs).abs() < 1e-12 * qs.abs().max(1e-3), "h {h}: q {} vs {qs}", q[a]);
-                assert!((v[a] - vs).abs() < 1e-11 * vs.abs().max(1e-2), "h {h}: v {} vs {vs}", v[a]);
+                assert!(
+                    (q[a] - qs).abs() < 1e-12 * qs.abs().max(1e-3),
+                    "h {h}: q {} vs {qs}",
+                    q[a]
+                );
+                assert!(
+                    (v[a] - vs).abs() < 1e-11 * vs.abs().max(1e-2),
+                    "h {h}: v {} vs {vs}",
+                    v[a]
+                );
             }
         }
     }
@@ -269,12 +339,26 @@ mod tests {
     #[test]
     fn coupled_block_matches_a_fine_rk4() {
         let c = consts(&[2.0, 0.7, 1.3], &[0.02, 0.05, 0.0], &[50.0, 140.0, 300.0]);
-        let g = vec![0.01, 0.004, -0.002, 0.004 * 2.0 / 0.7, 0.03, 0.006, -0.002 * 2.0 / 1.3, 0.006 * 0.7 / 1.3, 0.05];
+        let g = vec![
+            0.01,
+            0.004,
+            -0.002,
+            0.004 * 2.0 / 0.7,
+            0.03,
+            0.006,
+            -0.002 * 2.0 / 1.3,
+            0.006 * 0.7 / 1.3,
+            0.05,
+        ];
         let b = block(3, g);
         let (h, nu, spin2) = (0.08, 37.0, 1.0e5);
         let mut p = BlockPropagator::new(3);
         p.update(&b, &[0, 1, 2], &c, h, spin2, nu);
-        let f = [(0.5, C::new(0.7, -0.4)), (-0.2, C::new(0.1, 0.3)), (0.0, C::new(-1.0, 0.2))];
+        let f = [
+            (0.5, C::new(0.7, -0.4)),
+            (-0.2, C::new(0.1, 0.3)),
+            (0.0, C::new(-1.0, 0.2)),
+        ];
         let (mut q, mut v) = (vec![1e-3, -2e-3, 5e-4], vec![-0.02, 0.05, 0.0]);
         let (mut qr, mut vr) = (q.clone(), v.clone());
         p.advance(&c, &[0, 1, 2], &mut q, &mut v, |a| f[a]);
@@ -283,7 +367,10 @@ mod tests {
             for a in 0..3 {
                 let gq: f64 = (0..3).map(|x| b.g_over_m[a * 3 + x] * q[x]).sum();
                 let load = f[a].0 + (f[a].1 * C::new(0.0, nu * t).exp()).re;
-                out[a] = load / c[a].mass - c[a].damping_rate * v[a] - c[a].omega_eff_sq * q[a] - spin2 * gq;
+                out[a] = load / c[a].mass
+                    - c[a].damping_rate * v[a]
+                    - c[a].omega_eff_sq * q[a]
+                    - spin2 * gq;
             }
         };
         let steps = 400_000;
@@ -291,7 +378,8 @@ mod tests {
         let mut t = 0.0;
         let (mut a1, mut a2, mut a3, mut a4) = ([0.0; 3], [0.0; 3], [0.0; 3], [0.0; 3]);
         for _ in 0..steps {
-            let shift = |x: &[f64], d: &[f64], s: f64| [x[0] + s * d[0], x[1] + s * d[1], x[2] + s * d[2]];
+            let shift =
+                |x: &[f64], d: &[f64], s: f64| [x[0] + s * d[0], x[1] + s * d[1], x[2] + s * d[2]];
             acc(t, &qr, &vr, &mut a1);
             let (q2, v2) = (shift(&qr, &vr, 0.5 * dt), shift(&vr, &a1, 0.5 * dt));
             acc(t + 0.5 * dt, &q2, &v2, &mut a2);
@@ -306,8 +394,18 @@ mod tests {
             t += dt;
         }
         for x in 0..3 {
-            assert!((q[x] - qr[x]).abs() < 1e-10 * qr.iter().fold(0.0f64, |m, y| m.max(y.abs())), "q{x}: {} vs {}", q[x], qr[x]);
-            assert!((v[x] - vr[x]).abs() < 1e-9 * vr.iter().fold(0.0f64, |m, y| m.max(y.abs())), "v{x}: {} vs {}", v[x], vr[x]);
+            assert!(
+                (q[x] - qr[x]).abs() < 1e-10 * qr.iter().fold(0.0f64, |m, y| m.max(y.abs())),
+                "q{x}: {} vs {}",
+                q[x],
+                qr[x]
+            );
+            assert!(
+                (v[x] - vr[x]).abs() < 1e-9 * vr.iter().fold(0.0f64, |m, y| m.max(y.abs())),
+                "v{x}: {} vs {}",
+                v[x],
+                vr[x]
+            );
         }
     }
 }

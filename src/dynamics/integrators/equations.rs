@@ -27,14 +27,24 @@ pub fn mode_constants(scene: &Scene) -> Vec<ModeConstants> {
         .model
         .modes()
         .iter()
-        .map(|m| ModeConstants { mass: m.modal_mass, damping_rate: 2.0 * m.damping * m.omega, omega_eff_sq: m.omega * m.omega - soft })
+        .map(|m| ModeConstants {
+            mass: m.modal_mass,
+            damping_rate: 2.0 * m.damping * m.omega,
+            omega_eff_sq: m.omega * m.omega - soft,
+        })
         .collect()
 }
 
 /// A pair's total force (cos, sin) resolved in `coords`, at the instant whose
 /// (cos kχ, sin kχ) is `harm_k`: Lagrangian f = f_B + Rᵀ f̄, ALE f̄ + R f_B.
 #[inline]
-pub fn pair_force(coords: Coordinates, harm_k: (f64, f64), p: &ModePair, ale_frame: &[f64], plate_frame: &[f64]) -> (f64, f64) {
+pub fn pair_force(
+    coords: Coordinates,
+    harm_k: (f64, f64),
+    p: &ModePair,
+    ale_frame: &[f64],
+    plate_frame: &[f64],
+) -> (f64, f64) {
     let (co, si) = harm_k;
     let (ic, is) = (p.cos, p.sin);
     match coords {
@@ -85,9 +95,11 @@ pub fn accelerations(
                 let ka = p.k as f64 * accel;
                 let stiff = kw * kw - c.omega_eff_sq;
                 let skew = ka + c.damping_rate * kw; // coefficient of J q̄
-                // J x = (−x_s, x_c)
-                acc[ic] = fc / c.mass + 2.0 * kw * (-v[is]) + skew * (-q[is]) + stiff * q[ic] - c.damping_rate * v[ic];
-                acc[is] = fs / c.mass + 2.0 * kw * v[ic] + skew * q[ic] + stiff * q[is] - c.damping_rate * v[is];
+                                                     // J x = (−x_s, x_c)
+                acc[ic] = fc / c.mass + 2.0 * kw * (-v[is]) + skew * (-q[is]) + stiff * q[ic]
+                    - c.damping_rate * v[ic];
+                acc[is] = fs / c.mass + 2.0 * kw * v[ic] + skew * q[ic] + stiff * q[is]
+                    - c.damping_rate * v[is];
             }
         }
     }

@@ -34,8 +34,14 @@ pub struct ModePropagator {
 }
 
 impl ModePropagator {
-    pub const UNSET: ModePropagator =
-        ModePropagator { h: f64::NAN, nu: f64::NAN, omega_eff_sq: f64::NAN, e: [0.0; 4], gamma0: [0.0; 2], gamma_nu: [C { re: 0.0, im: 0.0 }; 2] };
+    pub const UNSET: ModePropagator = ModePropagator {
+        h: f64::NAN,
+        nu: f64::NAN,
+        omega_eff_sq: f64::NAN,
+        e: [0.0; 4],
+        gamma0: [0.0; 2],
+        gamma_nu: [C { re: 0.0, im: 0.0 }; 2],
+    };
 
     /// The propagator for mass m, damping ratio ζ and circular frequency ω,
     /// with stiffness softened to ω_eff² = ω² − softening.
@@ -50,14 +56,23 @@ impl ModePropagator {
         let e = [ec + a * es, es, -w2 * es, ec - a * es];
         let gamma0 = forced(m, a, d2, h, 0.0).map(|z| z.re);
         let gamma_nu = forced(m, a, d2, h, nu);
-        ModePropagator { h, nu, omega_eff_sq: w2, e, gamma0, gamma_nu }
+        ModePropagator {
+            h,
+            nu,
+            omega_eff_sq: w2,
+            e,
+            gamma0,
+            gamma_nu,
+        }
     }
 
     /// Advance (q, q̇) by h under f_B + Re[G e^{iνt}].
     #[inline]
     pub fn advance(&self, q: f64, v: f64, f_const: f64, g: C) -> (f64, f64) {
-        let q1 = self.e[0] * q + self.e[1] * v + self.gamma0[0] * f_const + (g * self.gamma_nu[0]).re;
-        let v1 = self.e[2] * q + self.e[3] * v + self.gamma0[1] * f_const + (g * self.gamma_nu[1]).re;
+        let q1 =
+            self.e[0] * q + self.e[1] * v + self.gamma0[0] * f_const + (g * self.gamma_nu[0]).re;
+        let v1 =
+            self.e[2] * q + self.e[3] * v + self.gamma0[1] * f_const + (g * self.gamma_nu[1]).re;
         (q1, v1)
     }
 }
@@ -86,16 +101,35 @@ mod tests {
     use super::*;
 
     /// Reference: RK4 with a tiny step on q̈ + 2ζωq̇ + ω_eff²q = (f + Re[g e^{iνt}])/m.
-    fn reference(m: f64, zeta: f64, w: f64, soft: f64, h: f64, nu: f64, q0: f64, v0: f64, f: f64, g: C) -> (f64, f64) {
+    fn reference(
+        m: f64,
+        zeta: f64,
+        w: f64,
+        soft: f64,
+        h: f64,
+        nu: f64,
+        q0: f64,
+        v0: f64,
+        f: f64,
+        g: C,
+    ) -> (f64, f64) {
         let n = 200_000;
         let dt = h / n as f64;
         let w2 = w * w - soft;
-        let acc = |t: f64, q: f64, v: f64| (f + (g * C::new(0.0, nu * t).exp()).re) / m - 2.0 * zeta * w * v - w2 * q;
+        let acc = |t: f64, q: f64, v: f64| {
+            (f + (g * C::new(0.0, nu * t).exp()).re) / m - 2.0 * zeta * w * v - w2 * q
+        };
         let (mut q, mut v, mut t) = (q0, v0, 0.0);
         for _ in 0..n {
             let (k1q, k1v) = (v, acc(t, q, v));
-            let (k2q, k2v) = (v + 0.5 * dt * k1v, acc(t + 0.5 * dt, q + 0.5 * dt * k1q, v + 0.5 * dt * k1v));
-            let (k3q, k3v) = (v + 0.5 * dt * k2v, acc(t + 0.5 * dt, q + 0.5 * dt * k2q, v + 0.5 * dt * k2v));
+            let (k2q, k2v) = (
+                v + 0.5 * dt * k1v,
+                acc(t + 0.5 * dt, q + 0.5 * dt * k1q, v + 0.5 * dt * k1v),
+            );
+            let (k3q, k3v) = (
+                v + 0.5 * dt * k2v,
+                acc(t + 0.5 * dt, q + 0.5 * dt * k2q, v + 0.5 * dt * k2v),
+            );
             let (k4q, k4v) = (v + dt * k3v, acc(t + dt, q + dt * k3q, v + dt * k3v));
             q += dt / 6.0 * (k1q + 2.0 * k2q + 2.0 * k3q + k4q);
             v += dt / 6.0 * (k1v + 2.0 * k2v + 2.0 * k3v + k4v);
@@ -119,8 +153,14 @@ mod tests {
             let (q, v) = p.advance(1e-3, -0.02, 0.5, g);
             let (qr, vr) = reference(2.0, zeta, w, soft, h, nu, 1e-3, -0.02, 0.5, g);
             let scale = qr.abs().max(1e-4);
-            assert!((q - qr).abs() < 1e-9 * scale.max(1.0) + 1e-10, "{zeta} {w}: q {q} vs {qr}");
-            assert!((v - vr).abs() < 1e-8 * vr.abs().max(1.0), "{zeta} {w}: v {v} vs {vr}");
+            assert!(
+                (q - qr).abs() < 1e-9 * scale.max(1.0) + 1e-10,
+                "{zeta} {w}: q {q} vs {qr}"
+            );
+            assert!(
+                (v - vr).abs() < 1e-8 * vr.abs().max(1.0),
+                "{zeta} {w}: v {v} vs {vr}"
+            );
         }
     }
 }

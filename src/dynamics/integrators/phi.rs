@@ -72,7 +72,10 @@ mod tests {
         for &z in &[C::new(0.4999, 0.0), C::new(0.0, 0.4999), C::new(-0.3, 0.39)] {
             let inside = phi1(z);
             let outside = (z.exp() - 1.0) / z;
-            assert!((inside - outside).norm() < 1e-14, "{z}: {inside} vs {outside}");
+            assert!(
+                (inside - outside).norm() < 1e-14,
+                "{z}: {inside} vs {outside}"
+            );
             let dp = phi1_prime(z);
             let dp_closed = (z.exp() * (z - 1.0) + 1.0) / (z * z);
             assert!((dp - dp_closed).norm() < 1e-12, "{z}: {dp} vs {dp_closed}");

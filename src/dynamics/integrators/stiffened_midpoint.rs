@@ -27,8 +27,17 @@ pub struct StiffenedMidpoint {
 
 impl StiffenedMidpoint {
     pub fn new(stiffening: Option<&Stiffening>) -> StiffenedMidpoint {
-        let d = stiffening.map_or(0, |s| s.blocks.iter().map(|b| 4 * b.len()).max().unwrap_or(0));
-        StiffenedMidpoint { a: vec![0.0; d * d], lhs: vec![0.0; d * d], rhs: vec![0.0; d], y: vec![0.0; d], perm: vec![0; d], buf: vec![0.0; d] }
+        let d = stiffening.map_or(0, |s| {
+            s.blocks.iter().map(|b| 4 * b.len()).max().unwrap_or(0)
+        });
+        StiffenedMidpoint {
+            a: vec![0.0; d * d],
+            lhs: vec![0.0; d * d],
+            rhs: vec![0.0; d],
+            y: vec![0.0; d],
+            perm: vec![0; d],
+            buf: vec![0.0; d],
+        }
     }
 
     /// Advance (q, v) in place over h; arguments as [`implicit_midpoint::advance`](super::implicit_midpoint::advance).
@@ -63,7 +72,11 @@ impl StiffenedMidpoint {
                 for r in 0..n {
                     let row = m + f * n + r;
                     // In ALE coordinates a pair takes its cos mode's constants, as in implicit_midpoint.rs.
-                    let c = if coords == Coordinates::Ale { consts[b.cos[r]] } else { consts[index(f, r)] };
+                    let c = if coords == Coordinates::Ale {
+                        consts[b.cos[r]]
+                    } else {
+                        consts[index(f, r)]
+                    };
                     a[(f * n + r) * d + row] = 1.0;
                     a[row * d + f * n + r] -= c.omega_eff_sq;
                     a[row * d + row] -= c.damping_rate;
@@ -78,9 +91,14 @@ impl StiffenedMidpoint {
                 }
             } else {
                 for r in 0..n {
-                    let p = ModePair { k: b.k, cos: b.cos[r], sin: b.sin[r] };
+                    let p = ModePair {
+                        k: b.k,
+                        cos: b.cos[r],
+                        sin: b.sin[r],
+                    };
                     let c = consts[p.cos];
-                    let (fc, fs) = pair_force(coords, harm_mid[p.k as usize], &p, ale_frame, plate_frame);
+                    let (fc, fs) =
+                        pair_force(coords, harm_mid[p.k as usize], &p, ale_frame, plate_frame);
                     let (rc, rs) = (m + r, m + n + r);
                     g[rc] = fc / c.mass;
                     g[rs] = fs / c.mass;

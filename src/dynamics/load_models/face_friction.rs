@@ -49,10 +49,21 @@ pub fn face_kinematics(node: &NodeFrame, q: &[f64], q_dot: &[f64], speed: f64) -
 /// (sin θ, cos θ) = `sin_cos`, relative to the pad (normal part only with
 /// `follower`), m/s.
 #[inline]
-pub fn sliding_velocity(k: &FaceKinematics, z: f64, radius: f64, sin_cos: (f64, f64), speed: f64, follower: bool) -> [f64; 3] {
+pub fn sliding_velocity(
+    k: &FaceKinematics,
+    z: f64,
+    radius: f64,
+    sin_cos: (f64, f64),
+    speed: f64,
+    follower: bool,
+) -> [f64; 3] {
     let (s, c) = sin_cos;
     let v = speed * radius;
-    [-s * v - z * k.grad_material_rate[0], c * v - z * k.grad_material_rate[1], if follower { k.normal_rate } else { 0.0 }]
+    [
+        -s * v - z * k.grad_material_rate[0],
+        c * v - z * k.grad_material_rate[1],
+        if follower { k.normal_rate } else { 0.0 },
+    ]
 }
 
 /// The friction coefficient as a function of the sliding speed:
@@ -87,7 +98,12 @@ impl FrictionLaw {
 /// Regularised Coulomb friction on the disc for normal force `normal` (≥ 0)
 /// and sliding velocity `v`: −μ(|v|) N tanh(|v|/v_reg) v/|v|, N.
 #[inline]
-pub fn friction_force(law: &FrictionLaw, normal: f64, v: [f64; 3], regularisation_speed: f64) -> [f64; 3] {
+pub fn friction_force(
+    law: &FrictionLaw,
+    normal: f64,
+    v: [f64; 3],
+    regularisation_speed: f64,
+) -> [f64; 3] {
     let speed = (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt();
     if speed == 0.0 {
         return [0.0; 3];

@@ -33,7 +33,10 @@ pub mod point_spring;
 pub mod tool;
 pub mod undo;
 
-pub use model::{contact_rate, surface_kinematics, Builder, SurfaceKinematics, CommandRule, CommandSpec, Coupling, LoadContext, LoadModel, ModelOut, SceneNodes};
+pub use model::{
+    contact_rate, surface_kinematics, Builder, CommandRule, CommandSpec, Coupling, LoadContext,
+    LoadModel, ModelOut, SceneNodes, SurfaceKinematics,
+};
 
 pub use pad::{ContactForces, PadContactPoint, PadScratch, Pads};
 pub use pitch_link::PitchLinks;
@@ -49,7 +52,12 @@ use std::any::Any;
 use std::ops::Range;
 
 /// Every load model, once, in evaluation order. A new model: its file and one line here.
-pub const REGISTRY: &[Builder] = &[pad::build, tool::build, pitch_link::build, point_spring::build];
+pub const REGISTRY: &[Builder] = &[
+    pad::build,
+    tool::build,
+    pitch_link::build,
+    point_spring::build,
+];
 
 /// The scene's load models (immutable) with the layout of their commands.
 #[derive(Debug, Default)]
@@ -118,7 +126,10 @@ impl ModelWrenches {
             lagrange: vec![Wrench::default(); n_lagrange],
             ale_follower: vec![false; n_ale],
             lagrange_follower: vec![false; n_lagrange],
-            friction: vec![FrictionTorque::default(); lm.friction_ranges.last().map_or(0, |r| r.end)],
+            friction: vec![
+                FrictionTorque::default();
+                lm.friction_ranges.last().map_or(0, |r| r.end)
+            ],
             rates: vec![0.0; lm.continuous_states()],
             scratch: lm.models.iter().map(|m| m.new_scratch()).collect(),
         }
@@ -131,8 +142,12 @@ impl ModelWrenches {
 
     fn clear(&mut self) {
         self.ale.iter_mut().for_each(|w| *w = Wrench::default());
-        self.lagrange.iter_mut().for_each(|w| *w = Wrench::default());
-        self.friction.iter_mut().for_each(|f| *f = FrictionTorque::default());
+        self.lagrange
+            .iter_mut()
+            .for_each(|w| *w = Wrench::default());
+        self.friction
+            .iter_mut()
+            .for_each(|f| *f = FrictionTorque::default());
     }
 }
 
@@ -142,7 +157,10 @@ pub const HELD_COUPLING_LIMIT: f64 = 0.5;
 impl LoadModels {
     /// The registered models a configuration switches on.
     pub fn new(config: &Config, nodes: &SceneNodes) -> LoadModels {
-        let models: Vec<Box<dyn LoadModel>> = REGISTRY.iter().filter_map(|build| build(config, nodes)).collect();
+        let models: Vec<Box<dyn LoadModel>> = REGISTRY
+            .iter()
+            .filter_map(|build| build(config, nodes))
+            .collect();
         let mut friction_ranges = Vec::with_capacity(models.len());
         let mut end = 0;
         for m in &models {
@@ -168,11 +186,20 @@ impl LoadModels {
                     .collect()
             })
             .collect();
-        let coupling = models.iter().map(|m| m.coupling()).fold(Coupling::default(), |a, c| Coupling {
-            stiffness_rate_sq: a.stiffness_rate_sq + c.stiffness_rate_sq,
-            damping_rate: a.damping_rate + c.damping_rate,
-        });
-        LoadModels { models, command_ranges, friction_ranges, state_ranges, coupling }
+        let coupling = models
+            .iter()
+            .map(|m| m.coupling())
+            .fold(Coupling::default(), |a, c| Coupling {
+                stiffness_rate_sq: a.stiffness_rate_sq + c.stiffness_rate_sq,
+                damping_rate: a.damping_rate + c.damping_rate,
+            });
+        LoadModels {
+            models,
+            command_ranges,
+            friction_ranges,
+            state_ranges,
+            coupling,
+        }
     }
 
     pub fn is_empty(&self) -> bool {
@@ -186,12 +213,18 @@ impl LoadModels {
 
     /// Index and concrete type of the model of type `T`, if the scene has one.
     pub fn find<T: 'static>(&self) -> Option<(usize, &T)> {
-        self.models.iter().enumerate().find_map(|(i, m)| m.as_any().downcast_ref::<T>().map(|t| (i, t)))
+        self.models
+            .iter()
+            .enumerate()
+            .find_map(|(i, m)| m.as_any().downcast_ref::<T>().map(|t| (i, t)))
     }
 
     /// Instances of command `command` of model `model` (0 if either does not exist).
     pub fn instances(&self, model: usize, command: usize) -> usize {
-        self.command_ranges.get(model).and_then(|c| c.get(command)).map_or(0, |r| r.len())
+        self.command_ranges
+            .get(model)
+            .and_then(|c| c.get(command))
+            .map_or(0, |r| r.len())
     }
 
     /// Index of command `command`, instance `instance` in the model's command values.
@@ -231,12 +264,20 @@ impl LoadModels {
 
     /// Refuse integrators that hold a stiff model's forces over a substep of
     /// `h`, and any but RK4 for models with continuous states.
-    pub fn check_integrator(&self, integrator: IntegratorKind, h: f64) -> Result<(), SimulationError> {
+    pub fn check_integrator(
+        &self,
+        integrator: IntegratorKind,
+        h: f64,
+    ) -> Result<(), SimulationError> {
         if integrator == IntegratorKind::Rk4 {
             return Ok(());
         }
         if let Some(m) = self.models.iter().find(|m| m.continuous_states() > 0) {
-            return Err(SimulationError::ContinuousStateNeedsRk4 { model: m.name(), keys: m.coupling_keys(), integrator: integrator.name() });
+            return Err(SimulationError::ContinuousStateNeedsRk4 {
+                model: m.name(),
+                keys: m.coupling_keys(),
+                integrator: integrator.name(),
+            });
         }
         for m in &self.models {
             let c = m.coupling();
@@ -257,7 +298,9 @@ impl LoadModels {
 
     /// The commands the scene starts with.
     pub fn initial_commands(&self) -> LoadCommands {
-        LoadCommands { values: self.models.iter().map(|m| m.initial_commands()).collect() }
+        LoadCommands {
+            values: self.models.iter().map(|m| m.initial_commands()).collect(),
+        }
     }
 
     /// Put `commands` back to the initial ones, reusing the buffers.
@@ -271,12 +314,17 @@ impl LoadModels {
 
     /// The state the scene starts with.
     pub fn initial_state(&self) -> LoadModelState {
-        LoadModelState { slots: self.models.iter().map(|m| m.initial_state()).collect() }
+        LoadModelState {
+            slots: self.models.iter().map(|m| m.initial_state()).collect(),
+        }
     }
 
     /// Whether every model's slot is finite (the divergence guard's check).
     pub fn state_is_finite(&self, state: &LoadModelState) -> bool {
-        self.models.iter().zip(&state.slots).all(|(m, slot)| m.slot_is_finite(slot))
+        self.models
+            .iter()
+            .zip(&state.slots)
+            .all(|(m, slot)| m.slot_is_finite(slot))
     }
 
     /// Before a substep of length `h`.
@@ -295,15 +343,34 @@ impl LoadModels {
 
     /// After a substep of length `h`.
     pub fn commit_substep(&self, state: &mut LoadModelState, commands: &LoadCommands, h: f64) {
-        for ((m, slot), c) in self.models.iter().zip(state.slots.iter_mut()).zip(&commands.values) {
+        for ((m, slot), c) in self
+            .models
+            .iter()
+            .zip(state.slots.iter_mut())
+            .zip(&commands.values)
+        {
             m.commit_substep(slot, c, h);
         }
     }
 
     /// Fill `out` with the wrenches of all models at one instant.
-    pub fn evaluate(&self, ctx: &LoadContext, state: &LoadModelState, commands: &LoadCommands, out: &mut ModelWrenches) {
+    pub fn evaluate(
+        &self,
+        ctx: &LoadContext,
+        state: &LoadModelState,
+        commands: &LoadCommands,
+        out: &mut ModelWrenches,
+    ) {
         out.clear();
-        let ModelWrenches { ale, lagrange, ale_follower, lagrange_follower, friction, rates, scratch } = out;
+        let ModelWrenches {
+            ale,
+            lagrange,
+            ale_follower,
+            lagrange_follower,
+            friction,
+            rates,
+            scratch,
+        } = out;
         for (i, m) in self.models.iter().enumerate() {
             let slot_out = ModelOut {
                 ale: ale.as_mut_slice(),
@@ -327,7 +394,14 @@ mod tests {
 
     #[test]
     fn command_rules_name_the_instance_and_keep_the_limits() {
-        let clamp = CommandSpec { instance: "pad", name: "clamp force", token: "clamp_force", unit: "N", indexed: true, rule: CommandRule::NonNegativeForce };
+        let clamp = CommandSpec {
+            instance: "pad",
+            name: "clamp force",
+            token: "clamp_force",
+            unit: "N",
+            indexed: true,
+            rule: CommandRule::NonNegativeForce,
+        };
         let limits = LimitsConfig::default();
         assert_eq!(clamp.check(0, 250.0, &limits), Ok(()));
         assert_eq!(clamp.check(0, limits.max_force, &limits), Ok(()));
@@ -335,17 +409,46 @@ mod tests {
             let e = clamp.check(0, bad, &limits).unwrap_err();
             assert!(e.to_string().contains("pad_1 clamp force"), "{e}");
         }
-        let feed = CommandSpec { instance: "tool", name: "feed rate", token: "feed", unit: "m/s", indexed: false, rule: CommandRule::MagnitudeAtMost(1.0) };
+        let feed = CommandSpec {
+            instance: "tool",
+            name: "feed rate",
+            token: "feed",
+            unit: "m/s",
+            indexed: false,
+            rule: CommandRule::MagnitudeAtMost(1.0),
+        };
         assert!(feed.check(0, -0.5, &limits).is_ok());
-        assert!(feed.check(0, 1.5, &limits).unwrap_err().to_string().starts_with("tool feed rate"));
+        assert!(feed
+            .check(0, 1.5, &limits)
+            .unwrap_err()
+            .to_string()
+            .starts_with("tool feed rate"));
     }
 
     #[test]
     fn the_contact_rate_is_the_largest_eigenvalue_of_the_mass_scaled_contact_stiffness() {
         // Two modes, two contacts: Σ w wᵀ = [[1, 0], [0, 4]] + [[1, 1], [1, 1]] over masses (2, 1).
         let shapes = [
-            vec![NodeShape { w: 1.0, tilt: [0.0; 2] }, NodeShape { w: 2.0, tilt: [0.0; 2] }],
-            vec![NodeShape { w: 1.0, tilt: [0.0; 2] }, NodeShape { w: -1.0, tilt: [0.0; 2] }],
+            vec![
+                NodeShape {
+                    w: 1.0,
+                    tilt: [0.0; 2],
+                },
+                NodeShape {
+                    w: 2.0,
+                    tilt: [0.0; 2],
+                },
+            ],
+            vec![
+                NodeShape {
+                    w: 1.0,
+                    tilt: [0.0; 2],
+                },
+                NodeShape {
+                    w: -1.0,
+                    tilt: [0.0; 2],
+                },
+            ],
         ];
         let refs: Vec<&[NodeShape]> = shapes.iter().map(|s| s.as_slice()).collect();
         let lam = contact_rate(&refs, &[2.0, 1.0]);

@@ -2,6 +2,7 @@
 //! ([`LoadContext`], [`SceneNodes`]), what it declares ([`CommandSpec`],
 //! [`Coupling`]) and where it writes ([`ModelOut`]).
 
+use super::undo::SlotUndo;
 use crate::config::{Config, LimitsConfig};
 use crate::dynamics::contact_compliance::HeldDeflection;
 use crate::dynamics::error::InputError;
@@ -9,7 +10,6 @@ use crate::dynamics::joint::FrictionTorque;
 use crate::dynamics::node_frame::{NodeFrame, NodeShape};
 use crate::dynamics::residual::ResidualCompliance;
 use crate::dynamics::wrench::Wrench;
-use super::undo::SlotUndo;
 use std::any::Any;
 use std::fmt::Debug;
 
@@ -78,19 +78,34 @@ impl CommandSpec {
     }
 
     /// Check `value` for instance `instance` (0-based) against the rule.
-    pub fn check(&self, instance: usize, value: f64, limits: &LimitsConfig) -> Result<(), InputError> {
+    pub fn check(
+        &self,
+        instance: usize,
+        value: f64,
+        limits: &LimitsConfig,
+    ) -> Result<(), InputError> {
         if !value.is_finite() {
-            return Err(InputError::NonFinite { what: self.what(instance), value });
+            return Err(InputError::NonFinite {
+                what: self.what(instance),
+                value,
+            });
         }
         match self.rule {
-            CommandRule::NonNegativeForce if !(0.0..=limits.max_force).contains(&value) => Err(InputError::Absurd {
-                what: format!("{} (must lie in [0, limits.max_force])", self.what(instance)),
-                value,
-                limit: limits.max_force,
-            }),
-            CommandRule::MagnitudeAtMost(limit) if value.abs() > limit => {
-                Err(InputError::Absurd { what: self.what(instance), value, limit })
+            CommandRule::NonNegativeForce if !(0.0..=limits.max_force).contains(&value) => {
+                Err(InputError::Absurd {
+                    what: format!(
+                        "{} (must lie in [0, limits.max_force])",
+                        self.what(instance)
+                    ),
+                    value,
+                    limit: limits.max_force,
+                })
             }
+            CommandRule::MagnitudeAtMost(limit) if value.abs() > limit => Err(InputError::Absurd {
+                what: self.what(instance),
+                value,
+                limit,
+            }),
             _ => Ok(()),
         }
     }
@@ -243,6 +258,9 @@ pub fn contact_rate(shapes: &[&[NodeShape]], modal_mass: &[f64]) -> f64 {
             }
         }
     }
-    a.self_adjoint_eigenvalues(faer::Side::Lower).ok().and_then(|ev| ev.last().copied()).unwrap_or(0.0).max(0.0)
+    a.self_adjoint_eigenvalues(faer::Side::Lower)
+        .ok()
+        .and_then(|ev| ev.last().copied())
+        .unwrap_or(0.0)
+        .max(0.0)
 }
-

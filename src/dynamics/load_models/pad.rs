@@ -63,8 +63,13 @@
 //! extremes of the wave, where the surface slope and so the follower force
 //! vanish, and the growth saturates — the limit cycles of the paper's Fig. 17.
 
-use super::face_friction::{face_kinematics, friction_force, sliding_velocity, FaceKinematics, FrictionLaw};
-use super::model::{contact_rate, surface_kinematics, SurfaceKinematics, CommandRule, CommandSpec, Coupling, LoadContext, LoadModel, ModelOut, SceneNodes};
+use super::face_friction::{
+    face_kinematics, friction_force, sliding_velocity, FaceKinematics, FrictionLaw,
+};
+use super::model::{
+    contact_rate, surface_kinematics, CommandRule, CommandSpec, Coupling, LoadContext, LoadModel,
+    ModelOut, SceneNodes, SurfaceKinematics,
+};
 use crate::config::{Caliper, Config, ContactSurface};
 use crate::dynamics::contact_compliance::{ContactCompliance, SeriesScratch};
 use crate::dynamics::joint::FrictionTorque;
@@ -162,7 +167,14 @@ impl Pads {
     /// Forces at every contact point (`out[c]` for `self.contacts[c]`) for the
     /// pads' clamp forces, the surface kinematics `kin[c]` under each contact
     /// and the joint speed Ω. `closed` is scratch of the contacts' length.
-    pub fn forces(&self, clamp_force: &[f64], kin: &[SurfaceKinematics], speed: f64, out: &mut [ContactForces], closed: &mut [bool]) {
+    pub fn forces(
+        &self,
+        clamp_force: &[f64],
+        kin: &[SurfaceKinematics],
+        speed: f64,
+        out: &mut [ContactForces],
+        closed: &mut [bool],
+    ) {
         let (k, c) = (self.stiffness, self.damping);
         match self.caliper {
             Caliper::Fixed => {
@@ -202,13 +214,22 @@ impl Pads {
                 f.bottom = f.bottom.max(0.0);
             }
             f.axial = f.bottom - f.top;
-            f.tangential = -self.friction_coefficient * (f.top + f.bottom) * Self::sliding_sign(speed, contact.radius);
+            f.tangential = -self.friction_coefficient
+                * (f.top + f.bottom)
+                * Self::sliding_sign(speed, contact.radius);
         }
     }
 
     /// u of a floating pad's face (`sign` +1 top, −1 bottom): Σ_c N_c = N₀
     /// over the contacts that stay closed, N_c = u + sign (k_c w + c_c ẇ).
-    fn backing_force(&self, pad: usize, clamp: f64, sign: f64, kin: &[SurfaceKinematics], closed: &mut [bool]) -> f64 {
+    fn backing_force(
+        &self,
+        pad: usize,
+        clamp: f64,
+        sign: f64,
+        kin: &[SurfaceKinematics],
+        closed: &mut [bool],
+    ) -> f64 {
         let e = |s: &SurfaceKinematics| sign * (self.stiffness * s.w + self.damping * s.w_dot);
         for (flag, contact) in closed.iter_mut().zip(&self.contacts) {
             *flag = contact.pad == pad;
@@ -248,7 +269,10 @@ impl Pads {
     pub fn wrench(contact: &PadContactPoint, f: &ContactForces) -> Wrench {
         let (s, c) = contact.sin_cos;
         // e_θ = (−sin θ, cos θ, 0)
-        Wrench { force: [-s * f.tangential, c * f.tangential, f.axial], moment: [0.0; 3] }
+        Wrench {
+            force: [-s * f.tangential, c * f.tangential, f.axial],
+            moment: [0.0; 3],
+        }
     }
 }
 
@@ -257,13 +281,31 @@ impl Pads {
     /// (`pads.contact_surface: faces`): F = F_t + F_b + (N_b − N_t) e_z,
     /// M = Σ_f z_f e_z × F_f about the node. Sets `f.tangential` to the
     /// friction's e_θ component.
-    pub fn face_wrench(&self, contact: &PadContactPoint, f: &mut ContactForces, k: &FaceKinematics, speed: f64) -> Wrench {
+    pub fn face_wrench(
+        &self,
+        contact: &PadContactPoint,
+        f: &mut ContactForces,
+        k: &FaceKinematics,
+        speed: f64,
+    ) -> Wrench {
         let mut w = Wrench::default();
         let (s, c) = contact.sin_cos;
         f.tangential = 0.0;
         for (normal, z) in [(f.top, contact.face_z[0]), (f.bottom, contact.face_z[1])] {
-            let v = sliding_velocity(k, z + self.node_z(contact), contact.radius, contact.sin_cos, speed, self.follower_friction);
-            let fr = friction_force(&self.friction_law(self.friction_coefficient), normal, v, FRICTION_REGULARISATION_SPEED);
+            let v = sliding_velocity(
+                k,
+                z + self.node_z(contact),
+                contact.radius,
+                contact.sin_cos,
+                speed,
+                self.follower_friction,
+            );
+            let fr = friction_force(
+                &self.friction_law(self.friction_coefficient),
+                normal,
+                v,
+                FRICTION_REGULARISATION_SPEED,
+            );
             for a in 0..3 {
                 w.force[a] += fr[a];
             }
@@ -277,7 +319,11 @@ impl Pads {
 
     /// The face friction law with μ = `kinetic` (the configured μ_s − μ kept).
     pub fn friction_law(&self, kinetic: f64) -> FrictionLaw {
-        FrictionLaw { kinetic, excess: self.friction_excess, stribeck_speed: self.stribeck_speed }
+        FrictionLaw {
+            kinetic,
+            excess: self.friction_excess,
+            stribeck_speed: self.stribeck_speed,
+        }
     }
 
     /// z of the contact's node frame (the faces are at node z + face_z).
@@ -307,8 +353,14 @@ pub struct PadScratch {
 }
 
 /// The pads' one command: a clamp force per pad.
-pub const CLAMP_FORCE: CommandSpec =
-    CommandSpec { instance: "pad", name: "clamp force", token: "clamp_force", unit: "N", indexed: true, rule: CommandRule::NonNegativeForce };
+pub const CLAMP_FORCE: CommandSpec = CommandSpec {
+    instance: "pad",
+    name: "clamp force",
+    token: "clamp_force",
+    unit: "N",
+    indexed: true,
+    rule: CommandRule::NonNegativeForce,
+};
 
 /// The registered builder: pads where `pads.*` gives contact points.
 pub fn build(config: &Config, nodes: &SceneNodes) -> Option<Box<dyn LoadModel>> {
@@ -322,41 +374,61 @@ pub fn build(config: &Config, nodes: &SceneNodes) -> Option<Box<dyn LoadModel>> 
             let node = &nodes.ale[c.node];
             let h = config.plate.thickness;
             let face_z = [0.5 * h - node.z, -0.5 * h - node.z];
-            PadContactPoint { node: c.node, pad: c.pad, radius: node.radius, angle: node.angle, sin_cos: node.angle.sin_cos(), face_z }
+            PadContactPoint {
+                node: c.node,
+                pad: c.pad,
+                radius: node.radius,
+                angle: node.angle,
+                sin_cos: node.angle.sin_cos(),
+                face_z,
+            }
         })
         .collect();
-    Some(Box::new(Pads {
-        contacts,
-        contacts_per_pad,
-        stiffness: p.contact_stiffness,
-        damping: p.contact_damping,
-        friction_coefficient: p.friction_coefficient,
-        lift_off: p.lift_off,
-        follower_friction: p.follower_friction,
-        caliper: p.caliper,
-        contact_surface: p.contact_surface,
-        friction_excess: p.static_friction_coefficient.map_or(0.0, |s| s - p.friction_coefficient),
-        stribeck_speed: p.stribeck_speed,
-        initial_clamp_force: p.clamp_force.clone(),
-        coupling: Coupling::default(),
-        series: nodes.residual.map(|r| ContactCompliance::among(r, &p.contacts.iter().map(|c| c.node).collect::<Vec<_>>())),
-        mass: p.mass,
-        backing_stiffness: p.backing_stiffness.unwrap_or(0.0),
-    }
-    .with_coupling(nodes)))
+    Some(Box::new(
+        Pads {
+            contacts,
+            contacts_per_pad,
+            stiffness: p.contact_stiffness,
+            damping: p.contact_damping,
+            friction_coefficient: p.friction_coefficient,
+            lift_off: p.lift_off,
+            follower_friction: p.follower_friction,
+            caliper: p.caliper,
+            contact_surface: p.contact_surface,
+            friction_excess: p
+                .static_friction_coefficient
+                .map_or(0.0, |s| s - p.friction_coefficient),
+            stribeck_speed: p.stribeck_speed,
+            initial_clamp_force: p.clamp_force.clone(),
+            coupling: Coupling::default(),
+            series: nodes.residual.map(|r| {
+                ContactCompliance::among(r, &p.contacts.iter().map(|c| c.node).collect::<Vec<_>>())
+            }),
+            mass: p.mass,
+            backing_stiffness: p.backing_stiffness.unwrap_or(0.0),
+        }
+        .with_coupling(nodes),
+    ))
 }
 
 impl Pads {
     /// The coupling bound with every contact closed and a fixed caliper
     /// (opening contacts or letting the pads float only removes stiffness).
     fn with_coupling(mut self, nodes: &SceneNodes) -> Pads {
-        let shapes: Vec<&[crate::dynamics::node_frame::NodeShape]> = self.contacts.iter().map(|c| nodes.ale[c.node].shapes.as_slice()).collect();
+        let shapes: Vec<&[crate::dynamics::node_frame::NodeShape]> = self
+            .contacts
+            .iter()
+            .map(|c| nodes.ale[c.node].shapes.as_slice())
+            .collect();
         if let Some(g) = &self.series {
             self.coupling = self.series_coupling(g, &shapes, nodes.modal_mass);
             return self;
         }
         let lam = contact_rate(&shapes, nodes.modal_mass);
-        self.coupling = Coupling { stiffness_rate_sq: 2.0 * self.stiffness * lam, damping_rate: 2.0 * self.damping * lam };
+        self.coupling = Coupling {
+            stiffness_rate_sq: 2.0 * self.stiffness * lam,
+            damping_rate: 2.0 * self.damping * lam,
+        };
         if self.is_massive() {
             self.coupling = self.massive_coupling(lam);
         }
@@ -393,7 +465,11 @@ impl LoadModel for Pads {
             faces: vec![FaceKinematics::default(); n],
             forces: vec![ContactForces::default(); n],
             closed: vec![false; n],
-            series: if self.series.is_some() { SeriesScratch::new(n, 2 * n) } else { SeriesScratch::default() },
+            series: if self.series.is_some() {
+                SeriesScratch::new(n, 2 * n)
+            } else {
+                SeriesScratch::default()
+            },
             axial: vec![0.0; n],
             w_free: vec![0.0; n],
             tried: vec![SurfaceKinematics::default(); n],
@@ -418,21 +494,37 @@ impl LoadModel for Pads {
     /// Contact forces from the deflection and its rate under each contact
     /// point (ALE amplitudes), their friction, and the wrenches at the nodes.
     fn evaluate(&self, ctx: &LoadContext, slot: &[f64], clamp_force: &[f64], out: ModelOut) {
-        let s = out.scratch.downcast_mut::<PadScratch>().expect("the pads' scratch");
+        let s = out
+            .scratch
+            .downcast_mut::<PadScratch>()
+            .expect("the pads' scratch");
         for (k, c) in s.kinematics.iter_mut().zip(&self.contacts) {
             *k = surface_kinematics(&ctx.ale_nodes[c.node], ctx.q_ale, ctx.q_dot_ale);
         }
         match &self.series {
             Some(g) => self.series_forces(g, ctx, clamp_force, slot, s),
-            None if self.is_massive() => self.massive_forces(slot, &s.kinematics, ctx.speed, &mut s.forces),
-            None => self.forces(clamp_force, &s.kinematics, ctx.speed, &mut s.forces, &mut s.closed),
+            None if self.is_massive() => {
+                self.massive_forces(slot, &s.kinematics, ctx.speed, &mut s.forces)
+            }
+            None => self.forces(
+                clamp_force,
+                &s.kinematics,
+                ctx.speed,
+                &mut s.forces,
+                &mut s.closed,
+            ),
         }
         if self.is_massive() {
             self.pad_rates(slot, clamp_force, &s.forces, out.rates);
         }
         self.friction_torque_terms(&s.forces, out.friction);
         if self.contact_surface == ContactSurface::Faces {
-            for ((c, f), k) in self.contacts.iter().zip(s.forces.iter_mut()).zip(s.faces.iter_mut()) {
+            for ((c, f), k) in self
+                .contacts
+                .iter()
+                .zip(s.forces.iter_mut())
+                .zip(s.faces.iter_mut())
+            {
                 *k = face_kinematics(&ctx.ale_nodes[c.node], ctx.q_ale, ctx.q_dot_ale, ctx.speed);
                 let w = self.face_wrench(c, f, k, ctx.speed);
                 let slot = &mut out.ale[c.node];
@@ -462,8 +554,22 @@ mod tests {
     fn pads(caliper: Caliper, lift_off: bool) -> Pads {
         Pads {
             contacts: vec![
-                PadContactPoint { node: 0, pad: 0, radius: 0.12, angle: 0.3, sin_cos: 0.3f64.sin_cos(), face_z: [0.009, -0.009] },
-                PadContactPoint { node: 1, pad: 0, radius: 0.12, angle: 0.5, sin_cos: 0.5f64.sin_cos(), face_z: [0.009, -0.009] },
+                PadContactPoint {
+                    node: 0,
+                    pad: 0,
+                    radius: 0.12,
+                    angle: 0.3,
+                    sin_cos: 0.3f64.sin_cos(),
+                    face_z: [0.009, -0.009],
+                },
+                PadContactPoint {
+                    node: 1,
+                    pad: 0,
+                    radius: 0.12,
+                    angle: 0.5,
+                    sin_cos: 0.5f64.sin_cos(),
+                    face_z: [0.009, -0.009],
+                },
             ],
             contacts_per_pad: vec![2],
             stiffness: 1.0e6,
@@ -499,10 +605,17 @@ mod tests {
             let f = forces(&p, [REST; 2], 25.0);
             assert!((f[0].top - 500.0).abs() < 1e-9 && (f[0].bottom - 500.0).abs() < 1e-9);
             assert_eq!(f[0].axial, 0.0);
-            assert!((f[0].tangential + 0.5 * 1000.0).abs() < 1e-9, "{}", f[0].tangential);
+            assert!(
+                (f[0].tangential + 0.5 * 1000.0).abs() < 1e-9,
+                "{}",
+                f[0].tangential
+            );
             // Friction opposes the sliding: e_θ at θ, and reverses with Ω.
             let w = Pads::wrench(&p.contacts[0], &f[0]);
-            assert!((w.force[0] - 500.0 * 0.3f64.sin()).abs() < 1e-9 && (w.force[1] + 500.0 * 0.3f64.cos()).abs() < 1e-9);
+            assert!(
+                (w.force[0] - 500.0 * 0.3f64.sin()).abs() < 1e-9
+                    && (w.force[1] + 500.0 * 0.3f64.cos()).abs() < 1e-9
+            );
             let back = forces(&p, [REST; 2], -25.0);
             assert!((back[0].tangential - 500.0).abs() < 1e-9);
         }
@@ -510,29 +623,48 @@ mod tests {
 
     #[test]
     fn a_fixed_caliper_restores_with_twice_the_contact_stiffness_and_damping() {
-        let s = SurfaceKinematics { w: 1e-5, w_dot: 0.02 };
+        let s = SurfaceKinematics {
+            w: 1e-5,
+            w_dot: 0.02,
+        };
         let f = forces(&pads(Caliper::Fixed, false), [s, REST], 25.0);
-        assert!((f[0].axial - (-2.0 * 1.0e6 * 1e-5 - 2.0 * 50.0 * 0.02)).abs() < 1e-9, "{}", f[0].axial);
+        assert!(
+            (f[0].axial - (-2.0 * 1.0e6 * 1e-5 - 2.0 * 50.0 * 0.02)).abs() < 1e-9,
+            "{}",
+            f[0].axial
+        );
         // Linear springs: the sum of the normal forces, hence friction, does not change.
         assert!((f[0].top + f[0].bottom - 1000.0).abs() < 1e-9);
     }
 
     #[test]
     fn a_floating_caliper_acts_on_the_deformation_relative_to_the_pad_mean() {
-        let s = SurfaceKinematics { w: 1e-5, w_dot: 0.02 };
+        let s = SurfaceKinematics {
+            w: 1e-5,
+            w_dot: 0.02,
+        };
         let f = forces(&pads(Caliper::Floating, false), [s, REST], 25.0);
         // w − w̄ = ±0.5e-5, ẇ − ẇ̄ = ±0.01: F_z = −2 k (w − w̄) − 2 c (ẇ − ẇ̄).
         let expected = -2.0 * 1.0e6 * 0.5e-5 - 2.0 * 50.0 * 0.01;
-        assert!((f[0].axial - expected).abs() < 1e-9 && (f[1].axial + expected).abs() < 1e-9, "{f:?}");
+        assert!(
+            (f[0].axial - expected).abs() < 1e-9 && (f[1].axial + expected).abs() < 1e-9,
+            "{f:?}"
+        );
         for face in [f[0].top + f[1].top, f[0].bottom + f[1].bottom] {
-            assert!((face - 1000.0).abs() < 1e-9, "each face carries the clamp force");
+            assert!(
+                (face - 1000.0).abs() < 1e-9,
+                "each face carries the clamp force"
+            );
         }
     }
 
     #[test]
     fn lift_off_releases_the_contacts_that_would_pull() {
         // Fixed: δ₀ = 500 N / 1e6 N/m = 0.5 mm; deflect by 0.8 mm: the bottom face lifts off.
-        let s = SurfaceKinematics { w: 8e-4, w_dot: 0.0 };
+        let s = SurfaceKinematics {
+            w: 8e-4,
+            w_dot: 0.0,
+        };
         let f = forces(&pads(Caliper::Fixed, true), [s, REST], 25.0);
         assert_eq!(f[0].bottom, 0.0);
         assert!((f[0].top - 1.0e6 * 1.3e-3).abs() < 1e-9);
@@ -541,7 +673,10 @@ mod tests {
         // Floating: deflect one point by 1.5 mm (more than the 1 mm it takes
         // with the other at rest): the bottom pad leaves the raised point and
         // carries the clamp force on the other; the top pad only on the raised one.
-        let s = SurfaceKinematics { w: 1.5e-3, w_dot: 0.0 };
+        let s = SurfaceKinematics {
+            w: 1.5e-3,
+            w_dot: 0.0,
+        };
         let f = forces(&pads(Caliper::Floating, true), [s, REST], 25.0);
         assert_eq!(f[0].bottom, 0.0);
         assert!((f[1].bottom - 1000.0).abs() < 1e-9, "{f:?}");

@@ -64,12 +64,20 @@ impl Pads {
     pub fn pad_backing_force(&self, pad: usize, clamp: f64, x: f64) -> f64 {
         match self.caliper {
             Caliper::Floating => clamp,
-            Caliper::Fixed => clamp - self.backing_stiffness * (x - self.rest_compression(pad, clamp)),
+            Caliper::Fixed => {
+                clamp - self.backing_stiffness * (x - self.rest_compression(pad, clamp))
+            }
         }
     }
 
     /// Contact forces of massive pads in the state `slot` (module docs).
-    pub(super) fn massive_forces(&self, slot: &[f64], kin: &[SurfaceKinematics], speed: f64, out: &mut [ContactForces]) {
+    pub(super) fn massive_forces(
+        &self,
+        slot: &[f64],
+        kin: &[SurfaceKinematics],
+        speed: f64,
+        out: &mut [ContactForces],
+    ) {
         let (k, c) = (self.stiffness, self.damping);
         let rates = 2 * self.pad_count();
         for ((contact, s), f) in self.contacts.iter().zip(kin).zip(out.iter_mut()) {
@@ -81,7 +89,13 @@ impl Pads {
     }
 
     /// The slot's rates: ẋ, and ẍ = (B − Σ_c N_c)/m_p per pad and face.
-    pub(super) fn pad_rates(&self, slot: &[f64], clamp_force: &[f64], forces: &[ContactForces], rates: &mut [f64]) {
+    pub(super) fn pad_rates(
+        &self,
+        slot: &[f64],
+        clamp_force: &[f64],
+        forces: &[ContactForces],
+        rates: &mut [f64],
+    ) {
         let half = 2 * self.pad_count();
         rates[..half].copy_from_slice(&slot[half..]);
         for (pad, &clamp) in clamp_force.iter().enumerate().take(self.pad_count()) {

@@ -6,7 +6,7 @@
 //! of the held wrenches. Lift-off and the floating caliper's balance are
 //! solved with it (active set); the dampers act on the modal rate.
 
-use super::model::{LoadContext, SurfaceKinematics, Coupling};
+use super::model::{Coupling, LoadContext, SurfaceKinematics};
 use super::pad::{PadScratch, Pads};
 use crate::config::Caliper;
 use crate::dynamics::contact_compliance::{stiffness_rate, ContactCompliance};
@@ -18,15 +18,34 @@ impl Pads {
     /// stiff k_c), the dampers' likewise (c_c/k_c) K_eff. Massive pads: K =
     /// 4k_c on the disc's side (k_c (x + w)² ≤ 2k_c x² + 2k_c w² per face)
     /// plus the pads' own rates (`pad_mass.rs`).
-    pub(super) fn series_coupling(&self, g: &ContactCompliance, shapes: &[&[NodeShape]], modal_mass: &[f64]) -> Coupling {
+    pub(super) fn series_coupling(
+        &self,
+        g: &ContactCompliance,
+        shapes: &[&[NodeShape]],
+        modal_mass: &[f64],
+    ) -> Coupling {
         let n = self.contacts.len();
         let per_face = if self.is_massive() { 4.0 } else { 2.0 };
-        let k: Vec<f64> = (0..n * n).map(|i| if i % (n + 1) == 0 { per_face * self.stiffness } else { 0.0 }).collect();
+        let k: Vec<f64> = (0..n * n)
+            .map(|i| {
+                if i % (n + 1) == 0 {
+                    per_face * self.stiffness
+                } else {
+                    0.0
+                }
+            })
+            .collect();
         let rate = stiffness_rate(shapes, &g.series_stiffness(&k), modal_mass);
-        let disc = Coupling { stiffness_rate_sq: rate, damping_rate: self.damping / self.stiffness * rate };
+        let disc = Coupling {
+            stiffness_rate_sq: rate,
+            damping_rate: self.damping / self.stiffness * rate,
+        };
         if self.is_massive() {
             let own = self.pad_own_coupling();
-            return Coupling { stiffness_rate_sq: disc.stiffness_rate_sq + own.stiffness_rate_sq, damping_rate: disc.damping_rate + own.damping_rate };
+            return Coupling {
+                stiffness_rate_sq: disc.stiffness_rate_sq + own.stiffness_rate_sq,
+                damping_rate: disc.damping_rate + own.damping_rate,
+            };
         }
         disc
     }
@@ -39,28 +58,55 @@ impl Pads {
     /// kinematics acted on and the forces in `s`.
     /// With massive pads (`pad_mass.rs`) the contacts act between the pads'
     /// state `slot` and the disc, so the law is theirs and no balance is solved.
-    pub(super) fn series_forces(&self, g: &ContactCompliance, ctx: &LoadContext, clamp_force: &[f64], slot: &[f64], s: &mut PadScratch) {
-        let PadScratch { kinematics, forces, closed, series, axial, w_free, tried, .. } = s;
-        let held = ctx.held.filter(|h| h.ale.iter().chain(h.lagrange).any(|w| w.force[2] != 0.0));
+    pub(super) fn series_forces(
+        &self,
+        g: &ContactCompliance,
+        ctx: &LoadContext,
+        clamp_force: &[f64],
+        slot: &[f64],
+        s: &mut PadScratch,
+    ) {
+        let PadScratch {
+            kinematics,
+            forces,
+            closed,
+            series,
+            axial,
+            w_free,
+            tried,
+            ..
+        } = s;
+        let held = ctx
+            .held
+            .filter(|h| h.ale.iter().chain(h.lagrange).any(|w| w.force[2] != 0.0));
         for ((w, c), k) in w_free.iter_mut().zip(&self.contacts).zip(kinematics.iter()) {
             *w = k.w + held.map_or(0.0, |h| h.at(c.node, ctx.chi));
         }
         let law = |w: &[f64], f: &mut [f64], active: &mut [bool]| {
             for ((t, &wc), m) in tried.iter_mut().zip(w).zip(kinematics.iter()) {
-                *t = SurfaceKinematics { w: wc, w_dot: m.w_dot };
+                *t = SurfaceKinematics {
+                    w: wc,
+                    w_dot: m.w_dot,
+                };
             }
             if self.is_massive() {
                 self.massive_forces(slot, tried, ctx.speed, forces);
             } else {
                 self.forces(clamp_force, tried, ctx.speed, forces, closed);
             }
-            for ((fc, out), on) in f.iter_mut().zip(forces.iter()).zip(active.chunks_exact_mut(2)) {
+            for ((fc, out), on) in f
+                .iter_mut()
+                .zip(forces.iter())
+                .zip(active.chunks_exact_mut(2))
+            {
                 *fc = out.axial;
                 on[0] = !self.lift_off || out.top > 0.0;
                 on[1] = !self.lift_off || out.bottom > 0.0;
             }
         };
-        g.solve(w_free, axial, series, law, |active, jacobian| self.axial_jacobian(active, jacobian));
+        g.solve(w_free, axial, series, law, |active, jacobian| {
+            self.axial_jacobian(active, jacobian)
+        });
         kinematics.copy_from_slice(tried);
     }
 
@@ -96,7 +142,12 @@ impl Pads {
     /// K = −∂F/∂w with every active face closed, C = (c_c/k_c) K; W the
     /// shapes at `nodes`. Massive pads add (I + K G)⁻¹ k_c (ξ_b − ξ_t) and
     /// its rate (K = 2k_c: no balance among the contacts).
-    pub fn linear_series_forces(&self, g: &ContactCompliance, nodes: &[NodeFrame], active: &[bool]) -> LinearSeriesForces {
+    pub fn linear_series_forces(
+        &self,
+        g: &ContactCompliance,
+        nodes: &[NodeFrame],
+        active: &[bool],
+    ) -> LinearSeriesForces {
         let nc = self.contacts.len();
         let closed: Vec<bool> = active.iter().flat_map(|&a| [a, a]).collect();
         let mut jacobian = vec![0.0; nc * nc];

@@ -79,10 +79,19 @@ mod tests {
 
     #[test]
     fn links_half_a_turn_apart_carry_opposite_cyclic_forces() {
-        let links = PitchLinks { nodes: vec![0, 1], angles: vec![0.0, PI], mean_force: 0.0, cyclic_force: 300.0, cyclic_phase: 0.4 };
+        let links = PitchLinks {
+            nodes: vec![0, 1],
+            angles: vec![0.0, PI],
+            mean_force: 0.0,
+            cyclic_force: 300.0,
+            cyclic_phase: 0.4,
+        };
         for chi in [0.0, 0.7, 2.0, 5.5] {
             assert!((links.force(0, chi) + links.force(1, chi)).abs() < 1e-9);
         }
-        assert!((links.force(0, 0.4) - 300.0).abs() < 1e-12, "peak at ψ = ψ₀");
+        assert!(
+            (links.force(0, 0.4) - 300.0).abs() < 1e-12,
+            "peak at ψ = ψ₀"
+        );
     }
 }

@@ -12,7 +12,9 @@
 //! This file is the worked example of docs/architecture.md ("adding a load
 //! model"): the model, its builder and one line in `REGISTRY`.
 
-use super::model::{contact_rate, surface_kinematics, Coupling, LoadContext, LoadModel, ModelOut, SceneNodes};
+use super::model::{
+    contact_rate, surface_kinematics, Coupling, LoadContext, LoadModel, ModelOut, SceneNodes,
+};
 use crate::config::Config;
 use std::any::Any;
 
@@ -31,10 +33,22 @@ pub struct PointSprings {
 /// The registered builder: springs where `springs.ale_nodes` names nodes.
 pub fn build(config: &Config, nodes: &SceneNodes) -> Option<Box<dyn LoadModel>> {
     let s = config.springs.as_ref()?;
-    let shapes: Vec<&[crate::dynamics::node_frame::NodeShape]> = s.nodes.iter().map(|&j| nodes.ale[j].shapes.as_slice()).collect();
+    let shapes: Vec<&[crate::dynamics::node_frame::NodeShape]> = s
+        .nodes
+        .iter()
+        .map(|&j| nodes.ale[j].shapes.as_slice())
+        .collect();
     let lam = contact_rate(&shapes, nodes.modal_mass);
-    let coupling = Coupling { stiffness_rate_sq: s.stiffness * lam, damping_rate: s.damping * lam };
-    Some(Box::new(PointSprings { nodes: s.nodes.clone(), stiffness: s.stiffness, damping: s.damping, coupling }))
+    let coupling = Coupling {
+        stiffness_rate_sq: s.stiffness * lam,
+        damping_rate: s.damping * lam,
+    };
+    Some(Box::new(PointSprings {
+        nodes: s.nodes.clone(),
+        stiffness: s.stiffness,
+        damping: s.damping,
+        coupling,
+    }))
 }
 
 impl LoadModel for PointSprings {

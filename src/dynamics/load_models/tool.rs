@@ -35,7 +35,9 @@
 //! (`dynamics::contact_compliance::solve_monotone`): the residual is a spring
 //! in series with the cut.
 
-use super::model::{surface_kinematics, CommandRule, CommandSpec, LoadContext, LoadModel, ModelOut, SceneNodes};
+use super::model::{
+    surface_kinematics, CommandRule, CommandSpec, LoadContext, LoadModel, ModelOut, SceneNodes,
+};
 use super::undo::SlotUndo;
 use crate::config::Config;
 use crate::dynamics::contact_compliance::solve_monotone;
@@ -105,7 +107,15 @@ struct Sweep {
 /// upwards in φ (wrapping round the revolution), in the order swept.
 fn bin_entries(first_bin: i64, downwards: bool, count: i64) -> impl Iterator<Item = usize> {
     let n = SURFACE_BINS as i64;
-    (0..count).map(move |j| SURFACE + if downwards { first_bin - j } else { first_bin + j }.rem_euclid(n) as usize)
+    (0..count).map(move |j| {
+        SURFACE
+            + if downwards {
+                first_bin - j
+            } else {
+                first_bin + j
+            }
+            .rem_euclid(n) as usize
+    })
 }
 
 /// What one substep cuts, computed at its start.
@@ -130,13 +140,27 @@ impl ToolStep {
     }
 
     fn store(&self, slot: &mut [f64]) {
-        let held = [self.force, self.chip, self.level, self.first_bin as f64, self.bins as f64, if self.downwards { 1.0 } else { 0.0 }];
+        let held = [
+            self.force,
+            self.chip,
+            self.level,
+            self.first_bin as f64,
+            self.bins as f64,
+            if self.downwards { 1.0 } else { 0.0 },
+        ];
         slot[HELD..HELD + 6].copy_from_slice(&held);
     }
 
     fn load(slot: &[f64]) -> ToolStep {
         let h = &slot[HELD..HELD + 6];
-        ToolStep { force: h[0], chip: h[1], level: h[2], first_bin: h[3] as i64, bins: h[4] as i64, downwards: h[5] != 0.0 }
+        ToolStep {
+            force: h[0],
+            chip: h[1],
+            level: h[2],
+            first_bin: h[3] as i64,
+            bins: h[4] as i64,
+            downwards: h[5] != 0.0,
+        }
     }
 }
 
@@ -241,7 +265,10 @@ impl Tool {
         if chip <= 0.0 {
             return 0.0;
         }
-        self.specific_force * self.depth_of_cut * chip.powf(1.0 - self.force_exponent) * self.reference_factor
+        self.specific_force
+            * self.depth_of_cut
+            * chip.powf(1.0 - self.force_exponent)
+            * self.reference_factor
     }
 
     /// (1 mm)^m_f, eq. (21)'s unit conversion, m^m_f.
@@ -277,7 +304,11 @@ impl Tool {
             let hi = ((phi0 - sweep) / width - 0.5).ceil() as i64 - 1;
             (lo, (hi - lo + 1).min(n), false)
         };
-        Sweep { first_bin, bins, downwards }
+        Sweep {
+            first_bin,
+            bins,
+            downwards,
+        }
     }
 
     /// Slot indices of the bins the chip is read from: those swept, or the
@@ -290,9 +321,23 @@ impl Tool {
     fn cut(&self, slot: &[f64], sweep: &Sweep, w: f64) -> ToolStep {
         let level = (Self::tip(slot) - w).max(-0.5 * self.thickness);
         let read = sweep.bins.max(1);
-        let chip = Self::read_entries(sweep).map(|i| (slot[i] - level).max(0.0)).sum::<f64>() / read as f64;
-        let Sweep { first_bin, bins, downwards } = *sweep;
-        ToolStep { force: self.feed_force(chip), chip, level, first_bin, bins: bins.max(0), downwards }
+        let chip = Self::read_entries(sweep)
+            .map(|i| (slot[i] - level).max(0.0))
+            .sum::<f64>()
+            / read as f64;
+        let Sweep {
+            first_bin,
+            bins,
+            downwards,
+        } = *sweep;
+        ToolStep {
+            force: self.feed_force(chip),
+            chip,
+            level,
+            first_bin,
+            bins: bins.max(0),
+            downwards,
+        }
     }
 
     /// The cut of `sweep` in series with the residual compliance g: the force
@@ -305,7 +350,10 @@ impl Tool {
             let step = self.cut(slot, sweep, w_free - g * f);
             (step.force, -g * self.force_slope(slot, sweep, &step))
         });
-        ToolStep { force: f, ..self.cut(slot, sweep, w_free - g * f) }
+        ToolStep {
+            force: f,
+            ..self.cut(slot, sweep, w_free - g * f)
+        }
     }
 
     /// d f_f / d w of `step` (the cut of `sweep`), N/m: raising the plate
@@ -316,8 +364,11 @@ impl Tool {
         if step.chip <= 0.0 || step.level <= -0.5 * self.thickness {
             return 0.0;
         }
-        let above = Self::read_entries(sweep).filter(|&i| slot[i] > step.level).count();
-        (1.0 - self.force_exponent) * step.force / step.chip * above as f64 / sweep.bins.max(1) as f64
+        let above = Self::read_entries(sweep)
+            .filter(|&i| slot[i] > step.level)
+            .count();
+        (1.0 - self.force_exponent) * step.force / step.chip * above as f64
+            / sweep.bins.max(1) as f64
     }
 
     /// Cut the swept bins, move the holder by −v_f h and relax the tip under the held force.
@@ -381,15 +432,27 @@ mod tests {
         let (mut lo, mut hi) = (0.0, t.feed_force(2e-5));
         for _ in 0..200 {
             let mid = 0.5 * (lo + hi);
-            if mid < t.feed_force(2e-5 - g * mid) { lo = mid } else { hi = mid }
+            if mid < t.feed_force(2e-5 - g * mid) {
+                lo = mid
+            } else {
+                hi = mid
+            }
         }
-        assert!((step.force - lo).abs() < 1e-12 * lo, "{} vs {lo}", step.force);
+        assert!(
+            (step.force - lo).abs() < 1e-12 * lo,
+            "{} vs {lo}",
+            step.force
+        );
         assert!((step.chip - (2e-5 - g * step.force)).abs() < 1e-18);
         // The chip a hair above the surface (the cut's first touch): the
         // force cannot exceed the one that closes the chip, 1e-19/g.
         slot[HOLDER] = 0.005 - 1e-19;
         let touch = t.cut_in_series(&slot, &sweep, 0.0, g);
-        assert!(touch.force <= 1e-19 / g * (1.0 + 1e-9) && touch.force >= 0.0, "{}", touch.force);
+        assert!(
+            touch.force <= 1e-19 / g * (1.0 + 1e-9) && touch.force >= 0.0,
+            "{}",
+            touch.force
+        );
     }
 
     #[test]
@@ -412,7 +475,11 @@ mod tests {
             // a bin is T ± h; with substeps shorter than a bin, a bin is read
             // up to one bin width ahead of its cut.
             let tolerance = (h * speed / TAU).max(1.0 / SURFACE_BINS as f64) + 1e-9;
-            assert!((s[CHIP] - expected).abs() <= tolerance * expected, "h = {h}: chip {} vs {expected}", s[CHIP]);
+            assert!(
+                (s[CHIP] - expected).abs() <= tolerance * expected,
+                "h = {h}: chip {} vs {expected}",
+                s[CHIP]
+            );
         }
     }
 }

@@ -27,7 +27,11 @@ pub struct SlotUndo {
 
 impl SlotUndo {
     fn with_capacity(len: usize, head: usize) -> SlotUndo {
-        SlotUndo { head: Vec::with_capacity(head), saved: Vec::with_capacity(len.saturating_sub(head)), marked: vec![false; len] }
+        SlotUndo {
+            head: Vec::with_capacity(head),
+            saved: Vec::with_capacity(len.saturating_sub(head)),
+            marked: vec![false; len],
+        }
     }
 
     /// Save `slot[index]` (beyond the head) before the step's first change of it.
@@ -79,7 +83,12 @@ impl LoadModelUndo {
     /// Buffers for the slots of `models` (sized from their initial state).
     pub fn new(models: &LoadModels) -> LoadModelUndo {
         let initial = models.initial_state();
-        let slots = models.models().iter().zip(&initial.slots).map(|(m, s)| SlotUndo::with_capacity(s.len(), m.undo_head(s.len()))).collect();
+        let slots = models
+            .models()
+            .iter()
+            .zip(&initial.slots)
+            .map(|(m, s)| SlotUndo::with_capacity(s.len(), m.undo_head(s.len())))
+            .collect();
         LoadModelUndo { slots }
     }
 
