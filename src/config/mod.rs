@@ -394,6 +394,9 @@ pub enum IntegratorKind {
     ImplicitMidpoint,
     /// Classical explicit Runge–Kutta 4, sub-stepping itself below its stability limit.
     Rk4,
+    /// The exponential of the load models' linearisation on their active set
+    /// (stiff contacts), switches located inside the step.
+    ContactExponential,
 }
 
 impl IntegratorKind {
@@ -402,6 +405,7 @@ impl IntegratorKind {
             IntegratorKind::Exponential => "exponential",
             IntegratorKind::ImplicitMidpoint => "implicit_midpoint",
             IntegratorKind::Rk4 => "rk4",
+            IntegratorKind::ContactExponential => "contact_exponential",
         }
     }
     pub fn from_name(s: &str) -> Option<Self> {
@@ -409,6 +413,7 @@ impl IntegratorKind {
             "exponential" => Some(IntegratorKind::Exponential),
             "implicit_midpoint" => Some(IntegratorKind::ImplicitMidpoint),
             "rk4" => Some(IntegratorKind::Rk4),
+            "contact_exponential" => Some(IntegratorKind::ContactExponential),
             _ => None,
         }
     }
@@ -443,6 +448,10 @@ pub struct SimulationConfig {
     /// The implicit midpoint rule sub-steps itself so that h·λ_max stays below
     /// this (its relative frequency error is 1 − 2·atan(hω/2)/(hω) ≈ (hω)²/12).
     pub midpoint_step_limit: f64,
+    /// `contact_exponential` halves its spans until the local error of what
+    /// it holds over a span (the friction direction, follower terms) is below
+    /// this, relative to the state's scale.
+    pub contact_tolerance: f64,
 }
 
 impl Default for SimulationConfig {
@@ -456,6 +465,7 @@ impl Default for SimulationConfig {
             publish_divisor: 1,
             rk4_step_limit: DEFAULT_RK4_STEP_LIMIT,
             midpoint_step_limit: DEFAULT_MIDPOINT_STEP_LIMIT,
+            contact_tolerance: DEFAULT_CONTACT_TOLERANCE,
         }
     }
 }
@@ -465,6 +475,10 @@ pub const DEFAULT_RK4_STEP_LIMIT: f64 = 0.2;
 /// Default of `simulation.midpoint_step_limit`: the fastest retained mode's
 /// frequency within 2.0 % (1 − 2·atan(0.25)/0.5), slower ones as (hω)²/12.
 pub const DEFAULT_MIDPOINT_STEP_LIMIT: f64 = 0.5;
+/// Default of `simulation.contact_tolerance`.
+pub const DEFAULT_CONTACT_TOLERANCE: f64 = 1.0e-9;
+/// Smallest `simulation.contact_tolerance` (below it rounding decides).
+pub const MIN_CONTACT_TOLERANCE: f64 = 1.0e-14;
 /// Largest `simulation.midpoint_step_limit`: large enough to accept unresolved
 /// modes on purpose (the rule stays A-stable but rings without numerical damping).
 pub const MAX_MIDPOINT_STEP_LIMIT: f64 = 1e6;

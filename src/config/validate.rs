@@ -26,7 +26,12 @@ pub(super) fn known_keys() -> Vec<&'static str> {
     super::table::params().map(|p| p.key).collect()
 }
 
-const INTEGRATORS: &[&str] = &["exponential", "implicit_midpoint", "rk4"];
+const INTEGRATORS: &[&str] = &[
+    "exponential",
+    "implicit_midpoint",
+    "rk4",
+    "contact_exponential",
+];
 const COORDINATES: &[&str] = &["ale", "lagrangian"];
 const SURFACES: &[&str] = &["top", "bottom", "mid"];
 
@@ -66,8 +71,13 @@ pub(super) fn config_from_params(params: &Params) -> Result<Config, ConfigError>
     let springs = read_springs(&r, &nodes)?;
     let initial = read_initial(&r, &plate, &limits)?;
     let centrifugal = super::centrifugal::read_centrifugal(&r)?;
-    if pads.as_ref().is_some_and(|p| p.mass > 0.0) && simulation.integrator != IntegratorKind::Rk4 {
-        return Err(ConfigError::PadMass { rule: "pads.mass > 0 needs simulation.integrator: rk4 (the pads' axial motion is integrated at every stage)" });
+    if pads.as_ref().is_some_and(|p| p.mass > 0.0)
+        && !matches!(
+            simulation.integrator,
+            IntegratorKind::Rk4 | IntegratorKind::ContactExponential
+        )
+    {
+        return Err(ConfigError::PadMass { rule: "pads.mass > 0 needs simulation.integrator: rk4 or contact_exponential (the pads' axial motion is integrated with the modes)" });
     }
 
     Ok(Config {
@@ -602,6 +612,7 @@ fn read_simulation(r: &Reader) -> Result<SimulationConfig, ConfigError> {
     let publish_divisor = r.declared_u32("simulation.publish_divisor")?;
     let rk4_step_limit = r.declared_f64("simulation.rk4_step_limit")?;
     let midpoint_step_limit = r.declared_f64("simulation.midpoint_step_limit")?;
+    let contact_tolerance = r.declared_f64("simulation.contact_tolerance")?;
     Ok(SimulationConfig {
         rate_hz,
         substeps,
@@ -611,6 +622,7 @@ fn read_simulation(r: &Reader) -> Result<SimulationConfig, ConfigError> {
         publish_divisor,
         rk4_step_limit,
         midpoint_step_limit,
+        contact_tolerance,
     })
 }
 

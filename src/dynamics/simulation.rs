@@ -167,6 +167,11 @@ impl Simulation {
     pub fn inner_substeps(&self) -> usize {
         self.stepper.last_inner_substeps()
     }
+    /// What the last `contact_exponential` substep did: switching instants
+    /// located and piece tables built.
+    pub fn contact_report(&self) -> super::stepper::ContactReport {
+        self.stepper.last_contact()
+    }
     pub fn inputs(&self) -> &Inputs {
         &self.inputs
     }

@@ -12,7 +12,8 @@
 use super::ale::{harmonics, lagrange_to_ale, pair_to_ale};
 use super::commands::Inputs;
 use super::error::{Divergence, StepError};
-use super::integrators::equations::{accelerations, mode_constants, ModeConstants};
+use super::integrators::contact_exponential::ContactExponential;
+use super::integrators::equations::{mode_constants, ModeConstants};
 use super::integrators::exponential::ModePropagator;
 use super::integrators::stiffened_midpoint::StiffenedMidpoint;
 use super::integrators::{block_exponential, implicit_midpoint, rk4, MAX_INNER_SUBSTEPS};
@@ -24,6 +25,13 @@ use super::state::{JointAngle, State};
 use super::wrench::Wrench;
 use crate::config::{Config, Coordinates, IntegratorKind};
 use nalgebra::Complex;
+use stage_rhs::StageRhs;
+
+mod contact_step;
+mod stage_rhs;
+
+pub use super::integrators::contact_exponential::StepReport as ContactReport;
+pub use contact_step::SWITCH_RESOLUTION;
 
 /// Both descriptions of the elastic state mid-step (RK4 stages): scratch.
 #[derive(Debug, Clone, PartialEq, Default)]
@@ -60,6 +68,9 @@ pub struct StepperSettings {
     pub rk4_step_limit: f64,
     /// Implicit midpoint: largest h·λ_max per inner step (`simulation.midpoint_step_limit`).
     pub midpoint_step_limit: f64,
+    /// Contact exponential: the local error bound of the held remainder
+    /// (`simulation.contact_tolerance`).
+    pub contact_tolerance: f64,
 }
 
 impl Default for StepperSettings {
@@ -79,6 +90,7 @@ impl StepperSettings {
             substeps: s.substeps,
             rk4_step_limit: s.rk4_step_limit,
             midpoint_step_limit: s.midpoint_step_limit,
+            contact_tolerance: s.contact_tolerance,
         }
     }
 
@@ -87,7 +99,7 @@ impl StepperSettings {
     /// any step. One criterion for all (docs/hard_cases.md).
     pub fn step_limit(&self) -> Option<(f64, &'static str)> {
         match self.integrator {
-            IntegratorKind::Exponential => None,
+            IntegratorKind::Exponential | IntegratorKind::ContactExponential => None,
             IntegratorKind::ImplicitMidpoint => {
                 Some((self.midpoint_step_limit, "simulation.midpoint_step_limit"))
             }
@@ -143,6 +155,13 @@ pub struct Stepper {
     /// when off.
     stiffened: Vec<block_exponential::BlockPropagator>,
     stiffened_midpoint: StiffenedMidpoint,
+    /// `contact_exponential`: the integrator and its piece cache (made at
+    /// the first step, for its h's levels), the key of what a step holds,
+    /// and what the last step did.
+    contact: Option<ContactExponential>,
+    contact_levels: Option<usize>,
+    contact_key: Vec<u64>,
+    last_contact: ContactReport,
 }
 
 impl Stepper {
@@ -179,11 +198,20 @@ impl Stepper {
                 })
                 .collect(),
             stiffened_midpoint: StiffenedMidpoint::new(scene.stiffening.as_ref()),
+            contact: None,
+            contact_levels: None,
+            contact_key: Vec::with_capacity(64),
+            last_contact: ContactReport::default(),
         }
     }
 
     pub fn last_inner_substeps(&self) -> usize {
         self.last_inner_substeps
+    }
+
+    /// What the last `contact_exponential` substep did (switches located, pieces built).
+    pub fn last_contact(&self) -> ContactReport {
+        self.last_contact
     }
 
     /// Inner substeps a substep of h needs at speeds up to |Ω| so that
@@ -326,8 +354,13 @@ impl Stepper {
         chi1.advance(speed_mean * h);
         let speed1 = speed0 + alpha * h;
 
+        let stiff_models = models.stage_dependent();
         match settings.integrator {
-            IntegratorKind::Exponential => {
+            IntegratorKind::ContactExponential if stiff_models => {
+                let tolerance = settings.contact_tolerance;
+                self.contact_exponential(scene, state, inputs, h, chi0, speed0, alpha, tolerance)
+            }
+            IntegratorKind::Exponential | IntegratorKind::ContactExponential => {
                 add_reference_motion(scene, speed_mean, &mut self.loads.ale_frame);
                 self.exponential(scene, state, h, speed_mean, chi0, chi1, speed1);
             }
@@ -348,7 +381,12 @@ impl Stepper {
         state.acceleration = alpha;
         state.effort = d.effort;
         state.time += h;
-        if settings.integrator != IntegratorKind::Exponential {
+        let exact_both = match settings.integrator {
+            IntegratorKind::Exponential => true,
+            IntegratorKind::ContactExponential => !stiff_models,
+            _ => false,
+        };
+        if !exact_both {
             state.rederive_with(&scene.layout, &mut self.harm);
         }
         Ok(())
@@ -640,74 +678,25 @@ impl Stepper {
             stage_slots,
             ..
         } = self;
-        let follower = scene.effects.follower_loads;
-        let stage_models = scene.load_models.stage_dependent();
-        let slots = &state.load_models;
+        let mut stage = StageRhs {
+            scene,
+            inputs,
+            consts,
+            coords,
+            alpha,
+            base_ale_frame,
+            harm,
+            views,
+            loads,
+            model_wrenches,
+            stage_slots: continuous.then_some(stage_slots),
+            slots: &state.load_models,
+        };
         let dt = h / inner as f64;
         let mut rhs = |t: f64, yy: &[f64], dy: &mut [f64]| {
             let mut chi = chi0;
             chi.advance(speed0 * t + 0.5 * alpha * t * t);
-            let speed = speed0 + alpha * t;
-            harmonics(&chi, scene.layout.k_max, harm);
-            let (q, rest) = yy.split_at(n);
-            let (v, s) = rest.split_at(n);
-            if follower || stage_models {
-                let st = StateView {
-                    q,
-                    v,
-                    coords,
-                    speed,
-                };
-                st.fill(scene, harm, views);
-                if stage_models {
-                    let ctx = LoadContext {
-                        ale_nodes: &scene.ale_nodes,
-                        lagrange_nodes: &scene.lagrange_nodes,
-                        q_ale: &views.q_ale,
-                        q_dot_ale: &views.q_dot_ale,
-                        chi: chi.angle,
-                        speed,
-                        held: scene.held_deflection(inputs),
-                    };
-                    let slots = if continuous {
-                        scene.load_models.scatter_continuous(s, stage_slots);
-                        &*stage_slots
-                    } else {
-                        slots
-                    };
-                    scene
-                        .load_models
-                        .evaluate(&ctx, slots, &inputs.commands, model_wrenches);
-                }
-                node_loads(
-                    scene,
-                    inputs,
-                    model_wrenches,
-                    &views.q_ale,
-                    &views.q_lagrange,
-                    loads,
-                );
-            } else {
-                loads.ale_frame.copy_from_slice(base_ale_frame);
-            }
-            add_reference_motion(scene, speed, &mut loads.ale_frame);
-            let (dq, rest) = dy.split_at_mut(n);
-            let (dv, ds) = rest.split_at_mut(n);
-            dq.copy_from_slice(v);
-            accelerations(
-                scene,
-                consts,
-                coords,
-                harm,
-                speed,
-                alpha,
-                q,
-                v,
-                &loads.ale_frame,
-                &loads.plate_frame,
-                dv,
-            );
-            ds.copy_from_slice(&model_wrenches.rates);
+            stage.eval(chi, speed0 + alpha * t, yy, dy);
         };
         for j in 0..inner {
             rk4::step(j as f64 * dt, dt, y, rk, &mut rhs);

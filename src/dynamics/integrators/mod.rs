@@ -15,9 +15,11 @@
 pub const MAX_INNER_SUBSTEPS: usize = 100_000;
 
 pub mod block_exponential;
+pub mod contact_exponential;
 pub mod equations;
 pub mod exponential;
 pub mod implicit_midpoint;
 pub mod phi;
+pub(crate) mod piece;
 pub mod rk4;
 pub mod stiffened_midpoint;

@@ -68,6 +68,8 @@ pub struct LoadModels {
     friction_ranges: Vec<Range<usize>>,
     /// Per model, the range of its continuous states among all models'.
     state_ranges: Vec<Range<usize>>,
+    /// Per model, the range of its switching functions among all models'.
+    switching_ranges: Vec<Range<usize>>,
     /// The sum of the models' couplings (a bound for any set of closed contacts).
     coupling: Coupling,
 }
@@ -115,6 +117,8 @@ pub struct ModelWrenches {
     pub friction: Vec<FrictionTorque>,
     /// The rates of the models' continuous states ([`LoadModels::continuous_states`]).
     pub rates: Vec<f64>,
+    /// The models' switching functions ([`LoadModels::switching_functions`]).
+    pub switching: Vec<f64>,
     scratch: Vec<Box<dyn Any + Send + Sync>>,
 }
 
@@ -131,6 +135,7 @@ impl ModelWrenches {
                 lm.friction_ranges.last().map_or(0, |r| r.end)
             ],
             rates: vec![0.0; lm.continuous_states()],
+            switching: vec![0.0; lm.switching_functions()],
             scratch: lm.models.iter().map(|m| m.new_scratch()).collect(),
         }
     }
@@ -161,18 +166,9 @@ impl LoadModels {
             .iter()
             .filter_map(|build| build(config, nodes))
             .collect();
-        let mut friction_ranges = Vec::with_capacity(models.len());
-        let mut end = 0;
-        for m in &models {
-            friction_ranges.push(end..end + m.friction_terms());
-            end += m.friction_terms();
-        }
-        let mut state_ranges = Vec::with_capacity(models.len());
-        let mut end = 0;
-        for m in &models {
-            state_ranges.push(end..end + m.continuous_states());
-            end += m.continuous_states();
-        }
+        let friction_ranges = consecutive_ranges(&models, |m| m.friction_terms());
+        let state_ranges = consecutive_ranges(&models, |m| m.continuous_states());
+        let switching_ranges = consecutive_ranges(&models, |m| m.switching_functions());
         let command_ranges = models
             .iter()
             .map(|m| {
@@ -198,6 +194,7 @@ impl LoadModels {
             command_ranges,
             friction_ranges,
             state_ranges,
+            switching_ranges,
             coupling,
         }
     }
@@ -248,6 +245,11 @@ impl LoadModels {
         self.state_ranges.last().map_or(0, |r| r.end)
     }
 
+    /// Switching functions of all models ([`LoadModel::switching_functions`]).
+    pub fn switching_functions(&self) -> usize {
+        self.switching_ranges.last().map_or(0, |r| r.end)
+    }
+
     /// Copy the models' continuous states out of `state` into `y`.
     pub fn gather_continuous(&self, state: &LoadModelState, y: &mut [f64]) {
         for (r, slot) in self.state_ranges.iter().zip(&state.slots) {
@@ -269,7 +271,10 @@ impl LoadModels {
         integrator: IntegratorKind,
         h: f64,
     ) -> Result<(), SimulationError> {
-        if integrator == IntegratorKind::Rk4 {
+        if matches!(
+            integrator,
+            IntegratorKind::Rk4 | IntegratorKind::ContactExponential
+        ) {
             return Ok(());
         }
         if let Some(m) = self.models.iter().find(|m| m.continuous_states() > 0) {
@@ -369,6 +374,7 @@ impl LoadModels {
             lagrange_follower,
             friction,
             rates,
+            switching,
             scratch,
         } = out;
         for (i, m) in self.models.iter().enumerate() {
@@ -380,10 +386,27 @@ impl LoadModels {
                 friction: &mut friction[self.friction_ranges[i].clone()],
                 scratch: scratch[i].as_mut(),
                 rates: &mut rates[self.state_ranges[i].clone()],
+                switching: &mut switching[self.switching_ranges[i].clone()],
             };
             m.evaluate(ctx, &state.slots[i], &commands.values[i], slot_out);
         }
     }
+}
+
+/// Consecutive ranges of `count(model)` entries, one per model.
+fn consecutive_ranges(
+    models: &[Box<dyn LoadModel>],
+    count: impl Fn(&dyn LoadModel) -> usize,
+) -> Vec<Range<usize>> {
+    let mut end = 0;
+    models
+        .iter()
+        .map(|m| {
+            let r = end..end + count(m.as_ref());
+            end = r.end;
+            r
+        })
+        .collect()
 }
 
 #[cfg(test)]

@@ -134,6 +134,8 @@ pub struct ModelOut<'a> {
     pub scratch: &'a mut dyn Any,
     /// The rates of its continuous states ([`LoadModel::continuous_states`] of them).
     pub rates: &'a mut [f64],
+    /// Its switching functions at this instant ([`LoadModel::switching_functions`] of them).
+    pub switching: &'a mut [f64],
 }
 
 /// A load model (see the module docs). Only [`LoadModel::name`],
@@ -185,6 +187,16 @@ pub trait LoadModel: Debug + Send + Sync {
     /// ([`LoadModel::evaluate`] writes f into `out.rates`; the other
     /// integrators refuse such a model). Default: none.
     fn continuous_states(&self) -> usize {
+        0
+    }
+
+    /// Switching functions of a piecewise law: values whose signs select the
+    /// piece (a contact's normal force before lift-off: > 0 closed), written
+    /// by [`LoadModel::evaluate`] into `out.switching`. While no sign changes,
+    /// the law is one smooth piece in the elastic state (affine for linear
+    /// springs), so `contact_exponential` can take its linearisation into the
+    /// exponential and locate the instants where a sign changes. Default: none.
+    fn switching_functions(&self) -> usize {
         0
     }
 

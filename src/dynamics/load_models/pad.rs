@@ -141,6 +141,9 @@ pub struct ContactForces {
     pub axial: f64,
     /// Friction along e_θ (negative for Ω > 0), N.
     pub tangential: f64,
+    /// The top and bottom normal forces before lift-off, N (finite): the
+    /// law's switching functions (> 0: the face is closed).
+    pub margin: [f64; 2],
 }
 
 impl Pads {
@@ -190,7 +193,13 @@ impl Pads {
                         let u = self.backing_force(pad, clamp, sign, kin, closed);
                         for ((contact, s), f) in self.contacts.iter().zip(kin).zip(out.iter_mut()) {
                             if contact.pad == pad {
-                                let n = u + sign * (k * s.w + c * s.w_dot);
+                                // Pressed with nothing, a floating pad exerts
+                                // nothing on any active set (Σ N = 0, N ≥ 0).
+                                let n = if clamp > 0.0 || !self.lift_off {
+                                    u + sign * (k * s.w + c * s.w_dot)
+                                } else {
+                                    0.0
+                                };
                                 if sign > 0.0 {
                                     f.top = n;
                                 } else {
@@ -209,6 +218,7 @@ impl Pads {
     /// friction of the normal forces in `out`.
     pub(super) fn net_and_friction(&self, speed: f64, out: &mut [ContactForces]) {
         for (contact, f) in self.contacts.iter().zip(out.iter_mut()) {
+            f.margin = [f.top.max(-f64::MAX), f.bottom.max(-f64::MAX)];
             if self.lift_off {
                 f.top = f.top.max(0.0);
                 f.bottom = f.bottom.max(0.0);
@@ -478,6 +488,13 @@ impl LoadModel for Pads {
     fn friction_terms(&self) -> usize {
         self.contacts.len()
     }
+    fn switching_functions(&self) -> usize {
+        if self.lift_off {
+            2 * self.contacts.len()
+        } else {
+            0
+        }
+    }
     fn stage_dependent(&self) -> bool {
         true
     }
@@ -516,6 +533,11 @@ impl LoadModel for Pads {
         }
         if self.is_massive() {
             self.pad_rates(slot, clamp_force, &s.forces, out.rates);
+        }
+        if self.lift_off {
+            for (m, f) in out.switching.chunks_exact_mut(2).zip(&s.forces) {
+                m.copy_from_slice(&f.margin);
+            }
         }
         self.friction_torque_terms(&s.forces, out.friction);
         if self.contact_surface == ContactSurface::Faces {

@@ -1,0 +1,104 @@
+//! The right-hand side of the elastic ODE at one instant — RK4's stages and
+//! the frozen instant of `contact_exponential`: the load models evaluated
+//! at the instant's kinematics, the node loads, the reference motion and the
+//! modal accelerations (eq. 12 with eq. 11's reference-motion terms).
+
+use super::{StateView, Views};
+use crate::config::Coordinates;
+use crate::dynamics::ale::harmonics;
+use crate::dynamics::commands::Inputs;
+use crate::dynamics::integrators::equations::{accelerations, ModeConstants};
+use crate::dynamics::load_models::{LoadContext, LoadModelState, ModelWrenches};
+use crate::dynamics::loads::{add_reference_motion, compute as node_loads, StepLoads};
+use crate::dynamics::scene::Scene;
+use crate::dynamics::state::JointAngle;
+
+/// What the right-hand side reads besides y = (q, q̇, the models' continuous states).
+pub(super) struct StageRhs<'a> {
+    pub scene: &'a Scene,
+    pub inputs: &'a Inputs,
+    pub consts: &'a [ModeConstants],
+    /// The description y is in.
+    pub coords: Coordinates,
+    /// Joint acceleration α (the kΩ̇ term of the ALE equations).
+    pub alpha: f64,
+    /// The node loads at the substep start (used when nothing in them depends on y).
+    pub base_ale_frame: &'a [f64],
+    pub harm: &'a mut Vec<(f64, f64)>,
+    pub views: &'a mut Views,
+    pub loads: &'a mut StepLoads,
+    pub model_wrenches: &'a mut ModelWrenches,
+    /// The models' slots with y's continuous states scattered in (None: the models have none).
+    pub stage_slots: Option<&'a mut LoadModelState>,
+    pub slots: &'a LoadModelState,
+}
+
+impl StageRhs<'_> {
+    /// ẏ at joint angle χ and speed Ω into `dy`.
+    pub fn eval(&mut self, chi: JointAngle, speed: f64, y: &[f64], dy: &mut [f64]) {
+        let scene = self.scene;
+        let n = scene.n_modes();
+        harmonics(&chi, scene.layout.k_max, self.harm);
+        let (q, rest) = y.split_at(n);
+        let (v, s) = rest.split_at(n);
+        let stage_models = scene.load_models.stage_dependent();
+        if scene.effects.follower_loads || stage_models {
+            let st = StateView {
+                q,
+                v,
+                coords: self.coords,
+                speed,
+            };
+            st.fill(scene, self.harm, self.views);
+            if stage_models {
+                let ctx = LoadContext {
+                    ale_nodes: &scene.ale_nodes,
+                    lagrange_nodes: &scene.lagrange_nodes,
+                    q_ale: &self.views.q_ale,
+                    q_dot_ale: &self.views.q_dot_ale,
+                    chi: chi.angle,
+                    speed,
+                    held: scene.held_deflection(self.inputs),
+                };
+                let slots = match self.stage_slots.as_deref_mut() {
+                    Some(stage) => {
+                        scene.load_models.scatter_continuous(s, stage);
+                        &*stage
+                    }
+                    None => self.slots,
+                };
+                scene
+                    .load_models
+                    .evaluate(&ctx, slots, &self.inputs.commands, self.model_wrenches);
+            }
+            node_loads(
+                scene,
+                self.inputs,
+                self.model_wrenches,
+                &self.views.q_ale,
+                &self.views.q_lagrange,
+                self.loads,
+            );
+        } else {
+            self.loads.ale_frame.copy_from_slice(self.base_ale_frame);
+        }
+        add_reference_motion(scene, speed, &mut self.loads.ale_frame);
+        let (dq, rest) = dy.split_at_mut(n);
+        let (dv, ds) = rest.split_at_mut(n);
+        dq.copy_from_slice(v);
+        accelerations(
+            scene,
+            self.consts,
+            self.coords,
+            self.harm,
+            speed,
+            self.alpha,
+            q,
+            v,
+            &self.loads.ale_frame,
+            &self.loads.plate_frame,
+            dv,
+        );
+        ds.copy_from_slice(&self.model_wrenches.rates);
+    }
+}
