@@ -57,9 +57,9 @@ pub(super) fn config_from_params(params: &Params) -> Result<Config, ConfigError>
     let loads = read_loads(&r, &nodes, &limits)?;
     let joint = read_joint(&r, &limits)?;
     let reference = read_reference(&r)?;
-    let gravity = r.vec3("gravity", [0.0; 3])?;
+    let gravity = r.vec3("gravity")?;
     let simulation = read_simulation(&r)?;
-    let _use_sim_time = r.bool("use_sim_time", false)?;
+    let _use_sim_time = r.bool("use_sim_time")?;
     let pads = read_pads(&r, &nodes, &limits, caliper_contacts)?;
     let tool = read_tool(&r, &plate, &nodes)?;
     let links = read_links(&r, &nodes, &limits)?;
@@ -105,10 +105,8 @@ fn check_unknown_keys(params: &Params, known: &[&str]) -> Result<(), ConfigError
 // ---- plate -------------------------------------------------------------------
 
 fn read_plate(r: &Reader) -> Result<PlateConfig, ConfigError> {
-    let d = PlateConfig::lathe_disc();
-
-    let inner = r.f64("plate.inner_radius", d.inner_radius)?;
-    let outer = r.positive("plate.outer_radius", d.outer_radius)?;
+    let inner = r.f64("plate.inner_radius")?;
+    let outer = r.positive("plate.outer_radius")?;
     if inner < 0.0 {
         return Err(ConfigError::NotPositive {
             key: "plate.inner_radius".into(),
@@ -134,22 +132,19 @@ fn read_plate(r: &Reader) -> Result<PlateConfig, ConfigError> {
         });
     }
 
-    let thickness = r.positive("plate.thickness", d.thickness)?;
-    let density = r.positive("plate.density", d.density)?;
-    let youngs_modulus = r.positive("plate.youngs_modulus", d.youngs_modulus)?;
-    let poisson_ratio = read_poisson_ratio(r, youngs_modulus, d.poisson_ratio)?;
+    let thickness = r.positive("plate.thickness")?;
+    let density = r.positive("plate.density")?;
+    let youngs_modulus = r.positive("plate.youngs_modulus")?;
+    let poisson_ratio = read_poisson_ratio(r, youngs_modulus)?;
 
-    let inner_boundary = read_boundary(r, "plate.inner_boundary", d.inner_boundary)?;
-    let outer_boundary = read_boundary(r, "plate.outer_boundary", d.outer_boundary)?;
+    let inner_boundary = read_boundary(r, "plate.inner_boundary")?;
+    let outer_boundary = read_boundary(r, "plate.outer_boundary")?;
 
-    let default_k: Vec<i64> = d.nodal_diameters.iter().map(|&k| k as i64).collect();
-    let default_l: Vec<i64> = d.nodal_circles.iter().map(|&l| l as i64).collect();
-    let nodal_diameters =
-        read_index_list(r, "plate.nodal_diameters", &default_k, MAX_NODAL_DIAMETER)?;
-    let nodal_circles = read_index_list(r, "plate.nodal_circles", &default_l, MAX_NODAL_CIRCLE)?;
+    let nodal_diameters = read_index_list(r, "plate.nodal_diameters", MAX_NODAL_DIAMETER)?;
+    let nodal_circles = read_index_list(r, "plate.nodal_circles", MAX_NODAL_CIRCLE)?;
 
     let radial_splines = read_radial_splines(r)?;
-    let frequency_tolerance = r.positive("plate.frequency_tolerance", d.frequency_tolerance)?;
+    let frequency_tolerance = r.positive("plate.frequency_tolerance")?;
     if !(MIN_FREQUENCY_TOLERANCE..=MAX_FREQUENCY_TOLERANCE).contains(&frequency_tolerance) {
         return Err(ConfigError::FrequencyToleranceOutOfRange {
             value: frequency_tolerance,
@@ -172,7 +167,7 @@ fn read_plate(r: &Reader) -> Result<PlateConfig, ConfigError> {
         damping: Vec::new(),
         radial_splines,
         frequency_tolerance,
-        residual_flexibility: r.bool("plate.residual_flexibility", d.residual_flexibility)?,
+        residual_flexibility: r.bool("plate.residual_flexibility")?,
     };
 
     check_derived(&plate)?;
@@ -199,7 +194,7 @@ fn read_plate(r: &Reader) -> Result<PlateConfig, ConfigError> {
             skipped: rigid_body_modes_selected(&plate),
         });
     }
-    let damping = r.f64_array("plate.damping", &d.damping)?;
+    let damping = r.f64_array("plate.damping")?;
     for (index, &value) in damping.iter().enumerate() {
         if !(0.0..1.0).contains(&value) {
             return Err(ConfigError::DampingOutOfRange { index, value });
@@ -222,7 +217,7 @@ fn read_radial_splines(r: &Reader) -> Result<RadialSplines, ConfigError> {
     if !r.has(KEY) {
         return Ok(RadialSplines::Auto);
     }
-    if let Ok(name) = r.string(KEY, "auto") {
+    if let Ok(name) = r.string(KEY) {
         return match name.trim() {
             "auto" => Ok(RadialSplines::Auto),
             _ => Err(ConfigError::RadialSplinesNotAutoOrCount {
@@ -230,7 +225,7 @@ fn read_radial_splines(r: &Reader) -> Result<RadialSplines, ConfigError> {
             }),
         };
     }
-    let splines = r.i64(KEY, 0).map_err(|e| match e {
+    let splines = r.i64(KEY).map_err(|e| match e {
         ConfigError::WrongType { key, found, .. } => ConfigError::WrongType {
             key,
             expected: "`auto` or an integer",
@@ -302,7 +297,7 @@ const DERIVED_RANGE: (f64, f64) = (1e-20, 1e20);
 const FREQUENCY_SCALE_RANGE: (f64, f64) = (1e-20, 1e30);
 
 /// ν from `plate.poisson_ratio` or from `plate.shear_modulus` (ν = E/2G − 1), exactly one of them.
-fn read_poisson_ratio(r: &Reader, youngs_modulus: f64, default: f64) -> Result<f64, ConfigError> {
+fn read_poisson_ratio(r: &Reader, youngs_modulus: f64) -> Result<f64, ConfigError> {
     let given = r.f64_opt("plate.poisson_ratio")?;
     let shear = r.f64_opt("plate.shear_modulus")?;
     let (nu, from_shear_modulus) = match (given, shear) {
@@ -317,7 +312,7 @@ fn read_poisson_ratio(r: &Reader, youngs_modulus: f64, default: f64) -> Result<f
             let g = positive("plate.shear_modulus", g)?;
             (youngs_modulus / (2.0 * g) - 1.0, true)
         }
-        (None, None) => (default, false),
+        (None, None) => (r.f64("plate.poisson_ratio")?, false),
     };
     if !(nu > -1.0 && nu < 0.5) {
         return Err(ConfigError::PoissonRatioOutOfRange {
@@ -328,8 +323,8 @@ fn read_poisson_ratio(r: &Reader, youngs_modulus: f64, default: f64) -> Result<f
     Ok(nu)
 }
 
-fn read_boundary(r: &Reader, key: &str, default: Boundary) -> Result<Boundary, ConfigError> {
-    let name = r.string(key, default.name())?;
+fn read_boundary(r: &Reader, key: &str) -> Result<Boundary, ConfigError> {
+    let name = r.string(key)?;
     Boundary::from_name(name.trim()).ok_or(ConfigError::UnknownBoundary {
         key: key.to_string(),
         value: name,
@@ -337,13 +332,8 @@ fn read_boundary(r: &Reader, key: &str, default: Boundary) -> Result<Boundary, C
 }
 
 /// A non-empty list of distinct integers in 0..=max.
-fn read_index_list(
-    r: &Reader,
-    key: &str,
-    default: &[i64],
-    max: i64,
-) -> Result<Vec<u32>, ConfigError> {
-    let values = r.i64_array(key, default)?;
+fn read_index_list(r: &Reader, key: &str, max: i64) -> Result<Vec<u32>, ConfigError> {
+    let values = r.i64_array(key)?;
     if values.is_empty() {
         return Err(ConfigError::Empty {
             key: key.to_string(),
@@ -444,8 +434,8 @@ fn read_node_list(
     radial_key: &str,
     angular_key: &str,
 ) -> Result<Vec<NodePosition>, ConfigError> {
-    let radial = r.f64_array(radial_key, &[])?;
-    let angular = r.f64_array(angular_key, &[])?;
+    let radial = r.f64_array(radial_key)?;
+    let angular = r.f64_array(angular_key)?;
     for (key, values) in [(radial_key, &radial), (angular_key, &angular)] {
         for (index, &value) in values.iter().enumerate() {
             if !(0.0..=1.0).contains(&value) {
@@ -480,7 +470,7 @@ fn read_loads(
     Ok(LoadsConfig {
         ale: read_wrenches(r, "loads.ale_wrench", nodes.ale.len(), limits)?,
         lagrange: read_wrenches(r, "loads.lagrange_wrench", nodes.lagrange.len(), limits)?,
-        follower: r.bool("loads.follower", false)?,
+        follower: r.bool("loads.follower")?,
     })
 }
 
@@ -491,7 +481,7 @@ fn read_wrenches(
     nodes: usize,
     limits: &LimitsConfig,
 ) -> Result<Vec<WrenchConfig>, ConfigError> {
-    let values = r.f64_array(key, &[])?;
+    let values = r.f64_array(key)?;
     if values.is_empty() {
         return Ok(vec![WrenchConfig::default(); nodes]);
     }
@@ -539,20 +529,19 @@ fn norm(v: [f64; 3]) -> f64 {
 // ---- joint, reference, simulation, limits -------------------------------------
 
 fn read_joint(r: &Reader, limits: &LimitsConfig) -> Result<JointConfig, ConfigError> {
-    let d = JointConfig::default();
-    let speed = r.f64("joint.speed", d.speed)?;
+    let speed = r.f64("joint.speed")?;
     if speed.abs() > limits.max_speed {
         return Err(ConfigError::SpeedAboveLimit {
             speed,
             max_speed: limits.max_speed,
         });
     }
-    let max_acceleration = r.positive("joint.max_acceleration", d.max_acceleration)?;
+    let max_acceleration = r.positive("joint.max_acceleration")?;
     let max_torque = match r.f64_opt("joint.max_torque")? {
         Some(t) => Some(positive("joint.max_torque", t)?),
-        None => d.max_torque,
+        None => None,
     };
-    let initial_position = r.f64("joint.initial_position", d.initial_position)?;
+    let initial_position = r.f64("joint.initial_position")?;
     Ok(JointConfig {
         speed,
         max_acceleration,
@@ -562,46 +551,38 @@ fn read_joint(r: &Reader, limits: &LimitsConfig) -> Result<JointConfig, ConfigEr
 }
 
 fn read_reference(r: &Reader) -> Result<ReferenceConfig, ConfigError> {
-    let d = ReferenceConfig::default();
-    let tilt = r.f64("reference.tilt", d.tilt)?;
+    let tilt = r.f64("reference.tilt")?;
     if tilt.abs() >= FRAC_PI_2 {
         return Err(ConfigError::TiltOutOfRange { tilt });
     }
     Ok(ReferenceConfig {
         tilt,
-        angular_velocity: r.vec3("reference.angular_velocity", d.angular_velocity)?,
-        acceleration: r.vec3("reference.acceleration", d.acceleration)?,
+        angular_velocity: r.vec3("reference.angular_velocity")?,
+        acceleration: r.vec3("reference.acceleration")?,
     })
 }
 
 /// Types, ranges and defaults of these keys are the table's (`config::check`
 /// ran before); only the choices are read here.
 fn read_simulation(r: &Reader) -> Result<SimulationConfig, ConfigError> {
-    let d = SimulationConfig::default();
-    let rate_hz = r.declared_f64("simulation.rate_hz")?;
-    let substeps = r.declared_u32("simulation.substeps")?;
+    let rate_hz = r.f64("simulation.rate_hz")?;
+    let substeps = r.u32("simulation.substeps")?;
     let integrator = read_choice(
         r,
         "simulation.integrator",
-        d.integrator.name(),
         INTEGRATORS,
         IntegratorKind::from_name,
     )?;
     let coordinates = read_choice(
         r,
         "simulation.coordinates",
-        "ale",
         COORDINATES,
-        |s| match s {
-            "ale" => Some(Coordinates::Ale),
-            "lagrangian" => Some(Coordinates::Lagrangian),
-            _ => None,
-        },
+        Coordinates::from_name,
     )?;
-    let realtime_factor = r.declared_f64("simulation.realtime_factor")?;
-    let publish_divisor = r.declared_u32("simulation.publish_divisor")?;
-    let rk4_step_limit = r.declared_f64("simulation.rk4_step_limit")?;
-    let midpoint_step_limit = r.declared_f64("simulation.midpoint_step_limit")?;
+    let realtime_factor = r.f64("simulation.realtime_factor")?;
+    let publish_divisor = r.u32("simulation.publish_divisor")?;
+    let rk4_step_limit = r.f64("simulation.rk4_step_limit")?;
+    let midpoint_step_limit = r.f64("simulation.midpoint_step_limit")?;
     Ok(SimulationConfig {
         rate_hz,
         substeps,
@@ -615,15 +596,11 @@ fn read_simulation(r: &Reader) -> Result<SimulationConfig, ConfigError> {
 }
 
 fn read_limits(r: &Reader) -> Result<LimitsConfig, ConfigError> {
-    let d = LimitsConfig::default();
     Ok(LimitsConfig {
-        max_force: r.positive("limits.max_force", d.max_force)?,
-        max_moment: r.positive("limits.max_moment", d.max_moment)?,
-        max_speed: r.positive("limits.max_speed", d.max_speed)?,
-        max_deflection_thicknesses: r.positive(
-            "limits.max_deflection_thicknesses",
-            d.max_deflection_thicknesses,
-        )?,
+        max_force: r.positive("limits.max_force")?,
+        max_moment: r.positive("limits.max_moment")?,
+        max_speed: r.positive("limits.max_speed")?,
+        max_deflection_thicknesses: r.positive("limits.max_deflection_thicknesses")?,
     })
 }
 
@@ -638,7 +615,7 @@ fn read_initial(
     let max_q = limits.max_deflection_thicknesses * plate.thickness;
     let mut out = InitialConfig::default();
     for (key, slot) in [("initial.q", &mut out.q), ("initial.q_dot", &mut out.q_dot)] {
-        let values = r.f64_array(key, &[])?;
+        let values = r.f64_array(key)?;
         if !values.is_empty() && values.len() != n {
             return Err(ConfigError::WrongLength {
                 key: key.to_string(),
