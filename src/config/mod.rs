@@ -14,6 +14,7 @@ mod error;
 mod load_model_sections;
 mod load_models;
 mod params_file;
+mod plate_section;
 mod raw;
 mod simulation;
 pub mod table;
