@@ -1,6 +1,7 @@
 //! `use_sim_time: true` on the wire: the node follows a `/clock` published
 //! by the Cyclone DDS peer (tests/peer/peer.py, `follow_clock`), as a ROS 2
-//! node does next to Gazebo or `ros2 bag play --clock`. Nothing here asserts
+//! node does next to Gazebo or `ros2 bag play --clock`; a /clock that jumps
+//! forward beyond `ros.max_clock_jump` re-anchors it (`clock_jump`). Nothing here asserts
 //! timing: the peer waits for each condition (generous timeouts) and only
 //! checks that nothing happens while the clock stands still.
 
@@ -123,5 +124,86 @@ fn the_node_steps_and_stamps_with_the_peers_clock_and_stands_still_with_it() {
         node.stderr().contains("following /clock"),
         "{}",
         node.stderr()
+    );
+}
+
+/// 10⁶ s: the jump of one /clock message that once committed the node to
+/// 10⁹ catch-up steps.
+const JUMP: i64 = 1_000_000 * 1_000_000_000;
+
+#[test]
+fn a_clock_jump_beyond_the_bound_re_anchors_the_node_and_warns_with_a_count() {
+    let ns = Netns::new();
+    let args = [
+        "-p",
+        "use_sim_time:=true",
+        "-p",
+        "ros.diagnostics_period:=0.05",
+    ];
+    let node = start_node(&ns, 64, &args);
+    let out = peer(
+        &ns,
+        &node,
+        "clock_jump",
+        "/annular_plate",
+        json!({"t0_ns": T0, "jump_ns": JUMP}),
+    );
+    println!(
+        "first step after a 1e6 s jump: {:.2} s of wall time after it was sent",
+        out["seconds_to_step_after_jump"].as_f64().unwrap()
+    );
+
+    // Each step once, in order; after each jump the stamps continue from the
+    // new clock time (re-anchored), not from the old one through the gap.
+    let modal = out["modal"].as_array().unwrap();
+    let steps: Vec<i64> = modal.iter().map(|m| m["step"].as_i64().unwrap()).collect();
+    assert_eq!(steps, (1..=13).collect::<Vec<_>>(), "{out}");
+    for m in modal {
+        let k = m["step"].as_i64().unwrap();
+        let want = match k {
+            1..=5 => T0 + k * MS,
+            6..=10 => T0 + JUMP + (k - 5) * MS,
+            _ => T0 + 2 * JUMP + (k - 10) * MS,
+        };
+        assert_eq!(m["stamp"].as_i64().unwrap(), want, "stamp of step {k}");
+    }
+    assert!(
+        out["max_step_reported"].as_i64().unwrap() <= 13,
+        "/diagnostics saw no catch-up steps: {out}"
+    );
+
+    // Each jump: a WARN naming the jump and the bound, with the count.
+    let warnings = out["warnings"].as_array().unwrap();
+    for count in ["1", "2"] {
+        let w = warnings
+            .iter()
+            .find(|w| w["values"]["clock_jumps_forward"] == count)
+            .unwrap_or_else(|| panic!("no WARN with clock_jumps_forward = {count}: {out}"));
+        let message = w["message"].as_str().unwrap();
+        assert!(
+            message.contains("/clock jumped forward 1 time(s) beyond ros.max_clock_jump"),
+            "{message}"
+        );
+    }
+    let last = &out["last_report"];
+    assert_eq!(
+        last["values"]["clock_jumps_forward"], "2",
+        "the count stays: {last}"
+    );
+    assert!(
+        !last["message"].as_str().unwrap().contains("jumped"),
+        "a jump is reported once: {last}"
+    );
+    let log = node.stderr();
+    assert_eq!(
+        log.matches("/clock jumped").count(),
+        2,
+        "one log line per jump:\n{log}"
+    );
+    assert!(
+        log.contains("beyond ros.max_clock_jump = 1 s")
+            && log.contains("1 jump(s) so far")
+            && log.contains("2 jump(s) so far"),
+        "{log}"
     );
 }

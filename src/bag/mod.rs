@@ -4,6 +4,7 @@
 //!
 //! - [`writer`]: the bag layout, independent of the node (any serde message
 //!   with a definition in [`schemas`]);
+//! - `metadata`: metadata.yaml, for one file or the files of a directory;
 //! - [`schemas`]: the message definitions with their dependencies appended;
 //! - [`recorder`]: the node's topics ([`recorder::NodeBag`]) and the writer
 //!   thread of `annular_plate run --record DIR` ([`recorder::Recorder`]);
@@ -15,6 +16,7 @@
 //! `ros` feature.
 
 pub mod error;
+mod metadata;
 pub mod offline;
 pub mod recorder;
 pub mod repair;

@@ -16,14 +16,20 @@
 //!   byte for byte, and so does any other file (an old `<name>.broken`).
 //!   When every repaired file is complete and verified (read back: its
 //!   message count, its footer and end magic), metadata.yaml is replaced
-//!   atomically by one that lists the repaired files; the checkpoint's
-//!   metadata.yaml is first copied to a fresh `metadata.yaml.before-repair`.
+//!   atomically by one that lists every file of the bag — the intact ones
+//!   as they are (their topics and counts read from their records), the
+//!   damaged ones by their repaired files — with the counts summed; the
+//!   checkpoint's metadata.yaml is first copied to a fresh
+//!   `metadata.yaml.before-repair`.
 //! - Every damaged `.mcap` of the directory is repaired; a file that does not
 //!   start with the MCAP magic (text, garbage, an empty file) is refused.
-//! - It is idempotent: a damaged file whose `<stem>.repaired.mcap` is complete
-//!   is repaired already; a bag whose every file is complete is left as it is.
+//! - It is idempotent: a damaged file with a complete repaired file
+//!   (`<stem>.repaired.mcap`, or `-2`, … when that name was taken) is
+//!   repaired already, and a repair's output is never taken for an original;
+//!   a bag whose every file is complete or repaired is left as it is.
 
-use super::writer::{write_combined_metadata, BagError, BagSummary, BagWriter, TopicId};
+use super::metadata::{write_combined_metadata, Metadata, TopicCount};
+use super::writer::{BagError, BagSummary, BagWriter, TopicId};
 use std::collections::BTreeMap;
 use std::fs::File;
 use std::io::Read;
@@ -224,27 +230,117 @@ fn verify(path: &Path, expected: u64) -> Result<(), BagError> {
     Ok(())
 }
 
-/// `<stem>.repaired.mcap` beside `source`, or the first free `-2`, `-3`, …;
-/// `Ok(None)` when a complete one exists (repaired before).
-fn repaired_name(source: &Path) -> Result<Option<String>, BagError> {
+/// The repaired file of a damaged `source`.
+#[derive(Debug, PartialEq)]
+enum Repaired {
+    /// A complete one exists (an earlier repair wrote it).
+    Done(String),
+    /// To be written under this fresh name.
+    ToWrite(String),
+}
+
+/// `<stem>.repaired.mcap` beside `source`, then `<stem>.repaired-2.mcap`, …:
+/// the first that is complete is the repair done before; else the first free
+/// name (a name taken by an incomplete file is skipped, never overwritten).
+fn repaired_file(source: &Path) -> Result<Repaired, BagError> {
     let stem = source
         .file_stem()
         .map(|s| s.to_string_lossy().into_owned())
         .unwrap_or_default();
     let dir = source.parent().unwrap_or(Path::new("."));
-    let first = format!("{stem}.repaired.mcap");
-    if dir.join(&first).exists() {
-        if kind(&dir.join(&first)).is_ok_and(|k| k == Kind::Complete) {
-            return Ok(None);
+    for name in repaired_names(&stem) {
+        let path = dir.join(&name);
+        if !path.exists() {
+            return Ok(Repaired::ToWrite(name));
         }
-    } else {
-        return Ok(Some(first));
+        if kind(&path).is_ok_and(|k| k == Kind::Complete) {
+            return Ok(Repaired::Done(name));
+        }
     }
-    (2..MAX_FILES)
-        .map(|i| format!("{stem}.repaired-{i}.mcap"))
-        .find(|n| !dir.join(n).exists())
-        .map(Some)
-        .ok_or_else(|| mcap_err(source, "no free name for the repaired file"))
+    Err(mcap_err(source, "no free name for the repaired file"))
+}
+
+/// The names `bag repair` gives the repaired file of `<stem>.mcap`.
+fn repaired_names(stem: &str) -> impl Iterator<Item = String> + '_ {
+    std::iter::once(format!("{stem}.repaired.mcap"))
+        .chain((2..MAX_FILES).map(move |i| format!("{stem}.repaired-{i}.mcap")))
+}
+
+/// Whether `name` is one of the names repair gives a file of `files`.
+fn is_repair_output(name: &str, files: &[PathBuf]) -> bool {
+    let Some((stem, suffix)) = name.rsplit_once(".repaired") else {
+        return false;
+    };
+    let numbered = suffix
+        .strip_prefix('-')
+        .and_then(|s| s.strip_suffix(".mcap"))
+        .is_some_and(|n| !n.is_empty() && n.bytes().all(|b| b.is_ascii_digit()));
+    (suffix == ".mcap" || numbered)
+        && files
+            .iter()
+            .any(|f| f.file_name().is_some_and(|n| *n == *format!("{stem}.mcap")))
+}
+
+/// The metadata.yaml part of a complete file, from its records (streamed):
+/// its topics with their types, QoS and counts, its first and last log time.
+fn metadata_of(path: &Path) -> Result<Metadata, BagError> {
+    use mcap::records::Record;
+    let mut schemas: BTreeMap<u16, String> = BTreeMap::new();
+    let mut channels: BTreeMap<u16, TopicCount> = BTreeMap::new();
+    let mut channel_schema: BTreeMap<u16, u16> = BTreeMap::new();
+    let mut span: Option<(u64, u64)> = None;
+    let clean = stream_records(path, |opcode, body| {
+        let Ok(rec) = mcap::parse_record(opcode, body) else {
+            return Ok(false);
+        };
+        match rec {
+            Record::Schema { header, .. } => {
+                schemas.insert(header.id, header.name);
+            }
+            Record::Channel(c) => {
+                channel_schema.insert(c.id, c.schema_id);
+                channels.entry(c.id).or_insert(TopicCount {
+                    name: c.topic.clone(),
+                    type_name: String::new(),
+                    qos: c
+                        .metadata
+                        .get("offered_qos_profiles")
+                        .cloned()
+                        .unwrap_or_default(),
+                    count: 0,
+                });
+            }
+            Record::Message { header, .. } => {
+                let Some(t) = channels.get_mut(&header.channel_id) else {
+                    return Ok(false);
+                };
+                t.count += 1;
+                let time = header.log_time;
+                span = Some(span.map_or((time, time), |(a, b)| (a.min(time), b.max(time))));
+            }
+            _ => {}
+        }
+        Ok(true)
+    })?;
+    if !clean {
+        return Err(mcap_err(path, "ends with a footer but does not read to its end: not listed, metadata.yaml not changed"));
+    }
+    let topics = channels
+        .into_iter()
+        .map(|(id, mut t)| {
+            t.type_name = channel_schema
+                .get(&id)
+                .and_then(|s| schemas.get(s))
+                .cloned()
+                .unwrap_or_default();
+            t
+        })
+        .collect();
+    let name = path
+        .file_name()
+        .map(|n| n.to_string_lossy().into_owned())
+        .unwrap_or_default();
+    Ok(Metadata::for_file(name, topics, span))
 }
 
 /// A fresh name `base`, `base-2`, … in `dir`.
@@ -259,30 +355,42 @@ fn fresh(dir: &Path, base: &str) -> PathBuf {
 /// Repair the bag directory `dir` (see the module documentation).
 pub fn repair(dir: &Path) -> Result<Repair, BagError> {
     let files = mcap_files(dir)?;
-    let mut damaged = Vec::new();
+    // Every original (not a repair's output) with its state.
+    let mut originals = Vec::new();
     for f in &files {
-        if kind(f)? == Kind::Damaged {
-            damaged.push(f.clone());
+        let name = f.file_name().map(|n| n.to_string_lossy().into_owned());
+        if name.is_some_and(|n| is_repair_output(&n, &files)) {
+            continue;
         }
+        let repaired = match kind(f)? {
+            Kind::Complete => None,
+            Kind::Damaged => Some(repaired_file(f)?),
+        };
+        originals.push((f.clone(), repaired));
     }
-    let mut todo = Vec::new();
-    for f in &damaged {
-        if let Some(name) = repaired_name(f)? {
-            todo.push((f.clone(), name));
-        }
-    }
-    if todo.is_empty() && dir.join("metadata.yaml").is_file() {
+    let to_write = originals
+        .iter()
+        .any(|(_, r)| matches!(r, Some(Repaired::ToWrite(_))));
+    if !to_write && dir.join("metadata.yaml").is_file() {
         return Ok(Repair::AlreadyComplete { files });
     }
+    // metadata.yaml lists every file in the order of the originals: an
+    // intact one as it is, a damaged one by its repaired file.
     let mut repaired = Vec::new();
     let mut parts = Vec::new();
-    for (source, name) in todo {
-        let mut writer = BagWriter::create_file(dir, name.clone())?.without_checkpoints();
-        let count = copy_messages(&source, &mut writer)?;
-        let (summary, metadata) = writer.finish_file()?;
-        verify(&dir.join(&name), count)?;
-        repaired.push((source, summary));
-        parts.push(metadata);
+    for (source, state) in originals {
+        match state {
+            None => parts.push(metadata_of(&source)?),
+            Some(Repaired::Done(name)) => parts.push(metadata_of(&dir.join(name))?),
+            Some(Repaired::ToWrite(name)) => {
+                let mut writer = BagWriter::create_file(dir, name.clone())?.without_checkpoints();
+                let count = copy_messages(&source, &mut writer)?;
+                let (summary, metadata) = writer.finish_file()?;
+                verify(&dir.join(&name), count)?;
+                repaired.push((source, summary));
+                parts.push(metadata);
+            }
+        }
     }
     let meta = dir.join("metadata.yaml");
     if meta.is_file() {

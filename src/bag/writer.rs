@@ -18,6 +18,7 @@
 //! message; `ros2 bag play` replays by log time. Chunks are not compressed
 //! (rosbag2's default too).
 
+use super::metadata::{write_metadata_yaml, Metadata, TopicCount};
 use super::schemas;
 use byteorder::LittleEndian;
 use ros2_client::dds::rustdds::cdr_encoding;
@@ -32,12 +33,6 @@ use std::time::{Duration, Instant};
 
 /// The CDR encapsulation header: representation CDR_LE, no options.
 pub const CDR_LE_HEADER: [u8; 4] = [0x00, 0x01, 0x00, 0x00];
-
-/// rosbag2 metadata version written (Jazzy).
-pub const METADATA_VERSION: u32 = 9;
-
-/// The distribution whose bag format this is (`ros_distro` in metadata.yaml).
-pub const ROS_DISTRO: &str = "jazzy";
 
 pub use super::error::BagError;
 
@@ -98,18 +93,6 @@ pub struct BagWriter {
 /// How often a recording closes its MCAP chunk and rewrites metadata.yaml,
 /// so that a killed recording loses at most this much (`bag repair`).
 pub const CHECKPOINT_PERIOD: Duration = Duration::from_millis(500);
-
-/// `dir/metadata.yaml`, replaced atomically.
-fn write_metadata_yaml(dir: &Path, metadata: &Metadata) -> Result<(), BagError> {
-    let yaml = serde_yaml_ng::to_string(&MetadataFile {
-        rosbag2_bagfile_information: metadata,
-    })
-    .map_err(|e| BagError::Yaml(e.to_string()))?;
-    let meta_path = dir.join("metadata.yaml");
-    let tmp = dir.join("metadata.yaml.tmp");
-    std::fs::write(&tmp, yaml).map_err(io(&tmp))?;
-    std::fs::rename(&tmp, &meta_path).map_err(io(&meta_path))
-}
 
 fn io(path: &Path) -> impl FnOnce(std::io::Error) -> BagError + '_ {
     move |source| BagError::Io {
@@ -332,48 +315,19 @@ impl BagWriter {
     }
 
     fn metadata(&self) -> Metadata {
-        let start = self.first.unwrap_or(0);
-        let duration = self.first.map_or(0, |f| self.last - f);
-        Metadata {
-            version: METADATA_VERSION,
-            storage_identifier: "mcap".into(),
-            duration: Nanoseconds {
-                nanoseconds: duration,
-            },
-            starting_time: SinceEpoch {
-                nanoseconds_since_epoch: start,
-            },
-            message_count: self.count,
-            topics_with_message_count: self
-                .topics
+        Metadata::for_file(
+            self.file_name.clone(),
+            self.topics
                 .iter()
-                .map(|t| TopicInformation {
-                    topic_metadata: TopicMetadata {
-                        name: t.name.clone(),
-                        r#type: t.type_name.clone(),
-                        serialization_format: "cdr".into(),
-                        offered_qos_profiles: t.qos.clone(),
-                        type_description_hash: String::new(),
-                    },
-                    message_count: t.count,
+                .map(|t| TopicCount {
+                    name: t.name.clone(),
+                    type_name: t.type_name.clone(),
+                    qos: t.qos.clone(),
+                    count: t.count,
                 })
                 .collect(),
-            compression_format: String::new(),
-            compression_mode: String::new(),
-            relative_file_paths: vec![self.file_name.clone()],
-            files: vec![FileInformation {
-                path: self.file_name.clone(),
-                starting_time: SinceEpoch {
-                    nanoseconds_since_epoch: start,
-                },
-                duration: Nanoseconds {
-                    nanoseconds: duration,
-                },
-                message_count: self.count,
-            }],
-            custom_data: BTreeMap::new(),
-            ros_distro: ROS_DISTRO.into(),
-        }
+            self.first.map(|f| (f, self.last)),
+        )
     }
 
     /// Write the MCAP summary and metadata.yaml; the bag is complete.
@@ -411,9 +365,9 @@ impl BagWriter {
         let summary = BagSummary {
             dir: self.dir.clone(),
             file: self.file_name.clone(),
-            message_count: metadata.message_count,
-            starting_time: metadata.starting_time.nanoseconds_since_epoch,
-            duration: metadata.duration.nanoseconds,
+            message_count: metadata.message_count(),
+            starting_time: metadata.span().0,
+            duration: metadata.span().1,
             topics: self
                 .topics
                 .iter()
@@ -427,103 +381,6 @@ impl BagWriter {
         };
         Ok((summary, metadata))
     }
-}
-
-/// Write `dir/metadata.yaml` for the files of `parts` together (`bag repair`
-/// of several files): counts summed per topic, the earliest start, the
-/// latest end.
-pub(super) fn write_combined_metadata(dir: &Path, parts: Vec<Metadata>) -> Result<(), BagError> {
-    let mut parts = parts.into_iter();
-    let Some(mut all) = parts.next() else {
-        return Ok(());
-    };
-    for m in parts {
-        let (a0, a1) = (
-            all.starting_time.nanoseconds_since_epoch,
-            all.starting_time.nanoseconds_since_epoch + all.duration.nanoseconds,
-        );
-        let (b0, b1) = (
-            m.starting_time.nanoseconds_since_epoch,
-            m.starting_time.nanoseconds_since_epoch + m.duration.nanoseconds,
-        );
-        let (start, end) = match (all.message_count, m.message_count) {
-            (0, _) => (b0, b1),
-            (_, 0) => (a0, a1),
-            _ => (a0.min(b0), a1.max(b1)),
-        };
-        all.starting_time.nanoseconds_since_epoch = start;
-        all.duration.nanoseconds = end - start;
-        all.message_count += m.message_count;
-        for t in m.topics_with_message_count {
-            match all
-                .topics_with_message_count
-                .iter_mut()
-                .find(|a| a.topic_metadata.name == t.topic_metadata.name)
-            {
-                Some(a) => a.message_count += t.message_count,
-                None => all.topics_with_message_count.push(t),
-            }
-        }
-        all.relative_file_paths.extend(m.relative_file_paths);
-        all.files.extend(m.files);
-    }
-    write_metadata_yaml(dir, &all)
-}
-
-// ---- metadata.yaml (rosbag2_storage/yaml.hpp, version 9) -----------------------
-
-#[derive(Serialize)]
-struct MetadataFile<'a> {
-    rosbag2_bagfile_information: &'a Metadata,
-}
-
-#[derive(Serialize)]
-struct Nanoseconds {
-    nanoseconds: u64,
-}
-
-#[derive(Serialize)]
-struct SinceEpoch {
-    nanoseconds_since_epoch: u64,
-}
-
-#[derive(Serialize)]
-struct TopicMetadata {
-    name: String,
-    r#type: String,
-    serialization_format: String,
-    offered_qos_profiles: String,
-    type_description_hash: String,
-}
-
-#[derive(Serialize)]
-struct TopicInformation {
-    topic_metadata: TopicMetadata,
-    message_count: u64,
-}
-
-#[derive(Serialize)]
-struct FileInformation {
-    path: String,
-    starting_time: SinceEpoch,
-    duration: Nanoseconds,
-    message_count: u64,
-}
-
-#[derive(Serialize)]
-pub(super) struct Metadata {
-    version: u32,
-    storage_identifier: String,
-    duration: Nanoseconds,
-    starting_time: SinceEpoch,
-    message_count: u64,
-    topics_with_message_count: Vec<TopicInformation>,
-    compression_format: String,
-    compression_mode: String,
-    relative_file_paths: Vec<String>,
-    files: Vec<FileInformation>,
-    custom_data: BTreeMap<String, String>,
-    ros_distro: String,
 }
 
 #[cfg(test)]

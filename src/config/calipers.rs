@@ -52,7 +52,7 @@ pub(super) fn read_calipers(
     plate: &PlateConfig,
     nodes: &mut NodesConfig,
 ) -> Result<Option<Vec<PadContact>>, ConfigError> {
-    let angles = r.f64_array("calipers.angles_deg", &[])?;
+    let angles = r.f64_array("calipers.angles_deg")?;
     if angles.is_empty() {
         super::load_model_sections::no_other_keys(
             r,
@@ -74,7 +74,7 @@ pub(super) fn read_calipers(
         });
     }
     let count = angles.len();
-    let arc = r.f64("calipers.arc_deg", 60.0)?;
+    let arc = r.f64("calipers.arc_deg")?;
     if !(arc > 0.0 && arc * count as f64 <= 360.0) {
         return Err(rule(
             "calipers.arc_deg",
@@ -108,8 +108,8 @@ pub(super) fn read_calipers(
     if !(outer > inner && outer <= ra) {
         return Err(rule("calipers.outer_radius", outer, format!("must lie above calipers.inner_radius = {inner} m and at most plate.outer_radius = {ra} m")));
     }
-    let nr = r.i64("calipers.points_radial", 1)?;
-    let nc = r.i64("calipers.points_circumferential", 6)?;
+    let nr = r.i64("calipers.points_radial")?;
+    let nc = r.i64("calipers.points_circumferential")?;
     for (key, n) in [
         ("calipers.points_radial", nr),
         ("calipers.points_circumferential", nc),

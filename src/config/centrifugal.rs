@@ -56,19 +56,22 @@ pub struct CentrifugalConfig {
     pub in_plane_inner: InPlaneInner,
 }
 
+/// The declared defaults of the two keys (`config/table.rs`).
 impl Default for CentrifugalConfig {
     fn default() -> Self {
+        use super::defaults::{default_bool, default_str};
         CentrifugalConfig {
-            stiffening: false,
-            in_plane_inner: InPlaneInner::Auto,
+            stiffening: const { default_bool("plate.centrifugal_stiffening") },
+            in_plane_inner: InPlaneInner::from_name(default_str("plate.in_plane_inner"))
+                .expect("the declared default is a choice"),
         }
     }
 }
 
 pub(super) fn read_centrifugal(r: &Reader) -> Result<CentrifugalConfig, ConfigError> {
-    let stiffening = r.bool("plate.centrifugal_stiffening", false)?;
+    let stiffening = r.bool("plate.centrifugal_stiffening")?;
     let key = "plate.in_plane_inner";
-    let name = r.string(key, "auto")?;
+    let name = r.string(key)?;
     let in_plane_inner =
         InPlaneInner::from_name(name.trim()).ok_or(ConfigError::UnknownChoice {
             key: key.to_string(),

@@ -2,9 +2,10 @@
 //! ([`super::table`]): known key, declared type (strict, as rclcpp's: an
 //! integer is not a double), every double finite, every number in the
 //! declared range. Every source of a value goes through it: the parameter
-//! file and `-p` (`Config::from_params`, `RosSettings::from_params`) and the
-//! node's parameter services (`ros/params_service.rs`), so nothing the
-//! start-up path refuses can arrive by a service. Rules between keys
+//! file and `-p` (`Config::from_params` and `RosSettings::from_params` read
+//! every value through [`declared_value`] and [`typed`]) and the node's
+//! parameter services (`ros/params_service.rs`), so nothing the start-up
+//! path refuses can arrive by a service, and the refusal reads the same. Rules between keys
 //! (`plate.inner_radius` < `plate.outer_radius`, …) stay with their section
 //! in `validate.rs`.
 
@@ -15,11 +16,7 @@ use super::{ConfigError, ParamValue, Params};
 /// lies in its range. The error names the key (`key[i]` for an array element).
 pub fn check(key: &str, value: &ParamValue) -> Result<&'static Param, ConfigError> {
     let Some(param) = table::find(key) else {
-        let known: Vec<&str> = table::params().map(|p| p.key).collect();
-        return Err(ConfigError::UnknownKey {
-            key: key.to_string(),
-            suggestion: suggest(key, &known),
-        });
+        return Err(unknown(key));
     };
     let wrong = || ConfigError::WrongType {
         key: key.to_string(),
@@ -52,11 +49,127 @@ pub fn check(key: &str, value: &ParamValue) -> Result<&'static Param, ConfigErro
     }
 }
 
+fn unknown(key: &str) -> ConfigError {
+    let known: Vec<&str> = table::params().map(|p| p.key).collect();
+    ConfigError::UnknownKey {
+        key: key.to_string(),
+        suggestion: suggest(key, &known),
+    }
+}
+
 /// Check every value of a parameter set ([`check`]).
 pub fn check_params(params: &Params) -> Result<(), ConfigError> {
     params
         .iter()
         .try_for_each(|(key, value)| check(key, value).map(|_| ()))
+}
+
+/// The value of `key` in `params` after [`check`], or its declared default
+/// (`None`: the key is not given and declares no default). The readers of
+/// the configuration (`config::raw::Reader`) and of the node's settings
+/// (`RosSettings::from_params`) take every value through this.
+pub(crate) fn declared_value(
+    params: &Params,
+    key: &str,
+) -> Result<Option<ParamValue>, ConfigError> {
+    match params.get(key) {
+        Some(value) => check(key, value).map(|_| Some(value.clone())),
+        None => match table::find(key) {
+            Some(param) => Ok(param.default.to_param()),
+            None => Err(unknown(key)),
+        },
+    }
+}
+
+/// The given value of `key` after [`check`] (its default not applied).
+pub(crate) fn given_value(params: &Params, key: &str) -> Result<Option<ParamValue>, ConfigError> {
+    match params.get(key) {
+        Some(value) => check(key, value).map(|_| Some(value.clone())),
+        None => Ok(None),
+    }
+}
+
+/// A value [`check`] passed, as the Rust type of its declared type: `Double`
+/// → f64, `Integer` → i64, arrays → vectors (an empty array of any element
+/// type is an empty vector). A value of another type (not reachable after
+/// [`check`]) is the same error [`check`] gives.
+pub(crate) trait Declared: Sized {
+    fn from_value(value: &ParamValue) -> Option<Self>;
+}
+
+impl Declared for f64 {
+    fn from_value(value: &ParamValue) -> Option<Self> {
+        match value {
+            ParamValue::Double(x) => Some(*x),
+            _ => None,
+        }
+    }
+}
+
+impl Declared for i64 {
+    fn from_value(value: &ParamValue) -> Option<Self> {
+        match value {
+            ParamValue::Integer(i) => Some(*i),
+            _ => None,
+        }
+    }
+}
+
+impl Declared for bool {
+    fn from_value(value: &ParamValue) -> Option<Self> {
+        match value {
+            ParamValue::Bool(b) => Some(*b),
+            _ => None,
+        }
+    }
+}
+
+impl Declared for String {
+    fn from_value(value: &ParamValue) -> Option<Self> {
+        match value {
+            ParamValue::String(s) => Some(s.clone()),
+            _ => None,
+        }
+    }
+}
+
+impl Declared for Vec<f64> {
+    fn from_value(value: &ParamValue) -> Option<Self> {
+        match value {
+            ParamValue::DoubleArray(v) => Some(v.clone()),
+            v if v.array_len() == Some(0) => Some(Vec::new()),
+            _ => None,
+        }
+    }
+}
+
+impl Declared for Vec<i64> {
+    fn from_value(value: &ParamValue) -> Option<Self> {
+        match value {
+            ParamValue::IntegerArray(v) => Some(v.clone()),
+            v if v.array_len() == Some(0) => Some(Vec::new()),
+            _ => None,
+        }
+    }
+}
+
+impl Declared for Vec<String> {
+    fn from_value(value: &ParamValue) -> Option<Self> {
+        match value {
+            ParamValue::StringArray(v) => Some(v.clone()),
+            v if v.array_len() == Some(0) => Some(Vec::new()),
+            _ => None,
+        }
+    }
+}
+
+/// `value` (of `key`) as `T`, or the wrong-type error of [`check`].
+pub(crate) fn typed<T: Declared>(key: &str, value: &ParamValue) -> Result<T, ConfigError> {
+    T::from_value(value).ok_or_else(|| ConfigError::WrongType {
+        key: key.to_string(),
+        expected: table::find(key).map_or("a declared type", |p| p.ty.expected()),
+        found: format!("{} {value}", value.type_name()),
+    })
 }
 
 /// A text value (file, `-p`) for a key declared double (or double array)

@@ -12,21 +12,8 @@ use super::{
 const CALIPERS: &[&str] = &["floating", "fixed"];
 const CONTACT_SURFACES: &[&str] = &["faces", "mid_plane"];
 
-/// Default pad data (the scene files give their own; docs/scenes.md).
-pub const DEFAULT_PAD_CONTACT_STIFFNESS: f64 = 5.0e6;
-pub const DEFAULT_PAD_CONTACT_DAMPING: f64 = 0.0;
-/// Default v_S of the speed-dependent friction law, m/s.
-pub const DEFAULT_STRIBECK_SPEED: f64 = 1.0;
-pub const DEFAULT_FRICTION_COEFFICIENT: f64 = 0.4;
 /// Largest plausible friction coefficient.
 const MAX_FRICTION_COEFFICIENT: f64 = 2.0;
-/// Default tool data: the paper's feed (120 mm/min) and eq. (21) constants (paper 5.1, docs/scenes.md).
-pub const DEFAULT_TOOL_DEPTH_OF_CUT: f64 = 2.0e-3;
-pub const DEFAULT_TOOL_FEED_RATE: f64 = 0.12 / 60.0;
-pub const DEFAULT_TOOL_STIFFNESS: f64 = 2.0e7;
-pub const DEFAULT_TOOL_DAMPING: f64 = 2.0e3;
-pub const DEFAULT_TOOL_SPECIFIC_FORCE: f64 = 351.0e6;
-pub const DEFAULT_TOOL_FORCE_EXPONENT: f64 = 0.7013;
 
 /// A load model whose enabling key is empty must not be given other keys.
 pub(super) fn no_other_keys(
@@ -125,13 +112,13 @@ fn read_pad_contacts(
     r: &Reader,
     nodes: &NodesConfig,
 ) -> Result<Option<Vec<PadContact>>, ConfigError> {
-    let numbers = r.i64_array("pads.ale_nodes", &[])?;
+    let numbers = r.i64_array("pads.ale_nodes")?;
     if numbers.is_empty() {
         no_other_keys(r, &super::table::keys("pads"), "pads.ale_nodes")?;
         return Ok(None);
     }
     let node_index = node_refs("pads.ale_nodes", &numbers, "ale", nodes.ale.len())?;
-    let pad_numbers = r.i64_array("pads.contact_pad", &[])?;
+    let pad_numbers = r.i64_array("pads.contact_pad")?;
     let pad_numbers = if pad_numbers.is_empty() {
         vec![1; node_index.len()]
     } else {
@@ -175,7 +162,7 @@ fn read_pad_data(
     contacts: Vec<PadContact>,
     pads: usize,
 ) -> Result<Option<PadsConfig>, ConfigError> {
-    let clamp = r.f64_array("pads.clamp_force", &[0.0])?;
+    let clamp = r.f64_array("pads.clamp_force")?;
     for (index, &f) in clamp.iter().enumerate() {
         let key = format!("pads.clamp_force[{index}]");
         non_negative(&key, f)?;
@@ -186,29 +173,19 @@ fn read_pad_data(
         n if n == pads => clamp,
         len => return Err(ConfigError::ClampForceLength { len, pads }),
     };
-    let contact_stiffness = r.positive("pads.contact_stiffness", DEFAULT_PAD_CONTACT_STIFFNESS)?;
-    let contact_damping = non_negative(
-        "pads.contact_damping",
-        r.f64("pads.contact_damping", DEFAULT_PAD_CONTACT_DAMPING)?,
-    )?;
-    let mu = r.f64("pads.friction_coefficient", DEFAULT_FRICTION_COEFFICIENT)?;
+    let contact_stiffness = r.positive("pads.contact_stiffness")?;
+    let contact_damping = non_negative("pads.contact_damping", r.f64("pads.contact_damping")?)?;
+    let mu = r.f64("pads.friction_coefficient")?;
     let friction_coefficient = at_most(
         "pads.friction_coefficient",
         non_negative("pads.friction_coefficient", mu)?,
         MAX_FRICTION_COEFFICIENT,
     )?;
-    let contact_surface =
-        read_choice(
-            r,
-            "pads.contact_surface",
-            "faces",
-            CONTACT_SURFACES,
-            |s| match s {
-                "faces" => Some(ContactSurface::Faces),
-                "mid_plane" => Some(ContactSurface::MidPlane),
-                _ => None,
-            },
-        )?;
+    let contact_surface = read_choice(r, "pads.contact_surface", CONTACT_SURFACES, |s| match s {
+        "faces" => Some(ContactSurface::Faces),
+        "mid_plane" => Some(ContactSurface::MidPlane),
+        _ => None,
+    })?;
     let static_friction_coefficient = match r.f64_opt("pads.static_friction_coefficient")? {
         None => None,
         Some(_) if contact_surface == ContactSurface::MidPlane => {
@@ -220,7 +197,7 @@ fn read_pad_data(
             MAX_FRICTION_COEFFICIENT,
         )?),
     };
-    let caliper = read_choice(r, "pads.caliper", "floating", CALIPERS, |s| match s {
+    let caliper = read_choice(r, "pads.caliper", CALIPERS, |s| match s {
         "floating" => Some(Caliper::Floating),
         "fixed" => Some(Caliper::Fixed),
         _ => None,
@@ -232,12 +209,12 @@ fn read_pad_data(
         contact_stiffness,
         contact_damping,
         friction_coefficient,
-        lift_off: r.bool("pads.lift_off", false)?,
-        follower_friction: r.bool("pads.follower_friction", true)?,
+        lift_off: r.bool("pads.lift_off")?,
+        follower_friction: r.bool("pads.follower_friction")?,
         caliper,
         contact_surface,
         static_friction_coefficient,
-        stribeck_speed: r.positive("pads.stribeck_speed", DEFAULT_STRIBECK_SPEED)?,
+        stribeck_speed: r.positive("pads.stribeck_speed")?,
         mass,
         backing_stiffness,
     }))
@@ -246,7 +223,7 @@ fn read_pad_data(
 /// `pads.mass` (≥ 0) and `pads.backing_stiffness` (> 0; given exactly when
 /// the pads have mass and the caliper is fixed).
 fn read_pad_mass(r: &Reader, caliper: Caliper) -> Result<(f64, Option<f64>), ConfigError> {
-    let mass = non_negative("pads.mass", r.f64("pads.mass", 0.0)?)?;
+    let mass = non_negative("pads.mass", r.f64("pads.mass")?)?;
     let backing = match r.f64_opt("pads.backing_stiffness")? {
         Some(k) => Some(super::raw::positive("pads.backing_stiffness", k)?),
         None => None,
@@ -264,7 +241,7 @@ pub(super) fn read_tool(
     plate: &PlateConfig,
     nodes: &NodesConfig,
 ) -> Result<Option<ToolConfig>, ConfigError> {
-    let number = r.i64("tool.ale_node", 0)?;
+    let number = r.i64("tool.ale_node")?;
     if number == 0 {
         no_other_keys(r, &super::table::keys("tool"), "tool.ale_node")?;
         return Ok(None);
@@ -292,7 +269,7 @@ pub(super) fn read_tool(
             radial,
         });
     }
-    let depth_of_cut = r.positive("tool.depth_of_cut", DEFAULT_TOOL_DEPTH_OF_CUT)?;
+    let depth_of_cut = r.positive("tool.depth_of_cut")?;
     let width = plate.outer_radius - plate.inner_radius;
     if depth_of_cut >= width {
         return Err(ConfigError::DepthOfCutBeyondPlate {
@@ -302,18 +279,14 @@ pub(super) fn read_tool(
     }
     let feed_rate = at_most(
         "tool.feed_rate",
-        r.f64("tool.feed_rate", DEFAULT_TOOL_FEED_RATE)?,
+        r.f64("tool.feed_rate")?,
         MAX_TOOL_FEED_RATE,
     )?;
-    let start_clearance =
-        non_negative("tool.start_clearance", r.f64("tool.start_clearance", 0.0)?)?;
-    let stiffness = r.positive("tool.stiffness", DEFAULT_TOOL_STIFFNESS)?;
-    let damping = non_negative("tool.damping", r.f64("tool.damping", DEFAULT_TOOL_DAMPING)?)?;
-    let specific_force = r.positive("tool.specific_force", DEFAULT_TOOL_SPECIFIC_FORCE)?;
-    let force_exponent = non_negative(
-        "tool.force_exponent",
-        r.f64("tool.force_exponent", DEFAULT_TOOL_FORCE_EXPONENT)?,
-    )?;
+    let start_clearance = non_negative("tool.start_clearance", r.f64("tool.start_clearance")?)?;
+    let stiffness = r.positive("tool.stiffness")?;
+    let damping = non_negative("tool.damping", r.f64("tool.damping")?)?;
+    let specific_force = r.positive("tool.specific_force")?;
+    let force_exponent = non_negative("tool.force_exponent", r.f64("tool.force_exponent")?)?;
     if force_exponent >= 1.0 {
         return Err(ConfigError::AboveMaximum {
             key: "tool.force_exponent".into(),
@@ -338,7 +311,7 @@ pub(super) fn read_links(
     nodes: &NodesConfig,
     limits: &LimitsConfig,
 ) -> Result<Option<LinksConfig>, ConfigError> {
-    let numbers = r.i64_array("links.lagrange_nodes", &[])?;
+    let numbers = r.i64_array("links.lagrange_nodes")?;
     if numbers.is_empty() {
         no_other_keys(r, &super::table::keys("links"), "links.lagrange_nodes")?;
         return Ok(None);
@@ -351,15 +324,15 @@ pub(super) fn read_links(
     )?;
     let mean_force = at_most(
         "links.mean_force",
-        r.f64("links.mean_force", 0.0)?,
+        r.f64("links.mean_force")?,
         limits.max_force,
     )?;
     let cyclic_force = at_most(
         "links.cyclic_force",
-        r.f64("links.cyclic_force", 0.0)?,
+        r.f64("links.cyclic_force")?,
         limits.max_force,
     )?;
-    let cyclic_phase = r.f64("links.cyclic_phase", 0.0)?;
+    let cyclic_phase = r.f64("links.cyclic_phase")?;
     Ok(Some(LinksConfig {
         nodes,
         mean_force,
@@ -372,14 +345,14 @@ pub(super) fn read_springs(
     r: &Reader,
     nodes: &NodesConfig,
 ) -> Result<Option<SpringsConfig>, ConfigError> {
-    let numbers = r.i64_array("springs.ale_nodes", &[])?;
+    let numbers = r.i64_array("springs.ale_nodes")?;
     if numbers.is_empty() {
         no_other_keys(r, &super::table::keys("springs"), "springs.ale_nodes")?;
         return Ok(None);
     }
     let nodes = node_refs("springs.ale_nodes", &numbers, "ale", nodes.ale.len())?;
-    let stiffness = non_negative("springs.stiffness", r.f64("springs.stiffness", 0.0)?)?;
-    let damping = non_negative("springs.damping", r.f64("springs.damping", 0.0)?)?;
+    let stiffness = non_negative("springs.stiffness", r.f64("springs.stiffness")?)?;
+    let damping = non_negative("springs.damping", r.f64("springs.damping")?)?;
     Ok(Some(SpringsConfig {
         nodes,
         stiffness,

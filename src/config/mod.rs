@@ -9,23 +9,31 @@
 pub mod calipers;
 mod centrifugal;
 mod check;
+pub mod defaults;
 mod error;
 mod load_model_sections;
 mod load_models;
 mod params_file;
+mod plate_section;
 mod raw;
+mod simulation;
 pub mod table;
 mod text_limits;
 mod validate;
 
 pub use centrifugal::{CentrifugalConfig, InPlaneInner};
 pub use check::{check, check_params};
+pub(crate) use check::{declared_value, typed, Declared};
 pub use error::{ConfigError, Degeneracy};
 pub use load_models::{
     Caliper, ContactSurface, LinksConfig, PadContact, PadsConfig, SpringsConfig, ToolConfig,
     MAX_TOOL_FEED_RATE,
 };
 pub use params_file::{ParamValue, Params};
+pub use simulation::{
+    Coordinates, IntegratorKind, SimulationConfig, DEFAULT_MIDPOINT_STEP_LIMIT,
+    DEFAULT_RK4_STEP_LIMIT, MAX_MIDPOINT_STEP_LIMIT, MAX_RK4_STEP_LIMIT, MIN_CONTACT_TOLERANCE,
+};
 
 use serde::Serialize;
 
@@ -114,23 +122,30 @@ pub fn bending_rigidity(youngs_modulus: f64, thickness: f64, poisson_ratio: f64)
 }
 
 impl PlateConfig {
-    /// The paper's Table 1 / lathe disc with the defaults of the parameter reference.
+    /// The paper's Table 1 / lathe disc: the declared defaults of the
+    /// `plate.*` keys ([`table`]).
     pub fn lathe_disc() -> Self {
+        use defaults::{default_bool, default_f64, default_f64s, default_i64s, default_str};
+        let boundary = |key| {
+            Boundary::from_name(default_str(key))
+                .expect("a declared boundary default is a boundary")
+        };
+        let indices = |key| default_i64s(key).iter().map(|&i| i as u32).collect();
         PlateConfig {
-            inner_radius: 0.075,
-            outer_radius: 0.15,
-            thickness: 0.01,
-            density: 7850.0,
-            youngs_modulus: 2.1e11,
-            poisson_ratio: 0.3,
-            inner_boundary: Boundary::Clamped,
-            outer_boundary: Boundary::Free,
-            nodal_diameters: (0..=7).collect(),
-            nodal_circles: vec![0, 1],
-            damping: vec![0.0],
-            radial_splines: RadialSplines::Auto,
+            inner_radius: const { default_f64("plate.inner_radius") },
+            outer_radius: const { default_f64("plate.outer_radius") },
+            thickness: const { default_f64("plate.thickness") },
+            density: const { default_f64("plate.density") },
+            youngs_modulus: const { default_f64("plate.youngs_modulus") },
+            poisson_ratio: const { default_f64("plate.poisson_ratio") },
+            inner_boundary: boundary("plate.inner_boundary"),
+            outer_boundary: boundary("plate.outer_boundary"),
+            nodal_diameters: indices("plate.nodal_diameters"),
+            nodal_circles: indices("plate.nodal_circles"),
+            damping: default_f64s("plate.damping").to_vec(),
+            radial_splines: RadialSplines::from_declared_default(),
             frequency_tolerance: DEFAULT_FREQUENCY_TOLERANCE,
-            residual_flexibility: true,
+            residual_flexibility: const { default_bool("plate.residual_flexibility") },
         }
     }
 
@@ -215,8 +230,8 @@ impl PlateConfig {
 /// `auto` search starts from for the first k (`plate.radial_splines`).
 pub const DEFAULT_RADIAL_SPLINES: usize = 32;
 
-/// Default of `plate.frequency_tolerance`.
-pub const DEFAULT_FREQUENCY_TOLERANCE: f64 = 1e-6;
+/// Default of `plate.frequency_tolerance` (its declaration).
+pub const DEFAULT_FREQUENCY_TOLERANCE: f64 = defaults::default_f64("plate.frequency_tolerance");
 
 /// `plate.radial_splines`: `auto` (the default) or a fixed count.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -229,6 +244,14 @@ pub enum RadialSplines {
 }
 
 impl RadialSplines {
+    /// The declared default of `plate.radial_splines` (`auto` or a count).
+    pub fn from_declared_default() -> Self {
+        match defaults::default_of("plate.radial_splines") {
+            table::Value::Integer(n) => RadialSplines::Fixed(n as usize),
+            _ => RadialSplines::Auto,
+        }
+    }
+
     /// The fixed count, or `None` for `auto`.
     pub fn fixed(self) -> Option<usize> {
         match self {
@@ -341,12 +364,23 @@ pub struct WrenchConfig {
 }
 
 /// Constant wrenches held from t = 0 (`loads.*`), one per node (zero where not given).
-#[derive(Debug, Clone, PartialEq, Default, Serialize)]
+#[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct LoadsConfig {
     pub ale: Vec<WrenchConfig>,
     pub lagrange: Vec<WrenchConfig>,
     /// Wrenches turn with the deformed surface (follower loads, paper 5.3).
     pub follower: bool,
+}
+
+/// No wrenches; `loads.follower` as declared ([`table`]).
+impl Default for LoadsConfig {
+    fn default() -> Self {
+        LoadsConfig {
+            ale: Vec::new(),
+            lagrange: Vec::new(),
+            follower: const { defaults::default_bool("loads.follower") },
+        }
+    }
 }
 
 /// The rotational joint at the plate axis (`joint.*`).
@@ -362,19 +396,21 @@ pub struct JointConfig {
     pub initial_position: f64,
 }
 
+/// The declared defaults of the `joint.*` keys ([`table`]).
 impl Default for JointConfig {
     fn default() -> Self {
+        use defaults::default_f64;
         JointConfig {
-            speed: 0.0,
-            max_acceleration: 50.0,
+            speed: const { default_f64("joint.speed") },
+            max_acceleration: const { default_f64("joint.max_acceleration") },
             max_torque: None,
-            initial_position: 0.0,
+            initial_position: const { default_f64("joint.initial_position") },
         }
     }
 }
 
 /// Prescribed motion of the reference frame (`reference.*`).
-#[derive(Debug, Clone, PartialEq, Default, Serialize)]
+#[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct ReferenceConfig {
     /// Constant tilt of the spin axis about the world x axis, rad.
     pub tilt: f64,
@@ -384,106 +420,19 @@ pub struct ReferenceConfig {
     pub acceleration: [f64; 3],
 }
 
-/// Time integration scheme (`simulation.integrator`).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
-#[serde(rename_all = "snake_case")]
-pub enum IntegratorKind {
-    /// Exact exponential per mode / mode pair for loads held over a step.
-    Exponential,
-    /// Implicit midpoint rule: A-stable, conserves the quadratic energy.
-    ImplicitMidpoint,
-    /// Classical explicit Runge–Kutta 4, sub-stepping itself below its stability limit.
-    Rk4,
-    /// The exponential of the load models' linearisation on their active set
-    /// (stiff contacts), switches located inside the step.
-    ContactExponential,
-}
-
-impl IntegratorKind {
-    pub fn name(self) -> &'static str {
-        match self {
-            IntegratorKind::Exponential => "exponential",
-            IntegratorKind::ImplicitMidpoint => "implicit_midpoint",
-            IntegratorKind::Rk4 => "rk4",
-            IntegratorKind::ContactExponential => "contact_exponential",
-        }
-    }
-    pub fn from_name(s: &str) -> Option<Self> {
-        match s {
-            "exponential" => Some(IntegratorKind::Exponential),
-            "implicit_midpoint" => Some(IntegratorKind::ImplicitMidpoint),
-            "rk4" => Some(IntegratorKind::Rk4),
-            "contact_exponential" => Some(IntegratorKind::ContactExponential),
-            _ => None,
-        }
-    }
-}
-
-/// Coordinates in which the elastic equations are integrated (`simulation.coordinates`).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
-#[serde(rename_all = "snake_case")]
-pub enum Coordinates {
-    /// Modal amplitudes resolved in the rotating plate frame B.
-    Lagrangian,
-    /// Modal amplitudes resolved in the non-rotating frame A (eq. 20).
-    Ale,
-}
-
-/// `simulation.*`.
-#[derive(Debug, Clone, PartialEq, Serialize)]
-pub struct SimulationConfig {
-    /// Output rate and fixed step, Hz.
-    pub rate_hz: f64,
-    /// Integration sub-steps per output step.
-    pub substeps: u32,
-    pub integrator: IntegratorKind,
-    pub coordinates: Coordinates,
-    /// 1 = wall clock, 0 = as fast as possible (the node only).
-    pub realtime_factor: f64,
-    /// Publish every `publish_divisor`-th step (the node only).
-    pub publish_divisor: u32,
-    /// RK4 sub-steps itself so that h·λ_max stays below this (accuracy of the
-    /// explicit reference; its amplitude error per step is (hω)⁶/144).
-    pub rk4_step_limit: f64,
-    /// The implicit midpoint rule sub-steps itself so that h·λ_max stays below
-    /// this (its relative frequency error is 1 − 2·atan(hω/2)/(hω) ≈ (hω)²/12).
-    pub midpoint_step_limit: f64,
-    /// `contact_exponential` halves its spans until the local error of what
-    /// it holds over a span (the friction direction, follower terms) is below
-    /// this, relative to the state's scale.
-    pub contact_tolerance: f64,
-}
-
-impl Default for SimulationConfig {
+/// The declared defaults of the `reference.*` keys ([`table`]).
+impl Default for ReferenceConfig {
     fn default() -> Self {
-        SimulationConfig {
-            rate_hz: 1000.0,
-            substeps: 1,
-            integrator: IntegratorKind::Exponential,
-            coordinates: Coordinates::Ale,
-            realtime_factor: 1.0,
-            publish_divisor: 1,
-            rk4_step_limit: DEFAULT_RK4_STEP_LIMIT,
-            midpoint_step_limit: DEFAULT_MIDPOINT_STEP_LIMIT,
-            contact_tolerance: DEFAULT_CONTACT_TOLERANCE,
+        let vec3 = |key| {
+            <[f64; 3]>::try_from(defaults::default_f64s(key)).expect("declared with 3 values")
+        };
+        ReferenceConfig {
+            tilt: const { defaults::default_f64("reference.tilt") },
+            angular_velocity: vec3("reference.angular_velocity"),
+            acceleration: vec3("reference.acceleration"),
         }
     }
 }
-
-/// Default of `simulation.rk4_step_limit`.
-pub const DEFAULT_RK4_STEP_LIMIT: f64 = 0.2;
-/// Default of `simulation.midpoint_step_limit`: the fastest retained mode's
-/// frequency within 2.0 % (1 − 2·atan(0.25)/0.5), slower ones as (hω)²/12.
-pub const DEFAULT_MIDPOINT_STEP_LIMIT: f64 = 0.5;
-/// Default of `simulation.contact_tolerance`.
-pub const DEFAULT_CONTACT_TOLERANCE: f64 = 1.0e-9;
-/// Smallest `simulation.contact_tolerance` (below it rounding decides).
-pub const MIN_CONTACT_TOLERANCE: f64 = 1.0e-14;
-/// Largest `simulation.midpoint_step_limit`: large enough to accept unresolved
-/// modes on purpose (the rule stays A-stable but rings without numerical damping).
-pub const MAX_MIDPOINT_STEP_LIMIT: f64 = 1e6;
-/// Largest `simulation.rk4_step_limit`: RK4's stability limit on the imaginary axis is 2√2.
-pub const MAX_RK4_STEP_LIMIT: f64 = 2.5;
 
 /// Input plausibility limits (`limits.*`): larger wrenches are rejected as absurd.
 #[derive(Debug, Clone, PartialEq, Serialize)]
@@ -498,13 +447,15 @@ pub struct LimitsConfig {
     pub max_deflection_thicknesses: f64,
 }
 
+/// The declared defaults of the `limits.*` keys ([`table`]).
 impl Default for LimitsConfig {
     fn default() -> Self {
+        use defaults::default_f64;
         LimitsConfig {
-            max_force: 1.0e7,
-            max_moment: 1.0e6,
-            max_speed: 1.0e4,
-            max_deflection_thicknesses: 1.0e3,
+            max_force: const { default_f64("limits.max_force") },
+            max_moment: const { default_f64("limits.max_moment") },
+            max_speed: const { default_f64("limits.max_speed") },
+            max_deflection_thicknesses: const { default_f64("limits.max_deflection_thicknesses") },
         }
     }
 }
@@ -581,7 +532,8 @@ impl Default for Config {
             loads: LoadsConfig::default(),
             joint: JointConfig::default(),
             reference: ReferenceConfig::default(),
-            gravity: [0.0; 3],
+            gravity: <[f64; 3]>::try_from(defaults::default_f64s("gravity"))
+                .expect("gravity is declared with 3 values"),
             simulation: SimulationConfig::default(),
             limits: LimitsConfig::default(),
             pads: None,

@@ -50,13 +50,18 @@ pub struct MarkerSettings {
 }
 
 impl Default for MarkerSettings {
-    /// 30 Hz, 8 × 128 cells (2,048 triangles), auto scale.
+    /// The declared defaults of `ros.marker_*` (`config/table.rs`).
     fn default() -> Self {
+        use crate::config::defaults::{default_f64, default_i64, default_of};
+        use crate::config::table::Value;
         MarkerSettings {
-            rate_hz: 30.0,
-            rings: 8,
-            sectors: 128,
-            scale: MarkerScale::Auto,
+            rate_hz: const { default_f64("ros.marker_rate_hz") },
+            rings: const { default_i64("ros.marker_rings") } as u32,
+            sectors: const { default_i64("ros.marker_sectors") } as u32,
+            scale: match default_of("ros.marker_scale") {
+                Value::Double(x) => MarkerScale::Fixed(x),
+                _ => MarkerScale::Auto,
+            },
         }
     }
 }

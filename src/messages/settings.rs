@@ -7,7 +7,7 @@
 //! the same parameter set the config reads. Every rule below is listed in
 //! docs/ros.md.
 
-use crate::config::{ParamValue, Params};
+use crate::config::{declared_value, typed, Declared, ParamValue, Params};
 use ros2_client::ServiceMapping;
 use std::fmt;
 
@@ -40,22 +40,11 @@ pub struct RosSettings {
     pub marker: MarkerSettings,
 }
 
+/// The declared defaults of the `ros.*` keys and `use_sim_time`
+/// (`config/table.rs`): what an empty parameter set yields.
 impl Default for RosSettings {
     fn default() -> Self {
-        RosSettings {
-            frame_prefix: String::new(),
-            world_frame: "world".to_string(),
-            sim_time: false,
-            use_sim_time: false,
-            wrench_timeout: 0.0,
-            max_clock_jump: 1.0,
-            start_paused: false,
-            diagnostics_period: 1.0,
-            reject_log_period: 1.0,
-            service_mapping: ServiceMapping::Enhanced,
-            step_aligned_reception: false,
-            marker: MarkerSettings::default(),
-        }
+        RosSettings::from_params(&Params::new()).expect("the declared ros.* defaults are valid")
     }
 }
 
@@ -63,12 +52,14 @@ impl Default for RosSettings {
 #[derive(Debug, Clone, PartialEq)]
 pub struct SettingsError {
     pub key: String,
+    /// The whole refusal, naming the key (for a declared type or range: the
+    /// text of `config::check`, as the parameter file and services give it).
     pub message: String,
 }
 
 impl fmt::Display for SettingsError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(f, "{}: {}", self.key, self.message)
+        f.write_str(&self.message)
     }
 }
 
@@ -77,7 +68,20 @@ impl std::error::Error for SettingsError {}
 fn err(key: &str, message: impl Into<String>) -> SettingsError {
     SettingsError {
         key: key.to_string(),
-        message: message.into(),
+        message: format!("{key}: {}", message.into()),
+    }
+}
+
+/// `key`'s value (or its declared default) through the one check of
+/// `config::check`: declared type and range.
+fn value<T: Declared>(params: &Params, key: &str) -> Result<T, SettingsError> {
+    let from_config = |e: crate::config::ConfigError| SettingsError {
+        key: key.to_string(),
+        message: e.to_string(),
+    };
+    match declared_value(params, key).map_err(from_config)? {
+        Some(v) => typed(key, &v).map_err(from_config),
+        None => Err(err(key, "has no value and no declared default")),
     }
 }
 
@@ -88,10 +92,10 @@ fn frame_chars_ok(s: &str) -> bool {
 }
 
 impl RosSettings {
-    /// Read the `ros.*` keys (and `use_sim_time`) of `params`; unknown
-    /// `ros.*` keys are refused with the list of known ones.
+    /// Read the `ros.*` keys (and `use_sim_time`) of `params`, each through
+    /// `config::check` (declared type and range) with its declared default;
+    /// unknown `ros.*` keys are refused with the list of known ones.
     pub fn from_params(params: &Params) -> Result<RosSettings, SettingsError> {
-        let mut s = RosSettings::default();
         for (name, _) in params.iter() {
             if name.starts_with("ros.") && table::find(name).is_none() {
                 let known = table::keys("ros");
@@ -103,109 +107,60 @@ impl RosSettings {
                     ),
                 ));
             }
-            if name.starts_with("ros.") || name == "use_sim_time" {
-                crate::config::check(name, params.get(name).expect("iterated"))
-                    .map_err(|e| err(name, e.to_string()))?;
-            }
         }
-        let string = |key: &str| -> Result<Option<String>, SettingsError> {
-            match params.get(key) {
-                None => Ok(None),
-                Some(ParamValue::String(v)) => Ok(Some(v.clone())),
-                Some(other) => Err(err(
-                    key,
-                    format!("expected a string, found {} {other}", other.type_name()),
-                )),
-            }
-        };
-        let boolean = |key: &str| -> Result<Option<bool>, SettingsError> {
-            match params.get(key) {
-                None => Ok(None),
-                Some(ParamValue::Bool(v)) => Ok(Some(*v)),
-                Some(other) => Err(err(
-                    key,
-                    format!(
-                        "expected true or false, found {} {other}",
-                        other.type_name()
-                    ),
-                )),
-            }
-        };
-        let double = |key: &str| -> Result<Option<f64>, SettingsError> {
-            match params.get(key) {
-                None => Ok(None),
-                Some(ParamValue::Double(v)) => Ok(Some(*v)),
-                Some(ParamValue::Integer(v)) => Ok(Some(*v as f64)),
-                Some(other) => Err(err(
-                    key,
-                    format!("expected a number, found {} {other}", other.type_name()),
-                )),
-            }
-        };
-
-        if let Some(p) = string("ros.frame_prefix")? {
-            if !frame_chars_ok(&p) {
-                return Err(err("ros.frame_prefix", format!("`{p}` may hold only letters, digits, `_`, `/`, `-`, `.` and must not start with `/` (tf2 frame ids are relative)")));
-            }
-            s.frame_prefix = p;
+        let frame_prefix: String = value(params, "ros.frame_prefix")?;
+        if !frame_chars_ok(&frame_prefix) {
+            return Err(err("ros.frame_prefix", format!("`{frame_prefix}` may hold only letters, digits, `_`, `/`, `-`, `.` and must not start with `/` (tf2 frame ids are relative)")));
         }
-        if let Some(w) = string("ros.world_frame")? {
-            if w.is_empty() || !frame_chars_ok(&w) {
-                return Err(err("ros.world_frame", format!("`{w}` must be a non-empty frame id of letters, digits, `_`, `/`, `-`, `.`, not starting with `/`")));
-            }
-            s.world_frame = w;
+        let world_frame: String = value(params, "ros.world_frame")?;
+        if world_frame.is_empty() || !frame_chars_ok(&world_frame) {
+            return Err(err("ros.world_frame", format!("`{world_frame}` must be a non-empty frame id of letters, digits, `_`, `/`, `-`, `.`, not starting with `/`")));
         }
-        let publish_clock = boolean("ros.publish_clock")?.unwrap_or(false);
-        let use_sim_time = boolean("use_sim_time")?.unwrap_or(false);
+        let publish_clock: bool = value(params, "ros.publish_clock")?;
+        let use_sim_time: bool = value(params, "use_sim_time")?;
         if publish_clock && use_sim_time {
             return Err(err(
                 "ros.publish_clock",
                 "true together with use_sim_time: true is refused: a node that follows an external /clock must not publish a second one (set one of them false)",
             ));
         }
-        s.sim_time = publish_clock;
-        s.use_sim_time = use_sim_time;
-        // Types and ranges: `config::check` above (the table's declaration).
-        if let Some(t) = double("ros.wrench_timeout")? {
-            s.wrench_timeout = t;
-        }
-        if let Some(j) = double("ros.max_clock_jump")? {
-            s.max_clock_jump = j;
-        }
-        s.start_paused = boolean("ros.start_paused")?.unwrap_or(false);
-        if let Some(p) = double("ros.diagnostics_period")? {
-            s.diagnostics_period = p;
-        }
-        if let Some(p) = double("ros.reject_log_period")? {
-            s.reject_log_period = p;
-        }
-        s.marker = read_marker(params)?;
-        if let Some(m) = string("ros.service_mapping")? {
-            s.service_mapping = match m.as_str() {
-                "enhanced" => ServiceMapping::Enhanced,
-                "cyclone" => ServiceMapping::Cyclone,
-                "basic" => ServiceMapping::Basic,
-                other => {
-                    return Err(err(
-                        "ros.service_mapping",
-                        format!("`{other}` is not one of enhanced, cyclone, basic"),
-                    ))
-                }
-            };
-        }
-        if let Some(r) = string("ros.input_reception")? {
-            s.step_aligned_reception = match r.as_str() {
-                "on_arrival" => false,
-                "step_aligned" => true,
-                other => {
-                    return Err(err(
-                        "ros.input_reception",
-                        format!("`{other}` is not one of on_arrival, step_aligned"),
-                    ))
-                }
-            };
-        }
-        Ok(s)
+        let mapping: String = value(params, "ros.service_mapping")?;
+        let service_mapping = match mapping.as_str() {
+            "enhanced" => ServiceMapping::Enhanced,
+            "cyclone" => ServiceMapping::Cyclone,
+            "basic" => ServiceMapping::Basic,
+            other => {
+                return Err(err(
+                    "ros.service_mapping",
+                    format!("`{other}` is not one of enhanced, cyclone, basic"),
+                ))
+            }
+        };
+        let reception: String = value(params, "ros.input_reception")?;
+        let step_aligned_reception = match reception.as_str() {
+            "on_arrival" => false,
+            "step_aligned" => true,
+            other => {
+                return Err(err(
+                    "ros.input_reception",
+                    format!("`{other}` is not one of on_arrival, step_aligned"),
+                ))
+            }
+        };
+        Ok(RosSettings {
+            frame_prefix,
+            world_frame,
+            sim_time: publish_clock,
+            use_sim_time,
+            wrench_timeout: value(params, "ros.wrench_timeout")?,
+            max_clock_jump: value(params, "ros.max_clock_jump")?,
+            start_paused: value(params, "ros.start_paused")?,
+            diagnostics_period: value(params, "ros.diagnostics_period")?,
+            reject_log_period: value(params, "ros.reject_log_period")?,
+            service_mapping,
+            step_aligned_reception,
+            marker: read_marker(params)?,
+        })
     }
 
     /// Refuse a marker faster than the loop (`ros.marker_rate_hz` ≤ `simulation.rate_hz`).
@@ -289,46 +244,35 @@ impl RosSettings {
     }
 }
 
-/// The `ros.marker_*` keys.
+/// The `ros.marker_*` keys (declared types and ranges: `config::check`).
 fn read_marker(params: &Params) -> Result<MarkerSettings, SettingsError> {
-    let mut m = MarkerSettings::default();
-    match params.get("ros.marker_rate_hz") {
-        None => {}
-        Some(ParamValue::Double(v)) if v.is_finite() && *v >= 0.0 => m.rate_hz = *v,
-        Some(ParamValue::Integer(v)) if *v >= 0 => m.rate_hz = *v as f64,
-        Some(other) => {
-            return Err(err(
-                "ros.marker_rate_hz",
-                format!("{other} must be a finite number >= 0 (0 = no marker)"),
-            ))
-        }
+    let rings: i64 = value(params, "ros.marker_rings")?;
+    let sectors: i64 = value(params, "ros.marker_sectors")?;
+    let cells = rings.saturating_mul(sectors);
+    if cells > i64::from(MAX_CELLS) {
+        return Err(err("ros.marker_rings", format!("rings × sectors = {rings} × {sectors} exceeds {MAX_CELLS} cells (lower ros.marker_rings or ros.marker_sectors)")));
     }
-    let integer = |key: &str, default: u32, low: i64, high: i64| match params.get(key) {
-        None => Ok(default),
-        Some(ParamValue::Integer(v)) if (low..=high).contains(v) => Ok(*v as u32),
-        Some(other) => Err(err(
-            key,
-            format!("{other} must be an integer in {low} ..= {high}"),
-        )),
-    };
-    m.rings = integer("ros.marker_rings", m.rings, 1, 200)?;
-    m.sectors = integer("ros.marker_sectors", m.sectors, 8, 4096)?;
-    if m.rings * m.sectors > MAX_CELLS {
-        return Err(err("ros.marker_rings", format!("rings × sectors = {} × {} exceeds {MAX_CELLS} cells (lower ros.marker_rings or ros.marker_sectors)", m.rings, m.sectors)));
-    }
-    m.scale = match params.get("ros.marker_scale") {
-        None => MarkerScale::Auto,
+    let key = "ros.marker_scale";
+    let scale = match declared_value(params, key).map_err(|e| SettingsError {
+        key: key.to_string(),
+        message: e.to_string(),
+    })? {
+        Some(ParamValue::Double(v)) => MarkerScale::Fixed(v),
         Some(ParamValue::String(s)) if s == "auto" => MarkerScale::Auto,
-        Some(ParamValue::Double(v)) if v.is_finite() && *v > 0.0 => MarkerScale::Fixed(*v),
-        Some(ParamValue::Integer(v)) if *v > 0 => MarkerScale::Fixed(*v as f64),
         Some(other) => {
             return Err(err(
-                "ros.marker_scale",
+                key,
                 format!("{other} must be `auto` or a finite number > 0"),
             ))
         }
+        None => MarkerScale::Auto,
     };
-    Ok(m)
+    Ok(MarkerSettings {
+        rate_hz: value(params, "ros.marker_rate_hz")?,
+        rings: rings as u32,
+        sectors: sectors as u32,
+        scale,
+    })
 }
 
 #[cfg(test)]

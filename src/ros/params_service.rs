@@ -76,7 +76,8 @@ fn type_code(v: &ParamValue) -> u8 {
 
 /// The effective parameters: the given values, and every declared key's
 /// default (`config::table`; a load model's keys only when its section is
-/// on); `use_sim_time` and every `ros.*` key are always present.
+/// on; `use_sim_time` and every `ros.*` key always), then the node's
+/// effective `ros.*` settings.
 pub fn effective_parameters(
     given: &Params,
     settings: &RosSettings,
@@ -95,10 +96,6 @@ pub fn effective_parameters(
             }
         }
     }
-    out.entry("use_sim_time".to_string())
-        .or_insert(ParamValue::Bool(false));
-    out.entry("ros.publish_clock".to_string())
-        .or_insert(ParamValue::Bool(false));
     for (k, v) in settings.effective_params() {
         out.insert(k.to_string(), v);
     }
@@ -197,17 +194,19 @@ impl ParamStore {
             .iter()
             .map(|n| {
                 let runtime = RUNTIME_KEYS.iter().find(|(k, _)| k == n);
-                let description = match (table::find(n), n.as_str()) {
-                    (_, "use_sim_time") => "follow an external /clock: stamps from it, one step per dt it advances (docs/ros.md, Time)".to_string(),
-                    (Some(p), _) => describe(p),
-                    _ => String::new(),
-                };
+                let description = table::find(n).map_or_else(String::new, describe);
                 raw::ParameterDescriptor {
                     name: n.clone(),
-                    r#type: self.values.get(n).map_or(raw::ParameterType::NOT_SET, type_code),
+                    r#type: self
+                        .values
+                        .get(n)
+                        .map_or(raw::ParameterType::NOT_SET, type_code),
                     description,
                     additional_constraints: runtime.map_or_else(
-                        || "read at start-up; restart the node with -p name:=value to change it".to_string(),
+                        || {
+                            "read at start-up; restart the node with -p name:=value to change it"
+                                .to_string()
+                        },
                         |(_, rule)| rule.to_string(),
                     ),
                     read_only: runtime.is_none(),

@@ -739,6 +739,76 @@ def scenario_follow_clock(p, a):
     return out
 
 
+def scenario_clock_jump(p, a):
+    """use_sim_time with a /clock that jumps forward beyond ros.max_clock_jump,
+    twice: after each jump the node steps from the new time (it re-anchors;
+    it does not work off the gap), and /diagnostics reports each jump as a
+    WARN with the count. Every wait polls with a deadline."""
+    ms = 1_000_000
+    t0, jump = a["t0_ns"], a["jump_ns"]
+    clock = p.writer("/clock", T.Clock, reliable=False, depth=1)
+    modal = p.reader(p.private("modal_amplitudes"), T.ModalAmplitudes, depth=100000)
+    diag = p.diagnostics_reader()
+    for e in (clock, modal, diag):
+        p.wait_matched(e)
+    seen, reports = [], []
+
+    def collect():
+        seen.extend(s for s in modal.take(100000) if s.step > 0)
+        for m in diag.take(1000):
+            for st in m.status:
+                if st.name.endswith(": simulation"):
+                    reports.append({"level": int(st.level), "message": st.message,
+                                    "values": {kv.key: kv.value for kv in st.values}})
+        return max((s.step for s in seen), default=0)
+
+    def send(t_ns):
+        clock.write(T.Clock(clock=T.Time(sec=t_ns // 1_000_000_000, nanosec=t_ns % 1_000_000_000)))
+
+    def until(what, done, t_ns=None, timeout=60.0):
+        """Poll (re-sending t, best effort) until `done()`."""
+        deadline = time.time() + timeout
+        while time.time() < deadline:
+            if t_ns is not None:
+                send(t_ns)
+            collect()
+            if done():
+                return
+            time.sleep(0.02)
+        raise Timeout(f"{what} within {timeout} s (step {collect()}, last report {reports[-1:]})")
+
+    def reported_time(t_ns):
+        return lambda: any(abs(float(r["values"].get("ros_time", "nan")) - t_ns * 1e-9) < 1e-6 for r in reports)
+
+    def step_reached(k):
+        return lambda: collect() >= k
+
+    out = {}
+    until("the origin t0 reported", reported_time(t0), t0)
+    until("5 steps after the origin", step_reached(5), t0 + 5 * ms)
+    t_start = time.time()
+    t1 = t0 + jump
+    until("the first jump's time reported", reported_time(t1), t1)
+    until("5 steps after the first jump", step_reached(10), t1 + 5 * ms)
+    out["seconds_to_step_after_jump"] = time.time() - t_start
+    until("a WARN counting the first jump", lambda: any(
+        r["level"] == 1 and r["values"].get("clock_jumps_forward") == "1" for r in reports))
+    t2 = t1 + jump
+    until("the second jump's time reported", reported_time(t2), t2)
+    until("3 steps after the second jump", step_reached(13), t2 + 3 * ms)
+    until("a WARN counting the second jump", lambda: any(
+        r["level"] == 1 and r["values"].get("clock_jumps_forward") == "2" for r in reports))
+    # A few more reports: the jump count stays, the level goes back to OK.
+    n = len(reports)
+    until("two reports after the second jump's WARN", lambda: len(reports) >= n + 2)
+    out["modal"] = [{"step": s.step, "stamp": s.header.stamp.sec * 1_000_000_000 + s.header.stamp.nanosec}
+                    for s in seen]
+    out["warnings"] = [r for r in reports if r["level"] == 1]
+    out["last_report"] = reports[-1]
+    out["max_step_reported"] = max(int(r["values"].get("step", "0")) for r in reports)
+    return out
+
+
 def scenario_simulation_interfaces(p, a):
     """The simulation_interfaces services as a Gazebo tool calls them: state
     query, step N (with a wrench applied), pause/resume, reset, stop."""
