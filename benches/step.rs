@@ -141,5 +141,64 @@ fn steps(c: &mut Criterion) {
     group.finish();
 }
 
-criterion_group!(benches, steps);
+/// The shipped scene `config/<file>` with `integrator` (None: as shipped),
+/// pads removed with `bare` (the same plate).
+fn scene(file: &str, integrator: Option<IntegratorKind>, bare: bool) -> Simulation {
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("config")
+        .join(file);
+    let mut c = Config::from_params_file(&path, "annular_plate").unwrap();
+    if let Some(i) = integrator {
+        c.simulation.integrator = i;
+    }
+    if bare {
+        c.pads = None;
+    }
+    Simulation::new(c).unwrap()
+}
+
+/// Every shipped scene per output step: as shipped; with RK4 (the brake
+/// scenes' integrator before `contact_exponential`); the same plate with its
+/// pads removed on the exponential integrator (the brake scenes' floor). The
+/// brake bench also clamped at 8 kN (its working state).
+fn scenes(c: &mut Criterion) {
+    let files = [
+        "brake_bench.yaml",
+        "brake_squeal.yaml",
+        "brake_squeal_paper.yaml",
+        "lathe.yaml",
+        "swash_plate.yaml",
+    ];
+    for file in files {
+        let name = file.trim_end_matches(".yaml");
+        let mut sim = scene(file, None, false);
+        for _ in 0..50 {
+            sim.step().unwrap();
+        }
+        c.bench_function(&format!("scene/{name}/shipped"), |b| {
+            b.iter(|| sim.step().unwrap())
+        });
+        if sim.pad_count() == 0 {
+            continue;
+        }
+        let mut rk4 = scene(file, Some(IntegratorKind::Rk4), false);
+        c.bench_function(&format!("scene/{name}/rk4"), |b| {
+            b.iter(|| rk4.step().unwrap())
+        });
+        let mut bare = scene(file, Some(IntegratorKind::Exponential), true);
+        c.bench_function(&format!("scene/{name}/pads_removed_exponential"), |b| {
+            b.iter(|| bare.step().unwrap())
+        });
+    }
+    let mut clamped = scene("brake_bench.yaml", None, false);
+    clamped.set_pad_clamp_force(0, 8000.0).unwrap();
+    for _ in 0..50 {
+        clamped.step().unwrap();
+    }
+    c.bench_function("scene/brake_bench/clamped_8kN", |b| {
+        b.iter(|| clamped.step().unwrap())
+    });
+}
+
+criterion_group!(benches, steps, scenes);
 criterion_main!(benches);

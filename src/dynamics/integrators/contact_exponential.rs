@@ -26,8 +26,12 @@
 
 use super::piece::{mul_add, BuildScratch, PieceTables};
 
-/// Pieces kept (a limit cycle visits a few; chatter two).
-pub(crate) const CACHE_PIECES: usize = 16;
+/// Pieces kept (a limit cycle of 18 contacts visits dozens; chatter two).
+pub(crate) const CACHE_PIECES: usize = 64;
+
+/// A piece's sample table is filled at its third use (one used once or
+/// twice samples by marching).
+const TABLE_AFTER_USES: u32 = 3;
 
 /// Size of the differences that give J relative to the largest entry of the
 /// unknown's block (inside the piece: checked; large, so that the law's
@@ -59,6 +63,8 @@ struct Entry {
     key: Vec<u64>,
     valid: bool,
     last_used: u64,
+    /// Steps and spans that used the piece since it was built.
+    uses: u32,
     tables: PieceTables,
 }
 
@@ -110,6 +116,7 @@ impl ContactExponential {
                     key: Vec::with_capacity(64),
                     valid: false,
                     last_used: 0,
+                    uses: 0,
                     tables: PieceTables::new(n, ns, levels + 1),
                 })
                 .collect(),
@@ -207,6 +214,18 @@ impl ContactExponential {
                     }
                     Some((a, b)) => {
                         let a = self.bisect(e, a, b);
+                        // The remainder's error up to the switch, on the old
+                        // piece (f at y_a is still of it).
+                        if a > 1 && tolerance < 1.0 {
+                            self.y_b.copy_from_slice(&self.y_a);
+                            eval(&self.y_b, &mut self.f_end, &mut self.s_end);
+                            let error = self.held_error(e, a as f64, unit);
+                            if error > tolerance && span_level < self.levels {
+                                span_level += 1;
+                                report.halvings += 1;
+                                continue;
+                            }
+                        }
                         let (theta, switched) = self.within_unit(e, 1.0, unit);
                         (a as f64 + theta, switched)
                     }
@@ -328,6 +347,7 @@ impl ContactExponential {
         entry.key.extend_from_slice(&self.key);
         entry.valid = true;
         entry.last_used = self.clock;
+        entry.uses = 0;
         report.builds += 1;
         i
     }
@@ -375,7 +395,17 @@ impl ContactExponential {
     /// The first sample interval (a, b] (units of h / 2^L from y_r) in which
     /// a switching function changes sign, within `remaining` units.
     fn first_switch(&mut self, e: usize, remaining: u64) -> Option<(u64, u64)> {
+        let entry = &mut self.entries[e];
+        entry.uses += 1;
+        if !entry.tables.has_sample_table() && entry.uses >= TABLE_AFTER_USES {
+            entry.tables.fill_sample_table(&mut self.build);
+        }
         let t = &self.entries[e].tables;
+        let m = t.sample_level();
+        let spacing = 1u64 << (self.levels - m);
+        if !t.has_sample_table() {
+            return self.first_switch_marching(e, remaining, spacing);
+        }
         // No sign can change where every |s_i| exceeds its bound's reach.
         let reach = self.f_r.iter().map(|v| v * v).sum::<f64>().sqrt();
         let far = self
@@ -386,8 +416,6 @@ impl ContactExponential {
         if far && remaining == 1 << self.levels {
             return None;
         }
-        let m = t.sample_level();
-        let spacing = 1u64 << (self.levels - m);
         let mut last = 0;
         for i in 1..=(1usize << m) {
             let at = i as u64 * spacing;
@@ -401,6 +429,33 @@ impl ContactExponential {
             }
             last = at;
         }
+        self.end_check(e, last, remaining)
+    }
+
+    /// [`Self::first_switch`] for a piece without its sample table: march y
+    /// from sample to sample (two products of n² and one of ns n each).
+    fn first_switch_marching(
+        &mut self,
+        e: usize,
+        remaining: u64,
+        spacing: u64,
+    ) -> Option<(u64, u64)> {
+        let j = self.levels - spacing.trailing_zeros() as usize;
+        self.y_a.copy_from_slice(&self.y_r);
+        let mut last = 0;
+        while last + spacing <= remaining {
+            self.advance_a(e, j);
+            self.switching_at_a(e);
+            if !same_piece(&self.s_r, &self.s_t) {
+                return Some((last, last + spacing));
+            }
+            last += spacing;
+        }
+        self.end_check(e, last, remaining)
+    }
+
+    /// Whether the piece leaves between the last sample `last` and `remaining`.
+    fn end_check(&mut self, e: usize, last: u64, remaining: u64) -> Option<(u64, u64)> {
         if last == remaining {
             return None;
         }

@@ -47,6 +47,7 @@ pub(crate) struct PieceTables {
     sample_level: usize,
     /// |λ|max of J (estimated): the fastest rate of the piece, 1/s.
     rate: f64,
+    sampled_ready: bool,
     /// S F(i τ_m) for i = 1..=2^m, each ns × n.
     sf: Vec<f64>,
     /// Per switching function, twice the largest ‖row of S F(i τ_m)‖₂ over
@@ -94,10 +95,11 @@ impl PieceTables {
             levels,
             jac: vec![0.0; n * n],
             s_rows: vec![0.0; ns * n],
-            e: vec![0.0; levels * n * n],
-            f: vec![0.0; levels * n * n],
+            e: Vec::new(),
+            f: Vec::new(),
             sample_level: 0,
             rate: 0.0,
+            sampled_ready: false,
             sf: Vec::new(),
             bound: vec![0.0; ns],
         }
@@ -142,6 +144,10 @@ impl PieceTables {
     /// allocation).
     pub(crate) fn build(&mut self, h: f64, b: &mut BuildScratch) {
         let n = self.n;
+        // The levels' storage is taken at a slot's first piece (a cache of
+        // many slots costs memory only for the pieces a scene visits).
+        self.e.resize(self.levels * n * n, 0.0);
+        self.f.resize(self.levels * n * n, 0.0);
         b.a.copy_from_slice(&self.jac);
         balance(&mut b.a, &mut b.d, n);
         let rho = norm1(&b.a, n);
@@ -158,11 +164,24 @@ impl PieceTables {
         }
         self.rate = spectral_radius(&b.a, n, &mut b.t1, &mut b.t2);
         self.sample_level = sample_level(h, self.rate, self.levels - 1);
-        let size = (1usize << self.sample_level) * self.ns * n;
+        self.sampled_ready = false;
+    }
+
+    /// Whether the sample table and bounds are filled ([`PieceTables::fill_sample_table`]).
+    pub(crate) fn has_sample_table(&self) -> bool {
+        self.sampled_ready
+    }
+
+    /// Fill S F(i τ_m) and the bounds: worth it for a piece that is used
+    /// again (ns n² per sample; a piece used once samples along its step).
+    /// The table grows to the first piece that needs it (then no allocation).
+    pub(crate) fn fill_sample_table(&mut self, b: &mut BuildScratch) {
+        let size = (1usize << self.sample_level) * self.ns * self.n;
         if self.sf.len() < size {
             self.sf.resize(size, 0.0);
         }
         self.fill_samples(b);
+        self.sampled_ready = true;
     }
 
     /// Level j of the balanced E, F back in the original coordinates:
@@ -414,7 +433,9 @@ mod tests {
         t.jac.copy_from_slice(&[0.0, 1.0, -omega * omega, 0.0]);
         t.s_rows.copy_from_slice(&[1.0, 0.0]);
         let h = 1.0e-3;
-        t.build(h, &mut BuildScratch::new(2, 1));
+        let mut b = BuildScratch::new(2, 1);
+        t.build(h, &mut b);
+        t.fill_sample_table(&mut b);
         for j in 0..12 {
             let tau = h / (j as f64).exp2();
             let (s, c) = (omega * tau).sin_cos();
