@@ -664,7 +664,7 @@ fn free_vibration_at_constant_speed_rings_at_the_stiffened_frequency() {
             assert!(w > 1.1 * w_rest);
             match integrator {
                 // Exact for the modal part: the Ritz frequency of the retained modes to round-off.
-                IntegratorKind::Exponential => {
+                IntegratorKind::Exponential | IntegratorKind::ContactExponential => {
                     assert!(
                         rel(ritz).abs() < 1e-9,
                         "L = {circles}: {w} vs Ritz {}",

@@ -355,8 +355,8 @@ fn a_stiff_contact_in_series_with_the_residual_has_a_bounded_coupling_and_settle
     // RK4 re-evaluates the pads per stage and takes the inner substeps the
     // coupling needs to stay stable (docs/hard_cases.md): a contact this stiff
     // without the residual needs them by the thousand per step.
-    let c = clamped_bench(Caliper::Fixed, stiff, true);
-    assert_eq!(c.simulation.integrator, IntegratorKind::Rk4);
+    let mut c = clamped_bench(Caliper::Fixed, stiff, true);
+    c.simulation.integrator = IntegratorKind::Rk4;
     let inner = |c: &Config| {
         let mut sim = Simulation::new(c.clone()).unwrap();
         sim.step().unwrap();
@@ -368,7 +368,7 @@ fn a_stiff_contact_in_series_with_the_residual_has_a_bounded_coupling_and_settle
     println!("RK4 inner substeps per 1 ms step at k_c = 1e12: with the residual {n_with}, without {n_without}");
     assert!(n_without > 10 * n_with);
     let exact = exact_clamp(&c);
-    let (w, f, wl) = settle(c, 0.1);
+    let (w, f, wl) = settle(c.clone(), 0.1);
     let errors = [
         relative(&w, &exact.w),
         relative(&f, &exact.force),
@@ -378,6 +378,20 @@ fn a_stiff_contact_in_series_with_the_residual_has_a_bounded_coupling_and_settle
         "k_c = 1e12: exact w = {:?}, F = {:?}; simulated w = {w:?}, F = {f:?}; errors {errors:?}",
         exact.w, exact.force
     );
+    for e in errors {
+        assert!(e < 1e-3, "{errors:?}");
+    }
+    // The contact exponential takes the stiff contacts into its exponential:
+    // the same exact clamp, on the scene's own integrator.
+    let mut ce = c.clone();
+    ce.simulation.integrator = IntegratorKind::ContactExponential;
+    let (w, f, wl) = settle(ce, 0.1);
+    let errors = [
+        relative(&w, &exact.w),
+        relative(&f, &exact.force),
+        ((wl - exact.w_load) / exact.w_load).abs(),
+    ];
+    println!("contact_exponential: simulated w = {w:?}, F = {f:?}; errors {errors:?}");
     for e in errors {
         assert!(e < 1e-3, "{errors:?}");
     }

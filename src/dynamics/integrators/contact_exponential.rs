@@ -29,10 +29,6 @@ use super::piece::{mul_add, BuildScratch, PieceTables};
 /// Pieces kept (a limit cycle of 18 contacts visits dozens; chatter two).
 pub(crate) const CACHE_PIECES: usize = 64;
 
-/// A piece's sample table is filled at its third use (one used once or
-/// twice samples by marching).
-const TABLE_AFTER_USES: u32 = 3;
-
 /// Size of the differences that give J relative to the largest entry of the
 /// unknown's block (inside the piece: checked; large, so that the law's
 /// rounding stays small against the change it measures).
@@ -40,6 +36,11 @@ const DIFFERENCE: f64 = 1.0e-3;
 
 /// Terms of the flow's series within a unit (τρ ≤ 1/4: (1/4)^13/13! < 1e-17).
 const SERIES_TERMS: usize = 12;
+
+/// The differences' scale where y is 0 (at the origin), in units of the
+/// state's floor `scale`: 1e-3 of the thickness for amplitudes, so that the
+/// law's rounding stays small against the change it measures.
+const ORIGIN_SCALE: f64 = 1.0e3;
 
 /// What a step did, for diagnostics and tests.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
@@ -63,8 +64,9 @@ struct Entry {
     key: Vec<u64>,
     valid: bool,
     last_used: u64,
-    /// Steps and spans that used the piece since it was built.
-    uses: u32,
+    /// Linearised at a step's own state (its piece excludes the origin):
+    /// dropped when the next step begins.
+    this_step_only: bool,
     tables: PieceTables,
 }
 
@@ -116,7 +118,7 @@ impl ContactExponential {
                     key: Vec::with_capacity(64),
                     valid: false,
                     last_used: 0,
-                    uses: 0,
+                    this_step_only: false,
                     tables: PieceTables::new(n, ns, levels + 1),
                 })
                 .collect(),
@@ -180,6 +182,9 @@ impl ContactExponential {
         // the step at its instant, which need not lie on the grid.
         let mut pos = 0.0f64;
         let mut span_level = 0usize;
+        for entry in self.entries.iter_mut().filter(|e| e.this_step_only) {
+            entry.valid = false;
+        }
         self.y_r.copy_from_slice(y);
         eval(&self.y_r, &mut self.f_r, &mut self.s_r);
         loop {
@@ -340,29 +345,56 @@ impl ContactExponential {
         let i = (0..self.entries.len())
             .min_by_key(|&i| (self.entries[i].valid, self.entries[i].last_used))
             .unwrap_or(0);
-        self.jacobian(i, eval);
+        // Linearised at the origin (the undeformed disc) where it lies in the
+        // piece, else at y_r: a piece's tables are then a function of its key
+        // alone, or kept for this step only — so a saved state replays bit for
+        // bit with a fresh cache.
+        self.y_b.iter_mut().for_each(|v| *v = 0.0);
+        eval(&self.y_b, &mut self.f_end, &mut self.s_end);
+        let at_origin = same_piece(&self.s_r, &self.s_end);
+        if at_origin {
+            std::mem::swap(&mut self.y_r, &mut self.y_b);
+            std::mem::swap(&mut self.f_r, &mut self.f_end);
+            std::mem::swap(&mut self.s_r, &mut self.s_end);
+        }
+        self.jacobian(i, eval, at_origin);
+        if at_origin {
+            std::mem::swap(&mut self.y_r, &mut self.y_b);
+            std::mem::swap(&mut self.f_r, &mut self.f_end);
+            std::mem::swap(&mut self.s_r, &mut self.s_end);
+        }
         let entry = &mut self.entries[i];
         entry.tables.build(h, &mut self.build);
+        entry.tables.fill_sample_table(&mut self.build);
         entry.key.clear();
         entry.key.extend_from_slice(&self.key);
         entry.valid = true;
+        entry.this_step_only = !at_origin;
         entry.last_used = self.clock;
-        entry.uses = 0;
         report.builds += 1;
         i
     }
 
     /// J and S of entry `i` by forward differences at y_r, each kept inside
     /// the piece of y_r (the other side, then smaller, where it leaves it).
-    fn jacobian(&mut self, i: usize, eval: &mut impl FnMut(&[f64], &mut [f64], &mut [f64])) {
+    fn jacobian(
+        &mut self,
+        i: usize,
+        eval: &mut impl FnMut(&[f64], &mut [f64], &mut [f64]),
+        at_origin: bool,
+    ) {
         let (n, ns) = (self.n, self.ns);
         for w in self.blocks.windows(2) {
             let r = w[0]..w[1];
-            let size = self.y_r[r.clone()]
-                .iter()
-                .fold(0.0f64, |m, v| m.max(v.abs()));
+            let size = if at_origin {
+                0.0
+            } else {
+                self.y_r[r.clone()]
+                    .iter()
+                    .fold(0.0f64, |m, v| m.max(v.abs()))
+            };
             for i in r {
-                self.diff[i] = DIFFERENCE * size.max(self.scale[i]);
+                self.diff[i] = DIFFERENCE * size.max(ORIGIN_SCALE * self.scale[i]);
             }
         }
         for col in 0..n {
@@ -395,24 +427,17 @@ impl ContactExponential {
     /// The first sample interval (a, b] (units of h / 2^L from y_r) in which
     /// a switching function changes sign, within `remaining` units.
     fn first_switch(&mut self, e: usize, remaining: u64) -> Option<(u64, u64)> {
-        let entry = &mut self.entries[e];
-        entry.uses += 1;
-        if !entry.tables.has_sample_table() && entry.uses >= TABLE_AFTER_USES {
-            entry.tables.fill_sample_table(&mut self.build);
-        }
         let t = &self.entries[e].tables;
         let m = t.sample_level();
         let spacing = 1u64 << (self.levels - m);
-        if !t.has_sample_table() {
-            return self.first_switch_marching(e, remaining, spacing);
-        }
-        // No sign can change where every |s_i| exceeds its bound's reach.
+        // No sign can change where every |s_i| exceeds its bound's reach (or
+        // where s_i cannot move: a pad pressed with nothing).
         let reach = self.f_r.iter().map(|v| v * v).sum::<f64>().sqrt();
         let far = self
             .s_r
             .iter()
             .zip(t.bound())
-            .all(|(s, b)| s.abs() > b * reach);
+            .all(|(s, b)| s.abs() > b * reach || b * reach == 0.0);
         if far && remaining == 1 << self.levels {
             return None;
         }
@@ -428,28 +453,6 @@ impl ContactExponential {
                 return Some((last, at));
             }
             last = at;
-        }
-        self.end_check(e, last, remaining)
-    }
-
-    /// [`Self::first_switch`] for a piece without its sample table: march y
-    /// from sample to sample (two products of n² and one of ns n each).
-    fn first_switch_marching(
-        &mut self,
-        e: usize,
-        remaining: u64,
-        spacing: u64,
-    ) -> Option<(u64, u64)> {
-        let j = self.levels - spacing.trailing_zeros() as usize;
-        self.y_a.copy_from_slice(&self.y_r);
-        let mut last = 0;
-        while last + spacing <= remaining {
-            self.advance_a(e, j);
-            self.switching_at_a(e);
-            if !same_piece(&self.s_r, &self.s_t) {
-                return Some((last, last + spacing));
-            }
-            last += spacing;
         }
         self.end_check(e, last, remaining)
     }

@@ -47,7 +47,6 @@ pub(crate) struct PieceTables {
     sample_level: usize,
     /// |λ|max of J (estimated): the fastest rate of the piece, 1/s.
     rate: f64,
-    sampled_ready: bool,
     /// S F(i τ_m) for i = 1..=2^m, each ns × n.
     sf: Vec<f64>,
     /// Per switching function, twice the largest ‖row of S F(i τ_m)‖₂ over
@@ -99,7 +98,6 @@ impl PieceTables {
             f: Vec::new(),
             sample_level: 0,
             rate: 0.0,
-            sampled_ready: false,
             sf: Vec::new(),
             bound: vec![0.0; ns],
         }
@@ -164,24 +162,16 @@ impl PieceTables {
         }
         self.rate = spectral_radius(&b.a, n, &mut b.t1, &mut b.t2);
         self.sample_level = sample_level(h, self.rate, self.levels - 1);
-        self.sampled_ready = false;
     }
 
-    /// Whether the sample table and bounds are filled ([`PieceTables::fill_sample_table`]).
-    pub(crate) fn has_sample_table(&self) -> bool {
-        self.sampled_ready
-    }
-
-    /// Fill S F(i τ_m) and the bounds: worth it for a piece that is used
-    /// again (ns n² per sample; a piece used once samples along its step).
-    /// The table grows to the first piece that needs it (then no allocation).
+    /// Fill S F(i τ_m) and the bounds (ns n² per sample). The table grows to
+    /// the first piece that needs it (then no allocation).
     pub(crate) fn fill_sample_table(&mut self, b: &mut BuildScratch) {
         let size = (1usize << self.sample_level) * self.ns * self.n;
         if self.sf.len() < size {
             self.sf.resize(size, 0.0);
         }
         self.fill_samples(b);
-        self.sampled_ready = true;
     }
 
     /// Level j of the balanced E, F back in the original coordinates:

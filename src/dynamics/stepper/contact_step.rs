@@ -152,9 +152,9 @@ impl Stepper {
     }
 }
 
-/// The floor of the differences' size per unknown — 1e-6 of the plate's
-/// thickness for amplitudes and the models' continuous states (positions
-/// then rates), that over h for rates — and the blocks of like quantities.
+/// The scale of each unknown where it is 0 — 1e-6 of the plate's thickness
+/// for amplitudes and the models' continuous states (positions then rates),
+/// that over h for rates — and the blocks of like quantities.
 fn difference_scale(scene: &Scene, n: usize, size: usize, h: f64) -> (Vec<f64>, Vec<usize>) {
     let q = 1.0e-6 * scene.model.plate().thickness;
     let half = (size - 2 * n) / 2;
