@@ -157,9 +157,9 @@ fn scene(file: &str, integrator: Option<IntegratorKind>, bare: bool) -> Simulati
     Simulation::new(c).unwrap()
 }
 
-/// Every shipped scene per output step: as shipped; with RK4 (the brake
-/// scenes' integrator before `contact_exponential`); the same plate with its
-/// pads removed on the exponential integrator (the brake scenes' floor). The
+/// Every shipped scene per output step: as shipped; with RK4 at its default
+/// step limit; the same plate with its pads removed on the exponential
+/// integrator (the brake scenes' floor). The
 /// brake bench also clamped at 8 kN (its working state).
 fn scenes(c: &mut Criterion) {
     let files = [
