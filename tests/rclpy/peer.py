@@ -19,7 +19,7 @@ import sys
 import time
 
 import rclpy
-from rclpy.node import Node
+from rclpy.node import Node, NodeNameNonExistentError
 from rclpy.parameter import Parameter
 from rclpy.qos import (DurabilityPolicy, HistoryPolicy, QoSProfile, ReliabilityPolicy,
                        qos_profile_sensor_data)
@@ -73,6 +73,15 @@ class Peer:
             if time.monotonic() > deadline:
                 raise Timeout(f"{what}: not within {timeout} s")
             rclpy.spin_once(self.node, timeout_sec=0.01)
+
+    def node_publishes(self, name, namespace):
+        """The node's publishers as `ros2 node info` lists them; empty while
+        the node's name has not reached the graph (its ros_discovery_info
+        sample may come after its endpoints)."""
+        try:
+            return dict(self.node.get_publisher_names_and_types_by_node(name, namespace))
+        except NodeNameNonExistentError:
+            return {}
 
     def spin_for(self, seconds):
         end = time.monotonic() + seconds
@@ -197,6 +206,9 @@ def scenario_topics(p, a):
     p.spin_until(lambda: tf_static and critical and rosout, 30.0, "/tf_static, ~/critical_speeds and /rosout for a late joiner")
     late_s = time.monotonic() - t_late
     p.spin_for(1.0)  # one message each, no more
+    node_name, node_ns = a.get("node_name", "annular_plate"), a.get("node_namespace", "/")
+    p.spin_until(lambda: "/joint_states" in p.node_publishes(node_name, node_ns), 30.0,
+                 f"{node_ns}{node_name} in the graph")
     topics = {name: types for name, types in p.node.get_topic_names_and_types()}
     js = reliable["joint_states"][-1]
     tf = reliable["tf"][-1]
@@ -226,8 +238,8 @@ def scenario_topics(p, a):
         "rosout": {"messages": len(rosout), "names": sorted({m.name for m in rosout})},
         "graph_topics": topics,
         "graph_nodes": [list(x) for x in p.node.get_node_names_and_namespaces()],
-        "node_publishes": dict(p.node.get_publisher_names_and_types_by_node(a.get("node_name", "annular_plate"), a.get("node_namespace", "/"))),
-        "node_subscribes": dict(p.node.get_subscriber_names_and_types_by_node(a.get("node_name", "annular_plate"), a.get("node_namespace", "/"))),
+        "node_publishes": p.node_publishes(node_name, node_ns),
+        "node_subscribes": dict(p.node.get_subscriber_names_and_types_by_node(node_name, node_ns)),
     }
 
 
@@ -597,15 +609,21 @@ def scenario_names(p, a):
     js = p.collect(JointState, a["joint_states"], 10, keep=2)
     p.spin_until(lambda: js, 30.0, f"a joint state on {a['joint_states']}")
 
+    def node_topics():
+        return p.node_publishes(a["node_name"], a["node_namespace"])
+
+    # Endpoints are seen by DDS discovery, the node's name by its
+    # ros_discovery_info sample: either can come first, so wait for both.
     def graph_complete():
         services = dict(p.node.get_service_names_and_types())
-        return all(s in services for s in a.get("expect_services", []))
-    p.spin_until(graph_complete, 30.0, "the node's services in the graph")
+        return (all(s in services for s in a.get("expect_services", []))
+                and a["joint_states"] in node_topics())
+    p.spin_until(graph_complete, 30.0, "the node's services and its name in the graph")
     r, meta = p.call_fresh(GetSimulationState, p.private("get_simulation_state"), GetSimulationState.Request(), 20.0)
     return {"nodes": sorted([list(x) for x in p.node.get_node_names_and_namespaces()]),
             "topics": dict(p.node.get_topic_names_and_types()),
             "services": dict(p.node.get_service_names_and_types()),
-            "node_topics": dict(p.node.get_publisher_names_and_types_by_node(a["node_name"], a["node_namespace"])),
+            "node_topics": node_topics(),
             "joint_name": list(js[-1].name),
             "state": r.state.state if r else None, "state_meta": meta}
 
