@@ -270,3 +270,48 @@ fn stiff_and_chattering_contacts_stay_bounded() {
         assert!(peak <= 1.5 * peak0, "grew: {peak} from {peak0}");
     }
 }
+
+/// Its tables grow with the square of the unknowns: beyond its limit the
+/// integrator is refused before any work, naming the keys that set the size.
+#[test]
+fn contact_exponential_refuses_more_unknowns_than_it_tabulates_naming_the_keys() {
+    let diameters: Vec<String> = (0..=43).map(|k| k.to_string()).collect();
+    let many = format!("nodal_diameters: [{}]", diameters.join(", "));
+    let config = scene(
+        "brake_bench.yaml",
+        "contact_exponential",
+        &[
+            ("nodal_diameters: [0, 1, 2, 3, 4]", many.as_str()),
+            ("nodal_circles: [0]", "nodal_circles: [0, 1]"),
+        ],
+    );
+    let Err(e) = Simulation::new(config) else {
+        panic!("174 modes on contact_exponential were accepted")
+    };
+    let text = e.to_string();
+    println!("{text}");
+    for part in [
+        "174 modes give 348 unknowns",
+        "limit of 256",
+        "plate.nodal_diameters",
+        "plate.nodal_circles",
+        "simulation.integrator",
+    ] {
+        assert!(text.contains(part), "{text}");
+    }
+    // Within the limit the same scene runs (63 modes: 126 unknowns).
+    let within = format!("nodal_diameters: [{}]", diameters[..32].join(", "));
+    let config = scene(
+        "brake_bench.yaml",
+        "contact_exponential",
+        &[
+            ("nodal_diameters: [0, 1, 2, 3, 4]", within.as_str()),
+            ("clamp_force: [0.0]", "clamp_force: [8000.0]"),
+        ],
+    );
+    let mut sim = Simulation::new(config).unwrap();
+    for _ in 0..5 {
+        sim.step().unwrap();
+    }
+    assert!(sim.q_ale().iter().all(|q| q.is_finite()));
+}

@@ -267,8 +267,8 @@ pub fn table(r: &StudyReport) -> String {
             "relative error with residual flexibility (docs/residual_flexibility.md; reference plus its own residual)",
             &|x: &study::response::ResponseRow| format!("{:.2e}{}", x.relative_error_with_residual, if x.pareto_with_residual { "*" } else { " " }),
         ),
-        ("wall time per step, modes only", &|x: &study::response::ResponseRow| fmt_time(x.step_time_s)),
-        ("wall time per step with residual flexibility", &|x: &study::response::ResponseRow| fmt_time(x.step_time_with_residual_s)),
+        ("wall time per step, modes only", &|x: &study::response::ResponseRow| x.step_time_s.map_or("refused".into(), fmt_time)),
+        ("wall time per step with residual flexibility", &|x: &study::response::ResponseRow| x.step_time_with_residual_s.map_or("refused".into(), fmt_time)),
         ("modes", &|x: &study::response::ResponseRow| x.modes.to_string()),
     ] {
         let _ = writeln!(o, "   {title}:");

@@ -70,6 +70,14 @@ pub enum SimulationError {
         step: f64,
         limit: f64,
     },
+    /// More unknowns than `contact_exponential` tabulates per active set
+    /// ([`MAX_UNKNOWNS`](super::integrators::contact_exponential::MAX_UNKNOWNS)).
+    #[error("simulation.integrator = contact_exponential tabulates matrices over all unknowns for each active set of the contacts: {modes} modes give {unknowns} unknowns, beyond its limit of {limit}: request fewer modes (plate.nodal_diameters, plate.nodal_circles) or use simulation.integrator: rk4")]
+    TooManyContactUnknowns {
+        modes: usize,
+        unknowns: usize,
+        limit: usize,
+    },
     /// A load model with state of its own that evolves with the modes (massive pads).
     #[error("the {model} have state of their own ({keys}) that only simulation.integrator: rk4 integrates with the modes; simulation.integrator = {integrator} is refused")]
     ContinuousStateNeedsRk4 {

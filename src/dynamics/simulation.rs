@@ -1,7 +1,7 @@
 //! The facade the CLI and the ROS node drive: scene + state + stepper +
 //! settings + held inputs, with the outputs derived from the state.
 
-use crate::config::{Config, Coordinates};
+use crate::config::{Config, Coordinates, IntegratorKind};
 use crate::model::PlateModel;
 use nalgebra::{Isometry3, Quaternion, Translation3, UnitQuaternion, Vector3};
 
@@ -9,6 +9,7 @@ use super::ale::{harmonics, lagrange_to_ale};
 use super::commands::Inputs;
 use super::commands::{check, check_batch, Checked, CheckedBatch, Command};
 use super::error::{BatchError, InputError, LoadCommandError, SimulationError, StepError};
+use super::integrators::contact_exponential::MAX_UNKNOWNS;
 use super::integrators::MAX_INNER_SUBSTEPS;
 use super::load_models::{
     ContactForces, LoadContext, ModelWrenches, PadScratch, Pads, PitchLinks, Tool,
@@ -128,6 +129,7 @@ impl Simulation {
         let settings = StepperSettings::from_config(&config);
         let stepper = Stepper::new(&scene);
         check_inner_substeps(&config, &scene, &settings, &stepper)?;
+        check_contact_unknowns(&scene, &settings)?;
         scene
             .load_models
             .check_integrator(settings.integrator, settings.h())?;
@@ -650,6 +652,28 @@ pub fn tilt_rotation(tilt: [f64; 2]) -> UnitQuaternion<f64> {
         tilt[1] / angle * s,
         0.0,
     ))
+}
+
+/// Refuse `contact_exponential` on a scene with stiff contacts and more
+/// unknowns than it tabulates ([`MAX_UNKNOWNS`]).
+fn check_contact_unknowns(
+    scene: &Scene,
+    settings: &StepperSettings,
+) -> Result<(), SimulationError> {
+    let models = &scene.load_models;
+    if settings.integrator != IntegratorKind::ContactExponential || !models.stage_dependent() {
+        return Ok(());
+    }
+    let modes = scene.n_modes();
+    let unknowns = 2 * modes + models.continuous_states();
+    if unknowns <= MAX_UNKNOWNS {
+        return Ok(());
+    }
+    Err(SimulationError::TooManyContactUnknowns {
+        modes,
+        unknowns,
+        limit: MAX_UNKNOWNS,
+    })
 }
 
 /// Refuse a scene whose integrator would need more than

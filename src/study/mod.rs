@@ -71,7 +71,8 @@ pub struct StudyPlan {
     pub response_reference: (u32, u32),
     /// Axis 2: radial splines of every mode (enough for l ≤ L).
     pub response_splines: usize,
-    /// Axis 3: integrators and output rates (whole multiples of `sample_rate_hz`).
+    /// Axis 3: integrators and output rates (whole multiples of `sample_rate_hz`);
+    /// `contact_exponential` runs only on scenes whose load models switch.
     pub integrators: Vec<IntegratorKind>,
     pub rates_hz: Vec<f64>,
     pub sample_rate_hz: f64,
@@ -105,6 +106,7 @@ impl StudyPlan {
                 IntegratorKind::Exponential,
                 IntegratorKind::ImplicitMidpoint,
                 IntegratorKind::Rk4,
+                IntegratorKind::ContactExponential,
             ],
             rates_hz: vec![1e3, 2e3, 5e3, 1e4, 2e4, 5e4, 1e5],
             sample_rate_hz: 1e3,
@@ -128,6 +130,7 @@ impl StudyPlan {
                 IntegratorKind::Exponential,
                 IntegratorKind::ImplicitMidpoint,
                 IntegratorKind::Rk4,
+                IntegratorKind::ContactExponential,
             ],
             rates_hz: vec![1e3, 2e3, 5e3, 1e4, 2e4],
             sample_rate_hz: 1e3,
@@ -144,7 +147,7 @@ impl StudyPlan {
         let (k_ref, l_ref) = self.response_reference;
         let b = 1 + self.k_max.iter().filter(|&&k| k <= k_ref).count()
             * self.l_max.iter().filter(|&&l| l <= l_ref).count();
-        let c = 3 + self.integrators.len() * self.rates_hz.len();
+        let c = 3 + trajectory::integrators(config, self).len() * self.rates_hz.len();
         a + b + c
     }
 }

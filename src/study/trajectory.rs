@@ -17,6 +17,14 @@
 //! is ≥ (2ᵖ − 1) × the reference's own error). The larger difference is the
 //! reference's uncertainty, added to every error before a setting is
 //! recommended.
+//!
+//! On a scene whose load models switch (pads that lift off and touch down)
+//! the reference is `rk4` instead, which evaluates the contact springs at
+//! every stage, with its inner substep 16× below the default
+//! (`simulation.rk4_step_limit` 0.0125); its checks are
+//! `rk4` at half that inner step and `contact_exponential` at the tightest
+//! `simulation.contact_tolerance`, and `contact_exponential` (at the scene's
+//! own tolerance) joins the integrators compared.
 
 use super::timing::min_time;
 use super::{mark_pareto, recommend, Candidate, Recommendation, StudyError, StudyPlan};
@@ -71,7 +79,8 @@ pub fn record(
         Err(
             e @ (SimulationError::TooManySubsteps { .. }
             | SimulationError::ModelTooStiffForIntegrator { .. }
-            | SimulationError::ContinuousStateNeedsRk4 { .. }),
+            | SimulationError::ContinuousStateNeedsRk4 { .. }
+            | SimulationError::TooManyContactUnknowns { .. }),
         ) => return Err((RunStatus::Refused, e.to_string())),
         Err(e) => return Err((RunStatus::Diverged, e.to_string())),
     };
@@ -153,6 +162,9 @@ pub struct TrajectoryAxis {
     pub duration_s: f64,
     pub sample_rate_hz: f64,
     pub modes: usize,
+    /// The plan's integrators this scene is studied with (`contact_exponential`
+    /// only where its load models switch); each runs at every rate.
+    pub integrators: Vec<&'static str>,
     pub reference: TrajectoryReference,
     pub rows: Vec<TrajectoryRow>,
     pub recommendations: Vec<Recommendation<IntegratorSetting>>,
@@ -179,18 +191,26 @@ pub fn run(
     let ref_rate = plan.trajectory_reference_rate_hz;
     let mut notes = Vec::new();
     let mut scene = config.clone();
-    let ref_integrator = reference_integrator(&scene, ref_rate);
+    let reference_why = reference_kind(&scene, ref_rate);
+    let ref_integrator = match reference_why {
+        ReferenceWhy::Smooth => IntegratorKind::Exponential,
+        ReferenceWhy::LoadModelState | ReferenceWhy::StiffContacts => IntegratorKind::Rk4,
+    };
     tick(&format!(
         "reference: {} at {ref_rate} Hz",
         ref_integrator.name()
     ));
     let reference_run = |scene: &Config| -> Result<Samples, StudyError> {
         let every = steps_per_sample(ref_rate, plan.sample_rate_hz)?;
-        record(&scene_at(scene, ref_integrator, ref_rate), every, samples)
-            .map(|(s, _)| s)
-            .map_err(|(_, detail)| StudyError::NoResponse {
-                detail: format!("the reference run failed: {detail}"),
-            })
+        record(
+            &reference_at(scene, reference_why, ref_rate),
+            every,
+            samples,
+        )
+        .map(|(s, _)| s)
+        .map_err(|(_, detail)| StudyError::NoResponse {
+            detail: format!("the reference run failed: {detail}"),
+        })
     };
     let mut reference = reference_run(&scene)?;
     let peak = |s: &Samples| {
@@ -207,19 +227,35 @@ pub fn run(
         ));
         reference = reference_run(&scene)?;
     }
-    let checks = if ref_integrator == IntegratorKind::Exponential {
-        exponential_checks(&scene, plan, samples, &reference, &mut notes, tick)?
-    } else {
-        notes.push("the scene's load models have state only rk4 integrates (pads.mass): the reference is rk4, checked against rk4 at half its inner step".into());
-        vec![rk4_half_step_check(
-            &scene, plan, samples, &reference, tick,
-        )?]
+    let checks = match reference_why {
+        ReferenceWhy::Smooth => {
+            exponential_checks(&scene, plan, samples, &reference, &mut notes, tick)?
+        }
+        ReferenceWhy::LoadModelState => {
+            notes.push("the scene's load models have state only rk4 integrates (pads.mass): the reference is rk4, checked against rk4 at half its inner step".into());
+            vec![rk4_half_step_check(
+                &scene,
+                reference_why,
+                plan,
+                samples,
+                &reference,
+                tick,
+            )?]
+        }
+        ReferenceWhy::StiffContacts => {
+            notes.push("the scene's load models switch (contacts that lift off): the reference is rk4 with simulation.rk4_step_limit 0.0125 (16× below the default), which resolves the contact springs at every stage, checked against rk4 at half its inner step and against contact_exponential at the tightest simulation.contact_tolerance".into());
+            vec![
+                rk4_half_step_check(&scene, reference_why, plan, samples, &reference, tick)?,
+                contact_exponential_check(&scene, plan, samples, &reference, tick)?,
+            ]
+        }
     };
     let uncertainty = checks.iter().map(|c| c.difference).fold(0.0, f64::max);
     let modes = reference.first().map_or(0, |v| v.len());
 
     let mut rows = Vec::new();
-    for &integrator in &plan.integrators {
+    let integrators = compared(plan, reference_why);
+    for &integrator in &integrators {
         for &rate in &plan.rates_hz {
             tick(&format!("{} at {rate} Hz", integrator.name()));
             let every = steps_per_sample(rate, plan.sample_rate_hz)?;
@@ -301,6 +337,7 @@ pub fn run(
         duration_s: duration,
         sample_rate_hz: plan.sample_rate_hz,
         modes,
+        integrators: integrators.iter().map(|i| i.name()).collect(),
         reference: TrajectoryReference {
             integrator: ref_integrator.name(),
             rate_hz: ref_rate,
@@ -315,13 +352,99 @@ pub fn run(
     })
 }
 
-/// `exponential`, or `rk4` when the scene's load models have state of their
-/// own that only rk4 integrates (massive pads).
-fn reference_integrator(scene: &Config, rate_hz: f64) -> IntegratorKind {
-    match Simulation::new(scene_at(scene, IntegratorKind::Exponential, rate_hz)) {
-        Err(SimulationError::ContinuousStateNeedsRk4 { .. }) => IntegratorKind::Rk4,
-        _ => IntegratorKind::Exponential,
+/// The plan's integrators `config` is compared with: `contact_exponential`
+/// only where its load models switch.
+pub fn integrators(config: &Config, plan: &StudyPlan) -> Vec<IntegratorKind> {
+    compared(
+        plan,
+        reference_kind(config, plan.trajectory_reference_rate_hz),
+    )
+}
+
+fn compared(plan: &StudyPlan, why: ReferenceWhy) -> Vec<IntegratorKind> {
+    plan.integrators
+        .iter()
+        .copied()
+        .filter(|&i| i != IntegratorKind::ContactExponential || why == ReferenceWhy::StiffContacts)
+        .collect()
+}
+
+/// Why the reference is the integrator it is.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum ReferenceWhy {
+    /// `exponential`: the scene's forces are smooth in the state.
+    Smooth,
+    /// `rk4`: the load models have state of their own that only rk4
+    /// integrates (massive pads).
+    LoadModelState,
+    /// `rk4`: the load models switch (contacts that lift off and touch
+    /// down), which `exponential` holds over a step; `contact_exponential`
+    /// joins the integrators compared.
+    StiffContacts,
+}
+
+fn reference_kind(scene: &Config, rate_hz: f64) -> ReferenceWhy {
+    if let Err(SimulationError::ContinuousStateNeedsRk4 { .. }) =
+        Simulation::new(scene_at(scene, IntegratorKind::Exponential, rate_hz))
+    {
+        return ReferenceWhy::LoadModelState;
     }
+    match Simulation::new(scene_at(scene, IntegratorKind::Rk4, rate_hz)) {
+        Ok(sim) if sim.scene().load_models.switching_functions() > 0 => ReferenceWhy::StiffContacts,
+        _ => ReferenceWhy::Smooth,
+    }
+}
+
+/// `simulation.rk4_step_limit` of the reference on a scene with stiff
+/// contacts: 16× below the default, so the inner substep resolves the
+/// contact springs' fastest rate 16 times finer than a plain rk4 run.
+const REFERENCE_RK4_STEP_LIMIT: f64 = 0.0125;
+
+/// The reference run's scene: its integrator at `rate_hz`, with the inner
+/// step refined on a scene with stiff contacts.
+fn reference_at(scene: &Config, why: ReferenceWhy, rate_hz: f64) -> Config {
+    match why {
+        ReferenceWhy::Smooth => scene_at(scene, IntegratorKind::Exponential, rate_hz),
+        ReferenceWhy::LoadModelState => scene_at(scene, IntegratorKind::Rk4, rate_hz),
+        ReferenceWhy::StiffContacts => {
+            let mut c = scene_at(scene, IntegratorKind::Rk4, rate_hz);
+            c.simulation.rk4_step_limit = c.simulation.rk4_step_limit.min(REFERENCE_RK4_STEP_LIMIT);
+            c
+        }
+    }
+}
+
+/// The tightest `simulation.contact_tolerance` the contact check runs at.
+const CHECK_CONTACT_TOLERANCE: f64 = 1e-12;
+
+/// An independent check of an rk4 reference on a scene with stiff contacts:
+/// `contact_exponential` at the same rate (it shares only the right-hand
+/// side with rk4: it treats the contact springs exactly on their active set
+/// and locates each lift-off and touch-down).
+fn contact_exponential_check(
+    scene: &Config,
+    plan: &StudyPlan,
+    samples: usize,
+    reference: &Samples,
+    tick: &mut dyn FnMut(&str),
+) -> Result<Check, StudyError> {
+    let ref_rate = plan.trajectory_reference_rate_hz;
+    tick(&format!("check: contact_exponential at {ref_rate} Hz"));
+    let mut tight = scene_at(scene, IntegratorKind::ContactExponential, ref_rate);
+    tight.simulation.contact_tolerance = CHECK_CONTACT_TOLERANCE;
+    let s = record(
+        &tight,
+        steps_per_sample(ref_rate, plan.sample_rate_hz)?,
+        samples,
+    )
+    .map_err(|(_, detail)| StudyError::NoResponse {
+        detail: format!("the contact_exponential check run failed: {detail}"),
+    })?;
+    Ok(Check {
+        integrator: IntegratorKind::ContactExponential.name(),
+        rate_hz: ref_rate,
+        difference: relative_error(&s.0, reference),
+    })
 }
 
 /// Two independent checks of an exponential reference: another method at the
@@ -382,6 +505,7 @@ fn exponential_checks(
 /// is 15/16 of the reference's own error.
 fn rk4_half_step_check(
     scene: &Config,
+    reference_why: ReferenceWhy,
     plan: &StudyPlan,
     samples: usize,
     reference: &Samples,
@@ -389,7 +513,7 @@ fn rk4_half_step_check(
 ) -> Result<Check, StudyError> {
     let ref_rate = plan.trajectory_reference_rate_hz;
     tick(&format!("check: rk4 at {ref_rate} Hz, half the inner step"));
-    let mut finer = scene_at(scene, IntegratorKind::Rk4, ref_rate);
+    let mut finer = reference_at(scene, reference_why, ref_rate);
     finer.simulation.rk4_step_limit *= 0.5;
     let s = record(
         &finer,

@@ -101,12 +101,12 @@ pub(super) fn panels(r: &StudyReport) -> [PanelData; 3] {
                     .rows
                     .iter()
                     .filter(|x| x.l_max == l)
-                    .map(|x| {
-                        (
-                            x.step_time_s,
+                    .filter_map(|x| {
+                        Some((
+                            x.step_time_s?,
                             floor(x.relative_error),
                             format!("k ≤ {}", x.k_max),
-                        )
+                        ))
                     })
                     .collect(),
             })
@@ -118,12 +118,12 @@ pub(super) fn panels(r: &StudyReport) -> [PanelData; 3] {
                         .rows
                         .iter()
                         .filter(|x| x.l_max == l)
-                        .map(|x| {
-                            (
-                                x.step_time_with_residual_s,
+                        .filter_map(|x| {
+                            Some((
+                                x.step_time_with_residual_s?,
                                 floor(x.relative_error_with_residual),
                                 format!("k ≤ {}", x.k_max),
-                            )
+                            ))
                         })
                         .collect(),
                 }
@@ -134,13 +134,18 @@ pub(super) fn panels(r: &StudyReport) -> [PanelData; 3] {
             .rows
             .iter()
             .filter(|x| x.pareto)
-            .map(|x| (x.step_time_s, floor(x.relative_error)))
-            .chain(b.rows.iter().filter(|x| x.pareto_with_residual).map(|x| {
-                (
-                    x.step_time_with_residual_s,
-                    floor(x.relative_error_with_residual),
-                )
-            }))
+            .filter_map(|x| Some((x.step_time_s?, floor(x.relative_error))))
+            .chain(
+                b.rows
+                    .iter()
+                    .filter(|x| x.pareto_with_residual)
+                    .filter_map(|x| {
+                        Some((
+                            x.step_time_with_residual_s?,
+                            floor(x.relative_error_with_residual),
+                        ))
+                    }),
+            )
             .collect(),
         picks: b
             .recommendations

@@ -26,8 +26,26 @@
 
 use super::piece::{mul_add, BuildScratch, PieceTables};
 
-/// Pieces kept (a limit cycle of 18 contacts visits dozens; chatter two).
+/// Pieces kept at most (a limit cycle of 18 contacts visits dozens; chatter two).
 pub(crate) const CACHE_PIECES: usize = 64;
+
+/// Pieces kept at least, however large.
+const MIN_CACHE_PIECES: usize = 4;
+
+/// Memory the cache's tables may take: fewer pieces are kept when each is large.
+const CACHE_BYTES: usize = 128 << 20;
+
+/// Unknowns beyond which `contact_exponential` is refused: a piece holds
+/// 2·levels + 3 matrices of n² (0.5 MB each at n = 256) and its build costs
+/// O(n³) per level.
+pub const MAX_UNKNOWNS: usize = 256;
+
+/// Pieces the cache keeps for n unknowns and `levels` dyadic levels: as many
+/// as fit [`CACHE_BYTES`], within [`MIN_CACHE_PIECES`]..=[`CACHE_PIECES`].
+pub(crate) fn cache_pieces(n: usize, levels: usize) -> usize {
+    let piece_bytes = (2 * (levels + 1) + 1) * n * n * std::mem::size_of::<f64>();
+    (CACHE_BYTES / piece_bytes.max(1)).clamp(MIN_CACHE_PIECES, CACHE_PIECES)
+}
 
 /// Size of the differences that give J relative to the largest entry of the
 /// unknown's block (inside the piece: checked; large, so that the law's
@@ -113,7 +131,7 @@ impl ContactExponential {
             n,
             ns,
             levels,
-            entries: (0..CACHE_PIECES)
+            entries: (0..cache_pieces(n, levels))
                 .map(|_| Entry {
                     key: Vec::with_capacity(64),
                     valid: false,
@@ -716,6 +734,23 @@ mod tests {
         } else {
             let u = t - up;
             [-(w1 * u).sin() / w1, -(w1 * u).cos()]
+        }
+    }
+
+    #[test]
+    fn the_cache_keeps_its_tables_within_its_memory_bound() {
+        // The brake scenes (≤ 40 unknowns) keep every piece.
+        assert_eq!(cache_pieces(40, 12), CACHE_PIECES);
+        for n in [40, 100, 190, MAX_UNKNOWNS] {
+            for levels in [4, 12, 20, 40] {
+                let pieces = cache_pieces(n, levels);
+                let bytes = pieces * (2 * (levels + 1) + 1) * n * n * 8;
+                assert!((MIN_CACHE_PIECES..=CACHE_PIECES).contains(&pieces));
+                assert!(
+                    bytes <= CACHE_BYTES || pieces == MIN_CACHE_PIECES,
+                    "{n} {levels}: {bytes}"
+                );
+            }
         }
     }
 
