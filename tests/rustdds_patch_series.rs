@@ -240,3 +240,97 @@ fn vendored_rustdds_is_the_published_crate_plus_the_patch_series() {
         rebuilt.len()
     );
 }
+
+/// Whether `text` has `word` as a whole identifier.
+fn has_ident(text: &str, word: &str) -> bool {
+    let is_ident = |c: char| c.is_alphanumeric() || c == '_';
+    text.match_indices(word).any(|(i, _)| {
+        !text[..i].chars().next_back().is_some_and(is_ident)
+            && !text[i + word.len()..].chars().next().is_some_and(is_ident)
+    })
+}
+
+/// The public names the series adds: `pub fn|struct|enum|const|type|trait
+/// NAME` and the names of `pub use` lines (`pub(crate)` is not public).
+fn names_the_series_adds(vendor: &Path) -> Vec<String> {
+    let mut names = Vec::new();
+    for patch in series(vendor) {
+        for line in fs::read_to_string(&patch).unwrap().lines() {
+            let Some(added) = line.strip_prefix('+') else {
+                continue;
+            };
+            let Some(item) = added.trim_start().strip_prefix("pub ") else {
+                continue;
+            };
+            if let Some(used) = item.strip_prefix("use ") {
+                let list = used.rsplit("::").next().unwrap();
+                names.extend(
+                    list.trim_matches(|c| matches!(c, '{' | '}' | ';' | ' '))
+                        .split(',')
+                        .map(|n| n.trim().to_owned()),
+                );
+            } else if let Some(rest) = ["fn ", "struct ", "enum ", "const ", "type ", "trait "]
+                .iter()
+                .find_map(|kw| item.strip_prefix(kw))
+            {
+                let name: String = rest
+                    .chars()
+                    .take_while(|c| c.is_alphanumeric() || *c == '_')
+                    .collect();
+                names.push(name);
+            }
+        }
+    }
+    names.sort();
+    names.dedup();
+    names.retain(|n| !n.is_empty());
+    names
+}
+
+/// Every public name the series adds that the node's code (src/) uses is
+/// listed in PATCH.md's section on the fork's API, which says why it is
+/// needed; and every name listed there is still used.
+#[test]
+fn the_node_uses_only_the_fork_api_patch_md_lists() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let vendor = root.join("vendor/rustdds");
+    let mut node = String::new();
+    fn read_rs(dir: &Path, out: &mut String) {
+        for entry in fs::read_dir(dir).unwrap() {
+            let path = entry.unwrap().path();
+            if path.is_dir() {
+                read_rs(&path, out);
+            } else if path.extension().is_some_and(|x| x == "rs") {
+                out.push_str(&fs::read_to_string(&path).unwrap());
+            }
+        }
+    }
+    read_rs(&root.join("src"), &mut node);
+    let patch_md = fs::read_to_string(vendor.join("PATCH.md")).unwrap();
+    let heading = "## The fork's API that annular_plate uses";
+    let start = patch_md
+        .find(heading)
+        .unwrap_or_else(|| panic!("PATCH.md has no `{heading}`"));
+    let section = &patch_md[start + heading.len()..];
+    let section = &section[..section.find("\n## ").unwrap_or(section.len())];
+
+    let added = names_the_series_adds(&vendor);
+    assert!(
+        added.iter().any(|n| n == "defer_wakes"),
+        "the series' public names were not found: {added:?}"
+    );
+    let used: Vec<&String> = added.iter().filter(|n| has_ident(&node, n)).collect();
+    let unlisted: Vec<_> = used.iter().filter(|n| !has_ident(section, n)).collect();
+    assert!(
+        unlisted.is_empty(),
+        "src/ uses fork-only API that PATCH.md does not list and justify: {unlisted:?}"
+    );
+    let stale: Vec<_> = added
+        .iter()
+        .filter(|n| has_ident(section, n) && !has_ident(&node, n))
+        .collect();
+    assert!(
+        stale.is_empty(),
+        "PATCH.md lists fork API that src/ no longer uses: {stale:?}"
+    );
+}
