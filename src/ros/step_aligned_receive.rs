@@ -38,6 +38,9 @@ pub const ON_ARRIVAL: &str = "on arrival";
 /// The loop's use of the participant's receive gate.
 pub struct StepAlignedReceive {
     gate: ReceiveGate,
+    /// What this loop last set the gate to (nothing else sets it): the node
+    /// needs only the gate's `set_engaged` and `receive_now`.
+    engaged: bool,
     /// Samples taken per step, exponentially averaged.
     mean: f64,
 }
@@ -45,13 +48,17 @@ pub struct StepAlignedReceive {
 impl StepAlignedReceive {
     pub fn new(gate: ReceiveGate) -> Self {
         gate.set_engaged(false);
-        StepAlignedReceive { gate, mean: 0.0 }
+        StepAlignedReceive {
+            gate,
+            engaged: false,
+            mean: 0.0,
+        }
     }
 
     /// Right before the inputs are taken at a step boundary: have everything
     /// that arrived read.
     pub fn before_take(&self) {
-        if self.gate.is_engaged() {
+        if self.engaged {
             self.gate.receive_now(RECEIVE_WAIT);
         }
     }
@@ -59,15 +66,14 @@ impl StepAlignedReceive {
     /// After `samples` were taken at a step boundary.
     pub fn after_take(&mut self, samples: usize) {
         self.mean += WEIGHT * (samples as f64 - self.mean);
-        let engaged = self.gate.is_engaged();
-        if engaged != engage(engaged, self.mean) {
-            self.gate.set_engaged(!engaged);
+        if self.engaged != engage(self.engaged, self.mean) {
+            self.set_engaged(!self.engaged);
         }
     }
 
     /// `input_reception` on `/diagnostics`.
     pub fn reception(&self) -> &'static str {
-        if self.gate.is_engaged() {
+        if self.engaged {
             "at step boundaries"
         } else {
             ON_ARRIVAL
@@ -77,9 +83,14 @@ impl StepAlignedReceive {
     /// Not stepping at the loop's own rate: read on arrival again.
     pub fn release(&mut self) {
         self.mean = 0.0;
-        if self.gate.is_engaged() {
-            self.gate.set_engaged(false);
+        if self.engaged {
+            self.set_engaged(false);
         }
+    }
+
+    fn set_engaged(&mut self, engaged: bool) {
+        self.gate.set_engaged(engaged);
+        self.engaged = engaged;
     }
 }
 
