@@ -428,21 +428,44 @@ fn contact_exponential_check(
     reference: &Samples,
     tick: &mut dyn FnMut(&str),
 ) -> Result<Check, StudyError> {
-    let ref_rate = plan.trajectory_reference_rate_hz;
-    tick(&format!("check: contact_exponential at {ref_rate} Hz"));
-    let mut tight = scene_at(scene, IntegratorKind::ContactExponential, ref_rate);
+    let mut tight = scene_at(
+        scene,
+        IntegratorKind::ContactExponential,
+        plan.trajectory_reference_rate_hz,
+    );
     tight.simulation.contact_tolerance = CHECK_CONTACT_TOLERANCE;
-    let s = record(
+    check_run(
         &tight,
-        steps_per_sample(ref_rate, plan.sample_rate_hz)?,
+        IntegratorKind::ContactExponential.name(),
+        plan,
+        samples,
+        reference,
+        tick,
+    )
+}
+
+/// `config` run at the reference rate as a check of the reference.
+fn check_run(
+    config: &Config,
+    name: &'static str,
+    plan: &StudyPlan,
+    samples: usize,
+    reference: &Samples,
+    tick: &mut dyn FnMut(&str),
+) -> Result<Check, StudyError> {
+    let rate_hz = plan.trajectory_reference_rate_hz;
+    tick(&format!("check: {name} at {rate_hz} Hz"));
+    let s = record(
+        config,
+        steps_per_sample(rate_hz, plan.sample_rate_hz)?,
         samples,
     )
     .map_err(|(_, detail)| StudyError::NoResponse {
-        detail: format!("the contact_exponential check run failed: {detail}"),
+        detail: format!("the check run ({name}) failed: {detail}"),
     })?;
     Ok(Check {
-        integrator: IntegratorKind::ContactExponential.name(),
-        rate_hz: ref_rate,
+        integrator: name,
+        rate_hz,
         difference: relative_error(&s.0, reference),
     })
 }
@@ -511,21 +534,14 @@ fn rk4_half_step_check(
     reference: &Samples,
     tick: &mut dyn FnMut(&str),
 ) -> Result<Check, StudyError> {
-    let ref_rate = plan.trajectory_reference_rate_hz;
-    tick(&format!("check: rk4 at {ref_rate} Hz, half the inner step"));
-    let mut finer = reference_at(scene, reference_why, ref_rate);
+    let mut finer = reference_at(scene, reference_why, plan.trajectory_reference_rate_hz);
     finer.simulation.rk4_step_limit *= 0.5;
-    let s = record(
+    check_run(
         &finer,
-        steps_per_sample(ref_rate, plan.sample_rate_hz)?,
+        "rk4, half the inner step",
+        plan,
         samples,
+        reference,
+        tick,
     )
-    .map_err(|(_, detail)| StudyError::NoResponse {
-        detail: format!("the check run at half the inner step failed: {detail}"),
-    })?;
-    Ok(Check {
-        integrator: "rk4, half the inner step",
-        rate_hz: ref_rate,
-        difference: relative_error(&s.0, reference),
-    })
 }
