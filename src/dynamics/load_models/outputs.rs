@@ -40,6 +40,18 @@ pub struct OutputChannel {
     pub shape: ChannelShape,
 }
 
+impl OutputChannel {
+    /// A real scalar channel (`float64 feed_rate`).
+    pub const fn scalar(name: &'static str, unit: &'static str) -> OutputChannel {
+        OutputChannel {
+            name,
+            unit,
+            kind: ChannelKind::Real,
+            shape: ChannelShape::Scalar,
+        }
+    }
+}
+
 /// A CSV column per instance: `{prefix}{i}_{quantity}` for numbered models
 /// (`pad2_clamp_force`), `{prefix}_{quantity}` otherwise (`tool_tip_z`),
 /// showing value i of `channel`.
@@ -48,6 +60,16 @@ pub struct CsvColumn {
     /// The channel's name (one of [`Outputs::channels`]).
     pub channel: &'static str,
     pub quantity: &'static str,
+}
+
+impl CsvColumn {
+    /// The column of `channel`, named as it.
+    pub const fn named(channel: &'static str) -> CsvColumn {
+        CsvColumn {
+            channel,
+            quantity: channel,
+        }
+    }
 }
 
 /// The topic that carries every channel of a model after each output step:

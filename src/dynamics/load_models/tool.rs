@@ -39,9 +39,7 @@ use super::model::{
     surface_kinematics, CommandRule, CommandSpec, LoadContext, LoadModel, ModelOut, Registration,
     SceneNodes,
 };
-use super::outputs::{
-    ChannelKind, ChannelShape, CsvColumn, OutputChannel, OutputContext, Outputs, StateTopic,
-};
+use super::outputs::{CsvColumn, OutputChannel, OutputContext, Outputs, StateTopic};
 use super::undo::SlotUndo;
 use crate::config::Config;
 use crate::dynamics::contact_compliance::solve_monotone;
@@ -180,39 +178,21 @@ pub const FEED_RATE: CommandSpec = CommandSpec {
     rule: CommandRule::MagnitudeAtMost(crate::config::MAX_TOOL_FEED_RATE),
 };
 
-const fn scalar(name: &'static str, unit: &'static str) -> OutputChannel {
-    OutputChannel {
-        name,
-        unit,
-        kind: ChannelKind::Real,
-        shape: ChannelShape::Scalar,
-    }
-}
-
 /// The tool's declared outputs: ~/tool_state (`msg/ToolState.msg`) and its
 /// CSV columns `tool_tip_z`, `tool_chip_thickness`, `tool_feed_force`.
 pub const OUTPUTS: Outputs = Outputs {
     channels: &[
-        scalar("feed_rate", "m/s"),
-        scalar("tip_z", "m"),
-        scalar("chip_thickness", "m"),
-        scalar("feed_force", "N"),
+        OutputChannel::scalar("feed_rate", "m/s"),
+        OutputChannel::scalar("tip_z", "m"),
+        OutputChannel::scalar("chip_thickness", "m"),
+        OutputChannel::scalar("feed_force", "N"),
     ],
     column_prefix: "tool",
     numbered: false,
     columns: &[
-        CsvColumn {
-            channel: "tip_z",
-            quantity: "tip_z",
-        },
-        CsvColumn {
-            channel: "chip_thickness",
-            quantity: "chip_thickness",
-        },
-        CsvColumn {
-            channel: "feed_force",
-            quantity: "feed_force",
-        },
+        CsvColumn::named("tip_z"),
+        CsvColumn::named("chip_thickness"),
+        CsvColumn::named("feed_force"),
     ],
     topic: Some(StateTopic {
         topic: "~/tool_state",
