@@ -2,6 +2,7 @@
 //! lathe scenario length (5.5 s) at a 10 kHz step (paper: 44.7 CPU-s).
 
 use annular_plate::config::{Config, Coordinates, IntegratorKind, NodePosition, WrenchConfig};
+use annular_plate::dynamics::load_models::pad_outputs::PadOutputs;
 use annular_plate::dynamics::Simulation;
 use criterion::{criterion_group, criterion_main, Criterion};
 

@@ -19,6 +19,7 @@
 #[path = "peer/harness.rs"]
 mod harness;
 
+use annular_plate::dynamics::load_models::pad_outputs::PadOutputs;
 use annular_plate::dynamics::{Simulation, Wrench};
 use annular_plate::ros::NodeSetup;
 use harness::{

@@ -7,6 +7,7 @@
 mod support;
 
 use annular_plate::config::Config;
+use annular_plate::dynamics::load_models::pad_outputs::PadOutputs;
 use annular_plate::dynamics::Simulation;
 use support::scene_files as scenes;
 

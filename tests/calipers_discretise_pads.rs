@@ -8,6 +8,7 @@
 mod support;
 
 use annular_plate::config::{Caliper, Config, ConfigError, NodePosition};
+use annular_plate::dynamics::load_models::pad_outputs::PadOutputs;
 use annular_plate::dynamics::{stability, Simulation};
 use support::scene_files as scenes;
 

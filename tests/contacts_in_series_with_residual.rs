@@ -24,6 +24,7 @@
 mod support;
 
 use annular_plate::config::{Caliper, Config, IntegratorKind, WrenchConfig};
+use annular_plate::dynamics::load_models::tool::ToolOutputs;
 use annular_plate::dynamics::{stability, Simulation};
 use std::f64::consts::TAU;
 use support::exact_plate::Edge;

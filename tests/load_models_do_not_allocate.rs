@@ -2,6 +2,9 @@
 //! allocation, their commands included (a counting global allocator watches).
 
 use annular_plate::config::{Config, Coordinates, IntegratorKind};
+use annular_plate::dynamics::load_models::pad_outputs::PadOutputs;
+use annular_plate::dynamics::load_models::pitch_link::LinkOutputs;
+use annular_plate::dynamics::load_models::tool::ToolOutputs;
 use annular_plate::dynamics::Simulation;
 use std::alloc::{GlobalAlloc, Layout, System};
 use std::cell::Cell;

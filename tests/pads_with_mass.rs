@@ -9,7 +9,7 @@ use annular_plate::config::{
     Boundary, Caliper, Config, ContactSurface, Coordinates, IntegratorKind, NodePosition,
     PadContact, PadsConfig,
 };
-use annular_plate::dynamics::load_models::Pads;
+use annular_plate::dynamics::load_models::pad::Pads;
 use annular_plate::dynamics::{stability, Simulation};
 use annular_plate::model::AngularShape;
 use faer::Mat;

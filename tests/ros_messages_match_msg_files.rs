@@ -5,10 +5,15 @@
 //!
 //! The Rust side is read through serde itself — a tracing deserializer
 //! records the field names and primitive types each struct asks for — so
-//! the check covers exactly what goes on the wire (CDR is positional).
+//! the check covers exactly what goes on the wire (CDR is positional). The
+//! load models' state messages have no struct: their fields are the
+//! channels each model declares (`dynamics::load_models::outputs`), checked
+//! against their `.msg` files here, and serialized field by field as a
+//! struct would be (checked against structs written out below).
 
 #![cfg(feature = "ros")]
 
+use annular_plate::dynamics::load_models::{ChannelKind, ChannelShape, Outputs, REGISTRY};
 use annular_plate::messages::types as m;
 use annular_plate::ros::RosType;
 use serde::de::{self, DeserializeOwned, DeserializeSeed, SeqAccess, Visitor};
@@ -363,6 +368,38 @@ fn check<T: DeserializeOwned>(defs: &Definitions, full: &str) {
     defs.check(full, &trace::<T>(), full);
 }
 
+/// The wire shape of a model's state message, from its declaration.
+fn declared_shape(o: &Outputs) -> Shape {
+    let mut fields = vec![
+        ("header", trace::<m::Header>()),
+        ("step", Shape::Prim("uint64")),
+        ("sim_time", Shape::Prim("float64")),
+    ];
+    for c in o.channels {
+        let p = Shape::Prim(match c.kind {
+            ChannelKind::Real => "float64",
+            ChannelKind::Number => "uint32",
+        });
+        fields.push((
+            c.name,
+            match c.shape {
+                ChannelShape::Scalar => p,
+                ChannelShape::Sequence => Shape::Seq(Box::new(p)),
+            },
+        ));
+    }
+    Shape::Struct(o.topic.expect("a model with a topic").message, fields)
+}
+
+/// Every registered model's topic message: `pkg/Type` and its declared shape.
+fn model_messages() -> Vec<(String, Shape)> {
+    REGISTRY
+        .iter()
+        .filter_map(|r| r.outputs.topic.map(|t| (r.outputs, t)))
+        .map(|(o, t)| (format!("{}/{}", t.package, t.message), declared_shape(o)))
+        .collect()
+}
+
 fn check_msg<T: DeserializeOwned + RosType>(defs: &Definitions) -> String {
     let full = format!("{}/{}", T::PACKAGE, T::NAME);
     check::<T>(defs, &full);
@@ -372,15 +409,17 @@ fn check_msg<T: DeserializeOwned + RosType>(defs: &Definitions) -> String {
 #[test]
 fn own_messages_match_msg_files() {
     let defs = Definitions::load();
-    let checked = [
+    let mut checked = vec![
         check_msg::<m::CriticalSpeeds>(&defs),
         check_msg::<m::ModalAmplitudes>(&defs),
         check_msg::<m::NodeWrench>(&defs),
         check_msg::<m::NodeWrenchArray>(&defs),
         check_msg::<m::PadClampForces>(&defs),
-        check_msg::<m::PadStates>(&defs),
-        check_msg::<m::ToolState>(&defs),
     ];
+    for (full, shape) in model_messages() {
+        defs.check(&full, &shape, &full);
+        checked.push(full);
+    }
     // Every .msg of the package has its Rust struct.
     let own: Vec<&String> = defs
         .by_name
@@ -510,26 +549,28 @@ fn bag_schemas_describe_the_wire_structs() {
         }
         Definitions { by_name }
     };
-    let recorded = [
-        ("sensor_msgs/JointState", trace::<m::JointState>()),
-        ("tf2_msgs/TFMessage", trace::<m::TFMessage>()),
+    let mut recorded = vec![
         (
-            "annular_plate/ModalAmplitudes",
+            "sensor_msgs/JointState".to_string(),
+            trace::<m::JointState>(),
+        ),
+        ("tf2_msgs/TFMessage".into(), trace::<m::TFMessage>()),
+        (
+            "annular_plate/ModalAmplitudes".into(),
             trace::<m::ModalAmplitudes>(),
         ),
-        ("annular_plate/PadStates", trace::<m::PadStates>()),
-        ("annular_plate/ToolState", trace::<m::ToolState>()),
-        ("rosgraph_msgs/Clock", trace::<m::Clock>()),
+        ("rosgraph_msgs/Clock".into(), trace::<m::Clock>()),
         (
-            "diagnostic_msgs/DiagnosticArray",
+            "diagnostic_msgs/DiagnosticArray".into(),
             trace::<m::DiagnosticArray>(),
         ),
         (
-            "visualization_msgs/MarkerArray",
+            "visualization_msgs/MarkerArray".into(),
             trace::<annular_plate::messages::visualization::MarkerArray>(),
         ),
     ];
+    recorded.extend(model_messages());
     for (full, shape) in recorded {
-        from_schema(full).check(full, &shape, full);
+        from_schema(&full).check(&full, &shape, &full);
     }
 }

@@ -13,6 +13,8 @@
 #[path = "peer/harness.rs"]
 mod harness;
 
+use annular_plate::dynamics::load_models::pad_outputs::PadOutputs;
+use annular_plate::dynamics::load_models::tool::ToolOutputs;
 use annular_plate::dynamics::{Simulation, Wrench};
 use annular_plate::ros::NodeSetup;
 use harness::{f, floats, peer, repo, scene, start_node, start_node_on, Netns};
@@ -53,7 +55,7 @@ fn pad_states_match(ps: &Value, sim: &Simulation, what: &str) {
     let pads = sim
         .scene()
         .load_models
-        .find::<annular_plate::dynamics::load_models::Pads>()
+        .find::<annular_plate::dynamics::load_models::pad::Pads>()
         .map(|(_, p)| p)
         .expect("the scene has pads");
     let ints = |key: &str| -> Vec<u64> {
@@ -102,7 +104,7 @@ fn brake_bench_data(sim: &Simulation) -> (f64, f64, f64) {
     let pads = sim
         .scene()
         .load_models
-        .find::<annular_plate::dynamics::load_models::Pads>()
+        .find::<annular_plate::dynamics::load_models::pad::Pads>()
         .map(|(_, p)| p)
         .expect("the brake bench has pads");
     let r = pads.contacts[0].radius;

@@ -11,6 +11,7 @@ mod support;
 
 use annular_plate::config::Config;
 use annular_plate::dynamics::load_models::face_friction::face_kinematics;
+use annular_plate::dynamics::load_models::pad_outputs::PadOutputs;
 use annular_plate::dynamics::{stability, Simulation};
 use annular_plate::model::AngularShape;
 use std::f64::consts::TAU;

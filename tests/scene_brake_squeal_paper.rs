@@ -8,6 +8,8 @@
 mod support;
 
 use annular_plate::config::{Caliper, Config, ConfigError};
+use annular_plate::dynamics::load_models::pad_outputs::PadOutputs;
+use annular_plate::dynamics::load_models::tool::ToolOutputs;
 use annular_plate::dynamics::{stability, LoadCommandError, Simulation, StepError};
 
 use support::scene_files::{self as scenes, NODE};

@@ -8,6 +8,8 @@
 mod support;
 
 use annular_plate::config::Config;
+use annular_plate::dynamics::load_models::pad_outputs::PadOutputs;
+use annular_plate::dynamics::load_models::tool::ToolOutputs;
 use annular_plate::ros::NodeSetup;
 use support::scene_files;
 

@@ -8,6 +8,8 @@
 mod support;
 
 use annular_plate::config::{Config, ConfigError};
+use annular_plate::dynamics::load_models::pad_outputs::PadOutputs;
+use annular_plate::dynamics::load_models::tool::ToolOutputs;
 use annular_plate::dynamics::{LoadCommandError, Simulation};
 use std::f64::consts::TAU;
 

@@ -9,6 +9,7 @@
 mod support;
 
 use annular_plate::config::{Config, ConfigError};
+use annular_plate::dynamics::load_models::pitch_link::LinkOutputs;
 use annular_plate::dynamics::Simulation;
 use std::f64::consts::TAU;
 

@@ -19,6 +19,7 @@ use crate::messages::clock::StepClock;
 use crate::messages::diagnostics::{self, LoopReport, Timing};
 use crate::messages::input_stats::InputStats;
 use crate::messages::marker::{MarkerInput, PlateMarker};
+use crate::messages::model_states::model_topics;
 use crate::messages::names::{NameResolver, RosArgs};
 use crate::messages::outputs::{clock_message, static_transforms, FrameNames, OutputMessages};
 use crate::messages::settings::RosSettings;
@@ -58,14 +59,9 @@ impl OfflineRecorder {
             .expect("the default node name is valid");
         let rate_hz = 1.0 / sim.dt();
         let every = marker.every(rate_hz);
-        let topics = NodeTopics::resolve(
-            &names,
-            true,
-            sim.pad_count() > 0,
-            sim.has_tool(),
-            every.is_some(),
-        )
-        .expect("the default topic names are valid");
+        let models: Vec<_> = model_topics(sim).into_iter().map(|(_, t)| t).collect();
+        let topics = NodeTopics::resolve(&names, true, &models, every.is_some())
+            .expect("the default topic names are valid");
         let mut bag = NodeBag::create(dir, &topics)?;
         let frames = FrameNames::new(
             &settings.frame_prefix,
@@ -105,7 +101,7 @@ impl OfflineRecorder {
     }
 
     /// Record the current state: /clock, /joint_states, /tf, the modal
-    /// amplitudes, the pad / tool states (scenes with pads / a tool) and,
+    /// amplitudes, the load models' states (those that declare a topic) and,
     /// when due, /diagnostics.
     pub fn record(&mut self, sim: &Simulation) -> Result<(), BagError> {
         let now = Instant::now();
@@ -128,11 +124,8 @@ impl OfflineRecorder {
             .write(&Sample::Tf(self.outputs.tf.handle()), stamp)?;
         self.bag
             .write(&Sample::Modal(self.outputs.modal.handle()), stamp)?;
-        if let Some(p) = &self.outputs.pad_states {
-            self.bag.write(&Sample::PadStates(p.handle()), stamp)?;
-        }
-        if let Some(t) = &self.outputs.tool_state {
-            self.bag.write(&Sample::ToolState(t.handle()), stamp)?;
+        for (k, (_, m)) in self.outputs.models.iter().enumerate() {
+            self.bag.write(&Sample::Model(k, m.handle()), stamp)?;
         }
         // Due at multiples of `every` (the node's steps); with --output-rate
         // the first recorded state at or after one.

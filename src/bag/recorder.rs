@@ -12,12 +12,13 @@
 //! writes metadata.yaml.
 
 use super::writer::{BagError, BagSummary, BagWriter, TopicId};
+use crate::dynamics::load_models::StateTopic;
 use crate::messages::diagnostics::RecordReport;
+use crate::messages::model_states::{type_name as model_type_name, ModelStates};
 use crate::messages::names::NameResolver;
 use crate::messages::outputs::Shared;
 use crate::messages::types::{
-    Clock, DiagnosticArray, JointState, ModalAmplitudes, PadStates, RosType, TFMessage, Time,
-    ToolState,
+    Clock, DiagnosticArray, JointState, ModalAmplitudes, RosType, TFMessage, Time,
 };
 use crate::messages::visualization::MarkerArray;
 use crate::messages::{qos, topics};
@@ -35,8 +36,8 @@ pub enum Sample {
     Tf(Shared<TFMessage>),
     TfStatic(TFMessage),
     Modal(Shared<ModalAmplitudes>),
-    PadStates(Shared<PadStates>),
-    ToolState(Shared<ToolState>),
+    /// The state message of the k-th load model topic ([`NodeTopics::models`]).
+    Model(usize, Shared<ModelStates>),
     Clock(Clock),
     Diagnostics(DiagnosticArray),
     Marker(Shared<MarkerArray>),
@@ -52,22 +53,19 @@ pub struct NodeTopics {
     pub diagnostics: String,
     /// Only with simulated time.
     pub clock: Option<String>,
-    /// Only when the scene has pads.
-    pub pad_states: Option<String>,
-    /// Only when the scene has a tool.
-    pub tool_state: Option<String>,
+    /// The load models' state topics (name, `pkg/msg/Type`), registry order.
+    pub models: Vec<(String, String)>,
     /// Only when `ros.marker_rate_hz` > 0.
     pub plate_marker: Option<String>,
 }
 
 impl NodeTopics {
     /// The names the node publishes under, for `names`, the time mode and
-    /// the scene's load models (pads, a tool).
+    /// the topics the scene's load models declare.
     pub fn resolve(
         names: &NameResolver,
         sim_time: bool,
-        has_pads: bool,
-        has_tool: bool,
+        models: &[StateTopic],
         has_marker: bool,
     ) -> Result<NodeTopics, String> {
         let r = |t: &str| names.resolve(t).map_err(|e| e.to_string());
@@ -82,16 +80,10 @@ impl NodeTopics {
             } else {
                 None
             },
-            pad_states: if has_pads {
-                Some(r(topics::PAD_STATES)?)
-            } else {
-                None
-            },
-            tool_state: if has_tool {
-                Some(r(topics::TOOL_STATE)?)
-            } else {
-                None
-            },
+            models: models
+                .iter()
+                .map(|t| Ok((r(t.topic)?, model_type_name(t))))
+                .collect::<Result<_, String>>()?,
             plate_marker: if has_marker {
                 Some(r(topics::PLATE_MARKER)?)
             } else {
@@ -114,8 +106,7 @@ pub struct NodeBag {
     modal: TopicId,
     diagnostics: TopicId,
     clock: Option<TopicId>,
-    pad_states: Option<TopicId>,
-    tool_state: Option<TopicId>,
+    models: Vec<TopicId>,
     plate_marker: Option<TopicId>,
 }
 
@@ -132,14 +123,11 @@ impl NodeBag {
             type_name::<ModalAmplitudes>(),
             &qos::STATE,
         )?;
-        let pad_states = match &topics.pad_states {
-            Some(t) => Some(add(t, type_name::<PadStates>(), &qos::STATE)?),
-            None => None,
-        };
-        let tool_state = match &topics.tool_state {
-            Some(t) => Some(add(t, type_name::<ToolState>(), &qos::STATE)?),
-            None => None,
-        };
+        let models = topics
+            .models
+            .iter()
+            .map(|(t, ty)| add(t, ty.clone(), &qos::STATE))
+            .collect::<Result<_, _>>()?;
         let plate_marker = match &topics.plate_marker {
             Some(t) => Some(add(t, type_name::<MarkerArray>(), &qos::MARKER)?),
             None => None,
@@ -161,8 +149,7 @@ impl NodeBag {
             modal,
             diagnostics,
             clock,
-            pad_states,
-            tool_state,
+            models,
             plate_marker,
         })
     }
@@ -172,7 +159,7 @@ impl NodeBag {
     }
 
     /// Write `sample` with log time `at`. A sample of a topic the bag does
-    /// not have (`/clock` in wall time, pad or tool states without them) is ignored.
+    /// not have (`/clock` in wall time, a model topic beyond its own) is ignored.
     pub fn write(&mut self, sample: &Sample, at: Time) -> Result<(), BagError> {
         let t = at.to_nanos().max(0) as u64;
         let w = &mut self.writer;
@@ -186,12 +173,8 @@ impl NodeBag {
                 Some(id) => w.write(id, t, m),
                 None => Ok(()),
             },
-            Sample::PadStates(m) => match self.pad_states {
-                Some(id) => w.write(id, t, m),
-                None => Ok(()),
-            },
-            Sample::ToolState(m) => match self.tool_state {
-                Some(id) => w.write(id, t, m),
+            Sample::Model(k, m) => match self.models.get(*k) {
+                Some(&id) => w.write(id, t, m),
                 None => Ok(()),
             },
             Sample::Marker(m) => match self.plate_marker {

@@ -17,7 +17,11 @@
 //! The standard texts are the upstream definitions with their comments left
 //! out (the fields, constants and defaults are the same;
 //! `tests/ros_messages_match_msg_files.rs` checks them against the wire
-//! structs); this package's own types are the files in `msg/` as they are.
+//! structs); this package's own types are the files in `msg/` as they are —
+//! the load models' state messages as each model declares its topic
+//! (`dynamics::load_models::StateTopic::definition`).
+
+use crate::dynamics::load_models::{StateTopic, REGISTRY};
 
 /// `pkg/Type` → the `.msg` text, for every type a recorded topic needs.
 const DEFINITIONS: &[(&str, &str)] = &[
@@ -55,9 +59,12 @@ const DEFINITIONS: &[(&str, &str)] = &[
     ("annular_plate/NodeWrench", include_str!("../../msg/NodeWrench.msg")),
     ("annular_plate/NodeWrenchArray", include_str!("../../msg/NodeWrenchArray.msg")),
     ("annular_plate/PadClampForces", include_str!("../../msg/PadClampForces.msg")),
-    ("annular_plate/PadStates", include_str!("../../msg/PadStates.msg")),
-    ("annular_plate/ToolState", include_str!("../../msg/ToolState.msg")),
 ];
+
+/// The topics every registered load model declares.
+fn model_topics() -> impl Iterator<Item = &'static StateTopic> {
+    REGISTRY.iter().filter_map(|r| r.outputs.topic.as_ref())
+}
 
 const PRIMITIVES: &[&str] = &[
     "bool", "byte", "char", "float32", "float64", "int8", "uint8", "int16", "uint16", "int32",
@@ -85,6 +92,11 @@ pub fn own_text(type_name: &str) -> Option<&'static str> {
         .iter()
         .find(|(n, _)| n.split_once('/') == Some((pkg, name)))
         .map(|(_, t)| *t)
+        .or_else(|| {
+            model_topics()
+                .find(|t| (t.package, t.message) == (pkg, name))
+                .map(|t| t.definition)
+        })
 }
 
 /// The non-primitive field types of a `.msg` text as `pkg/Type`, sorted and
@@ -151,7 +163,10 @@ fn append(
 
 /// Every type this module can describe, as `pkg/msg/Type`.
 pub fn known_types() -> impl Iterator<Item = String> {
-    DEFINITIONS.iter().map(|(n, _)| n.replacen('/', "/msg/", 1))
+    DEFINITIONS
+        .iter()
+        .map(|(n, _)| n.replacen('/', "/msg/", 1))
+        .chain(model_topics().map(|t| format!("{}/msg/{}", t.package, t.message)))
 }
 
 #[cfg(test)]

@@ -3,14 +3,16 @@
 //!
 //! Columns: time, joint_position, joint_velocity, q1..qN (Lagrangian, mode
 //! order of `modes`), qale1..qaleN, ale{j}_uz, lagrange{j}_uz (m); then, only
-//! for scenes with load models (docs/scenes.md): joint_effort (N·m) and
-//! pad{p}_clamp_force, pad{p}_normal_force, pad{p}_friction_torque (N, N, N·m)
-//! and with `pads.mass` pad{p}_top_compression, pad{p}_bottom_compression (m);
-//! tool_tip_z, tool_chip_thickness (m), tool_feed_force (N);
-//! link{j}_force (N).
+//! for scenes with load models (docs/scenes.md): joint_effort (N·m) and the
+//! CSV columns each model declares (`dynamics::load_models::outputs`), model
+//! by model in registry order: pad{p}_clamp_force, pad{p}_normal_force,
+//! pad{p}_friction_torque (N, N, N·m) and with `pads.mass`
+//! pad{p}_top_compression, pad{p}_bottom_compression (m); tool_tip_z,
+//! tool_chip_thickness (m), tool_feed_force (N); link{j}_force (N).
 
 use super::error::{CliError, CliResult};
 use super::float_text::{push_display, write_exp, EXP_SLOT};
+use crate::dynamics::load_models::REGISTRY;
 use crate::dynamics::{stability, Simulation};
 use std::io::Write;
 use std::sync::atomic::{AtomicBool, Ordering};
@@ -30,27 +32,16 @@ pub fn header(sim: &Simulation) -> String {
     if !sim.scene().load_models.is_empty() {
         cols.push("joint_effort".into());
     }
-    for p in 1..=sim.pad_count() {
-        cols.extend([
-            format!("pad{p}_clamp_force"),
-            format!("pad{p}_normal_force"),
-            format!("pad{p}_friction_torque"),
-        ]);
-        if sim.pad_compression(p - 1).is_some() {
-            cols.extend([
-                format!("pad{p}_top_compression"),
-                format!("pad{p}_bottom_compression"),
-            ]);
+    let lm = &sim.scene().load_models;
+    for m in 0..lm.models().len() {
+        let (outputs, layout) = lm.outputs(m);
+        let values = sim.output_values(m);
+        for i in 0..layout.csv_instances(outputs) {
+            for (c, _) in layout.csv_values(outputs, values, i) {
+                cols.push(outputs.column_name(c, i));
+            }
         }
     }
-    if sim.has_tool() {
-        cols.extend([
-            "tool_tip_z".into(),
-            "tool_chip_thickness".into(),
-            "tool_feed_force".into(),
-        ]);
-    }
-    cols.extend((1..=sim.link_count()).map(|j| format!("link{j}_force")));
     cols.join(",")
 }
 
@@ -67,8 +58,6 @@ pub fn column_unit(name: &str) -> Option<&'static str> {
         "joint_position" => "rad",
         "joint_velocity" => "rad/s",
         "joint_effort" => "N·m",
-        "tool_tip_z" | "tool_chip_thickness" => "m",
-        "tool_feed_force" => "N",
         _ if numbered("q", "")
             || numbered("qale", "")
             || numbered("ale", "_uz")
@@ -76,15 +65,7 @@ pub fn column_unit(name: &str) -> Option<&'static str> {
         {
             "m"
         }
-        _ if numbered("pad", "_clamp_force")
-            || numbered("pad", "_normal_force")
-            || numbered("link", "_force") =>
-        {
-            "N"
-        }
-        _ if numbered("pad", "_friction_torque") => "N·m",
-        _ if numbered("pad", "_top_compression") || numbered("pad", "_bottom_compression") => "m",
-        _ => return None,
+        _ => return REGISTRY.iter().find_map(|r| r.outputs.column_unit(name)),
     })
 }
 
@@ -172,22 +153,15 @@ impl RowWriter {
         if !sim.scene().load_models.is_empty() {
             self.exp(j.effort);
         }
-        for p in 0..sim.pad_count() {
-            let o = sim.pad_output(p);
-            for v in [o.clamp_force, o.normal_force, o.friction_torque] {
-                self.exp(v);
+        let lm = &sim.scene().load_models;
+        for m in 0..lm.models().len() {
+            let (outputs, layout) = lm.outputs(m);
+            let values = sim.output_values(m);
+            for i in 0..layout.csv_instances(outputs) {
+                for (_, v) in layout.csv_values(outputs, values, i) {
+                    self.exp(v);
+                }
             }
-            for v in sim.pad_compression(p).into_iter().flatten() {
-                self.exp(v);
-            }
-        }
-        if let Some(t) = sim.tool_output() {
-            for v in [t.tip, t.chip, t.feed_force] {
-                self.exp(v);
-            }
-        }
-        for j in 0..sim.link_count() {
-            self.exp(sim.link_force(j));
         }
         self.byte(b'\n');
         &self.line[..self.len]

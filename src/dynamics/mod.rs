@@ -37,7 +37,7 @@ pub use load_models::{
     CommandRule, CommandSpec, LoadCommands, LoadModel, LoadModelState, LoadModels, ModelWrenches,
 };
 pub use scene::Scene;
-pub use simulation::{JointOutput, NodeOutput, PadOutput, Pose, Simulation, ToolOutput};
+pub use simulation::{JointOutput, NodeOutput, Pose, Simulation};
 pub use state::{JointAngle, State};
 pub use stepper::{Stepper, StepperSettings};
 pub use wrench::{NodeKind, Wrench};

@@ -8,43 +8,14 @@ use nalgebra::{Isometry3, Quaternion, Translation3, UnitQuaternion, Vector3};
 use super::ale::{harmonics, lagrange_to_ale};
 use super::commands::Inputs;
 use super::commands::{check, check_batch, Checked, CheckedBatch, Command};
-use super::error::{BatchError, InputError, LoadCommandError, SimulationError, StepError};
+use super::error::{BatchError, InputError, SimulationError, StepError};
 use super::integrators::contact_exponential::MAX_UNKNOWNS;
 use super::integrators::MAX_INNER_SUBSTEPS;
-use super::load_models::{
-    ContactForces, LoadContext, ModelWrenches, PadScratch, Pads, PitchLinks, Tool,
-};
+use super::load_models::{LoadContext, ModelWrenches};
 use super::scene::{NodeFrame, Scene};
 use super::state::State;
 use super::stepper::{Stepper, StepperSettings};
 use super::wrench::{NodeKind, Wrench};
-
-/// Forces of one pad at the current state (both faces, all its contact points).
-#[derive(Debug, Clone, Copy, PartialEq, Default)]
-pub struct PadOutput {
-    /// Commanded clamp force, N.
-    pub clamp_force: f64,
-    /// Mean normal force of the two faces, summed over the contact points, N
-    /// (equals the clamp force on an undeformed disc).
-    pub normal_force: f64,
-    /// Friction force along e_θ, summed over contacts and faces, N.
-    pub friction_force: f64,
-    /// Friction torque about the axis, N·m (brakes the plate: opposite to Ω).
-    pub friction_torque: f64,
-}
-
-/// The lathe tool at the current state.
-#[derive(Debug, Clone, Copy, PartialEq, Default)]
-pub struct ToolOutput {
-    /// z of the tool tip in the reference frame (the +z face is at h/2), m.
-    pub tip: f64,
-    /// Chip thickness of the last substep, m.
-    pub chip: f64,
-    /// Feed force of the last substep, N (acts on the plate along −z).
-    pub feed_force: f64,
-    /// Commanded feed rate, m/s.
-    pub feed_rate: f64,
-}
 
 /// The rotational joint at the axis: angle χ (unwrapped), speed Ω, drive torque.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
@@ -120,6 +91,8 @@ pub struct Simulation {
     inputs: Inputs,
     /// The load models' wrenches at the current state (derived, for the outputs).
     model_outputs: ModelWrenches,
+    /// Each load model's declared output channels at the current state (derived).
+    output_values: Vec<Vec<f64>>,
 }
 
 impl Simulation {
@@ -142,6 +115,7 @@ impl Simulation {
             stepper,
             inputs,
             model_outputs: scene.model_wrenches(),
+            output_values: scene.load_models.new_output_values(),
             scene,
             settings,
             config,
@@ -224,6 +198,13 @@ impl Simulation {
             &self.state.load_models,
             &self.inputs.commands,
             &mut self.model_outputs,
+        );
+        lm.write_outputs(
+            &self.state.load_models,
+            &self.inputs.commands,
+            &self.model_outputs,
+            self.state.chi.angle,
+            &mut self.output_values,
         );
     }
 
@@ -310,123 +291,29 @@ impl Simulation {
 
     // ---- load models (paper section 5; docs/scenes.md) ----------------------
 
-    fn pads(&self) -> Option<(usize, &Pads)> {
-        self.scene.load_models.find::<Pads>()
+    /// The values of model `model`'s output channels at the current state,
+    /// laid out as `scene().load_models.outputs(model)` declares.
+    pub fn output_values(&self, model: usize) -> &[f64] {
+        &self.output_values[model]
     }
 
-    /// Number of brake pads (`pads.*`; 0 without pads).
-    pub fn pad_count(&self) -> usize {
-        self.pads().map_or(0, |(_, p)| p.pad_count())
+    /// Channel `channel` of model `model` at the current state.
+    pub fn channel(&self, model: usize, channel: usize) -> &[f64] {
+        let (_, layout) = self.scene.load_models.outputs(model);
+        &self.output_values[model][layout.ranges[channel].clone()]
     }
 
-    /// Whether the scene has a lathe tool (`tool.*`).
-    pub fn has_tool(&self) -> bool {
-        self.scene.load_models.find::<Tool>().is_some()
+    /// The channel named `channel` of the model of section `model` (`pads`,
+    /// `clamp_force`), if the scene has both.
+    pub fn find_channel(&self, model: &str, channel: &str) -> Option<&[f64]> {
+        let lm = &self.scene.load_models;
+        let i = lm.names().position(|n| n == model)?;
+        Some(self.channel(i, lm.outputs(i).0.channel(channel)?))
     }
 
-    /// Number of pitch links (`links.*`; 0 without links).
-    pub fn link_count(&self) -> usize {
-        self.scene
-            .load_models
-            .find::<PitchLinks>()
-            .map_or(0, |(_, l)| l.nodes.len())
-    }
-
-    /// Hold the clamp force of pad `pad` (0-based), N: the force each disc face
-    /// is pressed with, shared by the pad's contact points. Refused (and the
-    /// held commands unchanged) if the pad does not exist or the force is not
-    /// finite, negative or above `limits.max_force`.
-    pub fn set_pad_clamp_force(
-        &mut self,
-        pad: usize,
-        newtons: f64,
-    ) -> Result<(), LoadCommandError> {
-        let Some((model, _)) = self.pads() else {
-            return Err(LoadCommandError::NoSuchPad {
-                index: pad + 1,
-                count: 0,
-            });
-        };
-        self.command(Command::Load {
-            model,
-            command: 0,
-            instance: pad,
-            value: newtons,
-        })
-        .map_err(LoadCommandError::from_input)
-    }
-
-    /// Hold the tool feed rate, m/s (towards −z; negative retracts). Refused if
-    /// the scene has no tool or the rate is not finite or beyond 1 m/s.
-    pub fn set_tool_feed(&mut self, rate: f64) -> Result<(), LoadCommandError> {
-        let Some((model, _)) = self.scene.load_models.find::<Tool>() else {
-            return Err(LoadCommandError::NoTool);
-        };
-        self.command(Command::Load {
-            model,
-            command: 0,
-            instance: 0,
-            value: rate,
-        })
-        .map_err(LoadCommandError::from_input)
-    }
-
-    /// Forces of pad `pad` (0-based) at the current state.
-    pub fn pad_output(&self, pad: usize) -> PadOutput {
-        let Some((model, p)) = self.pads() else {
-            return PadOutput::default();
-        };
-        let mut out = PadOutput {
-            clamp_force: self.inputs.commands.values[model][pad],
-            ..PadOutput::default()
-        };
-        for (c, f) in p
-            .contacts
-            .iter()
-            .zip(self.pad_contact_forces())
-            .filter(|(c, _)| c.pad == pad)
-        {
-            out.normal_force += 0.5 * (f.top + f.bottom);
-            out.friction_force += f.tangential;
-            out.friction_torque += c.radius * f.tangential;
-        }
-        out
-    }
-
-    /// With massive pads (`pads.mass`): the compressions x of pad `pad`'s
-    /// contact springs by its top and bottom face's pad, m (x₀ = N₀/(n k_c)
-    /// at rest); `None` for massless pads.
-    pub fn pad_compression(&self, pad: usize) -> Option<[f64; 2]> {
-        let (model, p) = self.pads()?;
-        let slot = &self.state.load_models.slots[model];
-        (p.is_massive() && pad < p.pad_count()).then(|| [slot[2 * pad], slot[2 * pad + 1]])
-    }
-
-    /// Forces at every pad contact point (order of `pads.ale_nodes`) at the current state.
-    pub fn pad_contact_forces(&self) -> &[ContactForces] {
-        self.pads()
-            .and_then(|(i, _)| self.model_outputs.scratch::<PadScratch>(i))
-            .map_or(&[], |s| &s.forces)
-    }
-
-    /// The lathe tool at the current state (`None` without a tool).
-    pub fn tool_output(&self) -> Option<ToolOutput> {
-        let (model, _) = self.scene.load_models.find::<Tool>()?;
-        let slot = &self.state.load_models.slots[model];
-        Some(ToolOutput {
-            tip: Tool::tip(slot),
-            chip: slot[super::load_models::tool::CHIP],
-            feed_force: slot[super::load_models::tool::FORCE],
-            feed_rate: self.inputs.commands.values[model][0],
-        })
-    }
-
-    /// Axial force of pitch link `j` (0-based) at the current joint angle, N.
-    pub fn link_force(&self, j: usize) -> f64 {
-        self.scene
-            .load_models
-            .find::<PitchLinks>()
-            .map_or(0.0, |(_, l)| l.force(j, self.state.chi.angle))
+    /// The load models' wrenches and scratch at the current state.
+    pub fn model_wrenches(&self) -> &ModelWrenches {
+        &self.model_outputs
     }
 
     /// The wrench the load models apply at ALE node `j` (0-based) at the current

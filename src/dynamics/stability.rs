@@ -47,7 +47,7 @@
 
 use super::integrators::equations::mode_constants;
 use super::load_models::pad::FRICTION_REGULARISATION_SPEED;
-use super::load_models::{PadContactPoint, Pads};
+use super::load_models::pad::{PadContactPoint, Pads};
 use super::scene::Scene;
 use super::stability_pads::NetForce;
 use crate::config::{Caliper, ContactSurface};

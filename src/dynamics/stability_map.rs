@@ -5,7 +5,7 @@
 //! machine's cores (`std::thread::scope`); a map can be computed in shards
 //! of whole speed rows and merged (docs/rotor_dynamics.md).
 
-use super::load_models::Pads;
+use super::load_models::pad::Pads;
 use super::scene::Scene;
 use super::stability::{critical_mode, growth_rate};
 use serde::{Deserialize, Serialize};

@@ -18,8 +18,8 @@
 //! The q̄, q̄̇ columns of the disc's rows are the massless analysis's (fixed
 //! caliper); here: the ξ columns and the pads' rows.
 
+use super::load_models::pad::{PadContactPoint, Pads};
 use super::load_models::pad_series::LinearSeriesForces;
-use super::load_models::{PadContactPoint, Pads};
 use super::node_frame::NodeFrame;
 use super::scene::Scene;
 use faer::Mat;

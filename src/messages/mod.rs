@@ -13,6 +13,7 @@ pub mod critical_speeds;
 pub mod diagnostics;
 pub mod input_stats;
 pub mod marker;
+pub mod model_states;
 pub mod names;
 pub mod outputs;
 pub mod qos;

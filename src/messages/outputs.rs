@@ -1,6 +1,6 @@
 //! What the node publishes after a step: joint state, transforms, modal
-//! amplitudes, the load models' states (pads, tool: only in scenes that have
-//! them), clock; and the static transform and diagnostics.
+//! amplitudes, the load models' states (one topic per model that declares
+//! one, `model_states`), clock; and the static transform and diagnostics.
 //!
 //! The messages are built once ([`OutputMessages::new`]) and then only
 //! overwritten in place each step: no allocation on our side of the per-step
@@ -12,11 +12,11 @@
 //! `simulate --bag` builds its messages with the same [`OutputMessages`].
 
 use super::clock::StepClock;
+use super::model_states::{model_topics, ModelStates};
 use super::types::{
-    Clock, Header, JointState, ModalAmplitudes, PadStates, Quaternion, TFMessage, Time, ToolState,
-    Transform, TransformStamped, Vector3,
+    Clock, Header, JointState, ModalAmplitudes, Quaternion, TFMessage, Time, Transform,
+    TransformStamped, Vector3,
 };
-use crate::dynamics::load_models::Pads;
 use crate::dynamics::{Pose, Simulation};
 use crate::model::AngularShape;
 use serde::{Deserialize, Deserializer, Serialize, Serializer};
@@ -130,10 +130,8 @@ pub struct OutputMessages {
     /// transforms[0]: base → rotor; then base → ale_j; then rotor → lagrange_j.
     pub tf: Shared<TFMessage>,
     pub modal: Shared<ModalAmplitudes>,
-    /// Only when the scene has pads.
-    pub pad_states: Option<Shared<PadStates>>,
-    /// Only when the scene has a tool.
-    pub tool_state: Option<Shared<ToolState>>,
+    /// Per load model with a topic (registry order): its index and message.
+    pub models: Vec<(usize, Shared<ModelStates>)>,
     n_ale: usize,
 }
 
@@ -179,38 +177,21 @@ impl OutputMessages {
             q_ale: vec![0.0; n],
             q_dot_ale: vec![0.0; n],
         };
-        let pad_states = sim.scene().load_models.find::<Pads>().map(|(_, pads)| {
-            let n_pads = pads.pad_count();
-            let n_contacts = pads.contacts.len();
-            Shared::new(PadStates {
-                header: header(&names.base),
-                step: 0,
-                sim_time: 0.0,
-                clamp_force: vec![0.0; n_pads],
-                normal_force: vec![0.0; n_pads],
-                friction_force: vec![0.0; n_pads],
-                friction_torque: vec![0.0; n_pads],
-                contact_pad: pads.contacts.iter().map(|c| c.pad as u32 + 1).collect(),
-                contact_ale_node: pads.contacts.iter().map(|c| c.node as u32 + 1).collect(),
-                contact_normal_top: vec![0.0; n_contacts],
-                contact_normal_bottom: vec![0.0; n_contacts],
-                contact_friction: vec![0.0; n_contacts],
-                pad_compression_top: vec![0.0; if pads.is_massive() { n_pads } else { 0 }],
-                pad_compression_bottom: vec![0.0; if pads.is_massive() { n_pads } else { 0 }],
+        let models = model_topics(sim)
+            .into_iter()
+            .map(|(i, _)| {
+                let (outputs, layout) = sim.scene().load_models.outputs(i);
+                (
+                    i,
+                    Shared::new(ModelStates::new(outputs, layout, &names.base)),
+                )
             })
-        });
-        let tool_state = sim.has_tool().then(|| {
-            Shared::new(ToolState {
-                header: header(&names.base),
-                ..ToolState::default()
-            })
-        });
+            .collect();
         let mut out = OutputMessages {
             joint_state: Shared::new(joint_state),
             tf: Shared::new(TFMessage { transforms }),
             modal: Shared::new(modal),
-            pad_states,
-            tool_state,
+            models,
             n_ale: sim.n_ale_nodes(),
         };
         out.update(sim, Time::default());
@@ -251,38 +232,12 @@ impl OutputMessages {
         m.q_ale.copy_from_slice(sim.q_ale());
         m.q_dot_ale.copy_from_slice(sim.q_dot_ale());
 
-        if let Some(pads) = &mut self.pad_states {
-            let p = pads.get_mut();
-            p.header.stamp = stamp;
-            p.step = sim.step_count();
-            p.sim_time = sim.time();
-            for j in 0..p.clamp_force.len() {
-                let o = sim.pad_output(j);
-                p.clamp_force[j] = o.clamp_force;
-                p.normal_force[j] = o.normal_force;
-                p.friction_force[j] = o.friction_force;
-                p.friction_torque[j] = o.friction_torque;
-            }
-            for (c, f) in sim.pad_contact_forces().iter().enumerate() {
-                p.contact_normal_top[c] = f.top;
-                p.contact_normal_bottom[c] = f.bottom;
-                p.contact_friction[c] = f.tangential;
-            }
-            for j in 0..p.pad_compression_top.len() {
-                if let Some([top, bottom]) = sim.pad_compression(j) {
-                    (p.pad_compression_top[j], p.pad_compression_bottom[j]) = (top, bottom);
-                }
-            }
-        }
-        if let (Some(tool), Some(o)) = (&mut self.tool_state, sim.tool_output()) {
-            let t = tool.get_mut();
-            t.header.stamp = stamp;
-            t.step = sim.step_count();
-            t.sim_time = sim.time();
-            t.feed_rate = o.feed_rate;
-            t.tip_z = o.tip;
-            t.chip_thickness = o.chip;
-            t.feed_force = o.feed_force;
+        for (i, msg) in &mut self.models {
+            let (_, layout) = sim.scene().load_models.outputs(*i);
+            let m = msg.get_mut();
+            m.update(layout, sim.output_values(*i), stamp);
+            m.step = sim.step_count();
+            m.sim_time = sim.time();
         }
     }
 }

@@ -23,10 +23,10 @@ pub const CLOCK: &str = "/clock";
 pub const DIAGNOSTICS: &str = "/diagnostics";
 /// Only when the scene has pads (`pads.*`).
 pub const PAD_CLAMP_FORCES: &str = "~/pad_clamp_forces";
-pub const PAD_STATES: &str = "~/pad_states";
 /// Only when the scene has a tool (`tool.*`).
 pub const TOOL_FEED: &str = "~/tool_feed";
-pub const TOOL_STATE: &str = "~/tool_state";
+// The load models' state topics (`~/pad_states`, `~/tool_state`) are
+// declared by the models (`dynamics::load_models::outputs::StateTopic`).
 
 /// `~/ale_<j>/wrench` or `~/lagrange_<j>/wrench`, j from 1 (a ROS name
 /// token may not start with a digit, so not `~/ale/1/wrench`).

@@ -335,39 +335,6 @@ pub struct PadClampForces {
 }
 ros_message!(PadClampForces, "annular_plate", "PadClampForces");
 
-/// annular_plate/msg/PadStates (`msg/PadStates.msg`).
-#[derive(Debug, Clone, PartialEq, Default, Serialize, Deserialize)]
-pub struct PadStates {
-    pub header: Header,
-    pub step: u64,
-    pub sim_time: f64,
-    pub clamp_force: Vec<f64>,
-    pub normal_force: Vec<f64>,
-    pub friction_force: Vec<f64>,
-    pub friction_torque: Vec<f64>,
-    pub contact_pad: Vec<u32>,
-    pub contact_ale_node: Vec<u32>,
-    pub contact_normal_top: Vec<f64>,
-    pub contact_normal_bottom: Vec<f64>,
-    pub contact_friction: Vec<f64>,
-    pub pad_compression_top: Vec<f64>,
-    pub pad_compression_bottom: Vec<f64>,
-}
-ros_message!(PadStates, "annular_plate", "PadStates");
-
-/// annular_plate/msg/ToolState (`msg/ToolState.msg`).
-#[derive(Debug, Clone, PartialEq, Default, Serialize, Deserialize)]
-pub struct ToolState {
-    pub header: Header,
-    pub step: u64,
-    pub sim_time: f64,
-    pub feed_rate: f64,
-    pub tip_z: f64,
-    pub chip_thickness: f64,
-    pub feed_force: f64,
-}
-ros_message!(ToolState, "annular_plate", "ToolState");
-
 /// annular_plate/srv/Step request (`srv/Step.srv`).
 #[derive(Debug, Clone, Copy, PartialEq, Default, Serialize, Deserialize)]
 pub struct StepRequest {

@@ -15,12 +15,13 @@ use crate::bag::recorder::{NodeBag, NodeTopics, Recorder, RecorderThread, Sample
 use crate::config::{Config, ConfigError, Params};
 use crate::dynamics::{InputRules, NodeKind, Simulation, Wrench};
 use crate::messages::marker::PlateMarker;
+use crate::messages::model_states::{model_topics, ModelStates};
 use crate::messages::names::{domain_id_from_env, NameResolver, RosArgs};
 use crate::messages::outputs::{static_transforms, FrameNames, OutputMessages, Shared};
 use crate::messages::settings::RosSettings;
 use crate::messages::types::{
     Clock, CriticalSpeeds, DiagnosticArray, Float64, JointState, ModalAmplitudes, NodeWrenchArray,
-    PadClampForces, PadStates, RosType, TFMessage, Time, ToolState, WrenchStamped,
+    PadClampForces, RosType, TFMessage, Time, WrenchStamped,
 };
 use crate::messages::visualization::MarkerArray;
 use crate::messages::{qos, topics};
@@ -176,11 +177,11 @@ pub fn run_node(
     // The bag first: a directory that exists is refused before any DDS traffic.
     let bag = match &record {
         Some(dir) => {
+            let models: Vec<_> = model_topics(&sim).into_iter().map(|(_, t)| t).collect();
             let topics = NodeTopics::resolve(
                 &setup.names,
                 setup.settings.sim_time,
-                sim.pad_count() > 0,
-                sim.has_tool(),
+                &models,
                 setup.settings.marker.every(1.0 / sim.dt()).is_some(),
             )
             .map_err(NodeError::Record)?;
@@ -206,11 +207,28 @@ fn publisher<T: RosType, P: Serialize>(
     topic: &str,
     qos: &QosProfile,
 ) -> Result<Publisher<P>, NodeError> {
+    typed_publisher(
+        node,
+        names,
+        topic,
+        MessageTypeName::new(T::PACKAGE, T::NAME),
+        qos,
+    )
+}
+
+/// A publisher of `P` on `topic` with the ROS type `type_name`.
+fn typed_publisher<P: Serialize>(
+    node: &mut Node,
+    names: &NameResolver,
+    topic: &str,
+    type_name: MessageTypeName,
+    qos: &QosProfile,
+) -> Result<Publisher<P>, NodeError> {
     let resolved = names.resolve(topic)?;
     let name =
         Name::parse(&resolved).map_err(|e| NodeError::dds(format!("topic {resolved}"), e))?;
     let t = node
-        .create_topic(&name, MessageTypeName::new(T::PACKAGE, T::NAME), qos)
+        .create_topic(&name, type_name, qos)
         .map_err(|e| NodeError::dds(format!("cannot create the topic {resolved}"), e))?;
     node.create_publisher::<P>(&t, Some(qos.clone()))
         .map_err(|e| NodeError::dds(format!("cannot publish {resolved}"), e))
@@ -236,7 +254,7 @@ fn to_wrench(w: &crate::messages::types::Wrench) -> Wrench {
     }
 }
 
-/// The node's output publishers (the pad and tool states only for scenes with them).
+/// The node's output publishers (a load model's state topic only for a scene with it).
 fn create_publishers(
     node: &mut Node,
     names: &NameResolver,
@@ -257,27 +275,13 @@ fn create_publishers(
             topics::MODAL_AMPLITUDES,
             &qos::STATE,
         )?,
-        pad_states: (sim.pad_count() > 0)
-            .then(|| {
-                publisher::<PadStates, Shared<PadStates>>(
-                    node,
-                    names,
-                    topics::PAD_STATES,
-                    &qos::STATE,
-                )
+        models: model_topics(sim)
+            .iter()
+            .map(|(_, t)| {
+                let ty = MessageTypeName::new(t.package, t.message);
+                typed_publisher::<Shared<ModelStates>>(node, names, t.topic, ty, &qos::STATE)
             })
-            .transpose()?,
-        tool_state: sim
-            .has_tool()
-            .then(|| {
-                publisher::<ToolState, Shared<ToolState>>(
-                    node,
-                    names,
-                    topics::TOOL_STATE,
-                    &qos::STATE,
-                )
-            })
-            .transpose()?,
+            .collect::<Result<_, _>>()?,
         clock: settings
             .sim_time
             .then(|| publisher::<Clock, Clock>(node, names, topics::CLOCK, &qos::CLOCK))
@@ -540,17 +544,16 @@ fn start_loop(
 
 /// The start-up line: scene, nodes, modes, load models, clock.
 fn startup_line(setup: &NodeSetup, sim: &Simulation, domain: u16) -> String {
-    let (n_pads, frames) = (sim.pad_count(), setup.frame_names());
+    let frames = setup.frame_names();
+    let models: Vec<&str> = sim.scene().load_models.names().collect();
     format!(
-        "{} up on ROS_DOMAIN_ID {domain}: scene {}, {} ALE and {} Lagrangian nodes, {} modes, {} pad{}{}, {} time",
+        "{} up on ROS_DOMAIN_ID {domain}: scene {}, {} ALE and {} Lagrangian nodes, {} modes, load models: {}, {} time",
         setup.names.fully_qualified_node_name(),
         setup.scene,
         frames.ale.len(),
         frames.lagrange.len(),
         sim.model().n_modes(),
-        n_pads,
-        if n_pads == 1 { "" } else { "s" },
-        if sim.has_tool() { ", a tool" } else { "" },
+        if models.is_empty() { "none".to_string() } else { models.join(", ") },
         match (setup.settings.sim_time, setup.settings.use_sim_time) {
             (true, _) => "simulated (publishing /clock)",
             (_, true) => "following /clock (use_sim_time)",

@@ -24,10 +24,11 @@ use crate::dynamics::{Checked, Command as SimCommand, NodeKind, Simulation, Wren
 use crate::messages::clock::{Pacer, StepClock};
 use crate::messages::clock_follower::ClockUpdate;
 use crate::messages::diagnostics::{self, LoopReport, Timing};
+use crate::messages::model_states::ModelStates;
 use crate::messages::outputs::{clock_message, OutputMessages, Shared};
 use crate::messages::types::{
-    Clock, DiagnosticArray, JointState, ModalAmplitudes, PadStates, SetBoolResponse, StepResponse,
-    TFMessage, Time, ToolState, TriggerResponse,
+    Clock, DiagnosticArray, JointState, ModalAmplitudes, SetBoolResponse, StepResponse, TFMessage,
+    Time, TriggerResponse,
 };
 use ros2_client::dds::rustdds::defer_wakes;
 use ros2_client::Publisher;
@@ -51,10 +52,8 @@ pub struct Publishers {
     pub joint_states: Publisher<Shared<JointState>>,
     pub tf: Publisher<Shared<TFMessage>>,
     pub modal: Publisher<Shared<ModalAmplitudes>>,
-    /// Only when the scene has pads.
-    pub pad_states: Option<Publisher<Shared<PadStates>>>,
-    /// Only when the scene has a tool.
-    pub tool_state: Option<Publisher<Shared<ToolState>>>,
+    /// The load models' state topics, as `OutputMessages::models`.
+    pub models: Vec<Publisher<Shared<ModelStates>>>,
     /// Only with simulated time.
     pub clock: Option<Publisher<Clock>>,
     pub diagnostics: Publisher<DiagnosticArray>,
@@ -598,10 +597,7 @@ impl SimLoop {
                 .is_err(),
         ];
         self.publish_failures += failures.iter().filter(|f| **f).count() as u64;
-        if let (Some(p), Some(m)) = (&self.pubs.pad_states, &self.outputs.pad_states) {
-            self.publish_failures += p.publish(m.handle()).is_err() as u64;
-        }
-        if let (Some(p), Some(m)) = (&self.pubs.tool_state, &self.outputs.tool_state) {
+        for (p, (_, m)) in self.pubs.models.iter().zip(&self.outputs.models) {
             self.publish_failures += p.publish(m.handle()).is_err() as u64;
         }
         if let Some(r) = &self.recorder {
@@ -609,11 +605,8 @@ impl SimLoop {
             r.record(Sample::JointState(self.outputs.joint_state.handle()), stamp);
             r.record(Sample::Tf(self.outputs.tf.handle()), stamp);
             r.record(Sample::Modal(self.outputs.modal.handle()), stamp);
-            if let Some(m) = &self.outputs.pad_states {
-                r.record(Sample::PadStates(m.handle()), stamp);
-            }
-            if let Some(m) = &self.outputs.tool_state {
-                r.record(Sample::ToolState(m.handle()), stamp);
+            for (k, (_, m)) in self.outputs.models.iter().enumerate() {
+                r.record(Sample::Model(k, m.handle()), stamp);
             }
         }
     }

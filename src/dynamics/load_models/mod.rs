@@ -5,7 +5,9 @@
 //! spring-damper ([`point_spring`], the example of docs/architecture.md).
 //!
 //! A load model is a [`LoadModel`] implementation in its own file, registered
-//! once in [`REGISTRY`]. The split follows the rest of `dynamics`: its
+//! once in [`REGISTRY`] with its declared outputs ([`outputs`]: named, typed
+//! channels, CSV columns, a topic), which the node, the CSV writer, the
+//! recorder and the messages read without knowing the model. The split follows the rest of `dynamics`: its
 //! parameters live in the immutable [`Scene`](super::Scene) (the boxed model),
 //! its internal state in a slot of the [`State`](super::State) (plain numbers,
 //! so reset, checkpoint and replay stay copies), its commands in the
@@ -25,8 +27,10 @@
 
 pub mod face_friction;
 pub mod model;
+pub mod outputs;
 pub mod pad;
 pub mod pad_mass;
+pub mod pad_outputs;
 pub mod pad_series;
 pub mod pitch_link;
 pub mod point_spring;
@@ -35,13 +39,13 @@ pub mod undo;
 
 pub use model::{
     contact_rate, surface_kinematics, Builder, CommandRule, CommandSpec, Coupling, LoadContext,
-    LoadModel, ModelOut, SceneNodes, SurfaceKinematics,
+    LoadModel, ModelOut, Registration, SceneNodes, SurfaceKinematics,
+};
+pub use outputs::{
+    ChannelKind, ChannelLayout, ChannelShape, CsvColumn, OutputChannel, OutputContext, Outputs,
+    StateTopic,
 };
 
-pub use pad::{ContactForces, PadContactPoint, PadScratch, Pads};
-pub use pitch_link::PitchLinks;
-pub use point_spring::PointSprings;
-pub use tool::{Tool, ToolStep};
 pub use undo::{LoadModelUndo, SlotUndo};
 
 use crate::config::{Config, IntegratorKind};
@@ -51,18 +55,21 @@ use crate::dynamics::wrench::Wrench;
 use std::any::Any;
 use std::ops::Range;
 
-/// Every load model, once, in evaluation order. A new model: its file and one line here.
-pub const REGISTRY: &[Builder] = &[
-    pad::build,
-    tool::build,
-    pitch_link::build,
-    point_spring::build,
+/// Every load model, once, in evaluation order (also the order of their CSV
+/// columns and topics). A new model: its file and one line here.
+pub const REGISTRY: &[Registration] = &[
+    pad::REGISTRATION,
+    tool::REGISTRATION,
+    pitch_link::REGISTRATION,
+    point_spring::REGISTRATION,
 ];
 
 /// The scene's load models (immutable) with the layout of their commands.
 #[derive(Debug, Default)]
 pub struct LoadModels {
     models: Vec<Box<dyn LoadModel>>,
+    /// Per model, its declared outputs and where its channels lie in its values.
+    outputs: Vec<(&'static Outputs, ChannelLayout)>,
     /// Per model, per command: the range of its instances in the model's command values.
     command_ranges: Vec<Vec<Range<usize>>>,
     friction_ranges: Vec<Range<usize>>,
@@ -162,10 +169,14 @@ pub const HELD_COUPLING_LIMIT: f64 = 0.5;
 impl LoadModels {
     /// The registered models a configuration switches on.
     pub fn new(config: &Config, nodes: &SceneNodes) -> LoadModels {
-        let models: Vec<Box<dyn LoadModel>> = REGISTRY
+        let (models, outputs): (Vec<Box<dyn LoadModel>>, Vec<_>) = REGISTRY
             .iter()
-            .filter_map(|build| build(config, nodes))
-            .collect();
+            .filter_map(|r| (r.build)(config, nodes).map(|m| (m, r.outputs)))
+            .map(|(m, o)| {
+                let layout = ChannelLayout::new((0..o.channels.len()).map(|c| m.channel_len(c)));
+                (m, (o, layout))
+            })
+            .unzip();
         let friction_ranges = consecutive_ranges(&models, |m| m.friction_terms());
         let state_ranges = consecutive_ranges(&models, |m| m.continuous_states());
         let switching_ranges = consecutive_ranges(&models, |m| m.switching_functions());
@@ -191,6 +202,7 @@ impl LoadModels {
             });
         LoadModels {
             models,
+            outputs,
             command_ranges,
             friction_ranges,
             state_ranges,
@@ -208,7 +220,48 @@ impl LoadModels {
         &self.models
     }
 
-    /// Index and concrete type of the model of type `T`, if the scene has one.
+    /// Model `model`'s declared outputs and the layout of its values.
+    pub fn outputs(&self, model: usize) -> (&'static Outputs, &ChannelLayout) {
+        let (o, layout) = &self.outputs[model];
+        (o, layout)
+    }
+
+    /// Every model's output values, zero (filled by [`LoadModels::write_outputs`]).
+    pub fn new_output_values(&self) -> Vec<Vec<f64>> {
+        self.outputs
+            .iter()
+            .map(|(_, l)| vec![0.0; l.len()])
+            .collect()
+    }
+
+    /// Every model's outputs at the state `state`, commands `commands`, the
+    /// scratch of the last [`LoadModels::evaluate`] and joint angle `chi`.
+    pub fn write_outputs(
+        &self,
+        state: &LoadModelState,
+        commands: &LoadCommands,
+        wrenches: &ModelWrenches,
+        chi: f64,
+        values: &mut [Vec<f64>],
+    ) {
+        for (i, (m, out)) in self.models.iter().zip(values.iter_mut()).enumerate() {
+            let at = OutputContext {
+                slot: &state.slots[i],
+                commands: &commands.values[i],
+                scratch: wrenches.scratch[i].as_ref(),
+                chi,
+            };
+            m.write_outputs(&at, out);
+        }
+    }
+
+    /// The section names of the models this scene has (`pads`, `tool`).
+    pub fn names(&self) -> impl Iterator<Item = &'static str> + '_ {
+        self.models.iter().map(|m| m.name())
+    }
+
+    /// Index and concrete type of the model of type `T`, if the scene has
+    /// one (for the model's own files).
     pub fn find<T: 'static>(&self) -> Option<(usize, &T)> {
         self.models
             .iter()

@@ -2,6 +2,7 @@
 //! ([`LoadContext`], [`SceneNodes`]), what it declares ([`CommandSpec`],
 //! [`Coupling`]) and where it writes ([`ModelOut`]).
 
+use super::outputs::{OutputContext, Outputs};
 use super::undo::SlotUndo;
 use crate::config::{Config, LimitsConfig};
 use crate::dynamics::contact_compliance::HeldDeflection;
@@ -15,6 +16,14 @@ use std::fmt::Debug;
 
 /// Builds a load model from a configuration, `None` when the scene does not use it.
 pub type Builder = fn(&Config, &SceneNodes) -> Option<Box<dyn LoadModel>>;
+
+/// A model as the registry lists it: its builder and its declared outputs
+/// (a `const` in the model's file, so the registry line is its name).
+#[derive(Debug, Clone, Copy)]
+pub struct Registration {
+    pub build: Builder,
+    pub outputs: &'static Outputs,
+}
 
 /// What a model's builder sees of the scene: the node frames and modal masses.
 pub struct SceneNodes<'a> {
@@ -139,12 +148,14 @@ pub struct ModelOut<'a> {
 }
 
 /// A load model (see the module docs). Only [`LoadModel::name`],
-/// [`LoadModel::evaluate`] and [`LoadModel::as_any`] are required.
+/// [`LoadModel::evaluate`] and [`LoadModel::as_any`] are required; a model
+/// with outputs declares them in its [`Registration`] and writes them in
+/// [`LoadModel::write_outputs`].
 pub trait LoadModel: Debug + Send + Sync {
     /// The configuration section (`pads`, `tool`, `links`, `springs`).
     fn name(&self) -> &'static str;
 
-    /// For downcasting to the concrete model (the outputs of pads and tool).
+    /// For downcasting to the concrete model (only in the model's own files).
     fn as_any(&self) -> &dyn Any;
 
     /// Its commands (held in [`LoadCommands`], one value per instance and command).
@@ -231,6 +242,16 @@ pub trait LoadModel: Debug + Send + Sync {
     /// [`LoadModel::undo_head`] the commit will change. Default: none (the
     /// whole slot is the head).
     fn save_changes(&self, _slot: &[f64], _undo: &mut SlotUndo) {}
+
+    /// Values of output channel `channel` ([`Registration::outputs`]) in
+    /// this scene: 1 for a scalar, the instances for a sequence.
+    fn channel_len(&self, _channel: usize) -> usize {
+        1
+    }
+
+    /// Its outputs at the current state: every channel in declared order,
+    /// [`LoadModel::channel_len`] values each, into `out`.
+    fn write_outputs(&self, _at: &OutputContext, _out: &mut [f64]) {}
 
     /// Whether its slot is finite, for the divergence guard after every step
     /// (a model whose slot holds values derived from others may check only

@@ -68,8 +68,9 @@ use super::face_friction::{
 };
 use super::model::{
     contact_rate, surface_kinematics, CommandRule, CommandSpec, Coupling, LoadContext, LoadModel,
-    ModelOut, SceneNodes, SurfaceKinematics,
+    ModelOut, Registration, SceneNodes, SurfaceKinematics,
 };
+use super::outputs::OutputContext;
 use crate::config::{Caliper, Config, ContactSurface};
 use crate::dynamics::contact_compliance::{ContactCompliance, SeriesScratch};
 use crate::dynamics::joint::FrictionTorque;
@@ -372,6 +373,12 @@ pub const CLAMP_FORCE: CommandSpec = CommandSpec {
     rule: CommandRule::NonNegativeForce,
 };
 
+/// The pads in the registry: their builder and outputs (`pad_outputs.rs`).
+pub const REGISTRATION: Registration = Registration {
+    build,
+    outputs: &Pads::OUTPUTS,
+};
+
 /// The registered builder: pads where `pads.*` gives contact points.
 pub fn build(config: &Config, nodes: &SceneNodes) -> Option<Box<dyn LoadModel>> {
     let p = config.pads.as_ref()?;
@@ -500,6 +507,12 @@ impl LoadModel for Pads {
     }
     fn coupling(&self) -> Coupling {
         self.coupling
+    }
+    fn channel_len(&self, channel: usize) -> usize {
+        self.output_len(channel)
+    }
+    fn write_outputs(&self, at: &OutputContext, out: &mut [f64]) {
+        self.write_output_values(at, out);
     }
     fn coupling_keys(&self) -> &'static str {
         if self.is_massive() {

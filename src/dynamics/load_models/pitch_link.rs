@@ -18,11 +18,13 @@
 //! links half a turn apart with F_mean = 0 load only the odd-k modes, and
 //! the ⟨k = 1, l = 0⟩ pair — the softest of them — dominates (Fig. 15).
 
-/// Prescribed link forces at Lagrangian nodes.
-use super::model::{LoadContext, LoadModel, ModelOut, SceneNodes};
+use super::model::{LoadContext, LoadModel, ModelOut, Registration, SceneNodes};
+use super::outputs::{ChannelKind, ChannelShape, CsvColumn, OutputChannel, OutputContext, Outputs};
 use crate::config::Config;
+use crate::dynamics::Simulation;
 use std::any::Any;
 
+/// Prescribed link forces at Lagrangian nodes.
 #[derive(Debug, Clone, PartialEq)]
 pub struct PitchLinks {
     /// Lagrangian nodes, 0-based.
@@ -41,6 +43,29 @@ impl PitchLinks {
         self.mean_force + self.cyclic_force * (self.angles[j] + chi - self.cyclic_phase).cos()
     }
 }
+
+/// The links' declared outputs: each link's force, CSV columns `link{j}_force`.
+pub const OUTPUTS: Outputs = Outputs {
+    channels: &[OutputChannel {
+        name: "force",
+        unit: "N",
+        kind: ChannelKind::Real,
+        shape: ChannelShape::Sequence,
+    }],
+    column_prefix: "link",
+    numbered: true,
+    columns: &[CsvColumn {
+        channel: "force",
+        quantity: "force",
+    }],
+    topic: None,
+};
+
+/// The pitch links in the registry.
+pub const REGISTRATION: Registration = Registration {
+    build,
+    outputs: &OUTPUTS,
+};
 
 /// The registered builder: links where `links.*` gives their nodes.
 pub fn build(config: &Config, nodes: &SceneNodes) -> Option<Box<dyn LoadModel>> {
@@ -69,6 +94,40 @@ impl LoadModel for PitchLinks {
         for (j, &node) in self.nodes.iter().enumerate() {
             out.lagrange[node].force[2] += self.force(j, ctx.chi);
         }
+    }
+    fn channel_len(&self, _channel: usize) -> usize {
+        self.nodes.len()
+    }
+    /// Each link's force at the current joint angle.
+    fn write_outputs(&self, at: &OutputContext, out: &mut [f64]) {
+        for (j, v) in out.iter_mut().enumerate() {
+            *v = self.force(j, at.chi);
+        }
+    }
+}
+
+/// The links' typed view of a simulation (for programs and tests that know
+/// they drive a swash plate).
+pub trait LinkOutputs {
+    /// Number of pitch links (`links.*`; 0 without links).
+    fn link_count(&self) -> usize;
+    /// Axial force of pitch link `j` (0-based) at the current joint angle, N.
+    fn link_force(&self, j: usize) -> f64;
+}
+
+impl LinkOutputs for Simulation {
+    fn link_count(&self) -> usize {
+        self.scene()
+            .load_models
+            .find::<PitchLinks>()
+            .map_or(0, |(_, l)| l.nodes.len())
+    }
+
+    fn link_force(&self, j: usize) -> f64 {
+        self.scene()
+            .load_models
+            .find::<PitchLinks>()
+            .map_or(0.0, |(_, l)| l.force(j, self.state().chi.angle))
     }
 }
 

@@ -13,8 +13,10 @@
 //! model"): the model, its builder and one line in `REGISTRY`.
 
 use super::model::{
-    contact_rate, surface_kinematics, Coupling, LoadContext, LoadModel, ModelOut, SceneNodes,
+    contact_rate, surface_kinematics, Coupling, LoadContext, LoadModel, ModelOut, Registration,
+    SceneNodes,
 };
+use super::outputs::NO_OUTPUTS;
 use crate::config::Config;
 use std::any::Any;
 
@@ -29,6 +31,13 @@ pub struct PointSprings {
     pub damping: f64,
     coupling: Coupling,
 }
+
+/// The point springs in the registry (no outputs of their own: their forces
+/// show in the node wrenches).
+pub const REGISTRATION: Registration = Registration {
+    build,
+    outputs: &NO_OUTPUTS,
+};
 
 /// The registered builder: springs where `springs.ale_nodes` names nodes.
 pub fn build(config: &Config, nodes: &SceneNodes) -> Option<Box<dyn LoadModel>> {

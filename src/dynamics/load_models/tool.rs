@@ -36,11 +36,15 @@
 //! in series with the cut.
 
 use super::model::{
-    surface_kinematics, CommandRule, CommandSpec, LoadContext, LoadModel, ModelOut, SceneNodes,
+    surface_kinematics, CommandRule, CommandSpec, LoadContext, LoadModel, ModelOut, Registration,
+    SceneNodes,
 };
+use super::outputs::{CsvColumn, OutputChannel, OutputContext, Outputs, StateTopic};
 use super::undo::SlotUndo;
 use crate::config::Config;
 use crate::dynamics::contact_compliance::solve_monotone;
+use crate::dynamics::error::LoadCommandError;
+use crate::dynamics::{Command, Simulation};
 use std::any::Any;
 
 /// Bins of the machined-shoulder height S(φ) over one revolution.
@@ -174,6 +178,36 @@ pub const FEED_RATE: CommandSpec = CommandSpec {
     rule: CommandRule::MagnitudeAtMost(crate::config::MAX_TOOL_FEED_RATE),
 };
 
+/// The tool's declared outputs: ~/tool_state (`msg/ToolState.msg`) and its
+/// CSV columns `tool_tip_z`, `tool_chip_thickness`, `tool_feed_force`.
+pub const OUTPUTS: Outputs = Outputs {
+    channels: &[
+        OutputChannel::scalar("feed_rate", "m/s"),
+        OutputChannel::scalar("tip_z", "m"),
+        OutputChannel::scalar("chip_thickness", "m"),
+        OutputChannel::scalar("feed_force", "N"),
+    ],
+    column_prefix: "tool",
+    numbered: false,
+    columns: &[
+        CsvColumn::named("tip_z"),
+        CsvColumn::named("chip_thickness"),
+        CsvColumn::named("feed_force"),
+    ],
+    topic: Some(StateTopic {
+        topic: "~/tool_state",
+        package: "annular_plate",
+        message: "ToolState",
+        definition: include_str!("../../../msg/ToolState.msg"),
+    }),
+};
+
+/// The tool in the registry.
+pub const REGISTRATION: Registration = Registration {
+    build,
+    outputs: &OUTPUTS,
+};
+
 /// The registered builder: a tool where `tool.*` gives its node.
 pub fn build(config: &Config, nodes: &SceneNodes) -> Option<Box<dyn LoadModel>> {
     let t = config.tool.as_ref()?;
@@ -252,10 +286,75 @@ impl LoadModel for Tool {
         }
     }
 
+    /// Feed rate (commanded), tip height, chip and force of the last substep.
+    fn write_outputs(&self, at: &OutputContext, out: &mut [f64]) {
+        out.copy_from_slice(&[
+            at.commands[0],
+            Tool::tip(at.slot),
+            at.slot[CHIP],
+            at.slot[FORCE],
+        ]);
+    }
+
     /// The surface bins are minima of cut levels made from the tip and the
     /// deflection (checked with the elastic state): the values before them decide.
     fn slot_is_finite(&self, slot: &[f64]) -> bool {
         slot[..SURFACE].iter().all(|v| v.is_finite())
+    }
+}
+
+/// The lathe tool at the current state.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct ToolOutput {
+    /// z of the tool tip in the reference frame (the +z face is at h/2), m.
+    pub tip: f64,
+    /// Chip thickness of the last substep, m.
+    pub chip: f64,
+    /// Feed force of the last substep, N (acts on the plate along −z).
+    pub feed_force: f64,
+    /// Commanded feed rate, m/s.
+    pub feed_rate: f64,
+}
+
+/// The tool's typed view of a simulation (for programs and tests that know
+/// they drive a lathe; the node and the writers read the declared channels).
+pub trait ToolOutputs {
+    /// Whether the scene has a lathe tool (`tool.*`).
+    fn has_tool(&self) -> bool;
+    /// The lathe tool at the current state (`None` without a tool).
+    fn tool_output(&self) -> Option<ToolOutput>;
+    /// Hold the tool feed rate, m/s (towards −z; negative retracts). Refused
+    /// if the scene has no tool or the rate is not finite or beyond 1 m/s.
+    fn set_tool_feed(&mut self, rate: f64) -> Result<(), LoadCommandError>;
+}
+
+impl ToolOutputs for Simulation {
+    fn has_tool(&self) -> bool {
+        self.scene().load_models.find::<Tool>().is_some()
+    }
+
+    fn tool_output(&self) -> Option<ToolOutput> {
+        let (model, _) = self.scene().load_models.find::<Tool>()?;
+        let [feed_rate, tip, chip, feed_force] = self.output_values(model).try_into().ok()?;
+        Some(ToolOutput {
+            tip,
+            chip,
+            feed_force,
+            feed_rate,
+        })
+    }
+
+    fn set_tool_feed(&mut self, rate: f64) -> Result<(), LoadCommandError> {
+        let Some((model, _)) = self.scene().load_models.find::<Tool>() else {
+            return Err(LoadCommandError::NoTool);
+        };
+        self.command(Command::Load {
+            model,
+            command: 0,
+            instance: 0,
+            value: rate,
+        })
+        .map_err(LoadCommandError::from_input)
     }
 }
 
