@@ -10,7 +10,7 @@ use annular_plate::model::campbell::campbell;
 use annular_plate::model::{PlateModel, SpinningSpectrum};
 use serde_json::Value;
 use std::f64::consts::TAU;
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 use std::process::Command;
 use support::exact_plate::{Annulus, Edge, Material};
 
@@ -41,7 +41,7 @@ fn run(args: &[&str]) -> (bool, String, String) {
     )
 }
 
-fn json(file: &PathBuf, extra: &[&str]) -> Value {
+fn json(file: &Path, extra: &[&str]) -> Value {
     let mut args = vec!["campbell", file.to_str().unwrap(), "--json"];
     args.extend_from_slice(extra);
     let (ok, out, err) = run(&args);

@@ -158,18 +158,18 @@ impl ContactCompliance {
                 }
             }
             self.apply(&s.f, &mut s.gf);
-            for c in 0..n {
+            for (c, (fc, force_c)) in s.f.iter_mut().zip(force.iter()).enumerate().take(n) {
                 let jgf: f64 = s.jac[c * n..(c + 1) * n]
                     .iter()
                     .zip(&s.gf)
                     .map(|(j, g)| j * g)
                     .sum();
-                s.f[c] = force[c] - jgf;
+                *fc = *force_c - jgf;
             }
             lu_solve(&s.lu, &s.perm, &mut s.f, &mut s.gf, n);
             self.apply(&s.f, &mut s.gf);
-            for c in 0..n {
-                s.w[c] = w_free[c] + s.gf[c];
+            for ((w, free), g) in s.w.iter_mut().zip(w_free).zip(&s.gf).take(n) {
+                *w = free + g;
             }
             law(&s.w, force, &mut s.active);
             if s.active == s.lu_active {

@@ -421,8 +421,8 @@ impl BandedStiffness {
                 row[1] = s / lj[0];
             }
             let mut diag = a(i, 0);
-            for d in 1..4.min(i + 1) {
-                diag -= row[d] * row[d];
+            for r in &row[1..4.min(i + 1)] {
+                diag -= r * r;
             }
             // Positive and finite (NaN fails both comparisons).
             if !(diag > 0.0 && diag < f64::INFINITY) {
@@ -591,8 +591,8 @@ mod tests {
                 l[i][d] = s / l[j][0];
             }
             let mut diag = a(i, 0);
-            for d in 1..4.min(i + 1) {
-                diag -= l[i][d] * l[i][d];
+            for r in &l[i][1..4.min(i + 1)] {
+                diag -= r * r;
             }
             if diag <= 0.0 || !diag.is_finite() {
                 return None;

@@ -316,8 +316,8 @@ impl Pads {
                 v,
                 FRICTION_REGULARISATION_SPEED,
             );
-            for a in 0..3 {
-                w.force[a] += fr[a];
+            for (wa, fa) in w.force.iter_mut().zip(&fr) {
+                *wa += fa;
             }
             w.moment[0] -= z * fr[1];
             w.moment[1] += z * fr[0];
