@@ -105,14 +105,7 @@ pub fn solve(
     count: usize,
 ) -> Result<EigenPairs, ModelError> {
     let (kk, mm) = disc.assemble(k);
-    let pairs = lowest_pairs(&kk, &mm, sigma, count).map_err(|e| match e {
-        EigenFailure::MassNotPositiveDefinite(reason) => {
-            ModelError::MassNotPositiveDefinite { k, reason }
-        }
-        EigenFailure::ShiftedNotPositiveDefinite(reason) | EigenFailure::Decomposition(reason) => {
-            ModelError::Eigenproblem { k, reason }
-        }
-    })?;
+    let pairs = lowest_pairs(&kk, &mm, sigma, count).map_err(|e| e.for_k(k))?;
     Ok(pairs)
 }
 

@@ -47,7 +47,7 @@ pub enum NodeError {
     SimulationThread,
     /// The loop stopped for a reason other than a signal.
     #[error("{0}")]
-    Stopped(String),
+    Stopped(super::node::StopReason),
 }
 
 impl NodeError {

@@ -560,9 +560,28 @@ fn startup_line(setup: &NodeSetup, sim: &Simulation, domain: u16) -> String {
 }
 
 /// Wait for SIGINT, SIGTERM or the loop's end; say which.
+/// Why the node stops: a signal asked for it (a clean exit), or the
+/// simulation loop ended on its own (an error exit).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum StopReason {
+    /// SIGINT or SIGTERM.
+    Signal(&'static str),
+    /// The simulation loop ended without being asked to.
+    LoopEnded,
+}
+
+impl std::fmt::Display for StopReason {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            StopReason::Signal(name) => f.write_str(name),
+            StopReason::LoopEnded => f.write_str("the simulation loop ended"),
+        }
+    }
+}
+
 async fn wait_for_stop(
     done_rx: tokio::sync::oneshot::Receiver<()>,
-) -> Result<&'static str, NodeError> {
+) -> Result<StopReason, NodeError> {
     use tokio::signal::unix::{signal, SignalKind};
     let mut sigint = signal(SignalKind::interrupt()).map_err(|error| NodeError::System {
         what: "cannot handle SIGINT",
@@ -573,9 +592,9 @@ async fn wait_for_stop(
         error,
     })?;
     Ok(tokio::select! {
-        _ = sigint.recv() => "SIGINT",
-        _ = sigterm.recv() => "SIGTERM",
-        _ = done_rx => "the simulation loop ended",
+        _ = sigint.recv() => StopReason::Signal("SIGINT"),
+        _ = sigterm.recv() => StopReason::Signal("SIGTERM"),
+        _ = done_rx => StopReason::LoopEnded,
     })
 }
 
@@ -772,10 +791,11 @@ async fn serve(
         Err(NodeError::SimulationThread)
     } else if let Some(e) = record_failed {
         Err(NodeError::Record(e))
-    } else if !why.starts_with("SIG") {
-        Err(NodeError::Stopped(why.to_string()))
     } else {
-        Ok(())
+        match why {
+            StopReason::Signal(_) => Ok(()),
+            StopReason::LoopEnded => Err(NodeError::Stopped(why)),
+        }
     };
     drop(tf_static);
     drop(critical_pub);

@@ -141,10 +141,9 @@ impl StiffenedMidpoint {
                 }
             }
             // A singular matrix gives NaN (caught by the step check).
-            if lu_factor(lhs, &mut self.perm[..d], d) {
-                lu_solve(lhs, &self.perm[..d], g, &mut self.buf[..d], d);
-            } else {
-                g.fill(f64::NAN);
+            match lu_factor(lhs, &mut self.perm[..d], d) {
+                Ok(()) => lu_solve(lhs, &self.perm[..d], g, &mut self.buf[..d], d),
+                Err(_) => g.fill(f64::NAN),
             }
             for f in 0..families {
                 for r in 0..n {
