@@ -4,6 +4,8 @@
 //!
 //! Layers, data flowing one way: [`config`] → [`model`] → [`dynamics`] → `ros` / `cli`.
 
+#![warn(missing_docs)]
+
 #[cfg(feature = "ros")]
 pub mod bag;
 #[cfg(feature = "cli")]

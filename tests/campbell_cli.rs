@@ -11,15 +11,11 @@ use annular_plate::model::{PlateModel, SpinningSpectrum};
 use serde_json::Value;
 use std::f64::consts::TAU;
 use std::path::{Path, PathBuf};
-use std::process::Command;
+use support::cli::run;
 use support::exact_plate::{Annulus, Edge, Material};
 
-const BIN: &str = env!("CARGO_BIN_EXE_annular_plate");
-
 fn dir() -> PathBuf {
-    let d = std::env::temp_dir().join(format!("annular_plate_campbell_{}", std::process::id()));
-    std::fs::create_dir_all(&d).unwrap();
-    d
+    support::cli::scratch_dir("campbell")
 }
 
 /// The lathe disc (clamped–free, r_i/r_a = 0.5), k = 0..4, l = 0, 1.
@@ -30,15 +26,6 @@ fn params(name: &str, stiffening: bool) -> PathBuf {
     let p = dir().join(name);
     std::fs::write(&p, body).unwrap();
     p
-}
-
-fn run(args: &[&str]) -> (bool, String, String) {
-    let out = Command::new(BIN).args(args).output().unwrap();
-    (
-        out.status.success(),
-        String::from_utf8_lossy(&out.stdout).into(),
-        String::from_utf8_lossy(&out.stderr).into(),
-    )
 }
 
 fn json(file: &Path, extra: &[&str]) -> Value {

@@ -457,10 +457,8 @@ fn error_decreases_at_the_cubic_b_spline_rate() {
             .filter(|(n, _)| **n >= 16)
             .map(|(&n, &e)| ((1.0 / (n - 3) as f64).ln(), e.ln()))
             .collect();
-        let mx = pts.iter().map(|p| p.0).sum::<f64>() / pts.len() as f64;
-        let my = pts.iter().map(|p| p.1).sum::<f64>() / pts.len() as f64;
-        let slope = pts.iter().map(|p| (p.0 - mx) * (p.1 - my)).sum::<f64>()
-            / pts.iter().map(|p| (p.0 - mx).powi(2)).sum::<f64>();
+        let (x, y): (Vec<f64>, Vec<f64>) = pts.into_iter().unzip();
+        let slope = support::fit::least_squares_slope(&x, &y);
         println!("{:<34} fitted order over n = 16…48: {slope:.2}", "");
         if !(3.5..=4.5).contains(&slope) {
             problems.push(format!(
