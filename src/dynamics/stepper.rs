@@ -33,7 +33,6 @@ mod contact_step;
 mod stage_rhs;
 
 pub use super::integrators::contact_exponential::StepReport as ContactReport;
-pub use contact_step::SWITCH_RESOLUTION;
 
 /// Both descriptions of the elastic state mid-step (RK4 stages): scratch.
 #[derive(Debug, Clone, PartialEq, Default)]
@@ -167,6 +166,7 @@ pub struct Stepper {
 }
 
 impl Stepper {
+    /// Scratch sized for the scene: no allocation per step.
     pub fn new(scene: &Scene) -> Stepper {
         let n = scene.n_modes();
         let k = scene.layout.k_max as usize + 1;
@@ -207,6 +207,8 @@ impl Stepper {
         }
     }
 
+    /// The most inner substeps a substep of the last step took (RK4 and the
+    /// implicit midpoint rule sub-step to their step limit).
     pub fn last_inner_substeps(&self) -> usize {
         self.last_inner_substeps
     }

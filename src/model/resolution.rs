@@ -40,6 +40,7 @@ pub const DENSE_LIMIT: usize = 48;
 /// The radial resolution used for one k.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct KResolution {
+    /// Nodal diameters.
     pub k: u32,
     /// Uniform cubic B-splines (`plate.radial_splines` semantics: before the
     /// edge conditions, without the graded knots of a small pinned hole).

@@ -122,7 +122,7 @@ pub struct Pads {
     pub coupling: Coupling,
     /// The residual compliance G among the contact points
     /// (`plate.residual_flexibility`): the contacts act in series with it
-    /// ([`Pads::series_forces`]); None: on the modal deflection.
+    /// (`Pads::series_forces`); None: on the modal deflection.
     pub series: Option<ContactCompliance>,
     /// m_p of each face's pad, kg (0: massless; `pad_mass.rs`).
     pub mass: f64,
