@@ -7,7 +7,6 @@
 //! C = L⁻¹ M̄ L⁻ᵀ has eigenvalues μ = 1/(ω² + σ); the largest μ, i.e. the
 //! lowest ω², are the ones a symmetric eigensolver returns most accurately.
 
-use super::lanczos::PivotError;
 use super::ModelError;
 use faer::linalg::solvers::{EvdError, LltError};
 use faer::{Mat, Side};
@@ -17,6 +16,19 @@ use thiserror::Error;
 pub struct EigenPairs {
     pub omega_squared: Vec<f64>,
     pub vectors: Mat<f64>,
+}
+
+/// The envelope Cholesky factor of the Lanczos solver (`lanczos.rs`) met a
+/// pivot that is not positive and finite.
+#[derive(Debug, Clone, Copy, PartialEq, Error)]
+#[error("pivot {pivot:e} at row {row} of {n}")]
+pub struct PivotError {
+    /// The pivot's value before its square root.
+    pub pivot: f64,
+    /// Its row (of the reversed order).
+    pub row: usize,
+    /// The matrix order.
+    pub n: usize,
 }
 
 /// Why a Cholesky factor failed: faer's dense one, or the envelope factor

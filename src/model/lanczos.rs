@@ -15,24 +15,11 @@
 //! free–free ring's two rigid-like functions (slots 0 and 1, coupled to every
 //! B-spline) become the last two rows, so L keeps the envelope of A.
 
-use super::eigen::{CholeskyError, EigenFailure, EigenPairs};
+use super::eigen::{CholeskyError, EigenFailure, EigenPairs, PivotError};
 use faer::{Mat, Side};
-use thiserror::Error;
 
 /// Ritz pairs are accepted when ‖C u − θ u‖ ≤ this × θ.
 pub const RESIDUAL_TOLERANCE: f64 = 1e-11;
-
-/// The envelope Cholesky factor met a pivot that is not positive and finite.
-#[derive(Debug, Clone, Copy, PartialEq, Error)]
-#[error("pivot {pivot:e} at row {row} of {n}")]
-pub struct PivotError {
-    /// The pivot's value before its square root.
-    pub pivot: f64,
-    /// Its row (of the reversed order).
-    pub row: usize,
-    /// The matrix order.
-    pub n: usize,
-}
 
 /// A symmetric matrix by the envelope of its lower triangle, in reversed order.
 struct Envelope {

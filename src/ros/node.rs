@@ -2,7 +2,7 @@
 //! entities, spawns the input and service tasks and the simulation thread,
 //! and shuts everything down in order on SIGINT or SIGTERM.
 
-use super::error::NodeError;
+use super::error::{NodeError, StopReason};
 use super::input_polling::{polled, InputContext, PolledInput};
 use super::inputs::{InputStats, InputValidator, Source};
 use super::logging::{parse_level, Logger};
@@ -560,25 +560,6 @@ fn startup_line(setup: &NodeSetup, sim: &Simulation, domain: u16) -> String {
 }
 
 /// Wait for SIGINT, SIGTERM or the loop's end; say which.
-/// Why the node stops: a signal asked for it (a clean exit), or the
-/// simulation loop ended on its own (an error exit).
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum StopReason {
-    /// SIGINT or SIGTERM.
-    Signal(&'static str),
-    /// The simulation loop ended without being asked to.
-    LoopEnded,
-}
-
-impl std::fmt::Display for StopReason {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        match self {
-            StopReason::Signal(name) => f.write_str(name),
-            StopReason::LoopEnded => f.write_str("the simulation loop ended"),
-        }
-    }
-}
-
 async fn wait_for_stop(
     done_rx: tokio::sync::oneshot::Receiver<()>,
 ) -> Result<StopReason, NodeError> {
