@@ -66,7 +66,8 @@ fn steps(c: &mut Criterion) {
     c.bench_function("step/rk4/ale/30_modes", |b| b.iter(|| sim.step().unwrap()));
 
     // What each effect costs (exponential, ALE, 30 modes, one ALE load).
-    let effects: [(&str, fn(&mut Config)); 4] = [
+    type Effect = (&'static str, fn(&mut Config));
+    let effects: [Effect; 4] = [
         ("fixed_base", |_| {}),
         ("gravity", |c| c.gravity = [0.0, 0.0, -9.81]),
         ("off_axis_rotation", |c| {

@@ -6,6 +6,8 @@
 
 #![cfg(feature = "ros")]
 
+mod support;
+
 use annular_plate::config::{check, Config, ParamValue, Params};
 use annular_plate::messages::settings::RosSettings;
 use annular_plate::ros::params_service::{effective_parameters, ParamStore, RUNTIME_KEYS};
@@ -88,9 +90,7 @@ fn cases() -> Vec<Case> {
 }
 
 fn dir() -> PathBuf {
-    let d = std::env::temp_dir().join(format!("annular_plate_same_refusal_{}", std::process::id()));
-    std::fs::create_dir_all(&d).unwrap();
-    d
+    support::cli::scratch_dir("same_refusal")
 }
 
 /// A parameter file holding `key: text` for every node: as a scene (the

@@ -194,7 +194,7 @@ fn a_simulate_bag_holds_the_node_topics_with_the_runs_values() {
     ];
     let conns = d["connections"].as_array().unwrap();
     assert_eq!(conns.len(), expected_types.len(), "{conns:?}");
-    let n_diag = (STEPS / 1000 + 1) as u64;
+    let n_diag = STEPS / 1000 + 1;
     for (topic, ty) in expected_types {
         let c = conns
             .iter()

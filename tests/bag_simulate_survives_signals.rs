@@ -85,7 +85,7 @@ fn an_interrupted_simulate_bag_is_finished_and_holds_every_step_written() {
             Some(rows as u64),
             "SIG{signal}: every recorded step"
         );
-        assert!(rows >= 500 && rows < 1_000_001, "SIG{signal}: {rows} rows");
+        assert!((500..1_000_001).contains(&rows), "SIG{signal}: {rows} rows");
     }
 }
 

@@ -217,14 +217,7 @@ fn partial_arc_thresholds_with_the_papers_stiff_pads_and_one_simulation_against_
                 logs.push(0.5 * e.ln());
             }
         }
-        let k = ts.len() as f64;
-        let (mt, ml) = (ts.iter().sum::<f64>() / k, logs.iter().sum::<f64>() / k);
-        let slope = ts
-            .iter()
-            .zip(&logs)
-            .map(|(t, l)| (t - mt) * (l - ml))
-            .sum::<f64>()
-            / ts.iter().map(|t| (t - mt).powi(2)).sum::<f64>();
+        let slope = support::fit::least_squares_slope(&ts, &logs);
         println!(
             "{factor} μ_c: eigenvalue Re λ = {:.5} 1/s, simulated {slope:.5} 1/s",
             mode.eigenvalue.re

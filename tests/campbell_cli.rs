@@ -10,16 +10,12 @@ use annular_plate::model::campbell::campbell;
 use annular_plate::model::{PlateModel, SpinningSpectrum};
 use serde_json::Value;
 use std::f64::consts::TAU;
-use std::path::PathBuf;
-use std::process::Command;
+use std::path::{Path, PathBuf};
+use support::cli::run;
 use support::exact_plate::{Annulus, Edge, Material};
 
-const BIN: &str = env!("CARGO_BIN_EXE_annular_plate");
-
 fn dir() -> PathBuf {
-    let d = std::env::temp_dir().join(format!("annular_plate_campbell_{}", std::process::id()));
-    std::fs::create_dir_all(&d).unwrap();
-    d
+    support::cli::scratch_dir("campbell")
 }
 
 /// The lathe disc (clamped–free, r_i/r_a = 0.5), k = 0..4, l = 0, 1.
@@ -32,16 +28,7 @@ fn params(name: &str, stiffening: bool) -> PathBuf {
     p
 }
 
-fn run(args: &[&str]) -> (bool, String, String) {
-    let out = Command::new(BIN).args(args).output().unwrap();
-    (
-        out.status.success(),
-        String::from_utf8_lossy(&out.stdout).into(),
-        String::from_utf8_lossy(&out.stderr).into(),
-    )
-}
-
-fn json(file: &PathBuf, extra: &[&str]) -> Value {
+fn json(file: &Path, extra: &[&str]) -> Value {
     let mut args = vec!["campbell", file.to_str().unwrap(), "--json"];
     args.extend_from_slice(extra);
     let (ok, out, err) = run(&args);

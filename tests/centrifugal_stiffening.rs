@@ -204,7 +204,8 @@ const SLOPE_STEP: f64 = 1e-2;
 
 #[test]
 fn slope_at_small_speed_is_the_southwell_coefficient_of_the_exact_mode() {
-    let cases: Vec<(&str, PlateConfig, Vec<(u32, u32)>)> = vec![
+    type Case = (&'static str, PlateConfig, Vec<(u32, u32)>);
+    let cases: Vec<Case> = vec![
         (
             "lathe (clamped, hub)",
             lathe(),

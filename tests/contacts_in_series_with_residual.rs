@@ -134,8 +134,9 @@ fn exact_clamp(c: &Config) -> Exact {
     for col in 0..n {
         for row in col + 1..n {
             let f = a[row][col] / a[col][col];
-            for j in col..n {
-                a[row][j] -= f * a[col][j];
+            let (pivot, below) = a.split_at_mut(row);
+            for (x, p) in below[0][col..n].iter_mut().zip(&pivot[col][col..n]) {
+                *x -= f * p;
             }
             b[row] -= f * b[col];
         }

@@ -92,7 +92,7 @@ fn program(text: &str) -> Option<Vec<&str>> {
     }
     let first = words
         .iter()
-        .position(|w| !(w.contains('=') && !w.starts_with('-')))?;
+        .position(|w| !w.contains('=') || w.starts_with('-'))?;
     matches!(
         words[first],
         "annular_plate" | "target/release/annular_plate"

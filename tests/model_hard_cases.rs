@@ -296,6 +296,7 @@ fn check_order_of(m: &PlateModel, exact: &[Vec<f64>], gap: f64, include: impl Fn
 /// (k = 60 plus the two orders the derivatives use), arguments from 1e-3 (tiny inner
 /// radius) to 1e5 (narrow rings reach λ r_a ~ 1e4), on both sides of the I power
 /// series' limit x = 700.
+#[allow(clippy::excessive_precision)] // mpmath's digits as printed, not rounded by hand
 const MPMATH: &[(usize, f64, f64, f64, f64, f64)] = &[
     (
         0,
@@ -1193,7 +1194,9 @@ fn exact_roots_agree_with_mpmath_in_the_hard_range() {
     use Boundary::*;
     // (r_i, ν, inner, outer, k, l, λ from mpmath, measured |relative difference|); the
     // clamped–clamped 0.99 ring has λ r_a = 1100, beyond the I power series (x > 700).
-    let cases: &[(f64, f64, Boundary, Boundary, u32, usize, f64, f64)] = &[
+    type Case = (f64, f64, Boundary, Boundary, u32, usize, f64, f64);
+    #[allow(clippy::excessive_precision)] // mpmath's λ as printed, not rounded by hand
+    let cases: &[Case] = &[
         (
             0.075,
             0.3,

@@ -222,14 +222,7 @@ fn simulated_growth_rate_of(c: Config) -> (f64, f64) {
         ts.push(sim.time());
         logs.push(re.hypot(im).ln());
     }
-    let k = ts.len() as f64;
-    let (mt, ml) = (ts.iter().sum::<f64>() / k, logs.iter().sum::<f64>() / k);
-    let slope = ts
-        .iter()
-        .zip(&logs)
-        .map(|(t, l)| (t - mt) * (l - ml))
-        .sum::<f64>()
-        / ts.iter().map(|t| (t - mt).powi(2)).sum::<f64>();
+    let slope = support::fit::least_squares_slope(&ts, &logs);
     (mode.eigenvalue.re, slope)
 }
 

@@ -107,8 +107,8 @@ fn pair(sim: &Simulation) -> Pair {
 ///
 ///   M q̈ + (M ω² + 2k_c R²) q − 2k_c R a = 0,   m_p ä + (k_c + k_b) a − k_c R q = 0,
 ///
-/// so s = λ² solves M m_p s² + [M (k_c + k_b) + m_p (M ω² + 2k_c R²)] s
-/// + (M ω² + 2k_c R²)(k_c + k_b) − 2k_c² R² = 0; the pads' symmetric motion
+/// so s = λ² solves M m_p s² + [M (k_c + k_b) + m_p (M ω² + 2k_c R²)] s +
+/// (M ω² + 2k_c R²)(k_c + k_b) − 2k_c² R² = 0; the pads' symmetric motion
 /// (s = −(k_c + k_b)/m_p) and the sin mode (s = −ω²) stay alone.
 #[test]
 fn one_pad_on_one_mode_pair_has_the_frequencies_of_its_characteristic_polynomial() {
@@ -258,9 +258,11 @@ const DESCRIPTIONS: [fn(Config) -> Config; 2] = [|c| c, in_series];
 const CALIPERS: [(Caliper, Option<f64>); 2] =
     [(Caliper::Fixed, Some(BACKING)), (Caliper::Floating, None)];
 
+/// A description: the configuration put into it.
+type Description = fn(Config) -> Config;
+
 /// Each caliper with each description.
-fn calipers_and_descriptions(
-) -> impl Iterator<Item = ((Caliper, Option<f64>), fn(Config) -> Config)> {
+fn calipers_and_descriptions() -> impl Iterator<Item = ((Caliper, Option<f64>), Description)> {
     CALIPERS
         .into_iter()
         .flat_map(|c| DESCRIPTIONS.map(|d| (c, d)))
@@ -342,14 +344,7 @@ fn simulated_growth_rate(c: Config, steps: usize) -> (f64, f64) {
         ts.push(sim.time());
         logs.push(re.hypot(im).ln());
     }
-    let k = ts.len() as f64;
-    let (mt, ml) = (ts.iter().sum::<f64>() / k, logs.iter().sum::<f64>() / k);
-    let slope = ts
-        .iter()
-        .zip(&logs)
-        .map(|(t, l)| (t - mt) * (l - ml))
-        .sum::<f64>()
-        / ts.iter().map(|t| (t - mt).powi(2)).sum::<f64>();
+    let slope = support::fit::least_squares_slope(&ts, &logs);
     (mode.eigenvalue.re, slope)
 }
 

@@ -6,12 +6,12 @@
 //! lies beyond with the bound written beside it ("≤ 0.2", "> 0.6"), not a
 //! dot on the curve at the edge. Thresholds inside the range stay dots.
 
+mod support;
+
 use annular_plate::cli::plot::{placement, stability_map, Placement, Size, StabilityGrid};
 
 fn dir() -> std::path::PathBuf {
-    let d = std::env::temp_dir().join(format!("annular_plate_off_axis_{}", std::process::id()));
-    std::fs::create_dir_all(&d).unwrap();
-    d
+    support::cli::scratch_dir("off_axis")
 }
 
 #[test]

@@ -9,19 +9,16 @@
 //! * Bad input (unknown column, unreadable file, wrong extension, missing folder)
 //!   gives a message naming it and a non-zero exit.
 
+mod support;
+
 use annular_plate::cli::plot::{self, CsvData, CsvPlot, ModeChoice, Size, TopView, PALETTE};
 use annular_plate::config::{Boundary, Config};
 use annular_plate::model::AngularShape;
 use std::f64::consts::TAU;
 use std::path::PathBuf;
-use std::process::Command;
-
-const BIN: &str = env!("CARGO_BIN_EXE_annular_plate");
 
 fn dir() -> PathBuf {
-    let d = std::env::temp_dir().join(format!("annular_plate_plot_{}", std::process::id()));
-    std::fs::create_dir_all(&d).unwrap();
-    d
+    support::cli::scratch_dir("plot")
 }
 
 fn png(path: &std::path::Path) -> image::RgbImage {
@@ -215,11 +212,8 @@ fn bad_plot_input_is_named_with_a_non_zero_exit() {
     let (csv, ..) = history_csv("bad_case");
     let out = dir().join("x.png");
     let run = |args: &[&str]| {
-        let o = Command::new(BIN).args(args).output().unwrap();
-        (
-            o.status.success(),
-            String::from_utf8_lossy(&o.stderr).to_string(),
-        )
+        let (ok, _, err) = support::cli::run(args);
+        (ok, err)
     };
     let csv = csv.to_str().unwrap();
     let (ok, err) = run(&[

@@ -34,7 +34,7 @@ fn scene_with_ale_nodes() -> std::path::PathBuf {
          density: 7850.0\n      youngs_modulus: 2.1e11\n      poisson_ratio: 0.3\n      inner_boundary: supported\n      \
          outer_boundary: free\n      nodal_diameters: [0, 1, 2, 3]\n      nodal_circles: [0]\n      damping: [0.005]\n    \
          nodes:\n      ale_radial: [{}]\n      ale_angular: [{}]\n    simulation:\n      rate_hz: 1000.0\n",
-        vec!["0.6"; TOPICS].join(", "),
+        ["0.6"; TOPICS].join(", "),
         angular.join(", ")
     );
     let path = temp_dir().join("twelve_ale_nodes.yaml");

@@ -120,14 +120,7 @@ fn ale_amplitudes_are_stationary_while_lagrangian_ones_turn_with_the_disc() {
         d -= TAU * (d / TAU).round();
         unwrapped.push(unwrapped.last().unwrap() + d);
     }
-    let n = t.len() as f64;
-    let (mt, mp) = (t.iter().sum::<f64>() / n, unwrapped.iter().sum::<f64>() / n);
-    let slope = t
-        .iter()
-        .zip(&unwrapped)
-        .map(|(t, p)| (t - mt) * (p - mp))
-        .sum::<f64>()
-        / t.iter().map(|t| (t - mt).powi(2)).sum::<f64>();
+    let slope = support::fit::least_squares_slope(&t, &unwrapped);
     println!("Lagrangian phase rate {slope:.9} rad/s, −Ω = {:.9}", -speed);
     assert!((slope + speed).abs() < 1e-6 * speed);
 }

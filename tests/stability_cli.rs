@@ -2,29 +2,19 @@
 //! (0.300423 for config/brake_squeal_paper.yaml at 25 rad/s, docs/scenes.md) from
 //! the map, the JSON layout, and shards merged equal to the single run.
 
+mod support;
+
 use serde_json::Value;
 use std::path::PathBuf;
-use std::process::Command;
+use support::cli::run;
 
-const BIN: &str = env!("CARGO_BIN_EXE_annular_plate");
 const SCENE: &str = concat!(
     env!("CARGO_MANIFEST_DIR"),
     "/config/brake_squeal_paper.yaml"
 );
 
-fn run(args: &[&str]) -> (bool, String, String) {
-    let out = Command::new(BIN).args(args).output().unwrap();
-    (
-        out.status.success(),
-        String::from_utf8_lossy(&out.stdout).into(),
-        String::from_utf8_lossy(&out.stderr).into(),
-    )
-}
-
 fn dir() -> PathBuf {
-    let d = std::env::temp_dir().join(format!("annular_plate_stability_{}", std::process::id()));
-    std::fs::create_dir_all(&d).unwrap();
-    d
+    support::cli::scratch_dir("stability")
 }
 
 #[test]

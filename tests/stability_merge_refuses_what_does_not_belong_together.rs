@@ -16,9 +16,7 @@ const SCENE: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/config/brake_squeal.ya
 const GRID: [&str; 4] = ["--mu", "0.2:0.5:3", "--speeds", "5:45:4"];
 
 fn dir() -> PathBuf {
-    let d = std::env::temp_dir().join(format!("annular_plate_merge_{}", std::process::id()));
-    std::fs::create_dir_all(&d).unwrap();
-    d
+    support::cli::scratch_dir("merge")
 }
 
 fn shard(i: usize, n: usize, extra: &[&str]) -> Value {

@@ -1,26 +1,21 @@
 //! `annular_plate study [FILE]` on the command line: reproducible errors, a
 //! stable JSON document, a readable table, the Pareto picture, clear errors.
 
+mod support;
+
 use serde_json::Value;
 use std::collections::BTreeSet;
 use std::path::PathBuf;
-use std::process::Command;
-
-const BIN: &str = env!("CARGO_BIN_EXE_annular_plate");
 
 fn dir() -> PathBuf {
-    let d = std::env::temp_dir().join(format!("annular_plate_study_{}", std::process::id()));
-    std::fs::create_dir_all(&d).unwrap();
-    d
+    support::cli::scratch_dir("study")
 }
 
 fn study(args: &[&str]) -> (bool, String, String) {
-    let o = Command::new(BIN).arg("study").args(args).output().unwrap();
-    (
-        o.status.success(),
-        String::from_utf8_lossy(&o.stdout).into_owned(),
-        String::from_utf8_lossy(&o.stderr).into_owned(),
-    )
+    let all: Vec<&str> = std::iter::once("study")
+        .chain(args.iter().copied())
+        .collect();
+    support::cli::run(&all)
 }
 
 fn json(args: &[&str]) -> Value {

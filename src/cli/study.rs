@@ -49,7 +49,7 @@ pub fn plan(args: &StudyArgs) -> CliResult<StudyPlan> {
         StudyPlan::full()
     };
     if let Some(t) = &args.targets {
-        if !(!t.is_empty() && t.iter().all(|x| x.is_finite() && *x > 0.0 && *x < 1.0)) {
+        if t.is_empty() || !t.iter().all(|x| x.is_finite() && *x > 0.0 && *x < 1.0) {
             return Err(CliError::Usage(format!(
                 "--targets must be numbers in (0, 1), got {t:?}"
             )));

@@ -23,6 +23,7 @@ mod validate;
 
 pub use centrifugal::{CentrifugalConfig, InPlaneInner};
 pub use check::{check, check_params};
+#[cfg(feature = "ros")] // the ROS settings read them
 pub(crate) use check::{declared_value, typed, Declared};
 pub use error::{ConfigError, Degeneracy};
 pub use load_models::{

@@ -8,12 +8,14 @@ use std::f64::consts::TAU;
 /// plate has turned (χ beyond 1e9 rad included).
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct JointAngle {
+    /// Whole turns.
     pub turns: i64,
     /// In [0, 2π).
     pub angle: f64,
 }
 
 impl JointAngle {
+    /// The angle χ in radians as whole turns and a remainder.
     pub fn from_radians(chi: f64) -> JointAngle {
         let turns = (chi / TAU).floor();
         let mut a = JointAngle {

@@ -31,7 +31,7 @@
 //! taken once when the scene is built; the held wrenches' part is read per
 //! evaluation from [`ResidualCompliance`] (mixed pairs turn with χ).
 
-use super::dense::{lu_factor, lu_solve};
+use super::dense::{lu_factor, lu_solve, LuError};
 use super::node_frame::NodeShape;
 use super::residual::ResidualCompliance;
 use super::wrench::Wrench;
@@ -126,7 +126,9 @@ impl ContactCompliance {
     /// `law(w, force, active)` writes the forces at deflections `w` and the
     /// active set there (any flags that fix the law's affine piece);
     /// `jacobian(active, J)` writes ∂F_c/∂w_d (row-major) on that piece. The
-    /// returned forces are the law's last evaluation, at `s.w`.
+    /// returned forces are the law's last evaluation, at `s.w`; an error when
+    /// I − J G of an active set is singular (the forces then those of the
+    /// last evaluation before it).
     pub fn solve(
         &self,
         w_free: &[f64],
@@ -134,7 +136,7 @@ impl ContactCompliance {
         s: &mut SeriesScratch,
         mut law: impl FnMut(&[f64], &mut [f64], &mut [bool]),
         mut jacobian: impl FnMut(&[bool], &mut [f64]),
-    ) {
+    ) -> Result<(), LuError> {
         let n = self.n;
         s.f.iter_mut().for_each(|f| *f = 0.0);
         s.w.copy_from_slice(w_free);
@@ -152,30 +154,30 @@ impl ContactCompliance {
                     }
                 }
                 s.lu_active.copy_from_slice(&s.active);
-                s.lu_valid = lu_factor(&mut s.lu, &mut s.perm, n);
-                if !s.lu_valid {
-                    return;
-                }
+                let factored = lu_factor(&mut s.lu, &mut s.perm, n);
+                s.lu_valid = factored.is_ok();
+                factored?;
             }
             self.apply(&s.f, &mut s.gf);
-            for c in 0..n {
+            for (c, (fc, force_c)) in s.f.iter_mut().zip(force.iter()).enumerate().take(n) {
                 let jgf: f64 = s.jac[c * n..(c + 1) * n]
                     .iter()
                     .zip(&s.gf)
                     .map(|(j, g)| j * g)
                     .sum();
-                s.f[c] = force[c] - jgf;
+                *fc = *force_c - jgf;
             }
             lu_solve(&s.lu, &s.perm, &mut s.f, &mut s.gf, n);
             self.apply(&s.f, &mut s.gf);
-            for c in 0..n {
-                s.w[c] = w_free[c] + s.gf[c];
+            for ((w, free), g) in s.w.iter_mut().zip(w_free).zip(&s.gf).take(n) {
+                *w = free + g;
             }
             law(&s.w, force, &mut s.active);
             if s.active == s.lu_active {
-                return;
+                return Ok(());
             }
         }
+        Ok(())
     }
 
     /// out = G f.
@@ -203,7 +205,8 @@ impl ContactCompliance {
             })
             .collect();
         let mut perm = vec![0; n];
-        if !lu_factor(&mut a, &mut perm, n) {
+        // A singular I + K G (no finite stiffness in series): NaN, as the solves give.
+        if lu_factor(&mut a, &mut perm, n).is_err() {
             return vec![f64::NAN; n * n];
         }
         let (mut col, mut buf) = (vec![0.0; n], vec![0.0; n]);
@@ -332,7 +335,8 @@ mod tests {
         };
         g.solve(&w, &mut f, &mut s, law, |_, j| {
             j.copy_from_slice(&[-k1, 0.0, 0.0, -k2])
-        });
+        })
+        .unwrap();
         // By hand: (I + K G) = [[1 + k1 g11, k1 g12], [k2 g21, 1 + k2 g22]].
         let a = [[1.0 + k1 * 2e-7, k1 * 5e-8], [k2 * 5e-8, 1.0 + k2 * 1e-7]];
         let b = [-k1 * w[0], -k2 * w[1]];
@@ -374,7 +378,7 @@ mod tests {
         };
         let mut s = SeriesScratch::new(2, 1);
         let mut f = [0.0; 2];
-        g.solve(&w_free, &mut f, &mut s, law, jacobian);
+        g.solve(&w_free, &mut f, &mut s, law, jacobian).unwrap();
         // Contact 0 open: F1 = 5e3 / (1 + k g11) and w0 = g01 F1 ≥ δ.
         let f1 = 5e3 / (1.0 + k * 1e-6);
         assert_eq!(f[0], 0.0, "{f:?}");

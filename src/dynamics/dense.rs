@@ -2,9 +2,23 @@
 //! contacts in series with the residual flexibility (`contact_compliance.rs`)
 //! and the stiffened implicit midpoint rule's per-k blocks.
 
+use thiserror::Error;
+
+/// Why [`lu_factor`] could not factor a matrix.
+#[derive(Debug, Clone, Copy, PartialEq, Error)]
+pub enum LuError {
+    /// Every candidate pivot of a column is zero: the matrix is singular.
+    #[error("singular: no non-zero pivot in column {column} of {n}")]
+    ZeroPivot { column: usize, n: usize },
+    /// The largest candidate pivot of a column is not finite.
+    #[error("pivot {pivot:e} in column {column} of {n} is not finite")]
+    NonFinitePivot { column: usize, pivot: f64, n: usize },
+}
+
 /// LU factors of A (row-major n × n, in place) with partial pivoting:
-/// P A = L U, `perm[i]` the row of A in row i. False if A is singular.
-pub fn lu_factor(a: &mut [f64], perm: &mut [usize], n: usize) -> bool {
+/// P A = L U, `perm[i]` the row of A in row i. An error if a column has no
+/// usable pivot (A singular, or not finite).
+pub fn lu_factor(a: &mut [f64], perm: &mut [usize], n: usize) -> Result<(), LuError> {
     for (i, p) in perm.iter_mut().enumerate() {
         *p = i;
     }
@@ -12,8 +26,16 @@ pub fn lu_factor(a: &mut [f64], perm: &mut [usize], n: usize) -> bool {
         let pivot = (col..n)
             .max_by(|&i, &j| a[i * n + col].abs().total_cmp(&a[j * n + col].abs()))
             .unwrap_or(col);
-        if a[pivot * n + col] == 0.0 || !a[pivot * n + col].is_finite() {
-            return false;
+        let value = a[pivot * n + col];
+        if value == 0.0 {
+            return Err(LuError::ZeroPivot { column: col, n });
+        }
+        if !value.is_finite() {
+            return Err(LuError::NonFinitePivot {
+                column: col,
+                pivot: value,
+                n,
+            });
         }
         if pivot != col {
             for j in 0..n {
@@ -32,7 +54,7 @@ pub fn lu_factor(a: &mut [f64], perm: &mut [usize], n: usize) -> bool {
             }
         }
     }
-    true
+    Ok(())
 }
 
 /// Solve A x = b with the factors of [`lu_factor`]; b becomes x (`buf`: n values of scratch).

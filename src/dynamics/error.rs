@@ -47,7 +47,7 @@ pub enum StepError {
 pub enum SimulationError {
     #[error(transparent)]
     Model(#[from] ModelError),
-    /// An integrator that would need more than [`MAX_INNER_SUBSTEPS`](super::integrators::MAX_INNER_SUBSTEPS)
+    /// An integrator that would need more than `MAX_INNER_SUBSTEPS`
     /// substeps to keep h·λ_max below its step limit (docs/hard_cases.md).
     #[error("simulation.integrator = {integrator} would need {needed} substeps per step of {step:e} s to keep h·λ_max ≤ {step_limit} ({limit_key}) for the highest mode ({frequency_hz:.0} Hz) at {speed} rad/s (limit {limit} substeps): use exponential, or raise simulation.rate_hz / simulation.substeps or {limit_key}")]
     TooManySubsteps {

@@ -16,6 +16,7 @@ pub enum NodeKind {
 }
 
 impl NodeKind {
+    /// The kind's name, as in the configuration.
     pub fn name(self) -> &'static str {
         match self {
             NodeKind::Lagrange => "lagrange",

@@ -8,7 +8,7 @@ use crate::model::PlateModel;
 use super::commands::InputRules;
 pub use super::layout::{ModeLayout, ModePair};
 use super::load_models::{LoadModels, ModelWrenches, SceneNodes};
-pub use super::node_frame::{NodeFrame, NodeKind, NodeShape};
+pub use super::node_frame::{NodeFrame, NodeKind};
 pub use super::residual::ResidualCompliance;
 pub use super::stiffening::Stiffening;
 
@@ -36,19 +36,27 @@ pub struct ReferenceMotion {
 /// Everything the stepper needs besides the state and inputs.
 #[derive(Debug)]
 pub struct Scene {
+    /// The plate's modes and body data.
     pub model: PlateModel,
+    /// The modes arranged by nodal diameters (axisymmetric ones, cos/sin pairs).
     pub layout: ModeLayout,
+    /// The ALE node frames (fixed in space).
     pub ale_nodes: Vec<NodeFrame>,
+    /// The Lagrangian node frames (turning with the plate).
     pub lagrange_nodes: Vec<NodeFrame>,
+    /// The rotational joint and its drive.
     pub joint: JointConfig,
+    /// The bounds a run is stopped at.
     pub limits: LimitsConfig,
+    /// The motion of the floating frame's base.
     pub reference: ReferenceMotion,
+    /// Which reference-motion and load effects are on.
     pub effects: Effects,
     /// Polar inertia J_zz of the plate about the joint axis, kg·m².
     pub polar_inertia: f64,
     /// Pads, tool, pitch links (paper section 5): only those the configuration gives.
     pub load_models: LoadModels,
-    /// The rules every input passes ([`commands`](super::commands)).
+    /// The rules every input passes (`commands`).
     pub rules: InputRules,
     /// Residual compliance of the truncated modes between the node frames
     /// (`plate.residual_flexibility`; None when off or without nodes).
@@ -59,6 +67,7 @@ pub struct Scene {
 }
 
 impl Scene {
+    /// The scene of a validated configuration on its built model.
     pub fn new(config: &Config, model: PlateModel) -> Scene {
         let layout = ModeLayout::new(&model);
         let h = config.plate.thickness;
@@ -163,6 +172,7 @@ impl Scene {
         )
     }
 
+    /// The number of elastic modes.
     pub fn n_modes(&self) -> usize {
         self.model.n_modes()
     }

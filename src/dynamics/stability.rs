@@ -27,7 +27,7 @@
 //! - the speed slope      f_i −= (h²/2) p g′ (1/r²) ∂_θ w_i ∂_θ Ẇ, g′ = dg/d|v|
 //!   (μ(v) = μ + (μ_s − μ) e^(−v/v_S) and the regularisation),
 //!
-//! ([`add_face_terms`]); the follower term above is the normal part of the
+//! (`add_face_terms`); the follower term above is the normal part of the
 //! sliding direction and is the same.
 //!
 //! With `plate.residual_flexibility` the contacts act in series with the
@@ -384,7 +384,9 @@ pub fn friction_threshold(scene: &Scene, speed: f64, mu_max: f64) -> Option<f64>
 /// motion is Re(v e^{λt})).
 #[derive(Debug, Clone, PartialEq)]
 pub struct CriticalMode {
+    /// λ: Re λ the growth rate (1/s), Im λ the circular frequency (rad/s).
     pub eigenvalue: Complex<f64>,
+    /// The right eigenvector v over y.
     pub vector: Vec<Complex<f64>>,
 }
 

@@ -16,8 +16,10 @@ use std::f64::consts::TAU;
 pub struct GridPoint {
     /// max Re λ, 1/s.
     pub growth_rate: f64,
-    /// The mode with the largest amplitude in its eigenvector (peak displacement).
+    /// The mode with the largest amplitude in its eigenvector (peak
+    /// displacement): its nodal diameters,
     pub k: u32,
+    /// and its nodal circles.
     pub l: u32,
     /// |Im λ| / 2π, Hz (space-fixed frame: ALE coordinates).
     pub frequency_hz: f64,
@@ -26,7 +28,9 @@ pub struct GridPoint {
 /// One speed row: a grid point per μ and the threshold.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct SpeedRow {
+    /// The joint speed Ω, rad/s.
     pub speed: f64,
+    /// One point per friction coefficient μ of the grid.
     pub points: Vec<GridPoint>,
     /// The smallest μ in [μ_first, μ_last] where max Re λ > 0: the first grid
     /// μ with a positive rate, bisected against its stable neighbour to 1e-9

@@ -32,11 +32,13 @@ pub struct State {
     pub coordinates: Coordinates,
     /// Modal amplitudes, m (mode order of the model), in `coordinates`.
     pub q: Vec<f64>,
+    /// Their rates, m/s.
     pub q_dot: Vec<f64>,
     /// The same elastic state in the other description (eq. 20), kept
     /// consistent by the stepper; after editing `q` or `q_dot` by hand call
     /// [`State::rederive`].
     pub q_other: Vec<f64>,
+    /// Their rates, m/s.
     pub q_dot_other: Vec<f64>,
     /// State of the load models (one slot each; the tool's machined surface).
     pub load_models: LoadModelState,

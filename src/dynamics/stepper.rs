@@ -13,7 +13,9 @@ use super::ale::{harmonics, lagrange_to_ale, pair_to_ale};
 use super::commands::Inputs;
 use super::error::{Divergence, StepError};
 use super::integrators::contact_exponential::ContactExponential;
-use super::integrators::equations::{mode_constants, ModeConstants};
+use super::integrators::equations::{
+    mode_constants, ModalEquations, ModeConstants, ReferenceMotion,
+};
 use super::integrators::exponential::ModePropagator;
 use super::integrators::stiffened_midpoint::StiffenedMidpoint;
 use super::integrators::{block_exponential, implicit_midpoint, rk4, MAX_INNER_SUBSTEPS};
@@ -31,7 +33,6 @@ mod contact_step;
 mod stage_rhs;
 
 pub use super::integrators::contact_exponential::StepReport as ContactReport;
-pub use contact_step::SWITCH_RESOLUTION;
 
 /// Both descriptions of the elastic state mid-step (RK4 stages): scratch.
 #[derive(Debug, Clone, PartialEq, Default)]
@@ -165,6 +166,7 @@ pub struct Stepper {
 }
 
 impl Stepper {
+    /// Scratch sized for the scene: no allocation per step.
     pub fn new(scene: &Scene) -> Stepper {
         let n = scene.n_modes();
         let k = scene.layout.k_max as usize + 1;
@@ -205,6 +207,8 @@ impl Stepper {
         }
     }
 
+    /// The most inner substeps a substep of the last step took (RK4 and the
+    /// implicit midpoint rule sub-step to their step limit).
     pub fn last_inner_substeps(&self) -> usize {
         self.last_inner_substeps
     }
@@ -347,38 +351,32 @@ impl Stepper {
             &self.model_wrenches.friction,
             h,
         );
-        let (speed0, alpha) = (state.speed, d.acceleration);
-        let speed_mean = speed0 + 0.5 * alpha * h;
-        let chi0 = state.chi;
-        let mut chi1 = chi0;
-        chi1.advance(speed_mean * h);
-        let speed1 = speed0 + alpha * h;
+        let joint = SubstepMotion::new(h, state.chi, state.speed, d.acceleration);
 
         let stiff_models = models.stage_dependent();
         match settings.integrator {
             IntegratorKind::ContactExponential if stiff_models => {
                 let tolerance = settings.contact_tolerance;
-                self.contact_exponential(scene, state, inputs, h, chi0, speed0, alpha, tolerance)
+                self.contact_exponential(scene, state, inputs, &joint, tolerance)
             }
             IntegratorKind::Exponential | IntegratorKind::ContactExponential => {
-                add_reference_motion(scene, speed_mean, &mut self.loads.ale_frame);
-                self.exponential(scene, state, h, speed_mean, chi0, chi1, speed1);
+                add_reference_motion(scene, joint.speed_mean, &mut self.loads.ale_frame);
+                self.exponential(scene, state, &joint);
             }
             IntegratorKind::ImplicitMidpoint => {
-                add_reference_motion(scene, speed_mean, &mut self.loads.ale_frame);
-                let inner = self.checked_inner_substeps(scene, settings, h, speed0, alpha)?;
+                add_reference_motion(scene, joint.speed_mean, &mut self.loads.ale_frame);
+                let inner =
+                    self.checked_inner_substeps(scene, settings, h, joint.speed0, joint.alpha)?;
                 self.last_inner_substeps = self.last_inner_substeps.max(inner);
-                self.implicit_midpoint(scene, state, h, inner, chi0, speed0, alpha);
+                self.implicit_midpoint(scene, state, inner, &joint);
             }
-            IntegratorKind::Rk4 => {
-                self.rk4(scene, settings, state, inputs, h, chi0, speed0, alpha)?
-            }
+            IntegratorKind::Rk4 => self.rk4(scene, settings, state, inputs, &joint)?,
         }
         models.save_changes(&state.load_models, &mut self.undo);
         models.commit_substep(&mut state.load_models, &inputs.commands, h);
-        state.chi = chi1;
-        state.speed = speed1;
-        state.acceleration = alpha;
+        state.chi = joint.chi1;
+        state.speed = joint.speed1;
+        state.acceleration = joint.alpha;
         state.effort = d.effort;
         state.time += h;
         let exact_both = match settings.integrator {
@@ -446,19 +444,17 @@ impl Stepper {
         }
     }
 
-    /// Exact step of the Lagrangian description over h (the loads held), then
-    /// the ALE one derived at χ1: both written into `state`.
-    #[allow(clippy::too_many_arguments)]
-    fn exponential(
-        &mut self,
-        scene: &Scene,
-        state: &mut State,
-        h: f64,
-        speed_mean: f64,
-        chi0: JointAngle,
-        chi1: JointAngle,
-        speed1: f64,
-    ) {
+    /// Exact step of the Lagrangian description over the substep (the loads
+    /// held), then the ALE one derived at χ1: both written into `state`.
+    fn exponential(&mut self, scene: &Scene, state: &mut State, joint: &SubstepMotion) {
+        let SubstepMotion {
+            h,
+            chi0,
+            speed_mean,
+            chi1,
+            speed1,
+            ..
+        } = *joint;
         self.exp_harmonics(&chi0, scene.layout.k_max);
         if let Some(stiffening) = &scene.stiffening {
             let (lagrange_q, lagrange_v) = match state.coordinates {
@@ -469,10 +465,12 @@ impl Stepper {
                 stiffening,
                 &mut self.stiffened,
                 &self.consts,
-                &self.exp_harm,
-                h,
-                speed_mean,
-                speed1,
+                block_exponential::JointSubstep {
+                    h,
+                    harmonics_start: &self.exp_harm,
+                    speed_mean,
+                    speed_end: speed1,
+                },
                 &self.loads,
                 lagrange_q,
                 lagrange_v,
@@ -586,53 +584,54 @@ impl Stepper {
         lagrange_to_ale(&scene.layout, &self.exp_harm, speed1, ale_q, ale_v);
     }
 
-    /// The implicit midpoint rule over h in `inner` equal steps, the loads
-    /// held, each step's joint angle and speed at its midpoint (χ quadratic in
-    /// time under constant α).
-    #[allow(clippy::too_many_arguments)]
+    /// The implicit midpoint rule over the substep in `inner` equal steps,
+    /// the loads held, each step's joint angle and speed at its midpoint (χ
+    /// quadratic in time under constant α).
     fn implicit_midpoint(
         &mut self,
         scene: &Scene,
         state: &mut State,
-        h: f64,
         inner: usize,
-        chi0: JointAngle,
-        speed0: f64,
-        alpha: f64,
+        joint: &SubstepMotion,
     ) {
+        let SubstepMotion {
+            h,
+            chi0,
+            speed0,
+            alpha,
+            ..
+        } = *joint;
         let hi = h / inner as f64;
+        let equations = ModalEquations {
+            scene,
+            consts: &self.consts,
+            coords: state.coordinates,
+        };
         for j in 0..inner {
             let t_mid = (j as f64 + 0.5) * hi;
             let mut chi_mid = chi0;
             chi_mid.advance(speed0 * t_mid + 0.5 * alpha * t_mid * t_mid);
             harmonics(&chi_mid, scene.layout.k_max, &mut self.harm_end);
-            let speed_mid = speed0 + alpha * t_mid;
-            let (f_ale, f_plate) = (&self.loads.ale_frame, &self.loads.plate_frame);
-            if let Some(s) = &scene.stiffening {
+            let mid = ReferenceMotion {
+                harmonics: &self.harm_end,
+                speed: speed0 + alpha * t_mid,
+                accel: alpha,
+            };
+            if scene.stiffening.is_some() {
                 self.stiffened_midpoint.advance(
-                    s,
-                    &self.consts,
-                    state.coordinates,
+                    equations,
                     hi,
-                    &self.harm_end,
-                    speed_mid,
-                    alpha,
-                    f_ale,
-                    f_plate,
+                    mid,
+                    &self.loads,
                     &mut state.q,
                     &mut state.q_dot,
                 );
             } else {
                 implicit_midpoint::advance(
-                    scene,
-                    &self.consts,
-                    state.coordinates,
+                    equations,
                     hi,
-                    &self.harm_end,
-                    speed_mid,
-                    alpha,
-                    f_ale,
-                    f_plate,
+                    mid,
+                    &self.loads,
                     &mut state.q,
                     &mut state.q_dot,
                 );
@@ -640,18 +639,23 @@ impl Stepper {
         }
     }
 
-    #[allow(clippy::too_many_arguments)]
+    /// RK4 over the substep, sub-stepped below its step limit, the load
+    /// models and node loads evaluated at every stage.
     fn rk4(
         &mut self,
         scene: &Scene,
         settings: &StepperSettings,
         state: &mut State,
         inputs: &Inputs,
-        h: f64,
-        chi0: JointAngle,
-        speed0: f64,
-        alpha: f64,
+        joint: &SubstepMotion,
     ) -> Result<(), StepError> {
+        let SubstepMotion {
+            h,
+            chi0,
+            speed0,
+            alpha,
+            ..
+        } = *joint;
         let inner = self.checked_inner_substeps(scene, settings, h, speed0, alpha)?;
         self.last_inner_substeps = self.last_inner_substeps.max(inner);
         let n = scene.n_modes();
@@ -709,6 +713,36 @@ impl Stepper {
                 .scatter_continuous(&y[2 * n..], &mut state.load_models);
         }
         Ok(())
+    }
+}
+
+/// The joint over one substep of h: from angle χ0 and speed Ω0 under the
+/// drive's constant acceleration α, to χ1 and Ω1 at its end (Ω̄ the mean speed).
+#[derive(Debug, Clone, Copy)]
+struct SubstepMotion {
+    h: f64,
+    chi0: JointAngle,
+    speed0: f64,
+    alpha: f64,
+    speed_mean: f64,
+    chi1: JointAngle,
+    speed1: f64,
+}
+
+impl SubstepMotion {
+    fn new(h: f64, chi0: JointAngle, speed0: f64, alpha: f64) -> SubstepMotion {
+        let speed_mean = speed0 + 0.5 * alpha * h;
+        let mut chi1 = chi0;
+        chi1.advance(speed_mean * h);
+        SubstepMotion {
+            h,
+            chi0,
+            speed0,
+            alpha,
+            speed_mean,
+            chi1,
+            speed1: speed0 + alpha * h,
+        }
     }
 }
 

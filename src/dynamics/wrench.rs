@@ -7,7 +7,9 @@ pub use super::node_frame::NodeKind;
 /// Force (N) and moment (N·m) acting at a node frame, in that frame's axes.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct Wrench {
+    /// Force, N.
     pub force: [f64; 3],
+    /// Moment, N·m.
     pub moment: [f64; 3],
 }
 

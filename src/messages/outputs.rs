@@ -127,7 +127,7 @@ pub fn x_rotation(angle: f64) -> Quaternion {
 #[derive(Debug)]
 pub struct OutputMessages {
     pub joint_state: Shared<JointState>,
-    /// transforms[0]: base → rotor; then base → ale_j; then rotor → lagrange_j.
+    /// `transforms[0]`: base → rotor; then base → ale_j; then rotor → lagrange_j.
     pub tf: Shared<TFMessage>,
     pub modal: Shared<ModalAmplitudes>,
     /// Per load model with a topic (registry order): its index and message.

@@ -16,6 +16,8 @@ use super::modes::{radial_moment, AngularShape, Mode, RadialShape};
 use crate::config::PlateConfig;
 use std::f64::consts::PI;
 
+/// The flexible body's data in the floating frame: rigid mass and inertia,
+/// the modes' first moments and their modal mass, stiffness and damping.
 #[derive(Debug, Clone, PartialEq)]
 pub struct BodyData {
     /// m, kg.
@@ -33,6 +35,7 @@ pub struct BodyData {
 }
 
 impl BodyData {
+    /// The body data of `plate` with its modes and their radial shapes.
     pub fn new(plate: &PlateConfig, modes: &[Mode], shapes: &[RadialShape]) -> BodyData {
         let (ri, ra, h) = (plate.inner_radius, plate.outer_radius, plate.thickness);
         let rho_h = plate.density * h;

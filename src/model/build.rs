@@ -3,7 +3,7 @@
 //! frequency, and the body data of eq. (11).
 
 use super::body::BodyData;
-use super::eigen::{lowest_modes, EigenFailure, EigenPairs};
+use super::eigen::{lowest_modes, EigenPairs};
 use super::modes::{is_rigid_body, radial_moment, AngularShape, Mode, RadialShape};
 use super::radial::{angular_norm, RadialDiscretisation};
 use super::resolution::{self, KResolution, Resolved};
@@ -194,14 +194,7 @@ fn fixed(
     count: usize,
 ) -> Result<EigenPairs, ModelError> {
     let (kk, mm) = disc.assemble(k);
-    lowest_modes(&kk, &mm, sigma, count).map_err(|e| match e {
-        EigenFailure::MassNotPositiveDefinite(reason) => {
-            ModelError::MassNotPositiveDefinite { k, reason }
-        }
-        EigenFailure::ShiftedNotPositiveDefinite(reason) | EigenFailure::Decomposition(reason) => {
-            ModelError::Eigenproblem { k, reason }
-        }
-    })
+    lowest_modes(&kk, &mm, sigma, count).map_err(|e| e.for_k(k))
 }
 
 /// The shift σ of the eigenproblem (ω² scale): a stiffness scale between

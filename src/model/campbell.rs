@@ -19,18 +19,26 @@ use std::f64::consts::TAU;
 /// backward wave then travels forward in space).
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct CampbellMode {
+    /// Nodal diameters.
     pub k: u32,
+    /// Nodal circles.
     pub l: u32,
+    /// The frequency in the rotating frame at each speed, Hz.
     pub rotating_hz: Vec<f64>,
+    /// The forward wave's frequency seen from space at each speed, Hz.
     pub forward_hz: Vec<f64>,
+    /// The backward wave's frequency seen from space at each speed, Hz.
     pub backward_hz: Vec<f64>,
 }
 
 /// The critical speed of one ⟨k, l⟩ (k ≥ 1).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct CriticalSpeed {
+    /// Nodal diameters.
     pub k: u32,
+    /// Nodal circles.
     pub l: u32,
+    /// The speed, rad/s.
     pub rad_s: f64,
 }
 
@@ -38,8 +46,11 @@ pub struct CriticalSpeed {
 /// `critical_speeds` one per ⟨k ≥ 1, l⟩ that has one.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct CampbellDiagram {
+    /// The speeds of the diagram, rad/s.
     pub speeds_rad_s: Vec<f64>,
+    /// The modes' frequencies over the speeds.
     pub modes: Vec<CampbellMode>,
+    /// The critical speeds.
     pub critical_speeds: Vec<CriticalSpeed>,
 }
 

@@ -7,7 +7,10 @@
 //! C = L⁻¹ M̄ L⁻ᵀ has eigenvalues μ = 1/(ω² + σ); the largest μ, i.e. the
 //! lowest ω², are the ones a symmetric eigensolver returns most accurately.
 
+use super::ModelError;
+use faer::linalg::solvers::{EvdError, LltError};
 use faer::{Mat, Side};
+use thiserror::Error;
 
 /// Lowest eigenpairs of (K, M): ω² ascending, with M-orthonormal vectors as columns.
 pub struct EigenPairs {
@@ -15,12 +18,63 @@ pub struct EigenPairs {
     pub vectors: Mat<f64>,
 }
 
+/// The envelope Cholesky factor of the Lanczos solver (`lanczos.rs`) met a
+/// pivot that is not positive and finite.
+#[derive(Debug, Clone, Copy, PartialEq, Error)]
+#[error("pivot {pivot:e} at row {row} of {n}")]
+pub struct PivotError {
+    /// The pivot's value before its square root.
+    pub pivot: f64,
+    /// Its row (of the reversed order).
+    pub row: usize,
+    /// The matrix order.
+    pub n: usize,
+}
+
+/// Why a Cholesky factor failed: faer's dense one, or the envelope factor
+/// of the Lanczos solver.
+#[derive(Debug, Clone, Copy, Error)]
+pub enum CholeskyError {
+    /// faer's dense LLᵀ.
+    #[error("{0:?}")]
+    Dense(LltError),
+    /// The Lanczos solver's envelope factor.
+    #[error(transparent)]
+    Envelope(#[from] PivotError),
+}
+
 /// Why the eigenproblem failed.
-#[derive(Debug, Clone)]
+#[derive(Debug, Clone, Copy, Error)]
 pub enum EigenFailure {
-    MassNotPositiveDefinite(String),
-    ShiftedNotPositiveDefinite(String),
-    Decomposition(String),
+    /// M̄ has no Cholesky factor (the basis is degenerate).
+    #[error("the mass matrix is not positive definite: {0}")]
+    MassNotPositiveDefinite(CholeskyError),
+    /// K̄ + σM̄ has no Cholesky factor.
+    #[error("the shifted matrix is not positive definite: {0}")]
+    ShiftedNotPositiveDefinite(CholeskyError),
+    /// The symmetric eigensolver did not converge.
+    #[error("the eigendecomposition failed: {0:?}")]
+    Decomposition(EvdError),
+}
+
+impl EigenFailure {
+    /// The model error of this failure for nodal diameter `k`.
+    pub fn for_k(self, k: u32) -> ModelError {
+        match self {
+            EigenFailure::MassNotPositiveDefinite(e) => ModelError::MassNotPositiveDefinite {
+                k,
+                reason: e.to_string(),
+            },
+            EigenFailure::ShiftedNotPositiveDefinite(e) => ModelError::Eigenproblem {
+                k,
+                reason: e.to_string(),
+            },
+            EigenFailure::Decomposition(e) => ModelError::Eigenproblem {
+                k,
+                reason: format!("{e:?}"),
+            },
+        }
+    }
 }
 
 /// The `count` lowest eigenpairs of K v = ω² M v with shift `sigma` > 0.
@@ -33,11 +87,11 @@ pub fn lowest_modes(
     let n = k.nrows();
     let count = count.min(n);
     m.llt(Side::Lower)
-        .map_err(|e| EigenFailure::MassNotPositiveDefinite(format!("{e:?}")))?;
+        .map_err(|e| EigenFailure::MassNotPositiveDefinite(CholeskyError::Dense(e)))?;
     let a = Mat::<f64>::from_fn(n, n, |i, j| k[(i, j)] + sigma * m[(i, j)]);
     let llt = a
         .llt(Side::Lower)
-        .map_err(|e| EigenFailure::ShiftedNotPositiveDefinite(format!("{e:?}")))?;
+        .map_err(|e| EigenFailure::ShiftedNotPositiveDefinite(CholeskyError::Dense(e)))?;
     let l = llt.L();
     // C = L⁻¹ M L⁻ᵀ: X = L⁻¹ M, then C = (L⁻¹ Xᵀ)ᵀ = L⁻¹ M L⁻ᵀ (M symmetric).
     let mut x = m.to_owned();
@@ -47,7 +101,7 @@ pub fn lowest_modes(
     let c = Mat::<f64>::from_fn(n, n, |i, j| 0.5 * (xt[(i, j)] + xt[(j, i)]));
     let evd = c
         .self_adjoint_eigen(Side::Lower)
-        .map_err(|e| EigenFailure::Decomposition(format!("{e:?}")))?;
+        .map_err(EigenFailure::Decomposition)?;
     let s = evd.S();
     let u = evd.U();
     // Ascending μ from faer: the largest μ (lowest ω²) are last.

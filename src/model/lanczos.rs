@@ -15,7 +15,7 @@
 //! free–free ring's two rigid-like functions (slots 0 and 1, coupled to every
 //! B-spline) become the last two rows, so L keeps the envelope of A.
 
-use super::eigen::{EigenFailure, EigenPairs};
+use super::eigen::{CholeskyError, EigenFailure, EigenPairs, PivotError};
 use faer::{Mat, Side};
 
 /// Ritz pairs are accepted when ‖C u − θ u‖ ≤ this × θ.
@@ -91,7 +91,7 @@ impl Envelope {
     }
 
     /// Cholesky factor A = L Lᵀ in place (L keeps the envelope of A).
-    fn factor(mut self) -> Result<Envelope, String> {
+    fn factor(mut self) -> Result<Envelope, PivotError> {
         for i in 0..self.n() {
             let fi = self.first[i];
             for j in fi..=i {
@@ -106,7 +106,11 @@ impl Envelope {
                 } else if s > 0.0 && s.is_finite() {
                     self.values[idx] = s.sqrt();
                 } else {
-                    return Err(format!("pivot {s:e} at row {i} of {}", self.n()));
+                    return Err(PivotError {
+                        pivot: s,
+                        row: i,
+                        n: self.n(),
+                    });
                 }
             }
         }
@@ -155,10 +159,10 @@ pub fn lowest_modes_lanczos(
     let count = count.min(n);
     let (shifted, mass) = Envelope::reversed_pair(k, m, sigma);
     mass.clone_factor()
-        .map_err(EigenFailure::MassNotPositiveDefinite)?;
+        .map_err(|e| EigenFailure::MassNotPositiveDefinite(CholeskyError::Envelope(e)))?;
     let l = shifted
         .factor()
-        .map_err(EigenFailure::ShiftedNotPositiveDefinite)?;
+        .map_err(|e| EigenFailure::ShiftedNotPositiveDefinite(CholeskyError::Envelope(e)))?;
     let apply = |q: &[f64], out: &mut [f64], tmp: &mut [f64]| {
         tmp.copy_from_slice(q);
         l.solve_upper(tmp);
@@ -209,7 +213,13 @@ pub fn lowest_modes_lanczos(
         }
         let steps = j + 1;
         if steps >= next_check || steps == n || b <= 1e-13 * a.abs() {
-            if let Some(pairs) = ritz_pairs(&alpha, &beta, b, &basis, count, &l, &mass, sigma)? {
+            let recurrence = Recurrence {
+                alpha: &alpha,
+                beta: &beta,
+                b_last: b,
+                basis: &basis,
+            };
+            if let Some(pairs) = ritz_pairs(recurrence, count, &l, &mass, sigma)? {
                 return Ok(Some(pairs));
             }
             if steps == n || b <= 1e-13 * a.abs() {
@@ -224,7 +234,7 @@ pub fn lowest_modes_lanczos(
 
 impl Envelope {
     /// Factor a copy (only to check positive definiteness).
-    fn clone_factor(&self) -> Result<Envelope, String> {
+    fn clone_factor(&self) -> Result<Envelope, PivotError> {
         Envelope {
             first: self.first.clone(),
             start: self.start.clone(),
@@ -234,20 +244,32 @@ impl Envelope {
     }
 }
 
+/// The Lanczos recurrence after m steps: the tridiagonal T's diagonal α and
+/// off-diagonal β, the norm of the next residual and the m basis vectors.
+struct Recurrence<'a> {
+    alpha: &'a [f64],
+    beta: &'a [f64],
+    b_last: f64,
+    basis: &'a [Vec<f64>],
+}
+
 /// The `count` largest Ritz pairs of the tridiagonal (α, β) if all have
 /// converged (residual `b_last |s_last|` ≤ [`RESIDUAL_TOLERANCE`] θ), mapped
-/// back to ω² and M-normalised eigenvectors of the original order.
-#[allow(clippy::too_many_arguments)]
+/// back to ω² and M-normalised eigenvectors of the original order (`l` the
+/// factor of K + σM, `mass` M).
 fn ritz_pairs(
-    alpha: &[f64],
-    beta: &[f64],
-    b_last: f64,
-    basis: &[Vec<f64>],
+    recurrence: Recurrence<'_>,
     count: usize,
     l: &Envelope,
     mass: &Envelope,
     sigma: f64,
 ) -> Result<Option<EigenPairs>, EigenFailure> {
+    let Recurrence {
+        alpha,
+        beta,
+        b_last,
+        basis,
+    } = recurrence;
     let m = alpha.len();
     if m < count {
         return Ok(None);
@@ -265,7 +287,7 @@ fn ritz_pairs(
     });
     let evd = t
         .self_adjoint_eigen(Side::Lower)
-        .map_err(|e| EigenFailure::Decomposition(format!("{e:?}")))?;
+        .map_err(EigenFailure::Decomposition)?;
     let (s, u) = (evd.S(), evd.U());
     let wanted: Vec<usize> = (0..count).map(|c| m - 1 - c).collect();
     if wanted

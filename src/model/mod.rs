@@ -1,29 +1,29 @@
 //! The annular Kirchhoff plate as a modal flexible body (paper sections 2.1, 2.2, 3.1, 4).
 //!
 //! [`PlateModel::new`] discretises the radial ODE (4) with cubic B-splines
-//! ([`bspline`]), assembles mass and stiffness per nodal-diameter number k
-//! ([`radial`]), solves the symmetric-definite eigenproblem (14) ([`eigen`]),
-//! keeps exactly the requested ⟨k, l⟩ modes ([`modes`]), evaluates mode shapes
-//! and the displacement field (13) ([`shape`]) and integrates the body data of
-//! eq. (11) ([`body`]). Immutable once built; no ROS, no time stepping.
+//! (`bspline`), assembles mass and stiffness per nodal-diameter number k
+//! (`radial`), solves the symmetric-definite eigenproblem (14) (`eigen`),
+//! keeps exactly the requested ⟨k, l⟩ modes (`modes`), evaluates mode shapes
+//! and the displacement field (13) (`shape`) and integrates the body data of
+//! eq. (11) (`body`). Immutable once built; no ROS, no time stepping.
 
-pub mod body;
-pub mod bspline;
+pub(crate) mod body;
+pub(crate) mod bspline;
 mod build;
 pub mod campbell;
-pub mod eigen;
+pub(crate) mod eigen;
 mod error;
-pub mod fft;
-pub mod lanczos;
-pub mod modes;
+pub(crate) mod fft;
+pub(crate) mod lanczos;
+pub(crate) mod modes;
 pub mod nodal_lines;
 pub mod prestress;
-pub mod quadrature;
-pub mod radial;
-pub mod residual;
-pub mod resolution;
-pub mod shape;
-pub mod spinning;
+pub(crate) mod quadrature;
+pub(crate) mod radial;
+pub(crate) mod residual;
+pub(crate) mod resolution;
+pub(crate) mod shape;
+pub(crate) mod spinning;
 
 pub use body::BodyData;
 pub use error::ModelError;
@@ -57,6 +57,7 @@ impl PlateModel {
         build::build(plate)
     }
 
+    /// The plate the model is of.
     pub fn plate(&self) -> &PlateConfig {
         &self.plate
     }
@@ -76,6 +77,7 @@ impl PlateModel {
         &self.modes
     }
 
+    /// The number of elastic modes.
     pub fn n_modes(&self) -> usize {
         self.modes.len()
     }

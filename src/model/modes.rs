@@ -29,6 +29,7 @@ pub enum AngularShape {
 }
 
 impl AngularShape {
+    /// `cos` or `sin`.
     pub fn name(self) -> &'static str {
         match self {
             AngularShape::Axisymmetric => "axisymmetric",
@@ -62,15 +63,17 @@ pub struct Mode {
     pub k: u32,
     /// Nodal circles.
     pub l: u32,
+    /// cos kφ or sin kφ.
     pub shape: AngularShape,
     /// Circular eigenfrequency ω, rad/s.
     pub omega: f64,
+    /// ω/2π, Hz.
     pub frequency_hz: f64,
     /// Generalized mass m_i = ρh ∫ w_i² dA, kg (for the unit-peak shape).
     pub modal_mass: f64,
     /// Modal damping ratio ζ_i.
     pub damping: f64,
-    /// Index into [`PlateModel::radial_shapes`].
+    /// Index into `PlateModel::radial_shapes`.
     #[serde(skip)]
     pub radial: usize,
     /// Index of the partner of a cos/sin pair (None for k = 0).
@@ -81,8 +84,11 @@ pub struct Mode {
 /// A radial function R_l(r) = Σ c_j N_j(r) for one ⟨k, l⟩.
 #[derive(Debug, Clone, PartialEq)]
 pub struct RadialShape {
+    /// Nodal diameters.
     pub k: u32,
+    /// Nodal circles.
     pub l: u32,
+    /// Circular eigenfrequency ω, rad/s.
     pub omega: f64,
     pub(super) basis: BSplineBasis,
     pub(super) coefficients: Vec<f64>,
@@ -95,12 +101,15 @@ impl RadialShape {
         self.basis
             .eval_combination(&self.coefficients, r.clamp(a, b))
     }
+    /// R(r) (clamped to [r_i, r_a]).
     pub fn value(&self, r: f64) -> f64 {
         self.eval(r)[0]
     }
+    /// The coefficients c_j of the B-splines N_j.
     pub fn coefficients(&self) -> &[f64] {
         &self.coefficients
     }
+    /// The B-spline basis N_j.
     pub fn basis(&self) -> &BSplineBasis {
         &self.basis
     }

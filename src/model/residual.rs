@@ -50,9 +50,10 @@ const BANDS: [u32; 5] = [8, 32, 128, 512, HARMONICS];
 /// multiple of [`HARMONICS`] at Δφ ≠ 0 (its remainder is below A/(2 (8K)²)).
 const TAIL_MULTIPLE: u32 = 8;
 
-/// The static harmonics g_k(r_a, r_b), k = 0..=[`HARMONICS`], for all pairs of a set of radii.
+/// The static harmonics g_k(r_a, r_b), k = 0..=`HARMONICS`, for all pairs of a set of radii.
 #[derive(Debug, Clone)]
 pub struct StaticHarmonics {
+    /// The radii, m.
     pub radii: Vec<f64>,
     /// g[k][a · n + b], m/N.
     g: Vec<Vec<f64>>,
@@ -70,7 +71,7 @@ impl StaticHarmonics {
 /// The residual compliance between two points as a cosine series in Δφ.
 #[derive(Debug, Clone, PartialEq)]
 pub struct ResidualKernel {
-    /// r_k, k = 0..=[`HARMONICS`], m/N.
+    /// r_k, k = 0..=`HARMONICS`, m/N.
     pub coefficients: Vec<f64>,
     /// (A, B) of the tail A k⁻³ + B k⁻⁴ beyond the direct sum (equal radii only).
     pub tail_fit: Option<(f64, f64)>,
@@ -421,8 +422,8 @@ impl BandedStiffness {
                 row[1] = s / lj[0];
             }
             let mut diag = a(i, 0);
-            for d in 1..4.min(i + 1) {
-                diag -= row[d] * row[d];
+            for r in &row[1..4.min(i + 1)] {
+                diag -= r * r;
             }
             // Positive and finite (NaN fails both comparisons).
             if !(diag > 0.0 && diag < f64::INFINITY) {
@@ -591,8 +592,8 @@ mod tests {
                 l[i][d] = s / l[j][0];
             }
             let mut diag = a(i, 0);
-            for d in 1..4.min(i + 1) {
-                diag -= l[i][d] * l[i][d];
+            for r in &l[i][1..4.min(i + 1)] {
+                diag -= r * r;
             }
             if diag <= 0.0 || !diag.is_finite() {
                 return None;

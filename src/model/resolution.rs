@@ -40,6 +40,7 @@ pub const DENSE_LIMIT: usize = 48;
 /// The radial resolution used for one k.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct KResolution {
+    /// Nodal diameters.
     pub k: u32,
     /// Uniform cubic B-splines (`plate.radial_splines` semantics: before the
     /// edge conditions, without the graded knots of a small pinned hole).
@@ -105,14 +106,7 @@ pub fn solve(
     count: usize,
 ) -> Result<EigenPairs, ModelError> {
     let (kk, mm) = disc.assemble(k);
-    let pairs = lowest_pairs(&kk, &mm, sigma, count).map_err(|e| match e {
-        EigenFailure::MassNotPositiveDefinite(reason) => {
-            ModelError::MassNotPositiveDefinite { k, reason }
-        }
-        EigenFailure::ShiftedNotPositiveDefinite(reason) | EigenFailure::Decomposition(reason) => {
-            ModelError::Eigenproblem { k, reason }
-        }
-    })?;
+    let pairs = lowest_pairs(&kk, &mm, sigma, count).map_err(|e| e.for_k(k))?;
     Ok(pairs)
 }
 

@@ -5,6 +5,7 @@ use super::PlateModel;
 /// Transverse deflection w and its partial derivatives at a point.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct ShapeValue {
+    /// w, m.
     pub w: f64,
     /// ∂w/∂r.
     pub w_r: f64,

@@ -139,6 +139,7 @@ fn spectrum_splines(plate: &PlateConfig, rigidity: f64, k: u32, count: usize) ->
 /// K̄_g projected on the retained modes, per k (per unit Ω²).
 #[derive(Debug, Clone, PartialEq)]
 pub struct ModalGeometricStiffness {
+    /// The in-plane prestress of spinning, per unit Ω².
     pub prestress: LamePrestress,
     /// One block per retained k, ascending.
     pub blocks: Vec<GeometricBlock>,

@@ -47,7 +47,7 @@ pub enum NodeError {
     SimulationThread,
     /// The loop stopped for a reason other than a signal.
     #[error("{0}")]
-    Stopped(String),
+    Stopped(StopReason),
 }
 
 impl NodeError {
@@ -56,6 +56,25 @@ impl NodeError {
         NodeError::Dds {
             what: what.into(),
             detail: format!("{detail:?}"),
+        }
+    }
+}
+
+/// Why the node stops: a signal asked for it (a clean exit), or the
+/// simulation loop ended on its own (an error exit).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum StopReason {
+    /// SIGINT or SIGTERM.
+    Signal(&'static str),
+    /// The simulation loop ended without being asked to.
+    LoopEnded,
+}
+
+impl std::fmt::Display for StopReason {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            StopReason::Signal(name) => f.write_str(name),
+            StopReason::LoopEnded => f.write_str("the simulation loop ended"),
         }
     }
 }

@@ -6,17 +6,17 @@
 //! services and parameters.
 //!
 //! One concern per file:
-//! - [`args`]: `--ros-args` parsing, name resolution and remapping;
-//! - [`settings`]: the `ros.*` parameters;
-//! - [`messages`]: wire types (standard ROS ones and this package's `msg/`, `srv/`);
-//! - [`topics`], [`qos`]: names and QoS of every endpoint;
+//! - `args`: `--ros-args` parsing, name resolution and remapping;
+//! - `settings`: the `ros.*` parameters;
+//! - `messages`: wire types (standard ROS ones and this package's `msg/`, `srv/`);
+//! - `topics`, `qos`: names and QoS of every endpoint;
 //! - [`inputs`]: checking and counting incoming messages (no ROS types);
 //! - [`input_polling`]: the input subscriptions, read by the loop at step boundaries;
-//! - [`outputs`]: the per-step messages, preallocated;
-//! - [`clock`]: stamps, `/clock`, pacing; [`clock_input`]: following an external `/clock` (`use_sim_time`);
+//! - `outputs`: the per-step messages, preallocated;
+//! - `clock`: stamps, `/clock`, pacing; `clock_input`: following an external `/clock` (`use_sim_time`);
 //! - [`services`], [`params_service`]: reset/pause/step and the parameter services;
 //!   [`sim_services`]: the same through the standard `simulation_interfaces` services;
-//! - [`diagnostics`]: the `/diagnostics` statuses (shared with `simulate --bag`);
+//! - `diagnostics`: the `/diagnostics` statuses (shared with `simulate --bag`);
 //! - [`sim_loop`]: the fixed-rate simulation thread;
 //! - [`step_aligned_receive`]: input datagrams read at step boundaries while they are many;
 //! - [`marker_thread`]: `~/plate_marker`, built and published off the loop;

@@ -2,7 +2,7 @@
 //! entities, spawns the input and service tasks and the simulation thread,
 //! and shuts everything down in order on SIGINT or SIGTERM.
 
-use super::error::NodeError;
+use super::error::{NodeError, StopReason};
 use super::input_polling::{polled, InputContext, PolledInput};
 use super::inputs::{InputStats, InputValidator, Source};
 use super::logging::{parse_level, Logger};
@@ -565,7 +565,7 @@ fn startup_line(setup: &NodeSetup, sim: &Simulation, domain: u16) -> String {
 /// Wait for SIGINT, SIGTERM or the loop's end; say which.
 async fn wait_for_stop(
     done_rx: tokio::sync::oneshot::Receiver<()>,
-) -> Result<&'static str, NodeError> {
+) -> Result<StopReason, NodeError> {
     use tokio::signal::unix::{signal, SignalKind};
     let mut sigint = signal(SignalKind::interrupt()).map_err(|error| NodeError::System {
         what: "cannot handle SIGINT",
@@ -576,9 +576,9 @@ async fn wait_for_stop(
         error,
     })?;
     Ok(tokio::select! {
-        _ = sigint.recv() => "SIGINT",
-        _ = sigterm.recv() => "SIGTERM",
-        _ = done_rx => "the simulation loop ended",
+        _ = sigint.recv() => StopReason::Signal("SIGINT"),
+        _ = sigterm.recv() => StopReason::Signal("SIGTERM"),
+        _ = done_rx => StopReason::LoopEnded,
     })
 }
 
@@ -775,10 +775,11 @@ async fn serve(
         Err(NodeError::SimulationThread)
     } else if let Some(e) = record_failed {
         Err(NodeError::Record(e))
-    } else if !why.starts_with("SIG") {
-        Err(NodeError::Stopped(why.to_string()))
     } else {
-        Ok(())
+        match why {
+            StopReason::Signal(_) => Ok(()),
+            StopReason::LoopEnded => Err(NodeError::Stopped(why)),
+        }
     };
     drop(tf_static);
     drop(critical_pub);

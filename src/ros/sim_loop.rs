@@ -2,7 +2,7 @@
 //! checked inputs and service commands in arrival order between steps,
 //! steps, and publishes. A dedicated thread (not a tokio timer, whose
 //! resolution is 1 ms) keeps the step period. Waiting for a step at most
-//! [`SLEEP_THROUGH_INPUTS`] away it sleeps, and the inputs that arrive
+//! `SLEEP_THROUGH_INPUTS` away it sleeps, and the inputs that arrive
 //! meanwhile wait in the queue for the step boundary: one wakeup per step
 //! however many samples arrive; a longer wait (a slow rate, paused) is a
 //! `recv_timeout`, so an input or a service call wakes it at once.

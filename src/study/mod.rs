@@ -3,7 +3,7 @@
 //! Three axes, each an error measured against an independent, finer reference
 //! and a cost measured on this machine:
 //!
-//! 1. [`frequency`]: natural-frequency error vs `plate.radial_splines`, cost =
+//! 1. `frequency`: natural-frequency error vs `plate.radial_splines`, cost =
 //!    model build time;
 //! 2. [`response`]: steady deflection at the load point vs the mode set
 //!    (k ≤ k_max, l ≤ l_max), cost = wall time per step;
@@ -20,9 +20,9 @@
 //! (`default_setting`). The errors are deterministic (bit-identical run to run); only the
 //! timings vary. Pure library code: no ROS, no output formatting.
 
-pub mod frequency;
+pub(crate) mod frequency;
 pub mod response;
-pub mod timing;
+pub(crate) mod timing;
 pub mod trajectory;
 
 use crate::config::{Config, IntegratorKind, NodePosition, WrenchConfig};

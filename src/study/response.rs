@@ -123,7 +123,7 @@ pub fn load_case(config: &Config) -> (Config, LoadCase) {
 }
 
 /// Per ⟨k, l⟩ contribution of a model to the steady response at the load point.
-/// Indexed [k][l]; modes the model lacks (rigid-body) contribute 0.
+/// Indexed `[k][l]`; modes the model lacks (rigid-body) contribute 0.
 pub fn contributions(
     model: &PlateModel,
     case: &LoadCase,

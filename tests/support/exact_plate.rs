@@ -119,10 +119,11 @@ fn det<const N: usize>(mut a: [[f64; N]; N]) -> f64 {
             d = -d;
         }
         d *= a[c][c];
-        for r in c + 1..N {
-            let f = a[r][c] / a[c][c];
-            for cc in c..N {
-                a[r][cc] -= f * a[c][cc];
+        let pivot = a[c];
+        for row in a.iter_mut().skip(c + 1) {
+            let f = row[c] / pivot[c];
+            for (x, p) in row.iter_mut().zip(&pivot).skip(c) {
+                *x -= f * p;
             }
         }
     }
@@ -139,13 +140,13 @@ fn equilibrate<const N: usize>(a: &mut [[f64; N]; N]) -> [f64; N] {
         }
     }
     let mut cols = [1.0; N];
-    for c in 0..N {
-        let m = (0..N).fold(0.0_f64, |m, r| m.max(a[r][c].abs()));
+    for (c, col) in cols.iter_mut().enumerate() {
+        let m = a.iter().fold(0.0_f64, |m, row| m.max(row[c].abs()));
         if m > 0.0 {
             for row in a.iter_mut() {
                 row[c] /= m;
             }
-            cols[c] = m;
+            *col = m;
         }
     }
     cols
@@ -157,10 +158,10 @@ fn null_vector<const N: usize>(mut a: [[f64; N]; N]) -> [f64; N] {
     for c in 0..N - 1 {
         // complete pivot in the trailing block
         let (mut pr, mut pc, mut best) = (c, c, -1.0);
-        for r in c..N {
-            for cc in c..N {
-                if a[r][cc].abs() > best {
-                    best = a[r][cc].abs();
+        for (r, row) in a.iter().enumerate().skip(c) {
+            for (cc, v) in row.iter().enumerate().skip(c) {
+                if v.abs() > best {
+                    best = v.abs();
                     pr = r;
                     pc = cc;
                 }
@@ -171,10 +172,11 @@ fn null_vector<const N: usize>(mut a: [[f64; N]; N]) -> [f64; N] {
             row.swap(pc, c);
         }
         colperm.swap(pc, c);
-        for r in c + 1..N {
-            let f = a[r][c] / a[c][c];
-            for cc in c..N {
-                a[r][cc] -= f * a[c][cc];
+        let pivot = a[c];
+        for row in a.iter_mut().skip(c + 1) {
+            let f = row[c] / pivot[c];
+            for (x, p) in row.iter_mut().zip(&pivot).skip(c) {
+                *x -= f * p;
             }
         }
     }
@@ -512,19 +514,17 @@ impl ExactRadialShape {
         for (e, &(r, edge)) in edges.iter().enumerate() {
             let d = basis_derivatives(self.k, self.lambda, r, a.inner_radius, a.outer_radius);
             let z = self.lambda * r;
-            for f in 0..4 {
+            for (&coeff, df) in self.coeffs.iter().zip(&d) {
                 for q in [
                     Quantity::Deflection,
                     Quantity::Slope,
                     Quantity::Moment,
                     Quantity::Shear,
                 ] {
-                    size = size.max(
-                        (self.coeffs[f] * quantity(q, &d[f], z, self.k, a.poisson_ratio)).abs(),
-                    );
+                    size = size.max((coeff * quantity(q, df, z, self.k, a.poisson_ratio)).abs());
                 }
-                for dd in d[f] {
-                    size = size.max((self.coeffs[f] * dd).abs());
+                for &dd in df {
+                    size = size.max((coeff * dd).abs());
                 }
             }
             for (i, q) in edge.rows().iter().enumerate() {

@@ -1,7 +1,9 @@
 //! Shared helpers for the integration tests (each test crate does `mod support;`).
 pub mod bessel;
 pub mod bounded_run;
+pub mod cli;
 pub mod exact_plate;
+pub mod fit;
 pub mod fourth_order;
 pub mod library_plate;
 pub mod scene_files;

@@ -58,17 +58,7 @@ pub fn simulated_growth(sim: &mut Simulation, peak: f64, steps: usize) -> Growth
         ts.push(sim.time());
         logs.push(sim.q_ale()[pair.cos].hypot(sim.q_ale()[pair.sin]).ln());
     }
-    let count = ts.len() as f64;
-    let (mt, ml) = (
-        ts.iter().sum::<f64>() / count,
-        logs.iter().sum::<f64>() / count,
-    );
-    let simulated = ts
-        .iter()
-        .zip(&logs)
-        .map(|(t, l)| (t - mt) * (l - ml))
-        .sum::<f64>()
-        / ts.iter().map(|t| (t - mt).powi(2)).sum::<f64>();
+    let simulated = super::fit::least_squares_slope(&ts, &logs);
     Growth {
         rate: mode.eigenvalue.re,
         omega: mode.eigenvalue.im,

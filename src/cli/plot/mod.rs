@@ -262,7 +262,7 @@ pub fn main(cmd: PlotCommand) -> CliResult<()> {
                     };
                     ModeChoice::KL { k, l, shape }
                 }
-                _ => return Err(CliError::Usage(format!("say which mode: --index N (as numbered by `annular_plate modes`) or --k K --l L"))),
+                _ => return Err(CliError::Usage("say which mode: --index N (as numbered by `annular_plate modes`) or --k K --l L".to_string())),
             };
             mode_picture(&config, which, title.as_deref(), &out, size)?;
         }

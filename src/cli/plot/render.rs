@@ -25,12 +25,10 @@ pub fn format_of(path: &Path) -> CliResult<Format> {
     {
         Some("png") => Ok(Format::Png),
         Some("svg") => Ok(Format::Svg),
-        _ => {
-            return Err(CliError::Usage(format!(
-                "output {}: the name must end in .png or .svg",
-                path.display()
-            )))
-        }
+        _ => Err(CliError::Usage(format!(
+            "output {}: the name must end in .png or .svg",
+            path.display()
+        ))),
     }
 }
 

@@ -159,26 +159,38 @@ impl BlockPropagator {
     }
 }
 
-/// Advance the Lagrangian amplitudes `q`, rates `v` of every mode over a
-/// substep h of mean speed Ω̄ ending at Ω₁, the loads held: plate-frame ones
-/// constant, ALE-frame ones turning at ν = kΩ̄ from (cos kχ₀, sin kχ₀) = `harm[k]`
-/// (as the scalar exponential step). `props` holds one propagator per family
-/// (cos, then sin, of each block); the sin family takes over the cos
-/// family's exponential when their modal constants are the same (per-mode
-/// damping ratios may differ).
-#[allow(clippy::too_many_arguments)]
+/// The joint over one substep as the exact step sees it: its length h, the
+/// harmonics (cos kχ₀, sin kχ₀) of the angle at its start, its mean speed Ω̄
+/// and its speed Ω₁ at the end (constant acceleration between).
+#[derive(Debug, Clone, Copy)]
+pub struct JointSubstep<'a> {
+    pub h: f64,
+    pub harmonics_start: &'a [(f64, f64)],
+    pub speed_mean: f64,
+    pub speed_end: f64,
+}
+
+/// Advance the Lagrangian amplitudes `q`, rates `v` of every mode over the
+/// substep, the loads held: plate-frame ones constant, ALE-frame ones turning
+/// at ν = kΩ̄ from (cos kχ₀, sin kχ₀) (as the scalar exponential step).
+/// `props` holds one propagator per family (cos, then sin, of each block);
+/// the sin family takes over the cos family's exponential when their modal
+/// constants are the same (per-mode damping ratios may differ).
 pub fn advance(
     stiffening: &Stiffening,
     props: &mut [BlockPropagator],
     consts: &[ModeConstants],
-    harm: &[(f64, f64)],
-    h: f64,
-    speed_mean: f64,
-    speed1: f64,
+    substep: JointSubstep<'_>,
     loads: &StepLoads,
     q: &mut [f64],
     v: &mut [f64],
 ) {
+    let JointSubstep {
+        h,
+        harmonics_start: harm,
+        speed_mean,
+        speed_end: speed1,
+    } = substep;
     // Mean of Ω(t)² over the substep: Ω̄² + (αh)²/12 with αh = 2(Ω₁ − Ω̄).
     let alpha_h = 2.0 * (speed1 - speed_mean);
     let speed_sq = speed_mean * speed_mean + alpha_h * alpha_h / 12.0;

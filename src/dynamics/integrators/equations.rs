@@ -9,7 +9,27 @@
 //! with f̄_tot = f̄ + R(kχ) f_B and J = [[0, −1], [1, 0]].
 
 use crate::config::Coordinates;
+use crate::dynamics::loads::StepLoads;
 use crate::dynamics::scene::{ModePair, Scene};
+
+/// The modal equations of motion of a scene: its modes, their constants and
+/// the description (Lagrangian or ALE) the amplitudes are in.
+#[derive(Debug, Clone, Copy)]
+pub struct ModalEquations<'a> {
+    pub scene: &'a Scene,
+    pub consts: &'a [ModeConstants],
+    pub coords: Coordinates,
+}
+
+/// The floating frame's reference motion at one instant: the harmonics
+/// (cos kχ, sin kχ) of the joint angle χ for every k, the joint speed Ω and
+/// its acceleration α = Ω̇.
+#[derive(Debug, Clone, Copy)]
+pub struct ReferenceMotion<'a> {
+    pub harmonics: &'a [(f64, f64)],
+    pub speed: f64,
+    pub accel: f64,
+}
 
 /// Per-mode constants.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -59,23 +79,28 @@ pub fn pair_force(
     }
 }
 
-/// Accelerations for amplitudes (q, v) in `coords`, joint speed Ω and
-/// acceleration α, harmonics (cos kχ, sin kχ) at the instant, and the loads
-/// split by frame. Writes q̈ into `acc`.
-#[allow(clippy::too_many_arguments)]
+/// Accelerations for amplitudes (q, v) in the equations' description, at the
+/// reference motion of the instant, under the loads split by frame. Writes q̈
+/// into `acc`.
 pub fn accelerations(
-    scene: &Scene,
-    consts: &[ModeConstants],
-    coords: Coordinates,
-    harm: &[(f64, f64)],
-    speed: f64,
-    accel: f64,
+    equations: ModalEquations<'_>,
+    motion: ReferenceMotion<'_>,
+    loads: &StepLoads,
     q: &[f64],
     v: &[f64],
-    ale_frame: &[f64],
-    plate_frame: &[f64],
     acc: &mut [f64],
 ) {
+    let ModalEquations {
+        scene,
+        consts,
+        coords,
+    } = equations;
+    let ReferenceMotion {
+        harmonics: harm,
+        speed,
+        accel,
+    } = motion;
+    let (ale_frame, plate_frame) = (&loads.ale_frame[..], &loads.plate_frame[..]);
     let lay = &scene.layout;
     for &i in &lay.axisymmetric {
         let c = consts[i];

@@ -100,19 +100,18 @@ fn forced(m: f64, a: f64, d2: f64, h: f64, nu: f64) -> [C; 2] {
 mod tests {
     use super::*;
 
-    /// Reference: RK4 with a tiny step on q̈ + 2ζωq̇ + ω_eff²q = (f + Re[g e^{iνt}])/m.
-    fn reference(
+    /// One mode: modal mass m, damping ratio ζ, frequency ω, softening ω_x² + ω_y².
+    struct Mode {
         m: f64,
         zeta: f64,
         w: f64,
         soft: f64,
-        h: f64,
-        nu: f64,
-        q0: f64,
-        v0: f64,
-        f: f64,
-        g: C,
-    ) -> (f64, f64) {
+    }
+
+    /// Reference: RK4 with a tiny step on q̈ + 2ζωq̇ + ω_eff²q = (f + Re[g e^{iνt}])/m
+    /// from (q0, v0) over h.
+    fn reference(mode: Mode, h: f64, nu: f64, (q0, v0): (f64, f64), f: f64, g: C) -> (f64, f64) {
+        let Mode { m, zeta, w, soft } = mode;
         let n = 200_000;
         let dt = h / n as f64;
         let w2 = w * w - soft;
@@ -151,7 +150,13 @@ mod tests {
         ] {
             let p = ModePropagator::new(2.0, zeta, w, soft, h, nu);
             let (q, v) = p.advance(1e-3, -0.02, 0.5, g);
-            let (qr, vr) = reference(2.0, zeta, w, soft, h, nu, 1e-3, -0.02, 0.5, g);
+            let mode = Mode {
+                m: 2.0,
+                zeta,
+                w,
+                soft,
+            };
+            let (qr, vr) = reference(mode, h, nu, (1e-3, -0.02), 0.5, g);
             let scale = qr.abs().max(1e-4);
             assert!(
                 (q - qr).abs() < 1e-9 * scale.max(1.0) + 1e-10,

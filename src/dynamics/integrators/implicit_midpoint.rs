@@ -3,27 +3,33 @@
 //! (Lagrangian, 2×2) or per pair (ALE, 4×4, coupled by the gyroscopic terms).
 //! Node loads that depend on the state (followers) are taken at the step start.
 
-use super::equations::{pair_force, ModeConstants};
+use super::equations::{pair_force, ModalEquations, ModeConstants, ReferenceMotion};
 use crate::config::Coordinates;
-use crate::dynamics::scene::Scene;
+use crate::dynamics::loads::StepLoads;
 use nalgebra::{Matrix4, Vector4};
 
-/// Advance (q, v) in place over h. `harm_mid` holds (cos kχ, sin kχ) at the
-/// midpoint, `speed_mid` Ω there, `accel` the joint's α.
-#[allow(clippy::too_many_arguments)]
+/// Advance (q, v) in place over h, the loads held. `mid` is the reference
+/// motion at the step's midpoint (its harmonics of χ and speed Ω there, the
+/// joint's α).
 pub fn advance(
-    scene: &Scene,
-    consts: &[ModeConstants],
-    coords: Coordinates,
+    equations: ModalEquations<'_>,
     h: f64,
-    harm_mid: &[(f64, f64)],
-    speed_mid: f64,
-    accel: f64,
-    ale_frame: &[f64],
-    plate_frame: &[f64],
+    mid: ReferenceMotion<'_>,
+    loads: &StepLoads,
     q: &mut [f64],
     v: &mut [f64],
 ) {
+    let ModalEquations {
+        scene,
+        consts,
+        coords,
+    } = equations;
+    let ReferenceMotion {
+        harmonics: harm_mid,
+        speed: speed_mid,
+        accel,
+    } = mid;
+    let (ale_frame, plate_frame) = (&loads.ale_frame[..], &loads.plate_frame[..]);
     let hh = 0.5 * h;
     let single = |c: ModeConstants, f: f64, q: &mut f64, v: &mut f64| {
         // A = [[0, 1], [−w², −c]]; solve (I − hh A) y1 = (I + hh A) y0 + h (0, f/m).

@@ -14,12 +14,12 @@
 /// Beyond this many inner substeps per substep a run is refused.
 pub const MAX_INNER_SUBSTEPS: usize = 100_000;
 
-pub mod block_exponential;
-pub mod contact_exponential;
-pub mod equations;
-pub mod exponential;
-pub mod implicit_midpoint;
-pub mod phi;
+pub(crate) mod block_exponential;
+pub(crate) mod contact_exponential;
+pub(crate) mod equations;
+pub(crate) mod exponential;
+pub(crate) mod implicit_midpoint;
+pub(crate) mod phi;
 pub(crate) mod piece;
-pub mod rk4;
-pub mod stiffened_midpoint;
+pub(crate) mod rk4;
+pub(crate) mod stiffened_midpoint;

@@ -1,14 +1,12 @@
 //! Classical Runge–Kutta 4 on the modal ODE — the explicit reference method.
 //! Its stability interval on the imaginary axis ends at 2√2; as a reference
 //! it must also be accurate, so the stepper sub-steps until
-//! h·λ_max ≤ [`STEP_LIMIT`], λ_max bounding |ω_eff| + 2ζω + kΩ (per substep the
-//! fastest mode then loses ≤ 9e-7 of its energy and ≤ 3e-6 rad of phase).
-
-/// h·λ_max kept below this by default (2√2 ≈ 2.83 is the stability limit);
-/// `simulation.rk4_step_limit` sets it per scene. RK4 damps an oscillation
-/// at ω by (hω)⁶/144 per step in amplitude: at 0.2 that is 4.4e-7, which
-/// matters only for weakly damped instabilities (the brake-squeal scene uses 0.1).
-pub const STEP_LIMIT: f64 = crate::config::DEFAULT_RK4_STEP_LIMIT;
+//! h·λ_max ≤ `simulation.rk4_step_limit`
+//! ([`DEFAULT_RK4_STEP_LIMIT`](crate::config::DEFAULT_RK4_STEP_LIMIT) by
+//! default), λ_max bounding |ω_eff| + 2ζω + kΩ (per substep the fastest mode
+//! then loses ≤ 9e-7 of its energy and ≤ 3e-6 rad of phase). RK4 damps an oscillation at ω
+//! by (hω)⁶/144 per step in amplitude: at 0.2 that is 4.4e-7, which matters
+//! only for weakly damped instabilities (the brake-squeal scene uses 0.1).
 
 /// y ← y + h/6 (k1 + 2k2 + 2k3 + k4) with `f(t, y, dy)` the right-hand side.
 /// Scratch vectors have y's length; no allocation.

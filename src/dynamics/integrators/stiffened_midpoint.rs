@@ -7,9 +7,10 @@
 //! Same method, same order and A-stability as without stiffening. Dense LU
 //! with partial pivoting ([`dense`](crate::dynamics::dense)) on scratch sized once.
 
-use super::equations::{pair_force, ModeConstants};
+use super::equations::{pair_force, ModalEquations, ReferenceMotion};
 use crate::config::Coordinates;
 use crate::dynamics::dense::{lu_factor, lu_solve};
+use crate::dynamics::loads::StepLoads;
 use crate::dynamics::scene::ModePair;
 use crate::dynamics::stiffening::Stiffening;
 
@@ -40,22 +41,29 @@ impl StiffenedMidpoint {
         }
     }
 
-    /// Advance (q, v) in place over h; arguments as [`implicit_midpoint::advance`](super::implicit_midpoint::advance).
-    #[allow(clippy::too_many_arguments)]
+    /// Advance (q, v) in place over h; arguments as
+    /// [`implicit_midpoint::advance`](super::implicit_midpoint::advance),
+    /// the blocks those of the scene's stiffening (a scene without it is
+    /// stepped by that function).
     pub fn advance(
         &mut self,
-        stiffening: &Stiffening,
-        consts: &[ModeConstants],
-        coords: Coordinates,
+        equations: ModalEquations<'_>,
         h: f64,
-        harm_mid: &[(f64, f64)],
-        speed_mid: f64,
-        accel: f64,
-        ale_frame: &[f64],
-        plate_frame: &[f64],
+        mid: ReferenceMotion<'_>,
+        loads: &StepLoads,
         q: &mut [f64],
         v: &mut [f64],
     ) {
+        let Some(stiffening) = &equations.scene.stiffening else {
+            return super::implicit_midpoint::advance(equations, h, mid, loads, q, v);
+        };
+        let ModalEquations { consts, coords, .. } = equations;
+        let ReferenceMotion {
+            harmonics: harm_mid,
+            speed: speed_mid,
+            accel,
+        } = mid;
+        let (ale_frame, plate_frame) = (&loads.ale_frame[..], &loads.plate_frame[..]);
         let speed_sq = speed_mid * speed_mid;
         for b in &stiffening.blocks {
             let n = b.len();
@@ -133,10 +141,9 @@ impl StiffenedMidpoint {
                 }
             }
             // A singular matrix gives NaN (caught by the step check).
-            if lu_factor(lhs, &mut self.perm[..d], d) {
-                lu_solve(lhs, &self.perm[..d], g, &mut self.buf[..d], d);
-            } else {
-                g.fill(f64::NAN);
+            match lu_factor(lhs, &mut self.perm[..d], d) {
+                Ok(()) => lu_solve(lhs, &self.perm[..d], g, &mut self.buf[..d], d),
+                Err(_) => g.fill(f64::NAN),
             }
             for f in 0..families {
                 for r in 0..n {

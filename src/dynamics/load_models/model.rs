@@ -158,7 +158,7 @@ pub trait LoadModel: Debug + Send + Sync {
     /// For downcasting to the concrete model (only in the model's own files).
     fn as_any(&self) -> &dyn Any;
 
-    /// Its commands (held in [`LoadCommands`], one value per instance and command).
+    /// Its commands (held in `LoadCommands`, one value per instance and command).
     fn commands(&self) -> &[CommandSpec] {
         &[]
     }
@@ -173,7 +173,7 @@ pub trait LoadModel: Debug + Send + Sync {
         Vec::new()
     }
 
-    /// Its slot in the [`State`](super::State) at t = 0.
+    /// Its slot in the `State` at t = 0.
     fn initial_state(&self) -> Vec<f64> {
         Vec::new()
     }

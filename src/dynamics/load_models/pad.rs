@@ -123,7 +123,7 @@ pub struct Pads {
     pub coupling: Coupling,
     /// The residual compliance G among the contact points
     /// (`plate.residual_flexibility`): the contacts act in series with it
-    /// ([`Pads::series_forces`]); None: on the modal deflection.
+    /// (`Pads::series_forces`); None: on the modal deflection.
     pub series: Option<ContactCompliance>,
     /// m_p of each face's pad, kg (0: massless; `pad_mass.rs`).
     pub mass: f64,
@@ -317,8 +317,8 @@ impl Pads {
                 v,
                 FRICTION_REGULARISATION_SPEED,
             );
-            for a in 0..3 {
-                w.force[a] += fr[a];
+            for (wa, fa) in w.force.iter_mut().zip(&fr) {
+                *wa += fa;
             }
             w.moment[0] -= z * fr[1];
             w.moment[1] += z * fr[0];

@@ -104,7 +104,8 @@ impl Pads {
                 on[1] = !self.lift_off || out.bottom > 0.0;
             }
         };
-        g.solve(w_free, axial, series, law, |active, jacobian| {
+        // Singular I − J G: the law's last forces stand (the step check judges what follows).
+        let _singular = g.solve(w_free, axial, series, law, |active, jacobian| {
             self.axial_jacobian(active, jacobian)
         });
         kinematics.copy_from_slice(tried);

@@ -280,7 +280,11 @@ impl LoadModel for Tool {
     fn save_changes(&self, slot: &[f64], undo: &mut SlotUndo) {
         let step = ToolStep::load(slot);
         for i in step.swept_entries() {
-            if !(slot[i] <= step.level) {
+            // Above the level, or NaN: saved.
+            if !matches!(
+                slot[i].partial_cmp(&step.level),
+                Some(std::cmp::Ordering::Less | std::cmp::Ordering::Equal)
+            ) {
                 undo.save(slot, i);
             }
         }

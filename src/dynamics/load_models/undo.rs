@@ -3,10 +3,10 @@
 //! (the stepper's divergence guard), and the tool's slot carries a 4096-bin
 //! surface (33 kB) of which a step changes a few bins.
 //!
-//! Per model, [`LoadModel::undo_head`] says how much of the slot is copied
+//! Per model, `LoadModel::undo_head` says how much of the slot is copied
 //! before the step (by default all of it); the entries beyond that head change
-//! only in [`LoadModel::commit_substep`], and before each commit the model
-//! saves the ones it is about to change ([`LoadModel::save_changes`] →
+//! only in `LoadModel::commit_substep`, and before each commit the model
+//! saves the ones it is about to change (`LoadModel::save_changes` →
 //! [`SlotUndo::save`]): each entry once per step, with its value from before
 //! the step. Undoing writes the head and the saved entries back. Buffers are
 //! sized once (an entry is saved at most once per step, so the log never

@@ -5,7 +5,7 @@
 //! mid-instant (χ at h/2, the mean speed Ω̄, the acceleration α).
 
 use super::stage_rhs::StageRhs;
-use super::Stepper;
+use super::{Stepper, SubstepMotion};
 use crate::config::Coordinates;
 use crate::dynamics::ale::{ale_to_lagrange, harmonics};
 use crate::dynamics::commands::Inputs;
@@ -18,18 +18,21 @@ pub const SWITCH_RESOLUTION: f64 = 2.5e-7;
 
 impl Stepper {
     /// One substep of h from (χ0, Ω0) under α by the contact exponential.
-    #[allow(clippy::too_many_arguments)]
     pub(super) fn contact_exponential(
         &mut self,
         scene: &Scene,
         state: &mut State,
         inputs: &Inputs,
-        h: f64,
-        chi0: JointAngle,
-        speed0: f64,
-        alpha: f64,
+        joint: &SubstepMotion,
         tolerance: f64,
     ) {
+        let SubstepMotion {
+            h,
+            chi0,
+            speed0,
+            alpha,
+            ..
+        } = *joint;
         let speed_mean = speed0 + 0.5 * alpha * h;
         let mut chi_mid = chi0;
         chi_mid.advance(0.5 * speed0 * h + 0.125 * alpha * h * h);

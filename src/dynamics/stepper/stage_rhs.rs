@@ -7,7 +7,9 @@ use super::{StateView, Views};
 use crate::config::Coordinates;
 use crate::dynamics::ale::harmonics;
 use crate::dynamics::commands::Inputs;
-use crate::dynamics::integrators::equations::{accelerations, ModeConstants};
+use crate::dynamics::integrators::equations::{
+    accelerations, ModalEquations, ModeConstants, ReferenceMotion,
+};
 use crate::dynamics::load_models::{LoadContext, LoadModelState, ModelWrenches};
 use crate::dynamics::loads::{add_reference_motion, compute as node_loads, StepLoads};
 use crate::dynamics::scene::Scene;
@@ -86,19 +88,17 @@ impl StageRhs<'_> {
         let (dq, rest) = dy.split_at_mut(n);
         let (dv, ds) = rest.split_at_mut(n);
         dq.copy_from_slice(v);
-        accelerations(
+        let equations = ModalEquations {
             scene,
-            self.consts,
-            self.coords,
-            self.harm,
+            consts: self.consts,
+            coords: self.coords,
+        };
+        let motion = ReferenceMotion {
+            harmonics: self.harm,
             speed,
-            self.alpha,
-            q,
-            v,
-            &self.loads.ale_frame,
-            &self.loads.plate_frame,
-            dv,
-        );
+            accel: self.alpha,
+        };
+        accelerations(equations, motion, self.loads, q, v, dv);
         ds.copy_from_slice(&self.model_wrenches.rates);
     }
 }
