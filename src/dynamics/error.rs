@@ -71,7 +71,7 @@ pub enum SimulationError {
         limit: f64,
     },
     /// More unknowns than `contact_exponential` tabulates per active set
-    /// ([`MAX_UNKNOWNS`](super::integrators::contact_exponential::MAX_UNKNOWNS)).
+    /// (`contact_exponential::MAX_UNKNOWNS`).
     #[error("simulation.integrator = contact_exponential tabulates matrices over all unknowns for each active set of the contacts: {modes} modes give {unknowns} unknowns, beyond its limit of {limit}: request fewer modes (plate.nodal_diameters, plate.nodal_circles) or use simulation.integrator: rk4")]
     TooManyContactUnknowns {
         modes: usize,

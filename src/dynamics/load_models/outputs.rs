@@ -99,7 +99,7 @@ pub struct Outputs {
     pub topic: Option<StateTopic>,
 }
 
-/// No outputs (the default of [`LoadModel::outputs`](super::LoadModel::outputs)).
+/// No outputs: the declaration of a model that publishes nothing (its `Registration::outputs`).
 pub const NO_OUTPUTS: Outputs = Outputs {
     channels: &[],
     column_prefix: "",
