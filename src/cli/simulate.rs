@@ -12,6 +12,7 @@
 
 use super::error::{CliError, CliResult};
 use super::float_text::{push_display, write_exp, EXP_SLOT};
+use crate::dynamics::load_models::outputs::{CsvColumn, Outputs};
 use crate::dynamics::load_models::REGISTRY;
 use crate::dynamics::{stability, Simulation};
 use std::io::Write;
@@ -32,17 +33,26 @@ pub fn header(sim: &Simulation) -> String {
     if !sim.scene().load_models.is_empty() {
         cols.push("joint_effort".into());
     }
+    for_each_model_cell(sim, |outputs, column, i, _| {
+        cols.push(outputs.column_name(column, i))
+    });
+    cols.join(",")
+}
+
+/// Every CSV cell the load models declare, in column order (model by model in
+/// registry order, instance by instance): its declaration, column, instance
+/// and value. The header and the rows both walk it, so they stay aligned.
+fn for_each_model_cell(sim: &Simulation, mut cell: impl FnMut(&Outputs, &CsvColumn, usize, f64)) {
     let lm = &sim.scene().load_models;
     for m in 0..lm.models().len() {
         let (outputs, layout) = lm.outputs(m);
         let values = sim.output_values(m);
         for i in 0..layout.csv_instances(outputs) {
-            for (c, _) in layout.csv_values(outputs, values, i) {
-                cols.push(outputs.column_name(c, i));
+            for (column, v) in layout.csv_values(outputs, values, i) {
+                cell(outputs, column, i, v);
             }
         }
     }
-    cols.join(",")
 }
 
 /// The unit of a column of [`header`] (for axis labels), `None` for a name
@@ -153,16 +163,7 @@ impl RowWriter {
         if !sim.scene().load_models.is_empty() {
             self.exp(j.effort);
         }
-        let lm = &sim.scene().load_models;
-        for m in 0..lm.models().len() {
-            let (outputs, layout) = lm.outputs(m);
-            let values = sim.output_values(m);
-            for i in 0..layout.csv_instances(outputs) {
-                for (_, v) in layout.csv_values(outputs, values, i) {
-                    self.exp(v);
-                }
-            }
-        }
+        for_each_model_cell(sim, |_, _, _, v| self.exp(v));
         self.byte(b'\n');
         &self.line[..self.len]
     }

@@ -177,6 +177,13 @@ impl Scene {
         self.model.n_modes()
     }
 
+    /// Unknowns of the first-order system `contact_exponential` advances: the
+    /// ALE amplitudes and rates of every mode, then the load models'
+    /// continuous states.
+    pub(crate) fn first_order_unknowns(&self) -> usize {
+        2 * self.n_modes() + self.load_models.continuous_states()
+    }
+
     /// Square of the reference frame's off-axis angular velocity, ω_x² + ω_y²
     /// (invariant under the spin about z).
     pub fn off_axis_rate_squared(&self) -> f64 {

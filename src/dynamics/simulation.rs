@@ -551,13 +551,12 @@ fn check_contact_unknowns(
     if settings.integrator != IntegratorKind::ContactExponential || !models.stage_dependent() {
         return Ok(());
     }
-    let modes = scene.n_modes();
-    let unknowns = 2 * modes + models.continuous_states();
+    let unknowns = scene.first_order_unknowns();
     if unknowns <= MAX_UNKNOWNS {
         return Ok(());
     }
     Err(SimulationError::TooManyContactUnknowns {
-        modes,
+        modes: scene.n_modes(),
         unknowns,
         limit: MAX_UNKNOWNS,
     })

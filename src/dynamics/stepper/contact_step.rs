@@ -83,7 +83,7 @@ impl Stepper {
     fn contact_prepare(&mut self, scene: &Scene, state: &State, h: f64) {
         let n = scene.n_modes();
         let models = &scene.load_models;
-        let size = 2 * n + models.continuous_states();
+        let size = scene.first_order_unknowns();
         let levels = ContactExponential::levels_for(h, SWITCH_RESOLUTION);
         if self.contact_levels != Some(levels) {
             let mut c = ContactExponential::new(size, models.switching_functions(), levels);
