@@ -6,6 +6,8 @@
 //! keeps exactly the requested ⟨k, l⟩ modes (`modes`), evaluates mode shapes
 //! and the displacement field (13) (`shape`) and integrates the body data of
 //! eq. (11) (`body`). Immutable once built; no ROS, no time stepping.
+//! [`mindlin`] computes the thick-plate (Mindlin) modes per k by the same
+//! radial machinery, as a library API that the model does not use yet.
 
 pub(crate) mod body;
 pub(crate) mod bspline;
@@ -15,6 +17,7 @@ pub(crate) mod eigen;
 mod error;
 pub(crate) mod fft;
 pub(crate) mod lanczos;
+pub mod mindlin;
 pub(crate) mod modes;
 pub mod nodal_lines;
 pub mod prestress;

@@ -158,8 +158,8 @@ pub fn choose_all<'a>(
 }
 
 /// Dense below [`DENSE_LIMIT`] free coefficients, Lanczos above (dense if it
-/// does not converge).
-fn lowest_pairs(
+/// does not converge). Also the Mindlin modes' solver.
+pub fn lowest_pairs(
     kk: &faer::Mat<f64>,
     mm: &faer::Mat<f64>,
     sigma: f64,

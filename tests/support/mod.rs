@@ -6,6 +6,7 @@ pub mod exact_plate;
 pub mod fit;
 pub mod fourth_order;
 pub mod library_plate;
+pub mod mindlin_exact;
 pub mod scene_files;
 pub mod scenes;
 pub mod squeal;
