@@ -16,12 +16,14 @@
 
 mod support;
 
-use annular_plate::config::{Boundary, PlateConfig, RadialSplines};
+use annular_plate::config::{Boundary, RadialSplines};
 use annular_plate::model::mindlin::{
     mindlin_modes, MindlinDiscretisation, MindlinEdge, MindlinPlate, DEFAULT_SHEAR_CORRECTION,
     DEFAULT_SPLINES,
 };
 use annular_plate::model::{AngularShape, PlateModel};
+use support::exact_plate::Material;
+use support::library_plate::annulus_config;
 use support::mindlin_exact::{Edge, MindlinAnnulus};
 
 const E: f64 = 2.1e11;
@@ -31,6 +33,16 @@ const RHO: f64 = 7850.0;
 const R_I: f64 = 0.07;
 const R_A: f64 = 0.153;
 const H: f64 = 0.0181;
+
+/// Steel of thickness h (E, ν, ρ above).
+fn steel(h: f64) -> Material {
+    Material {
+        thickness: h,
+        density: RHO,
+        youngs_modulus: E,
+        poisson_ratio: NU,
+    }
+}
 
 fn library_edge(e: Edge) -> MindlinEdge {
     match e {
@@ -172,7 +184,7 @@ fn frequencies_converge_at_fourth_order_in_the_spline_spacing() {
 
 /// (ω_Mindlin/ω_Kirchhoff − 1)/(h/b)² of the exact solutions, ⟨k, 0⟩ (⟨k, 1⟩ free–free k ≤ 1).
 fn exact_thin_ratio(inner: Edge, outer: Edge, k: u32, h: f64) -> f64 {
-    use support::exact_plate::{Annulus, Edge as KEdge, Material};
+    use support::exact_plate::{Annulus, Edge as KEdge};
     let kedge = |e: Edge| match e {
         Edge::Clamped => KEdge::Clamped,
         Edge::Supported => KEdge::Supported,
@@ -186,13 +198,7 @@ fn exact_thin_ratio(inner: Edge, outer: Edge, k: u32, h: f64) -> f64 {
         .find(|&l| l > 1e-6)
         .unwrap();
     let mindlin = annulus(R_I, R_A, h, inner, outer).roots(k, 1, 64)[0];
-    let material = Material {
-        thickness: h,
-        density: RHO,
-        youngs_modulus: E,
-        poisson_ratio: NU,
-    };
-    (mindlin / material.omega(lambda) - 1.0) / (h / (R_A - R_I)).powi(2)
+    (mindlin / steel(h).omega(lambda) - 1.0) / (h / (R_A - R_I)).powi(2)
 }
 
 #[test]
@@ -293,18 +299,14 @@ fn brake_disc_matches_three_dimensional_elasticity() {
     const KIRCHHOFF_SUPPORTED_L0: [f64; 7] = [751.6, 858.0, 1427.8, 2602.9, 4312.6, 6504.9, 9151.3];
 
     // The project's Kirchhoff modes reproduce the reference's Kirchhoff column: same disc.
-    let mut cfg = PlateConfig::lathe_disc();
-    cfg.inner_radius = R_I;
-    cfg.outer_radius = R_A;
-    cfg.thickness = H;
-    cfg.density = RHO;
-    cfg.youngs_modulus = E;
-    cfg.poisson_ratio = NU;
-    cfg.inner_boundary = Boundary::Supported;
-    cfg.outer_boundary = Boundary::Free;
-    cfg.nodal_diameters = (0..=6).collect();
-    cfg.nodal_circles = vec![0];
-    cfg.damping = vec![0.0];
+    let ks: Vec<u32> = (0..=6).collect();
+    let cfg = annulus_config(
+        (R_I, R_A),
+        (Boundary::Supported, Boundary::Free),
+        &ks,
+        &[0],
+        steel(H),
+    );
     let kirchhoff = PlateModel::new(&cfg).unwrap();
     for (k, &want) in KIRCHHOFF_SUPPORTED_L0.iter().enumerate() {
         let got = kirchhoff
@@ -351,18 +353,7 @@ fn kirchhoff_model(
     ks: &[u32],
     ls: &[u32],
 ) -> PlateModel {
-    let mut cfg = PlateConfig::lathe_disc();
-    cfg.inner_radius = R_I;
-    cfg.outer_radius = R_A;
-    cfg.thickness = h;
-    cfg.density = RHO;
-    cfg.youngs_modulus = E;
-    cfg.poisson_ratio = NU;
-    cfg.inner_boundary = inner;
-    cfg.outer_boundary = outer;
-    cfg.nodal_diameters = ks.to_vec();
-    cfg.nodal_circles = ls.to_vec();
-    cfg.damping = vec![0.0];
+    let mut cfg = annulus_config((R_I, R_A), (inner, outer), ks, ls, steel(h));
     cfg.radial_splines = RadialSplines::Fixed(DEFAULT_SPLINES);
     PlateModel::new(&cfg).unwrap()
 }

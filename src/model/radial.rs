@@ -43,12 +43,31 @@ pub fn angular_norm(k: u32) -> f64 {
 
 /// A quadrature point with the four B-splines non-zero there.
 #[derive(Debug, Clone)]
-struct QuadPoint {
-    span: usize,
-    r: f64,
-    weight: f64,
+pub(crate) struct QuadPoint {
+    pub(crate) span: usize,
+    pub(crate) r: f64,
+    pub(crate) weight: f64,
     /// ders[d][j]: d-th derivative of N_{span+j}.
-    ders: [[f64; 4]; 4],
+    pub(crate) ders: [[f64; 4]; 4],
+}
+
+/// The quadrature points of `basis` (`radial_points` per span) with the
+/// B-splines' values and derivatives there.
+pub(crate) fn quadrature_points(basis: &BSplineBasis) -> Vec<QuadPoint> {
+    let mut points = Vec::new();
+    let mut buf = Vec::new();
+    for s in 0..basis.spans() {
+        let (lo, hi) = basis.span_bounds(s);
+        buf.clear();
+        radial_points(lo, hi, &mut buf);
+        points.extend(buf.iter().map(|&(r, weight)| QuadPoint {
+            span: s,
+            r,
+            weight,
+            ders: basis.eval_span(s, r),
+        }));
+    }
+    points
 }
 
 /// The radial basis with its boundary conditions and cached quadrature.
@@ -91,21 +110,7 @@ impl RadialDiscretisation {
             plate.inner_boundary == Boundary::Free && plate.outer_boundary == Boundary::Free;
         let rigid_functions =
             (free_free && ri / ra >= RING_RATIO).then_some((0.5 * (ri + ra), ra - ri));
-        let mut points = Vec::new();
-        let mut buf = Vec::new();
-        for s in 0..basis.spans() {
-            let (lo, hi) = basis.span_bounds(s);
-            buf.clear();
-            radial_points(lo, hi, &mut buf);
-            for &(r, weight) in &buf {
-                points.push(QuadPoint {
-                    span: s,
-                    r,
-                    weight,
-                    ders: basis.eval_span(s, r),
-                });
-            }
-        }
+        let points = quadrature_points(&basis);
         RadialDiscretisation {
             basis,
             free,

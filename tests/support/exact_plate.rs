@@ -445,7 +445,8 @@ impl Annulus {
     }
 }
 
-fn bisect(f: &impl Fn(f64) -> f64, mut a: f64, mut b: f64, mut fa: f64) -> f64 {
+/// A root of `f` in [a, b] (f(a) = fa, f(b) of the other sign) by bisection to machine precision.
+pub fn bisect(f: &impl Fn(f64) -> f64, mut a: f64, mut b: f64, mut fa: f64) -> f64 {
     for _ in 0..200 {
         let m = 0.5 * (a + b);
         if m <= a || m >= b {

@@ -20,6 +20,7 @@
 #![allow(dead_code)]
 
 use super::bessel::{i_scaled_val_der, jy_val_der, k_scaled_val_der, ValDer};
+use super::exact_plate::bisect;
 
 /// An edge of the exact solution.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -234,26 +235,6 @@ impl MindlinAnnulus {
         }
         roots.into_iter().map(|l| self.omega_of_lambda(l)).collect()
     }
-}
-
-fn bisect(f: &impl Fn(f64) -> f64, mut a: f64, mut b: f64, mut fa: f64) -> f64 {
-    for _ in 0..200 {
-        let m = 0.5 * (a + b);
-        if m <= a || m >= b {
-            break;
-        }
-        let fm = f(m);
-        if fm == 0.0 {
-            return m;
-        }
-        if fm.signum() == fa.signum() {
-            a = m;
-            fa = fm;
-        } else {
-            b = m;
-        }
-    }
-    0.5 * (a + b)
 }
 
 /// Z, Z' of the first (J or I) or second (Y or K) kind of order k for the

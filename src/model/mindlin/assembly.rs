@@ -6,12 +6,11 @@
 //! j = 0 … n − 1 (Γ_θ only for k ≥ 1), so the matrices are banded. Each free coefficient is a column of the map T from
 //! free to all coefficients (one entry, or two at a clamped edge, where the
 //! slope B-spline of W carries Γ_r's edge coefficient N'(edge) with it:
-//! Γ_r = W' there). The matrices are Tᵀ K T and Tᵀ M T.
+//! Γ_r = W' there). The matrices are Tᵀ K T and Tᵀ M T, assembled directly.
 
 use super::{MindlinEdge, MindlinError, MindlinPlate, MAX_SPLINES, MIN_SPLINES};
 use crate::model::bspline::BSplineBasis;
-use crate::model::quadrature::radial_points;
-use crate::model::radial::angular_norm;
+use crate::model::radial::{angular_norm, quadrature_points, QuadPoint};
 use faer::Mat;
 
 /// W's, Γ_r's and Γ_θ's coefficients.
@@ -19,16 +18,6 @@ const FIELDS: usize = 3;
 const W: usize = 0;
 const GAMMA_R: usize = 1;
 const GAMMA_THETA: usize = 2;
-
-/// A quadrature point with the four B-splines non-zero there.
-#[derive(Debug, Clone)]
-struct QuadPoint {
-    span: usize,
-    r: f64,
-    weight: f64,
-    /// ders[d][j]: d-th derivative of N_{span+j}.
-    ders: [[f64; 4]; 4],
-}
 
 /// The radial B-splines of the three fields with their quadrature.
 #[derive(Debug, Clone)]
@@ -54,19 +43,7 @@ impl MindlinDiscretisation {
             });
         }
         let basis = BSplineBasis::new(plate.inner_radius, plate.outer_radius, splines);
-        let mut points = Vec::new();
-        let mut buf = Vec::new();
-        for s in 0..basis.spans() {
-            let (lo, hi) = basis.span_bounds(s);
-            buf.clear();
-            radial_points(lo, hi, &mut buf);
-            points.extend(buf.iter().map(|&(r, weight)| QuadPoint {
-                span: s,
-                r,
-                weight,
-                ders: basis.eval_span(s, r),
-            }));
-        }
+        let points = quadrature_points(&basis);
         Ok(MindlinDiscretisation {
             plate: *plate,
             basis,
@@ -171,13 +148,22 @@ impl MindlinDiscretisation {
         }
     }
 
-    /// (K, M) over all coefficients of k (before the edge conditions).
-    fn assemble_all(&self, k: u32) -> (Mat<f64>, Mat<f64>) {
+    /// (K̄, M̄) for nodal-diameter number k over the free coefficients: the
+    /// bilinear forms of U and T of [`super`] (with c_k), symmetric, M̄
+    /// positive definite. Each B-spline's contribution goes to the free
+    /// coefficients that carry it (the rows of T).
+    pub fn assemble(&self, k: u32) -> (Mat<f64>, Mat<f64>) {
         let n = self.basis.len();
         let fields = Self::fields(k);
-        let size = fields * n;
-        let mut kk = Mat::<f64>::zeros(size, size);
-        let mut mm = Mat::<f64>::zeros(size, size);
+        let cols = self.free_columns(k);
+        let mut carriers: Vec<Vec<(usize, f64)>> = vec![Vec::new(); fields * n];
+        for (a, col) in cols.iter().enumerate() {
+            for &(g, t) in col {
+                carriers[g].push((a, t));
+            }
+        }
+        let mut kk = Mat::<f64>::zeros(cols.len(), cols.len());
+        let mut mm = Mat::<f64>::zeros(cols.len(), cols.len());
         let p = &self.plate;
         let (d, nu, shear) = (p.rigidity(), p.poisson_ratio, p.shear_stiffness());
         let (rho_h, inertia) = (p.density * p.thickness, p.rotary_inertia());
@@ -203,32 +189,19 @@ impl MindlinDiscretisation {
                         + nu * (bi[0] * bj[1] + bi[1] * bj[0])
                         + 0.5 * (1.0 - nu) * bi[2] * bj[2];
                     let shearing = bi[3] * bj[3] + bi[4] * bj[4];
-                    kk[(gi, gj)] += w * (d * bending + shear * shearing);
-                    mm[(gi, gj)] +=
+                    let stiff = w * (d * bending + shear * shearing);
+                    let mass =
                         w * (rho_h * mi[0] * mj[0] + inertia * (mi[1] * mj[1] + mi[2] * mj[2]));
+                    for &(a, ta) in &carriers[gi] {
+                        for &(b, tb) in &carriers[gj] {
+                            kk[(a, b)] += ta * tb * stiff;
+                            mm[(a, b)] += ta * tb * mass;
+                        }
+                    }
                 }
             }
         }
         (kk, mm)
-    }
-
-    /// (K̄, M̄) for nodal-diameter number k over the free coefficients: the
-    /// bilinear forms of U and T of [`super`] (with c_k), symmetric, M̄
-    /// positive definite.
-    pub fn assemble(&self, k: u32) -> (Mat<f64>, Mat<f64>) {
-        let (kk, mm) = self.assemble_all(k);
-        let cols = self.free_columns(k);
-        let reduce = |a: &Mat<f64>| {
-            Mat::<f64>::from_fn(cols.len(), cols.len(), |i, j| {
-                cols[i]
-                    .iter()
-                    .flat_map(|&(gi, ti)| {
-                        cols[j].iter().map(move |&(gj, tj)| ti * tj * a[(gi, gj)])
-                    })
-                    .sum()
-            })
-        };
-        (reduce(&kk), reduce(&mm))
     }
 
     /// B-spline coefficients of W, Γ_r, Γ_θ (zeros for k = 0) from the free ones.
