@@ -3,10 +3,11 @@
 //! essential edge conditions eliminated into the basis.
 //!
 //! Coefficients are interleaved by B-spline: (W_j, Γ_r,j, Γ_θ,j) for
-//! j = 0 … n − 1 (Γ_θ only for k ≥ 1), so the matrices are banded. Each free coefficient is a column of the map T from
-//! free to all coefficients (one entry, or two at a clamped edge, where the
-//! slope B-spline of W carries Γ_r's edge coefficient N'(edge) with it:
-//! Γ_r = W' there). The matrices are Tᵀ K T and Tᵀ M T, assembled directly.
+//! j = 0 … n − 1 (Γ_θ only for k ≥ 1), so the matrices are banded. Each
+//! free coefficient is a column of the map T from free to all coefficients
+//! (one entry, or two at a clamped edge, where the slope B-spline of W
+//! carries Γ_r's edge coefficient N'(edge) with it: Γ_r = W' there). The
+//! matrices are Tᵀ K T and Tᵀ M T, assembled directly.
 
 use super::{MindlinEdge, MindlinError, MindlinPlate, MAX_SPLINES, MIN_SPLINES};
 use crate::model::bspline::BSplineBasis;

@@ -5,6 +5,8 @@
 //!
 //! # Fields and kinematics
 //!
+//! Polar coordinates (r, θ) of the plate's mid-plane; θ is the material
+//! angle φ of the paper's eq. (3) and of the Kirchhoff modes (w = R cos kφ).
 //! Transverse deflection w and the rotations ψ_r, ψ_θ of the normal (face
 //! displacement u_r = z ψ_r, u_θ = z ψ_θ; the Kirchhoff limit is
 //! ψ_r = −∂w/∂r, ψ_θ = −(1/r) ∂w/∂θ). Curvatures and shear strains:
