@@ -60,6 +60,11 @@ const SERIES_TERMS: usize = 12;
 /// law's rounding stays small against the change it measures.
 const ORIGIN_SCALE: f64 = 1.0e3;
 
+/// A span whose error is below tolerance / COARSEN is followed by spans
+/// twice as long: the held remainder's error grows as the span squared, so
+/// the next span's is then predicted at half the tolerance.
+const COARSEN: f64 = 8.0;
+
 /// What a step did, for diagnostics and tests.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct StepReport {
@@ -69,6 +74,8 @@ pub struct StepReport {
     pub builds: usize,
     /// Spans halved because the held remainder's error passed the tolerance.
     pub halvings: usize,
+    /// Evaluations of the right-hand side in the step.
+    pub evaluations: usize,
     /// More than [`MAX_EVENTS`] switches: the rest of the step
     /// was taken span by span without locating switches.
     pub unlocated: bool,
@@ -194,6 +201,12 @@ impl ContactExponential {
         eval: &mut impl FnMut(&[f64], &mut [f64], &mut [f64]),
     ) -> StepReport {
         let mut report = StepReport::default();
+        let mut count = 0usize;
+        let mut counted = |y: &[f64], f: &mut [f64], s: &mut [f64]| {
+            count += 1;
+            eval(y, f, s)
+        };
+        let eval = &mut counted;
         let total: u64 = 1 << self.levels;
         let unit = h / total as f64;
         // Time from the step's start in units of h / 2^L: a switch restarts
@@ -277,11 +290,12 @@ impl ContactExponential {
             self.y_r.copy_from_slice(&self.y_b);
             std::mem::swap(&mut self.f_r, &mut self.f_end);
             std::mem::swap(&mut self.s_r, &mut self.s_end);
-            if error < tolerance / 64.0 && span_level > 0 && !switched {
+            if error < tolerance / COARSEN && span_level > 0 && !switched {
                 span_level -= 1;
             }
         }
         y.copy_from_slice(&self.y_r);
+        report.evaluations = count;
         report
     }
 
@@ -383,7 +397,9 @@ impl ContactExponential {
         }
         let entry = &mut self.entries[i];
         entry.tables.build(h, &mut self.build);
-        entry.tables.fill_sample_table(&mut self.build);
+        if at_origin {
+            entry.tables.fill_sample_table(&mut self.build);
+        }
         entry.key.clear();
         entry.key.extend_from_slice(&self.key);
         entry.valid = true;
@@ -448,6 +464,9 @@ impl ContactExponential {
         let t = &self.entries[e].tables;
         let m = t.sample_level();
         let spacing = 1u64 << (self.levels - m);
+        if !t.has_samples() {
+            return self.first_switch_along_flow(e, remaining);
+        }
         // No sign can change where every |s_i| exceeds its bound's reach (or
         // where s_i cannot move: a pad pressed with nothing).
         let reach = self.f_r.iter().map(|v| v * v).sum::<f64>().sqrt();
@@ -467,6 +486,29 @@ impl ContactExponential {
             }
             self.s_t.copy_from_slice(&self.s_r);
             mul_add(t.sampled(i), &self.f_r, &mut self.s_t);
+            if !same_piece(&self.s_r, &self.s_t) {
+                return Some((last, at));
+            }
+            last = at;
+        }
+        self.end_check(e, last, remaining)
+    }
+
+    /// [`Self::first_switch`] for a piece without a sample table (kept for
+    /// this step only): the flow stepped from sample to sample, y ← y +
+    /// F(τ_m) (f_r + J (y − y_r)), and s = s_r + S (y − y_r) at each.
+    fn first_switch_along_flow(&mut self, e: usize, remaining: u64) -> Option<(u64, u64)> {
+        let m = self.entries[e].tables.sample_level();
+        let spacing = 1u64 << (self.levels - m);
+        self.y_a.copy_from_slice(&self.y_r);
+        let mut last = 0;
+        for i in 1..=(1u64 << m) {
+            let at = i * spacing;
+            if at > remaining {
+                break;
+            }
+            self.advance_a(e, m);
+            self.switching_at_a(e);
             if !same_piece(&self.s_r, &self.s_t) {
                 return Some((last, at));
             }

@@ -49,6 +49,10 @@ pub(crate) struct PieceTables {
     rate: f64,
     /// S F(i τ_m) for i = 1..=2^m, each ns × n.
     sf: Vec<f64>,
+    /// Whether `sf` and `bound` are filled for the current J (a piece kept
+    /// for one step only samples its flow instead: filling them costs
+    /// 2^(m+1) ns n² against ns n + 2n² per sample taken).
+    sampled: bool,
     /// Per switching function, twice the largest ‖row of S F(i τ_m)‖₂ over
     /// the samples: |s(t) − s(0)| ≤ bound ‖f‖₂ along the step (between the
     /// samples the factor two covers e^{τ_m ρ/2} ≤ e^{1/8}).
@@ -99,6 +103,7 @@ impl PieceTables {
             sample_level: 0,
             rate: 0.0,
             sf: Vec::new(),
+            sampled: false,
             bound: vec![0.0; ns],
         }
     }
@@ -137,6 +142,11 @@ impl PieceTables {
         &self.bound
     }
 
+    /// Whether the sample table and the bounds are filled for this piece.
+    pub(crate) fn has_samples(&self) -> bool {
+        self.sampled
+    }
+
     /// Fill the tables from `jac` and `s_rows` (already set) for a step h.
     /// The sample table grows to the first piece that needs it (then no
     /// allocation).
@@ -150,6 +160,7 @@ impl PieceTables {
         balance(&mut b.a, &mut b.d, n);
         let rho = norm1(&b.a, n);
         let finest = finest_level(h, rho, self.levels - 1);
+        self.sampled = false;
         let tau = h / (finest as f64).exp2();
         taylor_phi(tau, n, b);
         for level in (0..=finest).rev() {
@@ -172,6 +183,7 @@ impl PieceTables {
             self.sf.resize(size, 0.0);
         }
         self.fill_samples(b);
+        self.sampled = true;
     }
 
     /// Level j of the balanced E, F back in the original coordinates:
