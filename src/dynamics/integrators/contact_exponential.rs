@@ -9,7 +9,10 @@
 //! y = y_r + F(t) f(y_r), F(t) = ∫₀ᵗ e^{τJ} dτ ([`super::piece`]): exact for
 //! an affine piece however stiff, and stable (it is the exact flow of the
 //! linearisation). What f holds beyond its linearisation (the friction
-//! direction, follower terms) is held at its value at y_r for the step.
+//! direction, follower terms) is held at its value at y_r over a span, spans
+//! halved until its estimated error meets the tolerance; a span that passes
+//! carries its second-order correction G(T) Δg / T (the remainder linear in
+//! time over the span).
 //!
 //! The switching functions are affine on the piece too, s(y) ≈ s(y_r) +
 //! S (y − y_r), and are sampled along the step every τ_m (τ_m ρ ≤ 1, ρ the
@@ -36,14 +39,14 @@ const MIN_CACHE_PIECES: usize = 4;
 const CACHE_BYTES: usize = 128 << 20;
 
 /// Unknowns beyond which `contact_exponential` is refused: a piece holds
-/// 2·levels + 3 matrices of n² (0.5 MB each at n = 256) and its build costs
+/// 3·levels + 4 matrices of n² (0.5 MB each at n = 256) and its build costs
 /// O(n³) per level.
 pub const MAX_UNKNOWNS: usize = 256;
 
 /// Pieces the cache keeps for n unknowns and `levels` dyadic levels: as many
 /// as fit [`CACHE_BYTES`], within [`MIN_CACHE_PIECES`]..=[`CACHE_PIECES`].
 pub(crate) fn cache_pieces(n: usize, levels: usize) -> usize {
-    let piece_bytes = (2 * (levels + 1) + 1) * n * n * std::mem::size_of::<f64>();
+    let piece_bytes = (3 * (levels + 1) + 1) * n * n * std::mem::size_of::<f64>();
     (CACHE_BYTES / piece_bytes.max(1)).clamp(MIN_CACHE_PIECES, CACHE_PIECES)
 }
 
@@ -60,6 +63,17 @@ const SERIES_TERMS: usize = 12;
 /// law's rounding stays small against the change it measures.
 const ORIGIN_SCALE: f64 = 1.0e3;
 
+/// A span whose error is below tolerance / COARSEN is followed by spans
+/// twice as long: the held remainder's error grows as the span squared, so
+/// the next span's is then predicted at half the tolerance.
+const COARSEN: f64 = 8.0;
+
+/// Spans whose held remainder's estimated error exceeds this fraction of
+/// the tolerance carry its second-order correction (one more evaluation);
+/// below it the held step meets the tolerance with margin (affine pieces:
+/// the remainder is rounding).
+const CORRECTED: f64 = 1.0e-3;
+
 /// What a step did, for diagnostics and tests.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct StepReport {
@@ -69,6 +83,8 @@ pub struct StepReport {
     pub builds: usize,
     /// Spans halved because the held remainder's error passed the tolerance.
     pub halvings: usize,
+    /// Evaluations of the right-hand side in the step.
+    pub evaluations: usize,
     /// More than [`MAX_EVENTS`] switches: the rest of the step
     /// was taken span by span without locating switches.
     pub unlocated: bool,
@@ -194,6 +210,12 @@ impl ContactExponential {
         eval: &mut impl FnMut(&[f64], &mut [f64], &mut [f64]),
     ) -> StepReport {
         let mut report = StepReport::default();
+        let mut count = 0usize;
+        let mut counted = |y: &[f64], f: &mut [f64], s: &mut [f64]| {
+            count += 1;
+            eval(y, f, s)
+        };
+        let eval = &mut counted;
         let total: u64 = 1 << self.levels;
         let unit = h / total as f64;
         // Time from the step's start in units of h / 2^L: a switch restarts
@@ -272,16 +294,20 @@ impl ContactExponential {
                 report.halvings += 1;
                 continue;
             }
+            if !switched && error > CORRECTED * tolerance {
+                self.correct_remainder(e, end, unit, eval);
+            }
             report.switches += switched as usize;
             pos += end;
             self.y_r.copy_from_slice(&self.y_b);
             std::mem::swap(&mut self.f_r, &mut self.f_end);
             std::mem::swap(&mut self.s_r, &mut self.s_end);
-            if error < tolerance / 64.0 && span_level > 0 && !switched {
+            if error < tolerance / COARSEN && span_level > 0 && !switched {
                 span_level -= 1;
             }
         }
         y.copy_from_slice(&self.y_r);
+        report.evaluations = count;
         report
     }
 
@@ -314,6 +340,28 @@ impl ContactExponential {
             }
         }
         self.scaled_error()
+    }
+
+    /// The held remainder's second-order correction at the end of a span of
+    /// `units` that passed its check: with the remainder taken to change
+    /// linearly in time by Δg over the span T (Δg from [`Self::held_error`]),
+    /// the flow gains ∫₀ᵀ e^{(T−s)J} Δg s/T ds = G(T) Δg / T. On spans of one
+    /// table level; y_b, f_end and s_end then at the corrected state.
+    fn correct_remainder(
+        &mut self,
+        e: usize,
+        units: f64,
+        unit: f64,
+        eval: &mut impl FnMut(&[f64], &mut [f64], &mut [f64]),
+    ) {
+        let whole = units as u64;
+        if units != whole as f64 || !whole.is_power_of_two() {
+            return;
+        }
+        let j = self.levels - whole.trailing_zeros() as usize;
+        let g = self.entries[e].tables.g(j);
+        mul_add_scaled(g, &self.dg, 1.0 / (units * unit), &mut self.y_b);
+        eval(&self.y_b, &mut self.f_end, &mut self.s_end);
     }
 
     /// max over the blocks of |err| over the block's largest |y| (y_r, y_b
@@ -383,7 +431,9 @@ impl ContactExponential {
         }
         let entry = &mut self.entries[i];
         entry.tables.build(h, &mut self.build);
-        entry.tables.fill_sample_table(&mut self.build);
+        if at_origin {
+            entry.tables.fill_sample_table(&mut self.build);
+        }
         entry.key.clear();
         entry.key.extend_from_slice(&self.key);
         entry.valid = true;
@@ -448,6 +498,9 @@ impl ContactExponential {
         let t = &self.entries[e].tables;
         let m = t.sample_level();
         let spacing = 1u64 << (self.levels - m);
+        if !t.has_samples() {
+            return self.first_switch_along_flow(e, remaining);
+        }
         // No sign can change where every |s_i| exceeds its bound's reach (or
         // where s_i cannot move: a pad pressed with nothing).
         let reach = self.f_r.iter().map(|v| v * v).sum::<f64>().sqrt();
@@ -467,6 +520,29 @@ impl ContactExponential {
             }
             self.s_t.copy_from_slice(&self.s_r);
             mul_add(t.sampled(i), &self.f_r, &mut self.s_t);
+            if !same_piece(&self.s_r, &self.s_t) {
+                return Some((last, at));
+            }
+            last = at;
+        }
+        self.end_check(e, last, remaining)
+    }
+
+    /// [`Self::first_switch`] for a piece without a sample table (kept for
+    /// this step only): the flow stepped from sample to sample, y ← y +
+    /// F(τ_m) (f_r + J (y − y_r)), and s = s_r + S (y − y_r) at each.
+    fn first_switch_along_flow(&mut self, e: usize, remaining: u64) -> Option<(u64, u64)> {
+        let m = self.entries[e].tables.sample_level();
+        let spacing = 1u64 << (self.levels - m);
+        self.y_a.copy_from_slice(&self.y_r);
+        let mut last = 0;
+        for i in 1..=(1u64 << m) {
+            let at = i * spacing;
+            if at > remaining {
+                break;
+            }
+            self.advance_a(e, m);
+            self.switching_at_a(e);
             if !same_piece(&self.s_r, &self.s_t) {
                 return Some((last, at));
             }
@@ -744,7 +820,7 @@ mod tests {
         for n in [40, 100, 190, MAX_UNKNOWNS] {
             for levels in [4, 12, 20, 40] {
                 let pieces = cache_pieces(n, levels);
-                let bytes = pieces * (2 * (levels + 1) + 1) * n * n * 8;
+                let bytes = pieces * (3 * (levels + 1) + 1) * n * n * 8;
                 assert!((MIN_CACHE_PIECES..=CACHE_PIECES).contains(&pieces));
                 assert!(
                     bytes <= CACHE_BYTES || pieces == MIN_CACHE_PIECES,

@@ -4,8 +4,9 @@
 //! contacts").
 //!
 //! On the piece the solution from y_r is y(t) = y_r + F(t) f(y_r) with
-//! F(t) = ∫₀ᵗ e^{τJ} dτ = t φ₁(tJ), and E(t) = e^{tJ} = I + J F(t). The tables
-//! hold E and F at the dyadic fractions τ_j = h / 2^j of the step (j = 0..=L)
+//! F(t) = ∫₀ᵗ e^{τJ} dτ = t φ₁(tJ), and E(t) = e^{tJ} = I + J F(t); a forcing
+//! growing linearly from 0 adds G(t) = ∫₀ᵗ e^{(t−s)J} s ds = t² φ₂(tJ). The
+//! tables hold E, F and G at the dyadic fractions τ_j = h / 2^j of the step (j = 0..=L)
 //! and S F(i τ_m) at the m-th level's sample times, so that a step, a
 //! sample of the switching functions or a bisection of a switching instant
 //! costs matrix–vector products only.
@@ -14,7 +15,8 @@
 //! similarity of powers of two (Parlett–Reinsch), so that ρ = ‖D⁻¹JD‖₁ is of
 //! the order of the fastest rate; at the finest level τ ρ ≤ 1/8 and φ₁ is its
 //! Taylor series to degree 10 (remainder below 2e-19); the coarser levels
-//! follow from F(2τ) = (I + E(τ)) F(τ), E(2τ) = E(τ)². Each level is exact
+//! follow from F(2τ) = (I + E(τ)) F(τ), G(2τ) = (I + E(τ)) G(τ) + τ F(τ),
+//! E(2τ) = E(τ)². Each level is exact
 //! to rounding for any stiffness: a contact a thousand times stiffer only
 //! adds squarings (one per factor two in ρ h).
 
@@ -43,12 +45,19 @@ pub(crate) struct PieceTables {
     pub(crate) s_rows: Vec<f64>,
     e: Vec<f64>,
     f: Vec<f64>,
+    /// G(τ_j) = ∫₀^τ e^{(τ−s)J} s ds = τ² φ₂(τJ): the response to a
+    /// forcing that grows linearly from 0.
+    g: Vec<f64>,
     /// m: the switching functions are sampled every τ_m.
     sample_level: usize,
     /// |λ|max of J (estimated): the fastest rate of the piece, 1/s.
     rate: f64,
     /// S F(i τ_m) for i = 1..=2^m, each ns × n.
     sf: Vec<f64>,
+    /// Whether `sf` and `bound` are filled for the current J (a piece kept
+    /// for one step only samples its flow instead: filling them costs
+    /// 2^(m+1) ns n² against ns n + 2n² per sample taken).
+    sampled: bool,
     /// Per switching function, twice the largest ‖row of S F(i τ_m)‖₂ over
     /// the samples: |s(t) − s(0)| ≤ bound ‖f‖₂ along the step (between the
     /// samples the factor two covers e^{τ_m ρ/2} ≤ e^{1/8}).
@@ -62,6 +71,7 @@ pub(crate) struct BuildScratch {
     d: Vec<f64>,
     e: Vec<f64>,
     f: Vec<f64>,
+    g_level: Vec<f64>,
     p: Vec<f64>,
     t1: Vec<f64>,
     t2: Vec<f64>,
@@ -76,6 +86,7 @@ impl BuildScratch {
             d: vec![1.0; n],
             e: vec![0.0; n * n],
             f: vec![0.0; n * n],
+            g_level: vec![0.0; n * n],
             p: vec![0.0; n * n],
             t1: vec![0.0; n * n],
             t2: vec![0.0; n * n],
@@ -96,9 +107,11 @@ impl PieceTables {
             s_rows: vec![0.0; ns * n],
             e: Vec::new(),
             f: Vec::new(),
+            g: Vec::new(),
             sample_level: 0,
             rate: 0.0,
             sf: Vec::new(),
+            sampled: false,
             bound: vec![0.0; ns],
         }
     }
@@ -114,6 +127,12 @@ impl PieceTables {
     pub(crate) fn f(&self, j: usize) -> &[f64] {
         let nn = self.n * self.n;
         &self.f[j * nn..(j + 1) * nn]
+    }
+
+    /// G(τ_j) = τ_j² φ₂(τ_j J), n × n.
+    pub(crate) fn g(&self, j: usize) -> &[f64] {
+        let nn = self.n * self.n;
+        &self.g[j * nn..(j + 1) * nn]
     }
 
     /// |λ|max of J (estimated), 1/s.
@@ -137,6 +156,11 @@ impl PieceTables {
         &self.bound
     }
 
+    /// Whether the sample table and the bounds are filled for this piece.
+    pub(crate) fn has_samples(&self) -> bool {
+        self.sampled
+    }
+
     /// Fill the tables from `jac` and `s_rows` (already set) for a step h.
     /// The sample table grows to the first piece that needs it (then no
     /// allocation).
@@ -146,10 +170,12 @@ impl PieceTables {
         // many slots costs memory only for the pieces a scene visits).
         self.e.resize(self.levels * n * n, 0.0);
         self.f.resize(self.levels * n * n, 0.0);
+        self.g.resize(self.levels * n * n, 0.0);
         b.a.copy_from_slice(&self.jac);
         balance(&mut b.a, &mut b.d, n);
         let rho = norm1(&b.a, n);
         let finest = finest_level(h, rho, self.levels - 1);
+        self.sampled = false;
         let tau = h / (finest as f64).exp2();
         taylor_phi(tau, n, b);
         for level in (0..=finest).rev() {
@@ -157,7 +183,7 @@ impl PieceTables {
                 self.store(level, b);
             }
             if level > 0 {
-                double(b, n);
+                double(b, n, h / (level as f64).exp2());
             }
         }
         self.rate = spectral_radius(&b.a, n, &mut b.t1, &mut b.t2);
@@ -172,6 +198,7 @@ impl PieceTables {
             self.sf.resize(size, 0.0);
         }
         self.fill_samples(b);
+        self.sampled = true;
     }
 
     /// Level j of the balanced E, F back in the original coordinates:
@@ -185,6 +212,7 @@ impl PieceTables {
                 let at = j * nn + i * n + k;
                 self.e[at] = s * b.e[i * n + k];
                 self.f[at] = s * b.f[i * n + k];
+                self.g[at] = s * b.g_level[i * n + k];
             }
         }
     }
@@ -253,7 +281,8 @@ fn sample_level(h: f64, rho: f64, max_level: usize) -> usize {
 }
 
 /// At the finest level: φ₂(X) = Σ X^k/(k+2)! by Horner, φ₁ = I + X φ₂,
-/// E = I + X φ₁ (X = τA); F = τ φ₁ into `b.f`, E into `b.e`.
+/// E = I + X φ₁ (X = τA); F = τ φ₁ into `b.f`, E into `b.e`, G = τ² φ₂
+/// into `b.g_level`.
 fn taylor_phi(tau: f64, n: usize, b: &mut BuildScratch) {
     let (x, t) = (&mut b.t2, &mut b.t1);
     for (xi, ai) in x.iter_mut().zip(&b.a) {
@@ -285,10 +314,18 @@ fn taylor_phi(tau: f64, n: usize, b: &mut BuildScratch) {
         *ei += ti;
     }
     b.f.iter_mut().for_each(|v| *v *= tau);
+    for (g, p) in b.g_level.iter_mut().zip(&b.p) {
+        *g = tau * tau * p;
+    }
 }
 
-/// From span t to 2t: F(2t) = (I + E) F, E(2t) = E².
-fn double(b: &mut BuildScratch, n: usize) {
+/// From span t to 2t: G(2t) = (I + E) G + t F, F(2t) = (I + E) F,
+/// E(2t) = E² (G over [t, 2t]: ∫₀ᵗ e^{(t−u)J} (t + u) du = t F + G).
+fn double(b: &mut BuildScratch, n: usize, t: f64) {
+    matmul(&b.e, &b.g_level, &mut b.t1, n);
+    for ((g, eg), f) in b.g_level.iter_mut().zip(&b.t1).zip(&b.f) {
+        *g += eg + t * f;
+    }
     matmul(&b.e, &b.f, &mut b.t1, n);
     for (f, ef) in b.f.iter_mut().zip(&b.t1) {
         *f += ef;
@@ -415,7 +452,8 @@ mod tests {
     use super::*;
 
     /// The undamped oscillator ẍ = −ω² x: E(t) = [[cos, sin/ω], [−ω sin, cos]],
-    /// F(t) = [[sin/ω, (1 − cos)/ω²], [cos − 1, sin/ω]].
+    /// F(t) = [[sin/ω, (1 − cos)/ω²], [cos − 1, sin/ω]], G(t) = [[(1 − cos)/ω²,
+    /// (ωt − sin)/ω³], [−(ωt − sin)/ω, (1 − cos)/ω²]].
     #[test]
     fn tables_of_a_stiff_oscillator_are_its_exact_rotation_at_every_level() {
         let omega = 3.0e4; // hω = 30 at h = 1 ms: far beyond any explicit step
@@ -431,13 +469,22 @@ mod tests {
             let (s, c) = (omega * tau).sin_cos();
             let e = [c, s / omega, -omega * s, c];
             let f = [s / omega, (1.0 - c) / (omega * omega), c - 1.0, s / omega];
+            // G(t) = ∫₀ᵗ e^{(t−s)J} s ds, written out from E.
+            let wt = omega * tau;
+            let g = [
+                (1.0 - c) / (omega * omega),
+                (wt - s) / omega.powi(3),
+                -(wt - s) / omega,
+                (1.0 - c) / (omega * omega),
+            ];
             let scale = [1.0, 1.0 / omega, omega, 1.0];
             for i in 0..4 {
                 let err_e = (t.e(j)[i] - e[i]).abs() / scale[i];
                 let err_f = (t.f(j)[i] - f[i]).abs() / scale[i] * omega;
+                let err_g = (t.g(j)[i] - g[i]).abs() / scale[i] * omega * omega;
                 assert!(
-                    err_e < 1e-12 && err_f < 1e-12,
-                    "level {j} entry {i}: {err_e:e} {err_f:e}"
+                    err_e < 1e-12 && err_f < 1e-12 && err_g < 1e-12,
+                    "level {j} entry {i}: {err_e:e} {err_f:e} {err_g:e}"
                 );
             }
         }
