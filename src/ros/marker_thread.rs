@@ -2,8 +2,11 @@
 //! and node forces into a pooled [`MarkerInput`] every `every` steps
 //! ([`MarkerFeed::offer`], no allocation, never waits); this thread builds
 //! the MarkerArray ([`PlateMarker`]), publishes it and, with `run --record`,
-//! hands it to the bag writer. Should the thread still be busy with the
-//! previous marker, the loop skips one (counted) rather than wait.
+//! hands it to the bag writer. Two inputs circulate: a marker step that
+//! comes while the thread is still building the previous marker, or has not
+//! yet been scheduled to pick it up (`~/step` while paused runs its steps in
+//! a burst), waits for it; only when one is being built and another already
+//! waits does the loop skip a marker (counted) rather than wait.
 
 use crate::bag::recorder::{Recorder, Sample};
 use crate::dynamics::Simulation;
@@ -33,13 +36,37 @@ impl MarkerFeed {
         match self.pool.try_recv() {
             Ok(mut input) => {
                 input.capture(sim, stamp);
+                // The queue holds every input there is, so it is never full
+                // here: an error means the thread has ended.
                 if self.tx.try_send(input).is_err() {
                     self.skipped += 1;
                 }
             }
+            // Both inputs are with the thread: one being built, one waiting.
             Err(_) => self.skipped += 1,
         }
     }
+}
+
+/// Inputs in circulation: one the thread builds from, one waiting for it.
+const INPUTS: usize = 2;
+
+/// The loop's end, the thread's queue and the pool it returns inputs to.
+/// The queue has room for every input, so one taken from the pool is never
+/// refused (and lost to the pool).
+fn feed(sim: &Simulation, every: u64) -> (MarkerFeed, Receiver<MarkerInput>, Sender<MarkerInput>) {
+    let (tx, rx) = sync_channel::<MarkerInput>(INPUTS);
+    let (pool_tx, pool) = channel::<MarkerInput>();
+    for _ in 0..INPUTS {
+        let _ = pool_tx.send(MarkerInput::new(sim));
+    }
+    let feed = MarkerFeed {
+        every,
+        tx,
+        pool,
+        skipped: 0,
+    };
+    (feed, rx, pool_tx)
 }
 
 /// Start the marker thread for `sim`'s scene; it ends when the feed is dropped.
@@ -50,23 +77,11 @@ pub fn start(
     publisher: Publisher<Shared<MarkerArray>>,
     recorder: Option<Recorder>,
 ) -> std::io::Result<(MarkerFeed, JoinHandle<()>)> {
-    let (tx, rx) = sync_channel::<MarkerInput>(1);
-    let (pool_tx, pool) = channel::<MarkerInput>();
-    for _ in 0..2 {
-        let _ = pool_tx.send(MarkerInput::new(sim));
-    }
+    let (feed, rx, pool_tx) = feed(sim, every);
     let join = std::thread::Builder::new()
         .name("annular_plate-marker".into())
         .spawn(move || serve(marker, rx, pool_tx, publisher, recorder))?;
-    Ok((
-        MarkerFeed {
-            every,
-            tx,
-            pool,
-            skipped: 0,
-        },
-        join,
-    ))
+    Ok((feed, join))
 }
 
 fn serve(
@@ -83,5 +98,47 @@ fn serve(
             r.record(Sample::Marker(marker.message().handle()), input.stamp);
         }
         let _ = pool.send(input);
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::config::Config;
+
+    /// Steps `sim` to its next marker step and offers it, stamped with the step.
+    fn step_and_offer(sim: &mut Simulation, feed: &mut MarkerFeed) {
+        sim.step().unwrap();
+        while !sim.step_count().is_multiple_of(feed.every) {
+            sim.step().unwrap();
+        }
+        feed.offer(sim, Time::from_nanos(sim.step_count() as i64));
+    }
+
+    /// What the thread has been handed, by stamp; the inputs go back to the pool.
+    fn drain(rx: &Receiver<MarkerInput>, pool: &Sender<MarkerInput>) -> Vec<i64> {
+        rx.try_iter()
+            .map(|input| {
+                let stamp = input.stamp.to_nanos();
+                pool.send(input).unwrap();
+                stamp
+            })
+            .collect()
+    }
+
+    #[test]
+    fn a_burst_of_marker_steps_waits_for_the_thread_and_a_skip_loses_no_input() {
+        let mut sim = Simulation::new(Config::default()).unwrap();
+        let (mut feed, rx, pool) = feed(&sim, 3);
+        for round in 0..3 {
+            // The thread has not run: two marker steps in a burst both wait
+            // for it, a third is skipped.
+            for _ in 0..3 {
+                step_and_offer(&mut sim, &mut feed);
+            }
+            let n = sim.step_count() as i64;
+            assert_eq!(drain(&rx, &pool), vec![n - 6, n - 3], "round {round}");
+            assert_eq!(feed.skipped, round + 1, "round {round}");
+        }
     }
 }

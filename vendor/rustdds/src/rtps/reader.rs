@@ -1521,11 +1521,13 @@ impl Reader {
     let RtpsWriterProxy {
       remote_writer_guid,
       unicast_locator_list,
+      remote_vendor_id,
       ..
     } = writer_proxy;
     let (flags, acknack) = preemptive_acknack(
       self.entity_id(),
       remote_writer_guid.entity_id,
+      *remote_vendor_id,
       acknack_count,
     );
     self.send_acknack_to(
@@ -1579,20 +1581,13 @@ impl fmt::Debug for Reader {
 
 /// The preemptive ACKNACK a reader sends to a writer it has just matched (and
 /// periodically while that writer has sent it nothing): no Final flag, so it
-/// asks for an immediate HEARTBEAT, and readerSNState = {base 0, numBits 0}.
-///
-/// Base 0 is outside the SequenceNumberSet validity rule of RTPS v2.5 8.3.5.5,
-/// but it is the form the other implementations send and recognise as
-/// preemptive (eProsima Fast DDS, the default ROS 2 RMW; RTI Connext Micro;
-/// embeddedRTPS), and this crate's writer accepts it too. Fast DDS answers it
-/// with a HEARTBEAT at once, but takes {base 1, numBits 0} for an ordinary
-/// ACKNACK that requests nothing and only restarts its heartbeat period
-/// (3 s by default). A sample such a writer sent before we had matched it — a
-/// ROS 2 service request that arrives while discovery is still processing the
-/// client's endpoints — was then withheld for those 3 s.
+/// asks for an immediate HEARTBEAT, and readerSNState = {base, numBits 0},
+/// the base chosen by the vendor of the writer's participant
+/// ([`preemptive_acknack_base`]).
 pub(crate) fn preemptive_acknack(
   reader_id: EntityId,
   writer_id: EntityId,
+  writer_vendor: VendorId,
   count: i32,
 ) -> (BitFlags<ACKNACK_Flags>, AckNack) {
   (
@@ -1600,10 +1595,34 @@ pub(crate) fn preemptive_acknack(
     AckNack {
       reader_id,
       writer_id,
-      reader_sn_state: SequenceNumberSet::new_empty(SequenceNumber::zero()),
+      reader_sn_state: SequenceNumberSet::new_empty(preemptive_acknack_base(writer_vendor)),
       count,
     },
   )
+}
+
+/// The readerSNState base of a preemptive ACKNACK to a writer of `vendor`:
+/// 0 for eProsima Fast DDS, 1 for every other (and an unknown) vendor.
+///
+/// Fast DDS recognises a preemptive ACKNACK only as {base 0, numBits 0}, the
+/// form it sends itself, and answers it with a HEARTBEAT at once; {base 1,
+/// numBits 0} is to it an ordinary ACKNACK that requests nothing and only
+/// restarts its heartbeat period (3 s by default), so a sample it sent before
+/// we had matched it — a ROS 2 service request that arrives while discovery
+/// is still processing the client's endpoints — was withheld for those 3 s.
+/// Base 0 is outside the SequenceNumberSet validity rule of RTPS v2.5
+/// 8.3.5.5, though, and Eclipse Cyclone DDS drops an ACKNACK with base 0 as
+/// malformed unless it comes from a vendor known to send it (eProsima, RTI):
+/// from this crate it is rejected, and Cyclone's immediate HEARTBEAT never
+/// comes. Cyclone answers the valid {base 1, numBits 0} (its own form, with
+/// count 0) with a HEARTBEAT at once, and so does this crate's writer (which
+/// accepts both).
+pub(crate) fn preemptive_acknack_base(vendor: VendorId) -> SequenceNumber {
+  if vendor == VendorId::EPROSIMA {
+    SequenceNumber::zero()
+  } else {
+    SequenceNumber::new(1)
+  }
 }
 
 #[cfg(test)]
@@ -1996,30 +2015,69 @@ mod tests {
   }
 
   #[test]
-  fn preemptive_acknack_asks_for_a_heartbeat_with_base_zero() {
+  fn preemptive_acknack_has_base_zero_for_fast_dds_and_the_valid_base_one_otherwise() {
     let reader_id = EntityId::new([0, 0, 0x22], EntityKind::READER_NO_KEY_USER_DEFINED);
     let writer_id = EntityId::new([0, 0, 0x14], EntityKind::WRITER_NO_KEY_USER_DEFINED);
-    let (flags, acknack) = preemptive_acknack(reader_id, writer_id, 1);
-    assert!(
-      !flags.contains(ACKNACK_Flags::Final),
-      "no Final flag: a HEARTBEAT is requested"
+    let cyclone_dds = VendorId {
+      vendor_id: [0x01, 0x10],
+    };
+    for (vendor, base) in [
+      (VendorId::EPROSIMA, 0u8),
+      (cyclone_dds, 1),
+      (VendorId::THIS_IMPLEMENTATION, 1),
+      (VendorId::VENDOR_UNKNOWN, 1),
+    ] {
+      let (flags, acknack) = preemptive_acknack(reader_id, writer_id, vendor, 1);
+      assert!(
+        !flags.contains(ACKNACK_Flags::Final),
+        "{vendor:?}: no Final flag, a HEARTBEAT is requested"
+      );
+      assert_eq!(
+        acknack.reader_sn_state.iter().count(),
+        0,
+        "{vendor:?}: numBits 0, nothing requested"
+      );
+      assert_eq!(
+        (acknack.reader_id, acknack.writer_id, acknack.count),
+        (reader_id, writer_id, 1)
+      );
+      // On the wire: readerId, writerId, bitmapBase {high 0, low base},
+      // numBits 0, count.
+      let bytes = acknack
+        .write_to_vec_with_ctx(Endianness::LittleEndian)
+        .expect("serialize");
+      assert_eq!(bytes.len(), 4 + 4 + 8 + 4 + 4);
+      assert_eq!(
+        &bytes[8..20],
+        &[0, 0, 0, 0, base, 0, 0, 0, 0, 0, 0, 0],
+        "{vendor:?}"
+      );
+    }
+  }
+
+  #[test]
+  fn a_fast_dds_participant_s_writers_get_the_preemptive_acknack_with_base_zero() {
+    // The test data's SPDP message is Fast DDS's (vendor 1.15).
+    let participant = crate::test::test_data::spdp_participant_data().unwrap();
+    let mut proxy =
+      participant.get_builtin_writer_proxy(EntityId::SEDP_BUILTIN_PUBLICATIONS_WRITER);
+    assert_eq!(proxy.remote_vendor_id, VendorId::EPROSIMA);
+    // An update that does not know the vendor keeps it.
+    let guid = proxy.remote_writer_guid;
+    proxy.update_contents(RtpsWriterProxy::new(
+      guid,
+      vec![],
+      vec![],
+      EntityId::UNKNOWN,
+    ));
+    assert_eq!(proxy.remote_vendor_id, VendorId::EPROSIMA);
+    let (_, acknack) = preemptive_acknack(
+      EntityId::SEDP_BUILTIN_PUBLICATIONS_READER,
+      guid.entity_id,
+      proxy.remote_vendor_id,
+      0,
     );
     assert_eq!(acknack.reader_sn_state.base(), SequenceNumber::zero());
-    assert_eq!(
-      acknack.reader_sn_state.iter().count(),
-      0,
-      "numBits 0: nothing requested"
-    );
-    assert_eq!(
-      (acknack.reader_id, acknack.writer_id, acknack.count),
-      (reader_id, writer_id, 1)
-    );
-    // On the wire: readerId, writerId, bitmapBase {high 0, low 0}, numBits 0, count.
-    let bytes = acknack
-      .write_to_vec_with_ctx(Endianness::LittleEndian)
-      .expect("serialize");
-    assert_eq!(bytes.len(), 4 + 4 + 8 + 4 + 4);
-    assert_eq!(&bytes[8..20], &[0u8; 12]);
   }
 
   #[test]

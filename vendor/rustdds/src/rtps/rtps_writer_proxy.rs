@@ -6,6 +6,7 @@ use log::{debug, error, info, trace, warn};
 
 use crate::{
   discovery::sedp_messages::DiscoveredWriterData,
+  messages::vendor_id::VendorId,
   rtps::constant::MAX_TRACKED_CHANGES_PER_WRITER,
   structure::{
     guid::{EntityId, GUID},
@@ -30,6 +31,11 @@ pub(crate) struct RtpsWriterProxy {
 
   /// Identifies the group to which the matched Reader belongs
   pub remote_group_entity_id: EntityId,
+
+  /// The vendor of the writer's participant (from its SPDP data), or
+  /// VENDOR_UNKNOWN. It selects the form of the preemptive ACKNACK
+  /// (`reader::preemptive_acknack`).
+  pub remote_vendor_id: VendorId,
 
   // See RTPS Spec v2.5 Section 8.4.10.4 on how the WriterProxy is supposed to
   // operate.
@@ -104,6 +110,7 @@ impl RtpsWriterProxy {
       unicast_locator_list,
       multicast_locator_list,
       remote_group_entity_id,
+      remote_vendor_id: VendorId::VENDOR_UNKNOWN,
       changes: BTreeMap::new(),
       received_heartbeat_count: 0,
       sent_ack_nack_count: 0,
@@ -132,6 +139,17 @@ impl RtpsWriterProxy {
     self.unicast_locator_list = other.unicast_locator_list;
     self.multicast_locator_list = other.multicast_locator_list;
     self.remote_group_entity_id = other.remote_group_entity_id;
+    if other.remote_vendor_id != VendorId::VENDOR_UNKNOWN {
+      self.remote_vendor_id = other.remote_vendor_id;
+    }
+  }
+
+  /// The same proxy, its writer's participant being of `vendor`.
+  pub fn with_remote_vendor_id(self, vendor: VendorId) -> Self {
+    Self {
+      remote_vendor_id: vendor,
+      ..self
+    }
   }
 
   // This is used to check for DEADLINE policy
@@ -339,6 +357,7 @@ impl RtpsWriterProxy {
     RtpsWriterProxy {
       remote_writer_guid: discovered_writer_data.writer_proxy.remote_writer_guid,
       remote_group_entity_id: EntityId::UNKNOWN,
+      remote_vendor_id: VendorId::VENDOR_UNKNOWN,
       unicast_locator_list,
       multicast_locator_list,
       changes: BTreeMap::new(),
