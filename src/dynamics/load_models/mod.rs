@@ -28,13 +28,13 @@
 pub mod face_friction;
 pub mod model;
 pub mod outputs;
-pub mod pad;
+pub mod pad_calipers;
+pub mod pad_config;
 pub mod pad_mass;
 pub mod pad_outputs;
 pub mod pad_series;
-pub mod pitch_link;
-pub mod point_spring;
-pub mod tool;
+pub mod parameters;
+pub mod tool_config;
 pub mod undo;
 
 pub use model::{
@@ -46,6 +46,7 @@ pub use outputs::{
     StateTopic,
 };
 
+pub use parameters::PARAMETERS;
 pub use undo::{LoadModelUndo, SlotUndo};
 
 use crate::config::{Config, IntegratorKind};
@@ -55,14 +56,26 @@ use crate::dynamics::wrench::Wrench;
 use std::any::Any;
 use std::ops::Range;
 
-/// Every load model, once, in evaluation order (also the order of their CSV
-/// columns and topics). A new model: its file and one line here.
-pub const REGISTRY: &[Registration] = &[
-    pad::REGISTRATION,
-    tool::REGISTRATION,
-    pitch_link::REGISTRATION,
-    point_spring::REGISTRATION,
-];
+/// The registered models: each model's module and its line in [`REGISTRY`]
+/// from one name, so a new model is its file and one line here.
+macro_rules! registry {
+    ($($model:ident),* $(,)?) => {
+        $(pub mod $model;)*
+
+        /// Every load model, once, in evaluation order (also the order of
+        /// their CSV columns, topics and parameter sections). A new model:
+        /// its file and one line in the list below.
+        pub const REGISTRY: &[Registration] = &[$($model::REGISTRATION),*];
+    };
+}
+
+registry! {
+    pad,
+    tool,
+    pitch_link,
+    point_spring,
+    point_damper,
+}
 
 /// The scene's load models (immutable) with the layout of their commands.
 #[derive(Debug, Default)]

@@ -71,7 +71,8 @@ use super::model::{
     ModelOut, Registration, SceneNodes, SurfaceKinematics,
 };
 use super::outputs::OutputContext;
-use crate::config::{Caliper, Config, ContactSurface};
+use super::pad_config::{Caliper, ContactSurface, PadsConfig, PARAMETERS};
+use crate::config::Config;
 use crate::dynamics::contact_compliance::{ContactCompliance, SeriesScratch};
 use crate::dynamics::joint::FrictionTorque;
 use crate::dynamics::wrench::Wrench;
@@ -377,11 +378,12 @@ pub const CLAMP_FORCE: CommandSpec = CommandSpec {
 pub const REGISTRATION: Registration = Registration {
     build,
     outputs: &Pads::OUTPUTS,
+    parameters: &PARAMETERS,
 };
 
 /// The registered builder: pads where `pads.*` gives contact points.
 pub fn build(config: &Config, nodes: &SceneNodes) -> Option<Box<dyn LoadModel>> {
-    let p = config.pads.as_ref()?;
+    let p = config.section::<PadsConfig>()?;
     let mut contacts_per_pad = vec![0; p.pad_count()];
     let contacts = p
         .contacts
