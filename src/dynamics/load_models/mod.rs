@@ -7,7 +7,10 @@
 //! A load model is a [`LoadModel`] implementation in its own file, registered
 //! once in [`REGISTRY`] with its declared outputs ([`outputs`]: named, typed
 //! channels, CSV columns, a topic), which the node, the CSV writer, the
-//! recorder and the messages read without knowing the model. The split follows the rest of `dynamics`: its
+//! recorder and the messages read without knowing the model, and with its
+//! declared parameters (sections of keys and their reader, joined with the
+//! configuration's in [`PARAMETERS`]: [`parameters`]), which the validation,
+//! the parameter services and docs/parameters.md read the same way. The split follows the rest of `dynamics`: its
 //! parameters live in the immutable [`Scene`](super::Scene) (the boxed model),
 //! its internal state in a slot of the [`State`](super::State) (plain numbers,
 //! so reset, checkpoint and replay stay copies), its commands in the
