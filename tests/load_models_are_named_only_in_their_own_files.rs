@@ -23,6 +23,7 @@ const FAMILIES: &[(&str, &[&str])] = &[
             "pad.rs",
             "pad_config.rs",
             "pad_calipers.rs",
+            "pad_contact_law.rs",
             "pad_mass.rs",
             "pad_series.rs",
             "pad_outputs.rs",

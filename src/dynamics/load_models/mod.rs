@@ -33,6 +33,7 @@ pub mod model;
 pub mod outputs;
 pub mod pad_calipers;
 pub mod pad_config;
+pub mod pad_contact_law;
 pub mod pad_mass;
 pub mod pad_outputs;
 pub mod pad_series;
