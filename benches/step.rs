@@ -154,7 +154,7 @@ fn scene(file: &str, integrator: Option<IntegratorKind>, bare: bool) -> Simulati
         c.simulation.integrator = i;
     }
     if bare {
-        c.pads = None;
+        c.load_models.remove("pads");
     }
     Simulation::new(c).unwrap()
 }

@@ -295,12 +295,15 @@ fn the_check_catches_a_stale_name() {
     let sources = sources();
     assert!(!sources.values().any(|t| defines(t, "spawn_input")));
     assert!(defines(
-        &sources["src/config/load_model_sections.rs"],
-        "read_springs"
+        &sources["src/config/model_sections.rs"],
+        "no_other_keys"
     ));
-    assert!(!defines(&sources["src/config/validate.rs"], "read_springs"));
+    assert!(!defines(
+        &sources["src/config/validate.rs"],
+        "no_other_keys"
+    ));
     assert!(
-        defines(&sources["src/config/mod.rs"], "springs"),
+        defines(&sources["src/config/mod.rs"], "load_models"),
         "a field counts as defined"
     );
     assert_eq!(name_of("node_wrench(kind, j)"), Some(vec!["node_wrench"]));

@@ -8,7 +8,8 @@
 
 mod support;
 
-use annular_plate::config::{check, Config, ParamValue, Params};
+use annular_plate::config::{Config, ParamValue, Params};
+use annular_plate::dynamics::load_models::PARAMETERS;
 use annular_plate::messages::settings::RosSettings;
 use annular_plate::ros::params_service::{effective_parameters, ParamStore, RUNTIME_KEYS};
 use annular_plate::ros::NodeSetup;
@@ -128,7 +129,7 @@ fn the_same_bad_value_is_refused_with_the_same_text_on_every_path() {
             rule,
         } = case;
         // The one check's text: names the key and the rule.
-        let expected = check(key, &value).expect_err(key).to_string();
+        let expected = PARAMETERS.check(key, &value).expect_err(key).to_string();
         assert!(
             expected.contains(key) && expected.contains(rule),
             "{key} = {text}: `{expected}` does not name the key and `{rule}`"
@@ -229,7 +230,8 @@ fn an_integer_is_not_a_double_by_the_service_and_a_double_is_not_an_integer_anyw
     assert!(!results[0].successful);
     assert_eq!(
         results[0].reason,
-        check("simulation.realtime_factor", &ParamValue::Integer(2))
+        PARAMETERS
+            .check("simulation.realtime_factor", &ParamValue::Integer(2))
             .unwrap_err()
             .to_string()
     );

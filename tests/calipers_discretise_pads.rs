@@ -7,7 +7,8 @@
 
 mod support;
 
-use annular_plate::config::{Caliper, Config, ConfigError, NodePosition};
+use annular_plate::config::{Config, ConfigError, NodePosition};
+use annular_plate::dynamics::load_models::pad_config::{Caliper, PadsConfig};
 use annular_plate::dynamics::load_models::pad_outputs::PadOutputs;
 use annular_plate::dynamics::{stability, Simulation};
 use support::scene_files as scenes;
@@ -56,7 +57,7 @@ fn a_uniformly_pressed_sector_gives_the_closed_form_normal_force_and_friction_to
         &caliper_yaml("[30.0]", arc, inner, outer, 4, 5)
             .replace("q: [1.0e-4, 0.0, 1.0e-4, 0.0]", "q: [0.0, 0.0, 0.0, 0.0]"),
     );
-    let pads = c.pads.as_ref().unwrap();
+    let pads = c.section::<PadsConfig>().unwrap();
     assert_eq!((c.nodes.ale.len(), pads.contacts.len()), (20, 20));
     let (ri, ra) = (c.plate.inner_radius, c.plate.outer_radius);
     for n in &c.nodes.ale {
@@ -184,10 +185,18 @@ fn partial_arc_thresholds_with_the_papers_stiff_pads_and_one_simulation_against_
             &format!("friction_coefficient: {mu} "),
         );
         let mut c = config(&yaml);
-        c.pads.as_mut().unwrap().lift_off = false;
-        assert_eq!(c.pads.as_ref().unwrap().caliper, Caliper::Floating);
+        c.section_mut::<PadsConfig>().unwrap().lift_off = false;
+        assert_eq!(
+            c.section::<PadsConfig>().unwrap().caliper,
+            Caliper::Floating
+        );
         let mut sim = Simulation::new(c).unwrap();
-        let clamp = sim.config().pads.as_ref().unwrap().clamp_force.clone();
+        let clamp = sim
+            .config()
+            .section::<PadsConfig>()
+            .unwrap()
+            .clamp_force
+            .clone();
         let mode = stability::critical_mode(sim.scene(), 25.0, mu, &clamp);
         let n = sim.model().n_modes();
         let top = mode.vector[..n]

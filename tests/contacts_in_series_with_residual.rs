@@ -23,8 +23,10 @@
 
 mod support;
 
-use annular_plate::config::{Caliper, Config, IntegratorKind, WrenchConfig};
+use annular_plate::config::{Config, IntegratorKind, WrenchConfig};
+use annular_plate::dynamics::load_models::pad_config::{Caliper, PadsConfig};
 use annular_plate::dynamics::load_models::tool::ToolOutputs;
+use annular_plate::dynamics::load_models::tool_config::ToolConfig;
 use annular_plate::dynamics::{stability, Simulation};
 use std::f64::consts::TAU;
 use support::exact_plate::Edge;
@@ -48,7 +50,7 @@ fn clamped_bench(caliper: Caliper, stiffness: f64, residual: bool) -> Config {
         force: [0.0, 0.0, RIM_FORCE],
         moment: [0.0; 3],
     }];
-    let p = c.pads.as_mut().unwrap();
+    let p = c.section_mut::<PadsConfig>().unwrap();
     p.caliper = caliper;
     p.clamp_force = vec![5000.0];
     p.contact_stiffness = stiffness;
@@ -93,7 +95,7 @@ fn exact_clamp(c: &Config) -> Exact {
             s.direct
         }
     };
-    let pads = c.pads.as_ref().unwrap();
+    let pads = c.section::<PadsConfig>().unwrap();
     let pts: Vec<(f64, f64)> = pads
         .contacts
         .iter()
@@ -164,8 +166,7 @@ fn settle(c: Config, seconds: f64) -> (Vec<f64>, Vec<f64>, f64) {
     let read = |sim: &Simulation| {
         let nodes: Vec<usize> = sim
             .config()
-            .pads
-            .as_ref()
+            .section::<PadsConfig>()
             .unwrap()
             .contacts
             .iter()
@@ -260,11 +261,11 @@ fn squeal_threshold_with_the_series_contacts_matches_the_ring_closed_form() {
     println!("brake_squeal_paper.yaml threshold μ_c: with the residual flexibility {with:.6}, modal only {without:.6}");
     for contact_damping in [0.0, 1.0] {
         let mut c = squeal(true);
-        c.pads.as_mut().unwrap().contact_damping = contact_damping;
+        c.section_mut::<PadsConfig>().unwrap().contact_damping = contact_damping;
         let sim = Simulation::new(c.clone()).unwrap();
         let g = sim.scene().residual.as_ref().unwrap();
         let model = sim.model();
-        let pads = c.pads.as_ref().unwrap();
+        let pads = c.section::<PadsConfig>().unwrap();
         let nodes: Vec<usize> = pads.contacts.iter().map(|k| k.node).collect();
         let n = nodes.len() as f64;
         let clamp = pads.clamp_force[0];
@@ -316,7 +317,7 @@ fn with_the_correction_the_simulated_squeal_grows_at_the_eigenvalue_rate() {
     for factor in [0.9, 1.1] {
         let mu = factor * mu_c;
         let mut c = c.clone();
-        let p = c.pads.as_mut().unwrap();
+        let p = c.section_mut::<PadsConfig>().unwrap();
         p.friction_coefficient = mu;
         p.lift_off = false;
         let mut sim = Simulation::new(c).unwrap();
@@ -408,11 +409,11 @@ fn the_lathe_tool_pressed_into_a_disc_at_rest_matches_the_exact_plate() {
     let mut c = scenes::load("lathe.yaml");
     c.joint.speed = 0.0;
     c.gravity = [0.0; 3];
-    let t = c.tool.as_mut().unwrap();
+    let t = c.section_mut::<ToolConfig>().unwrap();
     t.start_clearance = 0.0;
     t.feed_rate = 0.002;
     let feed_time = 0.05;
-    let tool = c.tool.clone().unwrap();
+    let tool = c.section::<ToolConfig>().cloned().unwrap();
     let pl = c.plate.clone();
     let holder = 0.5 * pl.thickness - tool.feed_rate * feed_time;
     let d =

@@ -7,8 +7,9 @@
 
 #![cfg(feature = "ros")]
 
-use annular_plate::config::table::{self, Param, Value};
+use annular_plate::config::table::{Param, Value};
 use annular_plate::config::{Config, ParamValue, Params};
+use annular_plate::dynamics::load_models::PARAMETERS;
 use annular_plate::messages::settings::RosSettings;
 use annular_plate::ros::params_service::{effective_parameters, ParamStore};
 use ros2_client::parameters::raw::ParameterType;
@@ -44,8 +45,8 @@ fn base(section: &str) -> Params {
 }
 
 fn section_of(p: &Param) -> &'static str {
-    table::SECTIONS
-        .iter()
+    PARAMETERS
+        .sections()
         .find(|s| s.params.iter().any(|q| q.key == p.key))
         .map(|s| s.name)
         .unwrap()
@@ -55,7 +56,7 @@ fn section_of(p: &Param) -> &'static str {
 /// the one that switches the section on (then the plain scene).
 fn scene_for(p: &Param) -> Params {
     let section = section_of(p);
-    if table::enabled_by(section) == Some(p.key) {
+    if PARAMETERS.enabled_by(section) == Some(p.key) {
         Params::new()
     } else {
         base(section)
@@ -65,7 +66,7 @@ fn scene_for(p: &Param) -> Params {
 #[test]
 fn a_scene_without_a_key_gets_the_declared_default_of_every_key() {
     let mut compared = 0;
-    for p in table::params() {
+    for p in PARAMETERS.params() {
         let Some(default) = p.default.to_param() else {
             continue;
         };
@@ -90,7 +91,10 @@ fn a_scene_without_a_key_gets_the_declared_default_of_every_key() {
         );
         compared += 1;
     }
-    let with_default = table::params().filter(|p| p.default != Value::None).count();
+    let with_default = PARAMETERS
+        .params()
+        .filter(|p| p.default != Value::None)
+        .count();
     assert_eq!(compared, with_default);
     assert!(compared > 80, "{compared} keys compared");
 }
@@ -104,9 +108,10 @@ fn the_default_impls_are_what_an_empty_parameter_file_yields() {
         RosSettings::default()
     );
     // The declared defaults also pass their own declaration's check.
-    for p in table::params() {
+    for p in PARAMETERS.params() {
         if let Some(v) = p.default.to_param() {
-            annular_plate::config::check(p.key, &v)
+            PARAMETERS
+                .check(p.key, &v)
                 .unwrap_or_else(|e| panic!("the declared default of {} is refused: {e}", p.key));
         }
     }
@@ -128,7 +133,7 @@ fn type_code(v: &ParamValue) -> u8 {
 #[test]
 fn the_parameter_service_reports_the_declared_default_of_every_key() {
     let mut reported = 0;
-    for p in table::params() {
+    for p in PARAMETERS.params() {
         let given = scene_for(p);
         let settings = RosSettings::from_params(&given).unwrap();
         let store = ParamStore::new(effective_parameters(&given, &settings));
@@ -142,7 +147,7 @@ fn the_parameter_service_reports_the_declared_default_of_every_key() {
             );
             continue;
         };
-        if table::enabled_by(section_of(p)) == Some(p.key) {
+        if PARAMETERS.enabled_by(section_of(p)) == Some(p.key) {
             // A load model that is off is not listed (docs/ros.md, parameters).
             assert!(store.get(p.key).is_none(), "{}: listed while off", p.key);
             continue;

@@ -175,8 +175,8 @@ fn names_where(e: &ConfigError, input: &str) -> bool {
         .collect();
     keys.iter().any(|k| text.contains(k))
         || file_keys.iter().any(|k| text.contains(k.as_str()))
-        || annular_plate::config::table::SECTIONS
-            .iter()
+        || annular_plate::dynamics::load_models::PARAMETERS
+            .sections()
             .any(|s| !s.name.is_empty() && text.starts_with(s.name))
         || text.contains("line")
         || text.contains("ros__parameters")
@@ -420,7 +420,8 @@ fn random_parameter_service_requests_are_answered_naming_the_key_and_never_stop_
         &annular_plate::config::Params::new(),
         &RosSettings::default(),
     ));
-    let keys: Vec<&str> = annular_plate::config::table::params()
+    let keys: Vec<&str> = annular_plate::dynamics::load_models::PARAMETERS
+        .params()
         .map(|p| p.key)
         .collect();
     let junk = [

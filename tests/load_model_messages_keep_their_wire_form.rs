@@ -11,6 +11,7 @@
 mod support;
 
 use annular_plate::config::{Config, Params};
+use annular_plate::dynamics::load_models::pad_config::PadsConfig;
 use annular_plate::dynamics::load_models::pad_outputs::PadOutputs;
 use annular_plate::dynamics::load_models::tool::ToolOutputs;
 use annular_plate::dynamics::Simulation;
@@ -61,7 +62,7 @@ fn pad_states(sim: &Simulation, names: &FrameNames, stamp: Time) -> PadStates {
     let n = sim.pad_count();
     let pads: Vec<_> = (0..n).map(|p| sim.pad_output(p)).collect();
     let compressions: Vec<[f64; 2]> = (0..n).filter_map(|p| sim.pad_compression(p)).collect();
-    let contacts = &sim.config().pads.as_ref().unwrap().contacts;
+    let contacts = &sim.config().section::<PadsConfig>().unwrap().contacts;
     let forces = sim.pad_contact_forces();
     PadStates {
         header: header(names, stamp),

@@ -7,7 +7,10 @@
 //!   `enum`, `trait`, `type`) and the message its declared topic names
 //!   (`message: "PadStates"`);
 //! - no other file under src/ spells one of them in code (comments aside);
-//! - only a model's own files downcast to it (`find::<`, `scratch::<`).
+//! - only a model's own files downcast to it (`find::<`, `scratch::<`, and
+//!   `section::<` for its validated parameter section);
+//! - so its parameter section's type (`PadsConfig`, `ToolConfig`, …), which
+//!   its own files define, is named nowhere else either.
 
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
@@ -18,15 +21,19 @@ const FAMILIES: &[(&str, &[&str])] = &[
         "pads",
         &[
             "pad.rs",
+            "pad_config.rs",
+            "pad_calipers.rs",
+            "pad_contact_law.rs",
             "pad_mass.rs",
             "pad_series.rs",
             "pad_outputs.rs",
             "face_friction.rs",
         ],
     ),
-    ("tool", &["tool.rs"]),
+    ("tool", &["tool.rs", "tool_config.rs"]),
     ("links", &["pitch_link.rs"]),
     ("springs", &["point_spring.rs"]),
+    ("dampers", &["point_damper.rs"]),
 ];
 
 /// Files outside src/dynamics/load_models/ that may name a model's types
@@ -42,6 +49,7 @@ const ALSO_OWN: &[(&str, &str)] = &[
 const GENERIC: &[&str] = &[
     "src/dynamics/load_models/mod.rs",
     "src/dynamics/load_models/model.rs",
+    "src/config/model_sections.rs",
 ];
 
 fn repo() -> PathBuf {
@@ -167,9 +175,44 @@ fn only_a_model_downcasts_to_itself() {
             continue;
         }
         let code = code(text);
-        for pattern in ["find::<", "scratch::<", ".as_any()"] {
+        for pattern in [
+            "find::<",
+            "scratch::<",
+            ".as_any()",
+            "section::<",
+            "section_mut::<",
+        ] {
             assert!(!code.contains(pattern), "{path} downcasts ({pattern})");
         }
+    }
+}
+
+/// The parameter sections are among the names the models own (so the scan
+/// above keeps them out of every other file).
+#[test]
+fn each_model_owns_its_parameter_section() {
+    let mut src = BTreeMap::new();
+    sources(&repo().join("src"), &mut src);
+    for (family, section) in [
+        ("pads", "PadsConfig"),
+        ("pads", "PadContact"),
+        ("pads", "Caliper"),
+        ("pads", "ContactSurface"),
+        ("tool", "ToolConfig"),
+        ("links", "LinksConfig"),
+        ("springs", "SpringsConfig"),
+        ("dampers", "DampersConfig"),
+    ] {
+        let files = family_files(family);
+        let texts: Vec<&String> = files
+            .iter()
+            .filter(|f| f.contains("/load_models/"))
+            .map(|f| &src[f])
+            .collect();
+        assert!(
+            owned(&texts).iter().any(|w| w == section),
+            "{family} does not define {section}"
+        );
     }
 }
 

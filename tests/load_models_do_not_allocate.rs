@@ -2,6 +2,7 @@
 //! allocation, their commands included (a counting global allocator watches).
 
 use annular_plate::config::{Config, Coordinates, IntegratorKind};
+use annular_plate::dynamics::load_models::pad_config::PadsConfig;
 use annular_plate::dynamics::load_models::pad_outputs::PadOutputs;
 use annular_plate::dynamics::load_models::pitch_link::LinkOutputs;
 use annular_plate::dynamics::load_models::tool::ToolOutputs;
@@ -70,12 +71,13 @@ fn stepping_the_scenes_with_changing_commands_allocates_nothing() {
         ] {
             let mut c = scene(name);
             if faces {
-                let pads = c.pads.as_mut().unwrap();
-                pads.contact_surface = annular_plate::config::ContactSurface::Faces;
+                let pads = c.section_mut::<PadsConfig>().unwrap();
+                pads.contact_surface =
+                    annular_plate::dynamics::load_models::pad_config::ContactSurface::Faces;
                 pads.friction_coefficient = 0.002;
                 pads.static_friction_coefficient = Some(0.004);
             }
-            if c.pads.is_some() && integrator != IntegratorKind::Rk4 {
+            if c.section::<PadsConfig>().is_some() && integrator != IntegratorKind::Rk4 {
                 continue; // refused: the pads need RK4 at this rate (Simulation::new says so)
             }
             c.simulation.integrator = integrator;

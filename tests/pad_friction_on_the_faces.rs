@@ -4,9 +4,9 @@
 //! from the equations of motion; the eigenvalue analysis and the simulation
 //! agree on growth rates; the two descriptions agree to round-off.
 
-use annular_plate::config::{
-    Boundary, Caliper, Config, ContactSurface, Coordinates, IntegratorKind, NodePosition,
-    PadContact, PadsConfig,
+use annular_plate::config::{Boundary, Config, Coordinates, IntegratorKind, NodePosition};
+use annular_plate::dynamics::load_models::pad_config::{
+    Caliper, ContactSurface, PadContact, PadsConfig,
 };
 use annular_plate::dynamics::{stability, Simulation};
 use annular_plate::model::AngularShape;
@@ -38,7 +38,7 @@ fn scene(surface: ContactSurface, mu: f64) -> Config {
         angular: 0.0,
     });
     c.joint.speed = SPEED;
-    c.pads = Some(PadsConfig {
+    c.set_section(PadsConfig {
         contacts: vec![PadContact { node: 0, pad: 0 }],
         clamp_force: vec![CLAMP],
         contact_stiffness: STIFFNESS,
@@ -185,7 +185,7 @@ fn simulated_growth_rate(mu: f64) -> (f64, f64) {
 }
 
 fn simulated_growth_rate_of(c: Config) -> (f64, f64) {
-    let mu = c.pads.as_ref().unwrap().friction_coefficient;
+    let mu = c.section::<PadsConfig>().unwrap().friction_coefficient;
     let mut sim = Simulation::new(c).unwrap();
     let mode = stability::critical_mode(sim.scene(), SPEED, mu, &[CLAMP]);
     let n = sim.model().n_modes();
@@ -290,10 +290,10 @@ fn ale_and_lagrangian_descriptions_converge_to_one_motion_with_face_friction() {
 #[test]
 fn the_ring_of_pads_threshold_with_face_friction_matches_its_closed_form() {
     let mut c = support::scene_files::load("brake_squeal_paper.yaml");
-    c.pads.as_mut().unwrap().contact_surface = ContactSurface::Faces;
+    c.section_mut::<PadsConfig>().unwrap().contact_surface = ContactSurface::Faces;
     let sim = Simulation::new(c.clone()).unwrap();
     let model = sim.model();
-    let pads = c.pads.as_ref().unwrap();
+    let pads = c.section::<PadsConfig>().unwrap();
     let (n, clamp, kc, h) = (
         pads.contacts.len() as f64,
         pads.clamp_force[0],
@@ -340,7 +340,7 @@ fn the_ring_of_pads_threshold_with_face_friction_matches_its_closed_form() {
 fn a_falling_friction_coefficient_matches_the_closed_form_and_lowers_the_threshold() {
     let (excess, vs) = (0.2, 2.0);
     let mut c = scene(ContactSurface::Faces, 0.0);
-    let pads = c.pads.as_mut().unwrap();
+    let pads = c.section_mut::<PadsConfig>().unwrap();
     pads.static_friction_coefficient = Some(excess);
     pads.stribeck_speed = vs;
     let sim = Simulation::new(c).unwrap();
@@ -364,7 +364,7 @@ fn a_falling_friction_coefficient_matches_the_closed_form_and_lowers_the_thresho
     // The simulation (the nonlinear law at every RK4 stage) grows at the eigenvalue's rate.
     for factor in [0.7, 1.5] {
         let mut c = scene(ContactSurface::Faces, factor * eig);
-        let pads = c.pads.as_mut().unwrap();
+        let pads = c.section_mut::<PadsConfig>().unwrap();
         pads.static_friction_coefficient = Some(factor * eig + excess);
         pads.stribeck_speed = vs;
         let (rate, slope) = simulated_growth_rate_of(c);
@@ -385,7 +385,7 @@ fn face_friction_keys_are_read_and_a_speed_law_without_faces_is_refused_naming_t
         )
     };
     let c = Config::from_yaml_str(&file("      contact_surface: faces\n      static_friction_coefficient: 0.5\n      stribeck_speed: 2.0\n"), "annular_plate").unwrap();
-    let p = c.pads.unwrap();
+    let p = c.section::<PadsConfig>().cloned().unwrap();
     assert_eq!(
         (
             p.contact_surface,
@@ -398,8 +398,10 @@ fn face_friction_keys_are_read_and_a_speed_law_without_faces_is_refused_naming_t
     // `faces` is the default; `mid_plane` reproduces the paper.
     assert_eq!(
         (
-            c.pads.as_ref().unwrap().contact_surface,
-            c.pads.as_ref().unwrap().static_friction_coefficient
+            c.section::<PadsConfig>().unwrap().contact_surface,
+            c.section::<PadsConfig>()
+                .unwrap()
+                .static_friction_coefficient
         ),
         (ContactSurface::Faces, None)
     );

@@ -5,11 +5,11 @@
 //! thresholds as the mass vanishes; the two descriptions agree; bad input is
 //! refused naming the key.
 
-use annular_plate::config::{
-    Boundary, Caliper, Config, ContactSurface, Coordinates, IntegratorKind, NodePosition,
-    PadContact, PadsConfig,
-};
+use annular_plate::config::{Boundary, Config, Coordinates, IntegratorKind, NodePosition};
 use annular_plate::dynamics::load_models::pad::Pads;
+use annular_plate::dynamics::load_models::pad_config::{
+    Caliper, ContactSurface, PadContact, PadsConfig,
+};
 use annular_plate::dynamics::{stability, Simulation};
 use annular_plate::model::AngularShape;
 use faer::Mat;
@@ -46,7 +46,7 @@ fn scene(caliper: Caliper, mass: f64, backing: Option<f64>, mu: f64, angles: &[f
         });
     }
     c.joint.speed = SPEED;
-    c.pads = Some(PadsConfig {
+    c.set_section(PadsConfig {
         contacts: (0..angles.len())
             .map(|node| PadContact { node, pad: 0 })
             .collect(),
@@ -115,7 +115,7 @@ fn one_pad_on_one_mode_pair_has_the_frequencies_of_its_characteristic_polynomial
     for (caliper, backing) in CALIPERS {
         let mut c = scene(caliper, PAD_MASS, backing, 0.0, &[0.0]);
         c.plate.damping = vec![0.0];
-        c.pads.as_mut().unwrap().contact_damping = 0.0;
+        c.section_mut::<PadsConfig>().unwrap().contact_damping = 0.0;
         c.joint.speed = 0.0;
         let sim = Simulation::new(c).unwrap();
         let p = pair(&sim);
@@ -290,7 +290,7 @@ fn the_friction_threshold_with_pad_mass_matches_the_tests_own_eigen_solve() {
 /// started on its eigenvector, y = (q̄, q̄̇, ξ, ξ̇) with ξ the pads'
 /// compressions from rest (their slot minus x₀).
 fn simulated_growth_rate(c: Config, steps: usize) -> (f64, f64) {
-    let mu = c.pads.as_ref().unwrap().friction_coefficient;
+    let mu = c.section::<PadsConfig>().unwrap().friction_coefficient;
     let mut sim = Simulation::new(c).unwrap();
     let mode = stability::critical_mode(sim.scene(), SPEED, mu, &[CLAMP]);
     let n = sim.model().n_modes();
@@ -483,8 +483,8 @@ fn bad_pad_mass_data_is_refused_naming_the_key() {
     let c = Config::from_yaml_str(&file("      mass: 0.3\n"), "annular_plate").unwrap();
     assert_eq!(
         (
-            c.pads.as_ref().unwrap().mass,
-            c.pads.as_ref().unwrap().backing_stiffness
+            c.section::<PadsConfig>().unwrap().mass,
+            c.section::<PadsConfig>().unwrap().backing_stiffness
         ),
         (0.3, None)
     );
@@ -493,7 +493,13 @@ fn bad_pad_mass_data_is_refused_naming_the_key() {
         "annular_plate",
     )
     .unwrap();
-    assert_eq!(c.pads.unwrap().backing_stiffness, Some(1.0e8));
+    assert_eq!(
+        c.section::<PadsConfig>()
+            .cloned()
+            .unwrap()
+            .backing_stiffness,
+        Some(1.0e8)
+    );
     let refused = |extra: &str, needles: &[&str]| {
         let e = Config::from_yaml_str(&file(extra), "annular_plate")
             .unwrap_err()
@@ -541,7 +547,7 @@ fn bad_pad_mass_data_is_refused_naming_the_key() {
     assert_eq!(
         Config::from_yaml_str(&other("true", "rk4"), "annular_plate")
             .unwrap()
-            .pads
+            .section::<PadsConfig>()
             .unwrap()
             .mass,
         0.3
@@ -569,14 +575,14 @@ fn the_shipped_squeal_scene_thresholds_with_pad_mass() {
         massless.scene(),
         speed,
         target,
-        &c.pads.as_ref().unwrap().clamp_force,
+        &c.section::<PadsConfig>().unwrap().clamp_force,
     )
     .eigenvalue
     .im / std::f64::consts::TAU;
     println!("massless: μ_c = {target:.6}, {f0:.1} Hz");
     for mass in [1e-4, 0.1, 0.2, 0.3, 0.5, 1.0] {
         let mut m = c.clone();
-        m.pads.as_mut().unwrap().mass = mass;
+        m.section_mut::<PadsConfig>().unwrap().mass = mass;
         let sim = Simulation::new(m.clone()).unwrap();
         let mu = stability::friction_threshold(sim.scene(), speed, 2.0);
         let f = mu.map(|mu| {
@@ -584,7 +590,7 @@ fn the_shipped_squeal_scene_thresholds_with_pad_mass() {
                 sim.scene(),
                 speed,
                 mu,
-                &m.pads.as_ref().unwrap().clamp_force,
+                &m.section::<PadsConfig>().unwrap().clamp_force,
             )
             .eigenvalue
             .im / std::f64::consts::TAU
@@ -593,7 +599,7 @@ fn the_shipped_squeal_scene_thresholds_with_pad_mass() {
             sim.scene(),
             speed,
             0.5,
-            &m.pads.as_ref().unwrap().clamp_force,
+            &m.section::<PadsConfig>().unwrap().clamp_force,
         );
         println!("m_p = {mass} kg: μ_c = {mu:?}, {f:?} Hz; Re λ at μ = 0.5: {rate:.3} 1/s");
         if mass == 1e-4 {
@@ -613,7 +619,7 @@ fn the_shipped_squeal_scene_thresholds_with_pad_mass() {
     // The shipped file as it is, in series with the residual flexibility:
     // the ring again leaves the threshold to the massless one.
     let shipped = support::scene_files::load("brake_squeal.yaml");
-    let clamp = shipped.pads.as_ref().unwrap().clamp_force.clone();
+    let clamp = shipped.section::<PadsConfig>().unwrap().clamp_force.clone();
     let massless = stability::friction_threshold(
         Simulation::new(shipped.clone()).unwrap().scene(),
         speed,
@@ -621,7 +627,7 @@ fn the_shipped_squeal_scene_thresholds_with_pad_mass() {
     )
     .unwrap();
     let mut heavy = shipped.clone();
-    heavy.pads.as_mut().unwrap().mass = 0.3;
+    heavy.section_mut::<PadsConfig>().unwrap().mass = 0.3;
     let sim = Simulation::new(heavy).unwrap();
     let mu = stability::friction_threshold(sim.scene(), speed, 2.0).unwrap();
     println!("in series, m_p = 0.3 kg: μ_c = {mu:.9} (massless {massless:.9}); Re λ at μ = 0.5: {:.3} 1/s", stability::growth_rate(sim.scene(), speed, 0.5, &clamp));
@@ -636,13 +642,14 @@ fn the_shipped_squeal_scene_thresholds_with_pad_mass() {
         for (i, node) in arc.nodes.ale.iter_mut().enumerate() {
             node.angular = ((i as f64 + 0.5) / 18.0 - 0.5) * 60.0 / 360.0;
         }
-        arc.pads.as_mut().unwrap().caliper = caliper;
-        let clamp = arc.pads.as_ref().unwrap().clamp_force.clone();
+        arc.section_mut::<PadsConfig>().unwrap().caliper = caliper;
+        let clamp = arc.section::<PadsConfig>().unwrap().clamp_force.clone();
         let mut massless_mu = None;
         for mass in [0.0, 1e-4, 0.1, 0.2, 0.3, 0.5, 1.0] {
             let mut m = arc.clone();
-            m.pads.as_mut().unwrap().mass = mass;
-            m.pads.as_mut().unwrap().backing_stiffness = if mass > 0.0 { backing } else { None };
+            m.section_mut::<PadsConfig>().unwrap().mass = mass;
+            m.section_mut::<PadsConfig>().unwrap().backing_stiffness =
+                if mass > 0.0 { backing } else { None };
             let sim = Simulation::new(m).unwrap();
             let mu = stability::friction_threshold(sim.scene(), speed, 5.0);
             let f = mu.map(|mu| {

@@ -7,7 +7,8 @@
 //! The start-up path (`-p`, the params file) refuses what the service
 //! refuses, and accepts what it accepts.
 
-use annular_plate::config::{table, Config, ParamValue, Params};
+use annular_plate::config::{Config, ParamValue, Params};
+use annular_plate::dynamics::load_models::PARAMETERS;
 use annular_plate::dynamics::Simulation;
 use annular_plate::messages::clock::Pacer;
 use annular_plate::messages::settings::RosSettings;
@@ -95,7 +96,7 @@ fn every_value_of_every_type_sent_to_every_key_is_refused_naming_the_key_or_keep
     let mut realtime_factor = 1.0;
     let mut pacer = Pacer::new(dt, realtime_factor, Instant::now());
     let mut stale = StaleWrenches::new(0.0, sim.n_ale_nodes(), sim.n_lagrange_nodes());
-    let mut keys: Vec<&str> = table::params().map(|p| p.key).collect();
+    let mut keys: Vec<&str> = PARAMETERS.params().map(|p| p.key).collect();
     keys.extend([
         "no.such_key",
         "",

@@ -5,8 +5,9 @@
 
 mod support;
 
-use annular_plate::config::table::{self, Value};
+use annular_plate::config::table::Value;
 use annular_plate::config::{Config, Params};
+use annular_plate::dynamics::load_models::PARAMETERS;
 use annular_plate::messages::settings::RosSettings;
 use std::path::Path;
 use support::scene_files;
@@ -43,17 +44,17 @@ fn generated_block(file: &str, generated: &str) {
 
 #[test]
 fn docs_parameters_md_is_what_the_table_generates() {
-    generated_block("docs/parameters.md", &table::reference_markdown());
+    generated_block("docs/parameters.md", &PARAMETERS.reference_markdown());
 }
 
 #[test]
 fn the_readme_key_index_is_what_the_table_generates() {
-    generated_block("README.md", &table::key_index_markdown());
+    generated_block("README.md", &PARAMETERS.key_index_markdown());
 }
 
 #[test]
 fn every_key_is_declared_once() {
-    let keys: Vec<&str> = table::params().map(|p| p.key).collect();
+    let keys: Vec<&str> = PARAMETERS.params().map(|p| p.key).collect();
     let mut unique = keys.clone();
     unique.sort();
     unique.dedup();
@@ -80,9 +81,15 @@ fn base_for(section: &str) -> Params {
             let text = "annular_plate:\n  ros__parameters:\n    calipers: {angles_deg: [0.0], inner_radius: 0.09, outer_radius: 0.14}\n";
             Params::from_yaml_str(text, scene_files::NODE).unwrap()
         }
-        (None, "springs") => {
-            let text = "annular_plate:\n  ros__parameters:\n    nodes: {ale_radial: [1.0], ale_angular: [0.0]}\n    springs: {ale_nodes: [1]}\n";
-            Params::from_yaml_str(text, scene_files::NODE).unwrap()
+        // Any other load model that names nodes: one node of each kind, the first one.
+        (None, s)
+            if PARAMETERS
+                .enabled_by(s)
+                .is_some_and(|k| k.ends_with("_nodes")) =>
+        {
+            let key = PARAMETERS.enabled_by(s).unwrap();
+            let text = format!("annular_plate:\n  ros__parameters:\n    nodes: {{ale_radial: [1.0], ale_angular: [0.0], lagrange_radial: [1.0], lagrange_angular: [0.0]}}\n    {key}: [1]\n");
+            Params::from_yaml_str(&text, scene_files::NODE).unwrap()
         }
         _ => Params::new(),
     }
@@ -91,7 +98,7 @@ fn base_for(section: &str) -> Params {
 #[test]
 fn every_declared_default_is_what_leaving_the_key_out_yields() {
     let mut checked = 0;
-    for section in table::SECTIONS {
+    for section in PARAMETERS.sections() {
         let base = base_for(section.name);
         for p in section.params {
             let Some(value) = p.default.to_param() else {

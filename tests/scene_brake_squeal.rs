@@ -11,6 +11,7 @@ mod support;
 
 use annular_plate::config::Config;
 use annular_plate::dynamics::load_models::face_friction::face_kinematics;
+use annular_plate::dynamics::load_models::pad_config::PadsConfig;
 use annular_plate::dynamics::load_models::pad_outputs::PadOutputs;
 use annular_plate::dynamics::{stability, Simulation};
 use annular_plate::model::AngularShape;
@@ -28,7 +29,7 @@ fn scene() -> Config {
 
 fn with_friction(mu: f64) -> Config {
     let mut c = scene();
-    c.pads.as_mut().unwrap().friction_coefficient = mu;
+    c.section_mut::<PadsConfig>().unwrap().friction_coefficient = mu;
     c
 }
 
@@ -61,7 +62,7 @@ fn threshold() -> f64 {
 fn ring_closed_form(c: &Config) -> f64 {
     let sim = Simulation::new(c.clone()).unwrap();
     let model = sim.model();
-    let pads = c.pads.as_ref().unwrap();
+    let pads = c.section::<PadsConfig>().unwrap();
     let (n, clamp, h) = (
         pads.contacts.len() as f64,
         pads.clamp_force[0],
@@ -159,7 +160,8 @@ fn the_threshold_is_in_the_brake_range_and_matches_the_ring_closed_form_with_fac
     );
     // The paper's mid-plane model with the same data never squeals.
     let mut c = scene();
-    c.pads.as_mut().unwrap().contact_surface = annular_plate::config::ContactSurface::MidPlane;
+    c.section_mut::<PadsConfig>().unwrap().contact_surface =
+        annular_plate::dynamics::load_models::pad_config::ContactSurface::MidPlane;
     let sim = Simulation::new(c).unwrap();
     assert_eq!(stability::friction_threshold(sim.scene(), 3.0, 2.0), None);
 }
@@ -229,7 +231,7 @@ fn limit_cycle_of(c: Config, seconds: f64) -> Vec<(f64, f64, f64)> {
 fn squeal_settles_in_a_limit_cycle_with_every_contact_closed_bounded_by_the_sliding_direction() {
     let c = scene();
     let v = c.joint.speed * Simulation::new(c.clone()).unwrap().scene().ale_nodes[0].radius;
-    let preload = c.pads.as_ref().unwrap().clamp_force[0] / 18.0;
+    let preload = c.section::<PadsConfig>().unwrap().clamp_force[0] / 18.0;
     let mu_c = threshold();
     let mut cycles = Vec::new();
     for (mu, seconds) in [(0.5, 3.0), (1.1 * mu_c, 5.0)] {
@@ -273,7 +275,7 @@ fn variant(radial: f64, mu: f64, mu_s: Option<f64>, rate: f64) -> Config {
     }
     c.joint.speed = 1.0;
     c.simulation.rate_hz = rate;
-    let p = c.pads.as_mut().unwrap();
+    let p = c.section_mut::<PadsConfig>().unwrap();
     p.friction_coefficient = mu;
     p.static_friction_coefficient = mu_s;
     p.stribeck_speed = 0.1;
@@ -300,7 +302,7 @@ fn the_couple_driven_cycle_stays_near_half_the_sliding_speed_and_only_a_steep_mu
         let c = variant(radial, factor * mu_c, mu_s, rate);
         let sim = Simulation::new(c.clone()).unwrap();
         let v = sim.scene().ale_nodes[0].radius;
-        let pads = c.pads.as_ref().unwrap();
+        let pads = c.section::<PadsConfig>().unwrap();
         let f = stability::critical_mode(
             sim.scene(),
             1.0,
@@ -354,7 +356,7 @@ fn the_csv_decimation_refuses_to_alias_the_squeal_unless_allowed() {
     // The squeal is the ⟨2, 0⟩ pair with the pads at μ = 0.5, about 1.52 kHz
     // (the critical mode of the shipped file, in series with the residual): 2 kHz would alias it.
     let shipped = Simulation::new(scenes::load("brake_squeal.yaml")).unwrap();
-    let pads = shipped.config().pads.clone().unwrap();
+    let pads = shipped.config().section::<PadsConfig>().cloned().unwrap();
     let mode = stability::critical_mode(
         shipped.scene(),
         3.0,

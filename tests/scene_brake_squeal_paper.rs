@@ -7,7 +7,8 @@
 
 mod support;
 
-use annular_plate::config::{Caliper, Config, ConfigError};
+use annular_plate::config::{Config, ConfigError};
+use annular_plate::dynamics::load_models::pad_config::{Caliper, PadsConfig};
 use annular_plate::dynamics::load_models::pad_outputs::PadOutputs;
 use annular_plate::dynamics::load_models::tool::ToolOutputs;
 use annular_plate::dynamics::{stability, LoadCommandError, Simulation, StepError};
@@ -25,7 +26,7 @@ fn scene_text() -> String {
 /// The scene with friction coefficient μ, with or without lift-off.
 fn with_friction(mu: f64, lift_off: bool) -> Config {
     let mut c = scene();
-    let pads = c.pads.as_mut().unwrap();
+    let pads = c.section_mut::<PadsConfig>().unwrap();
     pads.friction_coefficient = mu;
     pads.lift_off = lift_off;
     c
@@ -68,10 +69,10 @@ fn linearised_threshold_matches_the_closed_form_of_a_ring_of_pads() {
     // whose root crosses the imaginary axis at σ − d kΩ = (2ζωm + d) ω_p, ω_p² = ω² + p/m.
     for contact_damping in [0.0, 1.0] {
         let mut c = scene();
-        c.pads.as_mut().unwrap().contact_damping = contact_damping;
+        c.section_mut::<PadsConfig>().unwrap().contact_damping = contact_damping;
         let sim = Simulation::new(c.clone()).unwrap();
         let model = sim.model();
-        let pads = c.pads.as_ref().unwrap();
+        let pads = c.section::<PadsConfig>().unwrap();
         let n = pads.contacts.len() as f64;
         let clamp = pads.clamp_force[0];
         let r = sim.scene().ale_nodes[0].radius;
@@ -191,7 +192,7 @@ fn a_fixed_caliper_with_lift_off_does_not_saturate() {
     // off, the other one is pressed harder, friction grows with the amplitude
     // and the follower force outgrows the damping — no limit cycle.
     let mut c = scene();
-    c.pads.as_mut().unwrap().caliper = Caliper::Fixed;
+    c.section_mut::<PadsConfig>().unwrap().caliper = Caliper::Fixed;
     let mut sim = Simulation::new(c).unwrap();
     let (env, err) = envelope(&mut sim, 10.0, 0.5);
     println!(
@@ -208,7 +209,7 @@ fn a_fixed_caliper_with_lift_off_does_not_saturate() {
 #[test]
 fn without_follower_friction_the_pads_cannot_squeal() {
     let mut c = scene();
-    c.pads.as_mut().unwrap().follower_friction = false;
+    c.section_mut::<PadsConfig>().unwrap().follower_friction = false;
     let sim = Simulation::new(c).unwrap();
     assert_eq!(stability::friction_threshold(sim.scene(), 25.0, 2.0), None);
     assert!(stability::max_growth_rate(sim.scene(), 25.0) < 0.0);

@@ -10,6 +10,7 @@ mod support;
 use annular_plate::config::Config;
 use annular_plate::dynamics::load_models::pad_outputs::PadOutputs;
 use annular_plate::dynamics::load_models::tool::ToolOutputs;
+use annular_plate::dynamics::load_models::tool_config::ToolConfig;
 use annular_plate::ros::NodeSetup;
 use support::scene_files;
 
@@ -76,7 +77,10 @@ fn later_params_files_and_p_override_the_scene_and_node_only_files_keep_the_buil
     )
     .unwrap();
     assert_eq!(s.config.joint.speed, 42.0);
-    assert!(s.config.tool.is_some(), "still the lathe");
+    assert!(
+        s.config.section::<ToolConfig>().is_some(),
+        "still the lathe"
+    );
     let s = NodeSetup::load(
         None,
         &args(&[
@@ -109,7 +113,7 @@ fn later_params_files_and_p_override_the_scene_and_node_only_files_keep_the_buil
         ]),
     )
     .unwrap();
-    assert!(s.config.tool.is_some() && s.settings.frame_prefix == "bench/");
+    assert!(s.config.section::<ToolConfig>().is_some() && s.settings.frame_prefix == "bench/");
     std::fs::remove_dir_all(&dir).unwrap();
 }
 

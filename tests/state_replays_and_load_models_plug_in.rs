@@ -5,7 +5,8 @@
 
 mod support;
 
-use annular_plate::config::{Config, IntegratorKind, NodePosition, SpringsConfig, WrenchConfig};
+use annular_plate::config::{Config, IntegratorKind, NodePosition, WrenchConfig};
+use annular_plate::dynamics::load_models::point_spring::SpringsConfig;
 use annular_plate::dynamics::{Simulation, Stepper};
 use support::scene_files;
 
@@ -74,7 +75,7 @@ fn one_mode_with_spring(stiffness: f64, damping_ratio: f64) -> Config {
         radial: 1.0,
         angular: 0.0,
     }];
-    c.springs = Some(SpringsConfig {
+    c.set_section(SpringsConfig {
         nodes: vec![0],
         stiffness,
         damping: 0.0,

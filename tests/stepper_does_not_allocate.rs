@@ -2,6 +2,9 @@
 //! the stepper is built (a counting global allocator watches the steps).
 
 use annular_plate::config::{Config, Coordinates, IntegratorKind, NodePosition, WrenchConfig};
+use annular_plate::dynamics::load_models::pad_config::{
+    Caliper, ContactSurface, PadContact, PadsConfig,
+};
 use annular_plate::dynamics::{Simulation, Wrench};
 use std::alloc::{GlobalAlloc, Layout, System};
 use std::cell::Cell;
@@ -109,7 +112,6 @@ fn stepping_with_changing_inputs_allocates_nothing() {
 /// stage slots are scratch, so stepping still allocates nothing.
 #[test]
 fn stepping_with_massive_pads_allocates_nothing() {
-    use annular_plate::config::{Caliper, ContactSurface, PadContact, PadsConfig};
     for (caliper, backing) in [(Caliper::Floating, None), (Caliper::Fixed, Some(3.0e7))] {
         for (coords, residual) in [
             (Coordinates::Ale, false),
@@ -132,7 +134,7 @@ fn stepping_with_massive_pads_allocates_nothing() {
                 radial: 0.6,
                 angular: 0.2,
             });
-            c.pads = Some(PadsConfig {
+            c.set_section(PadsConfig {
                 contacts: vec![
                     PadContact { node: 0, pad: 0 },
                     PadContact { node: 1, pad: 0 },

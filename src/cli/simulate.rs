@@ -175,14 +175,7 @@ impl RowWriter {
 /// squeal — at the space-fixed nodes (|Im λ|/2π of the ALE system). `None`
 /// for scenes without pads.
 pub fn relevant_frequency(sim: &Simulation) -> Option<f64> {
-    let pads = sim.config().pads.as_ref()?;
-    let mode = stability::critical_mode(
-        sim.scene(),
-        sim.config().joint.speed,
-        pads.friction_coefficient,
-        &pads.clamp_force,
-    );
-    Some(mode.eigenvalue.im.abs() / std::f64::consts::TAU)
+    stability::squeal_frequency(sim)
 }
 
 /// Refuses `--output-rate` `rate` Hz when its Nyquist frequency rate/2 is

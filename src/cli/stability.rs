@@ -5,6 +5,7 @@
 use super::campbell::parse_range;
 use super::error::{CliError, CliResult};
 use crate::config::Params;
+use crate::dynamics::stability;
 use crate::dynamics::stability_map::{shard_rows, stability_map, SpeedRow};
 use crate::dynamics::Simulation;
 use serde::{Deserialize, Serialize};
@@ -149,7 +150,7 @@ impl StabilityMap {
 /// given value or its default, in the table's order.
 pub fn params_digest(params: &Params) -> String {
     let mut h: u64 = 0xcbf2_9ce4_8422_2325;
-    for p in crate::config::table::params() {
+    for p in crate::dynamics::load_models::PARAMETERS.params() {
         let value = params.get(p.key).cloned().or_else(|| p.default.to_param());
         for b in format!("{}={value:?}\n", p.key).bytes() {
             h = (h ^ u64::from(b)).wrapping_mul(0x0100_0000_01b3);
@@ -221,7 +222,7 @@ pub fn main(args: StabilityArgs) -> CliResult<()> {
     if let Some(p) = &args.plot {
         super::plot::check_output_path(p)?;
     }
-    if config.pads.is_none() {
+    if !stability::has_pads(&config) {
         return Err(CliError::Usage(format!(
             "{}: the scene has no pads (pads.*): nothing can squeal",
             file.display()

@@ -1,5 +1,5 @@
 //! The one check of a parameter value against its declaration
-//! ([`super::table`]): known key, declared type (strict, as rclcpp's: an
+//! ([`Parameters`]): known key, declared type (strict, as rclcpp's: an
 //! integer is not a double), every double finite, every number in the
 //! declared range. Every source of a value goes through it: the parameter
 //! file and `-p` (`Config::from_params` and `RosSettings::from_params` read
@@ -9,14 +9,18 @@
 //! (`plate.inner_radius` < `plate.outer_radius`, …) stay with their section
 //! in `validate.rs`.
 
-use super::table::{self, Bound, Param, Ty};
-use super::{ConfigError, ParamValue, Params};
+use super::table::{Bound, Param, Ty};
+use super::{ConfigError, ParamValue, Parameters, Params};
 
 /// Check `value` for `key`: the key is declared, the value has its type and
 /// lies in its range. The error names the key (`key[i]` for an array element).
-pub fn check(key: &str, value: &ParamValue) -> Result<&'static Param, ConfigError> {
-    let Some(param) = table::find(key) else {
-        return Err(unknown(key));
+pub fn check(
+    decl: &Parameters,
+    key: &str,
+    value: &ParamValue,
+) -> Result<&'static Param, ConfigError> {
+    let Some(param) = decl.find(key) else {
+        return Err(unknown(decl, key));
     };
     let wrong = || ConfigError::WrongType {
         key: key.to_string(),
@@ -49,8 +53,8 @@ pub fn check(key: &str, value: &ParamValue) -> Result<&'static Param, ConfigErro
     }
 }
 
-fn unknown(key: &str) -> ConfigError {
-    let known: Vec<&str> = table::params().map(|p| p.key).collect();
+fn unknown(decl: &Parameters, key: &str) -> ConfigError {
+    let known = decl.known_keys();
     ConfigError::UnknownKey {
         key: key.to_string(),
         suggestion: suggest(key, &known),
@@ -58,10 +62,10 @@ fn unknown(key: &str) -> ConfigError {
 }
 
 /// Check every value of a parameter set ([`check`]).
-pub fn check_params(params: &Params) -> Result<(), ConfigError> {
+pub fn check_params(decl: &Parameters, params: &Params) -> Result<(), ConfigError> {
     params
         .iter()
-        .try_for_each(|(key, value)| check(key, value).map(|_| ()))
+        .try_for_each(|(key, value)| check(decl, key, value).map(|_| ()))
 }
 
 /// The value of `key` in `params` after [`check`], or its declared default
@@ -69,22 +73,27 @@ pub fn check_params(params: &Params) -> Result<(), ConfigError> {
 /// the configuration (`config::raw::Reader`) and of the node's settings
 /// (`RosSettings::from_params`) take every value through this.
 pub(crate) fn declared_value(
+    decl: &Parameters,
     params: &Params,
     key: &str,
 ) -> Result<Option<ParamValue>, ConfigError> {
     match params.get(key) {
-        Some(value) => check(key, value).map(|_| Some(value.clone())),
-        None => match table::find(key) {
+        Some(value) => check(decl, key, value).map(|_| Some(value.clone())),
+        None => match decl.find(key) {
             Some(param) => Ok(param.default.to_param()),
-            None => Err(unknown(key)),
+            None => Err(unknown(decl, key)),
         },
     }
 }
 
 /// The given value of `key` after [`check`] (its default not applied).
-pub(crate) fn given_value(params: &Params, key: &str) -> Result<Option<ParamValue>, ConfigError> {
+pub(crate) fn given_value(
+    decl: &Parameters,
+    params: &Params,
+    key: &str,
+) -> Result<Option<ParamValue>, ConfigError> {
     match params.get(key) {
-        Some(value) => check(key, value).map(|_| Some(value.clone())),
+        Some(value) => check(decl, key, value).map(|_| Some(value.clone())),
         None => Ok(None),
     }
 }
@@ -164,10 +173,16 @@ impl Declared for Vec<String> {
 }
 
 /// `value` (of `key`) as `T`, or the wrong-type error of [`check`].
-pub(crate) fn typed<T: Declared>(key: &str, value: &ParamValue) -> Result<T, ConfigError> {
+pub(crate) fn typed<T: Declared>(
+    decl: &Parameters,
+    key: &str,
+    value: &ParamValue,
+) -> Result<T, ConfigError> {
     T::from_value(value).ok_or_else(|| ConfigError::WrongType {
         key: key.to_string(),
-        expected: table::find(key).map_or("a declared type", |p| p.ty.expected()),
+        expected: decl
+            .find(key)
+            .map_or("a declared type", |p| p.ty.expected()),
         found: format!("{} {value}", value.type_name()),
     })
 }
@@ -175,8 +190,8 @@ pub(crate) fn typed<T: Declared>(key: &str, value: &ParamValue) -> Result<T, Con
 /// A text value (file, `-p`) for a key declared double (or double array)
 /// written as an integer (`rate_hz: 1000`, `[0, 0, -100]`) is read as the
 /// double it spells; a typed value (a parameter service's) is not converted.
-pub fn read_as_declared(key: &str, value: ParamValue) -> ParamValue {
-    match (table::find(key).map(|p| p.ty), value) {
+pub fn read_as_declared(decl: &Parameters, key: &str, value: ParamValue) -> ParamValue {
+    match (decl.find(key).map(|p| p.ty), value) {
         (Some(Ty::Double | Ty::AutoOrDouble), ParamValue::Integer(i)) => {
             ParamValue::Double(i as f64)
         }

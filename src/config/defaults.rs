@@ -1,26 +1,38 @@
-//! The declared defaults of [`super::table`] by key, as `const fn`s: a
+//! The declared defaults of the configuration's own sections ([`super::table`]) by key, as `const fn`s: a
 //! default that a constant or a `Default` impl needs is read from the
 //! declaration when the crate compiles (`const { default_f64("joint.speed") }`),
 //! so each default is written once; an undeclared key, or a default of
 //! another type, does not compile.
 
-use super::table::{Value, SECTIONS};
+use super::table::{Section, Value, AFTER_LOAD_MODELS, BEFORE_LOAD_MODELS};
 
 /// The declared default of `key`.
 pub const fn default_of(key: &str) -> Value {
+    match default_in(BEFORE_LOAD_MODELS, key) {
+        Some(v) => v,
+        None => match default_in(AFTER_LOAD_MODELS, key) {
+            Some(v) => v,
+            None => panic!("default_of: the key is not declared in config/table.rs"),
+        },
+    }
+}
+
+/// The declared default of `key` among `sections` (a load model's own,
+/// `const { default_in(SECTIONS, "springs.stiffness") }`), `None` if undeclared there.
+pub const fn default_in(sections: &[Section], key: &str) -> Option<Value> {
     let mut s = 0;
-    while s < SECTIONS.len() {
-        let params = SECTIONS[s].params;
+    while s < sections.len() {
+        let params = sections[s].params;
         let mut i = 0;
         while i < params.len() {
             if same(params[i].key, key) {
-                return params[i].default;
+                return Some(params[i].default);
             }
             i += 1;
         }
         s += 1;
     }
-    panic!("default_of: the key is not declared in config/table.rs")
+    None
 }
 
 const fn same(a: &str, b: &str) -> bool {

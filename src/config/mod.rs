@@ -6,13 +6,12 @@
 //! flat arrays only), rejects unknown keys and checks every rule; errors name
 //! the key (`plate.inner_radius`) and the rule.
 
-pub mod calipers;
 mod centrifugal;
 mod check;
+mod declarations;
 pub mod defaults;
 mod error;
-mod load_model_sections;
-mod load_models;
+pub mod model_sections;
 mod params_file;
 mod plate_section;
 mod raw;
@@ -22,15 +21,13 @@ mod text_limits;
 mod validate;
 
 pub use centrifugal::{CentrifugalConfig, InPlaneInner};
-pub use check::{check, check_params};
 #[cfg(feature = "ros")] // the ROS settings read them
 pub(crate) use check::{declared_value, typed, Declared};
+pub use declarations::{ModelParameters, Parameters};
 pub use error::{ConfigError, Degeneracy};
-pub use load_models::{
-    Caliper, ContactSurface, LinksConfig, PadContact, PadsConfig, SpringsConfig, ToolConfig,
-    MAX_TOOL_FEED_RATE,
-};
+pub use model_sections::{LoadModelSection, LoadModelSections, SectionContext, SectionData};
 pub use params_file::{ParamValue, Params};
+pub use raw::Reader;
 pub use simulation::{
     Coordinates, IntegratorKind, SimulationConfig, DEFAULT_MIDPOINT_STEP_LIMIT,
     DEFAULT_RK4_STEP_LIMIT, MAX_MIDPOINT_STEP_LIMIT, MAX_RK4_STEP_LIMIT, MIN_CONTACT_TOLERANCE,
@@ -481,45 +478,33 @@ pub struct Config {
     pub gravity: [f64; 3],
     pub simulation: SimulationConfig,
     pub limits: LimitsConfig,
-    /// Brake pads (`pads.*`); `None`: no pads.
-    pub pads: Option<PadsConfig>,
-    /// Lathe tool (`tool.*`); `None`: no tool.
-    pub tool: Option<ToolConfig>,
-    /// Swash-plate pitch links (`links.*`); `None`: no links.
-    pub links: Option<LinksConfig>,
-    /// Space-fixed point springs (`springs.*`); `None`: no springs.
-    pub springs: Option<SpringsConfig>,
+    /// The load models' validated sections (each declared and read in its
+    /// model's own file); a model is on when its section is here.
+    pub load_models: LoadModelSections,
     /// Initial elastic state (`initial.*`).
     pub initial: InitialConfig,
     /// Centrifugal stiffening (`plate.centrifugal_stiffening`, `plate.in_plane_inner`).
     pub centrifugal: CentrifugalConfig,
 }
 
+/// Reading a parameter file into a `Config` needs every declaration, the
+/// load models' too: `Config::from_params` and its companions are defined
+/// with the registry (`dynamics::load_models::parameters`), on
+/// [`Parameters::config`].
 impl Config {
-    /// Read and validate a ROS 2 parameter file for the node `node_name`
-    /// (entries under `/**` apply to every node; a node's own entry wins).
-    pub fn from_params_file(
-        path: &std::path::Path,
-        node_name: &str,
-    ) -> Result<Config, ConfigError> {
-        let params = Params::from_file(path, node_name)?;
-        Config::from_params(&params)
+    /// The load model section of type `T`, if the scene has it.
+    pub fn section<T: LoadModelSection>(&self) -> Option<&T> {
+        self.load_models.get::<T>()
     }
 
-    /// Read and validate the text of a ROS 2 parameter file for the node `node_name`.
-    pub fn from_yaml_str(text: &str, node_name: &str) -> Result<Config, ConfigError> {
-        let params = Params::from_yaml_str(text, node_name)?;
-        Config::from_params(&params)
+    /// The load model section of type `T`, to change.
+    pub fn section_mut<T: LoadModelSection>(&mut self) -> Option<&mut T> {
+        self.load_models.get_mut::<T>()
     }
 
-    /// Validate a flat parameter set (dotted names → values).
-    pub fn from_params(params: &Params) -> Result<Config, ConfigError> {
-        validate::config_from_params(params)
-    }
-
-    /// Every parameter name the configuration accepts (`plate.inner_radius`, …).
-    pub fn known_keys() -> Vec<&'static str> {
-        validate::known_keys()
+    /// Set (or replace) a load model's section: the scene runs with that model.
+    pub fn set_section<T: LoadModelSection>(&mut self, section: T) {
+        self.load_models.set(section.boxed());
     }
 }
 
@@ -537,10 +522,7 @@ impl Default for Config {
                 .expect("gravity is declared with 3 values"),
             simulation: SimulationConfig::default(),
             limits: LimitsConfig::default(),
-            pads: None,
-            tool: None,
-            links: None,
-            springs: None,
+            load_models: LoadModelSections::default(),
             initial: InitialConfig::default(),
             centrifugal: CentrifugalConfig::default(),
         }

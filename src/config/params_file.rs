@@ -14,7 +14,7 @@ use std::path::Path;
 
 use serde_yaml_ng::Value;
 
-use super::ConfigError;
+use super::{ConfigError, Parameters};
 
 /// A ROS 2 parameter value.
 ///
@@ -110,8 +110,14 @@ impl Params {
         Params::default()
     }
 
-    /// Read a ROS 2 parameter file for the node `node_name`.
-    pub fn from_file(path: &Path, node_name: &str) -> Result<Params, ConfigError> {
+    /// Read a ROS 2 parameter file for the node `node_name`, text values
+    /// read as `decl` declares them (`Params::from_file` with every
+    /// declaration is defined with the registry).
+    pub fn read_file(
+        path: &Path,
+        node_name: &str,
+        decl: &Parameters,
+    ) -> Result<Params, ConfigError> {
         let io = |e: std::io::Error| ConfigError::Io {
             path: path.to_path_buf(),
             message: e.to_string(),
@@ -141,7 +147,7 @@ impl Params {
                 limit: MAX_FILE_BYTES,
             });
         }
-        Params::from_yaml_str(&text, node_name).map_err(|e| match e {
+        Params::parse_yaml(&text, node_name, decl).map_err(|e| match e {
             ConfigError::Yaml { message } => ConfigError::Yaml {
                 message: format!("{}: {message}", path.display()),
             },
@@ -155,7 +161,14 @@ impl Params {
     /// Entries apply in this order, later ones overriding earlier ones: `/**`,
     /// other wildcard entries matching the node (file order), then the node's
     /// own entries (file order).
-    pub fn from_yaml_str(text: &str, node_name: &str) -> Result<Params, ConfigError> {
+    ///
+    /// A value written as an integer for a key `decl` declares double is
+    /// read as that double (`super::check::read_as_declared`).
+    pub fn parse_yaml(
+        text: &str,
+        node_name: &str,
+        decl: &Parameters,
+    ) -> Result<Params, ConfigError> {
         check_depth(text)?;
         let doc: Value = serde_yaml_ng::from_str(text).map_err(|e| ConfigError::Yaml {
             message: e.to_string(),
@@ -210,7 +223,7 @@ impl Params {
                 flatten_map("", map, &mut own)?;
             }
             params.values.extend(own.into_iter().map(|(k, v)| {
-                let v = super::check::read_as_declared(&k, v);
+                let v = super::check::read_as_declared(decl, &k, v);
                 (k, v)
             }));
         }
@@ -219,7 +232,12 @@ impl Params {
 
     /// Apply a command-line override `-p name:=value`; the value text is read
     /// as a YAML scalar or flat list (`0.1`, `clamped`, `[0, 1, 2]`, `true`).
-    pub fn set_override(&mut self, name: &str, value_text: &str) -> Result<(), ConfigError> {
+    pub fn override_with(
+        &mut self,
+        name: &str,
+        value_text: &str,
+        decl: &Parameters,
+    ) -> Result<(), ConfigError> {
         check_name(name)?;
         check_depth(value_text)?;
         let value: Value =
@@ -235,7 +253,7 @@ impl Params {
                 message: "a parameter value is a scalar or a flat list, not a map".to_string(),
             });
         }
-        let value = super::check::read_as_declared(name, convert_value(name, &value)?);
+        let value = super::check::read_as_declared(decl, name, convert_value(name, &value)?);
         self.values.insert(name.to_string(), value);
         Ok(())
     }

@@ -10,18 +10,29 @@
 //! does not state alone).
 
 use super::check::{declared_value, given_value, typed, Declared};
-use super::{ConfigError, Params};
+use super::{ConfigError, Parameters, Params};
 
-/// Reads keys of one parameter set. `known` is the table of keys the
+/// Reads keys of one parameter set (the configuration's readers and the
+/// load models' section readers). `known` is the table of keys the
 /// validator accepts; in debug builds reading a key outside it is a bug.
-pub(super) struct Reader<'a> {
+pub struct Reader<'a> {
     params: &'a Params,
+    decl: &'a Parameters,
     known: &'a [&'a str],
 }
 
 impl<'a> Reader<'a> {
-    pub(super) fn new(params: &'a Params, known: &'a [&'a str]) -> Self {
-        Reader { params, known }
+    pub fn new(params: &'a Params, decl: &'a Parameters, known: &'a [&'a str]) -> Self {
+        Reader {
+            params,
+            decl,
+            known,
+        }
+    }
+
+    /// The declarations the values are read against.
+    pub fn parameters(&self) -> &Parameters {
+        self.decl
     }
 
     fn debug_known(&self, key: &str) {
@@ -35,8 +46,8 @@ impl<'a> Reader<'a> {
     /// has neither.
     fn value<T: Declared>(&self, key: &str) -> Result<T, ConfigError> {
         self.debug_known(key);
-        match declared_value(self.params, key)? {
-            Some(v) => typed(key, &v),
+        match declared_value(self.decl, self.params, key)? {
+            Some(v) => typed(self.decl, key, &v),
             None => Err(ConfigError::MissingValue {
                 key: key.to_string(),
             }),
@@ -44,37 +55,37 @@ impl<'a> Reader<'a> {
     }
 
     /// Whether the parameter set gives `key` at all.
-    pub(super) fn has(&self, key: &str) -> bool {
+    pub fn has(&self, key: &str) -> bool {
         self.debug_known(key);
         self.params.get(key).is_some()
     }
 
     /// A double key's value or its declared default.
-    pub(super) fn f64(&self, key: &str) -> Result<f64, ConfigError> {
+    pub fn f64(&self, key: &str) -> Result<f64, ConfigError> {
         self.value(key)
     }
 
     /// A double key's value when given (its default not applied).
-    pub(super) fn f64_opt(&self, key: &str) -> Result<Option<f64>, ConfigError> {
+    pub fn f64_opt(&self, key: &str) -> Result<Option<f64>, ConfigError> {
         self.debug_known(key);
-        given_value(self.params, key)?
-            .map(|v| typed(key, &v))
+        given_value(self.decl, self.params, key)?
+            .map(|v| typed(self.decl, key, &v))
             .transpose()
     }
 
     /// A double > 0 (value or declared default).
-    pub(super) fn positive(&self, key: &str) -> Result<f64, ConfigError> {
+    pub fn positive(&self, key: &str) -> Result<f64, ConfigError> {
         positive(key, self.f64(key)?)
     }
 
     /// An integer key's value or its declared default.
-    pub(super) fn i64(&self, key: &str) -> Result<i64, ConfigError> {
+    pub fn i64(&self, key: &str) -> Result<i64, ConfigError> {
         self.value(key)
     }
 
     /// An integer key's value (or its declared default) as a `u32`; its
     /// declared range was checked by `config::check`.
-    pub(super) fn u32(&self, key: &str) -> Result<u32, ConfigError> {
+    pub fn u32(&self, key: &str) -> Result<u32, ConfigError> {
         let i = self.i64(key)?;
         u32::try_from(i).map_err(|_| ConfigError::AboveMaximum {
             key: key.to_string(),
@@ -83,25 +94,25 @@ impl<'a> Reader<'a> {
         })
     }
 
-    pub(super) fn bool(&self, key: &str) -> Result<bool, ConfigError> {
+    pub fn bool(&self, key: &str) -> Result<bool, ConfigError> {
         self.value(key)
     }
 
-    pub(super) fn string(&self, key: &str) -> Result<String, ConfigError> {
+    pub fn string(&self, key: &str) -> Result<String, ConfigError> {
         self.value(key)
     }
 
     /// A list of strings (empty when neither given nor declared).
-    pub(super) fn string_array(&self, key: &str) -> Result<Vec<String>, ConfigError> {
+    pub fn string_array(&self, key: &str) -> Result<Vec<String>, ConfigError> {
         self.array(key)
     }
 
     /// A list of doubles.
-    pub(super) fn f64_array(&self, key: &str) -> Result<Vec<f64>, ConfigError> {
+    pub fn f64_array(&self, key: &str) -> Result<Vec<f64>, ConfigError> {
         self.array(key)
     }
 
-    pub(super) fn i64_array(&self, key: &str) -> Result<Vec<i64>, ConfigError> {
+    pub fn i64_array(&self, key: &str) -> Result<Vec<i64>, ConfigError> {
         self.array(key)
     }
 
@@ -110,14 +121,14 @@ impl<'a> Reader<'a> {
         Vec<T>: Declared,
     {
         self.debug_known(key);
-        match declared_value(self.params, key)? {
-            Some(v) => typed(key, &v),
+        match declared_value(self.decl, self.params, key)? {
+            Some(v) => typed(self.decl, key, &v),
             None => Ok(Vec::new()),
         }
     }
 
     /// Exactly three doubles.
-    pub(super) fn vec3(&self, key: &str) -> Result<[f64; 3], ConfigError> {
+    pub fn vec3(&self, key: &str) -> Result<[f64; 3], ConfigError> {
         let v = self.f64_array(key)?;
         <[f64; 3]>::try_from(v.as_slice()).map_err(|_| ConfigError::WrongLength {
             key: key.to_string(),
@@ -127,7 +138,7 @@ impl<'a> Reader<'a> {
     }
 }
 
-pub(super) fn positive(key: &str, x: f64) -> Result<f64, ConfigError> {
+pub fn positive(key: &str, x: f64) -> Result<f64, ConfigError> {
     if x > 0.0 {
         Ok(x)
     } else {
@@ -140,7 +151,7 @@ pub(super) fn positive(key: &str, x: f64) -> Result<f64, ConfigError> {
 
 /// A string key (value or declared default) that must be one of `allowed`,
 /// parsed by `parse`.
-pub(super) fn read_choice<T>(
+pub fn read_choice<T>(
     r: &Reader,
     key: &str,
     allowed: &'static [&'static str],

@@ -1,10 +1,14 @@
 //! Every parameter, declared once: name, ROS type, unit, default, rule and
-//! meaning, section by section. The known keys and their types, the
+//! meaning, section by section. This file holds the declaration types and the
+//! configuration's own sections; each load model declares its sections with
+//! the same types in its own file (`dynamics::load_models`), and
+//! [`super::Parameters`] joins them. The known keys and their types, the
 //! effective-parameter dump of the node's parameter service, its
 //! descriptions and the reference in docs/parameters.md (and the key index in
-//! the README) come from this table; `validate` implements each section's
-//! rules as the `rule` text states them, and the tests check that the
-//! declared defaults are what an empty parameter file yields.
+//! the README) come from these declarations; `validate` (and each model's
+//! reader) implements each section's rules as the `rule` text states them,
+//! and the tests check that the declared defaults are what an empty
+//! parameter file yields.
 
 use super::ParamValue;
 
@@ -208,9 +212,12 @@ pub struct Section {
     pub params: &'static [Param],
 }
 
-/// A table row: key, type, type as shown, unit, default, default as shown, rule, meaning.
+use self::param as p;
+
+/// A table row: key, type, type as shown, unit, default, default as shown,
+/// rule, meaning (the load models declare theirs with it in their own files).
 #[allow(clippy::too_many_arguments)]
-const fn p(
+pub const fn param(
     key: &'static str,
     ty: Ty,
     type_text: &'static str,
@@ -233,8 +240,8 @@ const fn p(
     }
 }
 
-/// Every section, in the reference's order.
-pub const SECTIONS: &[Section] = &[
+/// The sections before the load models' (in the reference's order).
+pub const BEFORE_LOAD_MODELS: &[Section] = &[
     Section {
         name: "plate",
         title: "`plate` — geometry, material, modal discretisation",
@@ -347,82 +354,10 @@ pub const SECTIONS: &[Section] = &[
             p("limits.max_deflection_thicknesses", Ty::Double, "double", "—", Value::Double(1000.0), "1e3", "> 0", "divergence guard: a modal amplitude beyond this many plate thicknesses stops the run").above(0.0),
         ],
     },
-    Section {
-        name: "pads",
-        title: "`pads` — brake pads (paper 5.3, Fig. 18; docs/scenes.md)",
-        before: "Off unless `pads.ale_nodes` (or `calipers.angles_deg`) is given; the other `pads.*` keys are refused without it.",
-        after: "",
-        params: &[
-            p("pads.ale_nodes", Ty::IntegerArray, "integer array", "—", Value::Integers(&[]), "[]", "each an existing ALE node (from 1), distinct", "contact points: at each a pad presses on each face of the disc"),
-            p("pads.contact_pad", Ty::IntegerArray, "integer array", "—", Value::None, "all 1", "same length as `pads.ale_nodes`; pads numbered 1..P without gaps", "the pad each contact point belongs to (a pad shares one clamp force)"),
-            p("pads.clamp_force", Ty::DoubleArray, "double array", "N", Value::Doubles(&[0.0]), "[0]", "each ≥ 0 and ≤ `limits.max_force`; 1 value (all pads) or one per pad", "clamp force per pad at t = 0: the force each face is pressed with, shared by the pad's contact points (the command `set_pad_clamp_force` changes it)"),
-            p("pads.contact_stiffness", Ty::Double, "double", "N/m", Value::Double(5000000.0), "5e6", "> 0", "axial stiffness k_c per contact point and face").above(0.0),
-            p("pads.contact_damping", Ty::Double, "double", "N·s/m", Value::Double(0.0), "0", "≥ 0", "axial damping c_c per contact point and face (on the gap-closing rate ∂w/∂t at the fixed point)").min(0.0),
-            p("pads.friction_coefficient", Ty::Double, "double", "—", Value::Double(0.4), "0.4", "≥ 0, ≤ 2", "μ: friction μN per face against the sliding direction"),
-            p("pads.lift_off", Ty::Bool, "bool", "—", Value::Bool(false), "false", "—", "a contact that would pull is released (N ≥ 0)"),
-            p("pads.follower_friction", Ty::Bool, "bool", "—", Value::Bool(true), "true", "—", "friction lies in the deformed surface (follower forces, the squeal mechanism)"),
-            p("pads.caliper", Ty::String, "string", "—", Value::Str("floating"), "`floating`", "`floating` or `fixed`", "`floating`: each face's pad is a rigid backing plate pressed with the clamp force (a force, as from a hydraulic piston); `fixed`: the caliper stays where the clamp force puts it on an undeformed disc"),
-            p("pads.contact_surface", Ty::String, "string", "—", Value::Str("faces"), "`faces`", "`faces` or `mid_plane`", "`faces`: each pad's friction acts on its face (z = ±h/2) against the sliding velocity of the face point — rotation, the vibration's in-plane −z∇(Dw/Dt) and normal Ω ∂w/∂θ — regularised Coulomb, so the two faces' normal-force difference makes a couple (docs/scenes.md); `mid_plane`: at the mid-plane node along −sign Ω e_θ (the paper's model)"),
-            p("pads.static_friction_coefficient", Ty::Double, "double", "—", Value::None, "not given (constant μ)", "≥ 0, ≤ 2; only with `pads.contact_surface: faces`", "μ_s of the speed-dependent friction μ(v) = μ + (μ_s − μ) e^(−v/v_S), v the face's sliding speed (a falling μ(v), μ_s > μ, feeds energy into the vibration; docs/scenes.md)"),
-            p("pads.stribeck_speed", Ty::Double, "double", "m/s", Value::Double(1.0), "1", "> 0", "v_S of that law").above(0.0),
-            p("pads.mass", Ty::Double, "double", "kg", Value::Double(0.0), "0", "≥ 0, finite; > 0 needs `simulation.integrator: rk4` or `contact_exponential`", "mass m_p of each face's pad (lining and backing plate), moving axially between its contact springs k_c, c_c and the caliper: the pad's compression and rate are state, in series with the residual flexibility when `plate.residual_flexibility` (docs/scenes.md, \"Pad mass\"); 0: massless pads (the backing force balances the contacts at every instant)").min(0.0),
-            p("pads.backing_stiffness", Ty::Double, "double", "N/m", Value::None, "not given", "> 0, finite; required with `pads.mass` > 0 and `pads.caliper: fixed`, refused otherwise", "k_b of the fixed caliper behind each massive pad: the backing force is N₀ − k_b (x − N₀/(n k_c)), x the pad's compression of its contact springs").above(0.0),
-        ],
-    },
-    Section {
-        name: "calipers",
-        title: "`calipers` — pads as annular sectors (docs/scenes.md, \"Calipers\")",
-        before: "Off unless `calipers.angles_deg` is given; then the calipers make the pads' contact points (ALE nodes appended after `nodes.ale_*`, pad p = caliper p) in place of `pads.ale_nodes`, and the `pads.*` data keys apply to them.",
-        after: "",
-        params: &[
-            p("calipers.angles_deg", Ty::DoubleArray, "double array", "deg", Value::Doubles(&[]), "[]", "each in [−360, 360]", "centre angle θ of each caliper in the space-fixed frame (one pad per face each; e.g. [0] or [0, 180])"),
-            p("calipers.arc_deg", Ty::Double, "double", "deg", Value::Double(60.0), "60", "> 0; calipers × arc ≤ 360", "angular extent of each pad"),
-            p("calipers.inner_radius", Ty::Double, "double", "m", Value::None, "required", "plate.inner_radius ≤ r < plate.outer_radius", "inner radius of the pads"),
-            p("calipers.outer_radius", Ty::Double, "double", "m", Value::None, "required", "> calipers.inner_radius, ≤ plate.outer_radius", "outer radius of the pads"),
-            p("calipers.points_radial", Ty::Integer, "integer", "—", Value::Integer(1), "1", "≥ 1", "contact points across the radius: rings of equal area, each point at its ring's mean friction radius (uniform pressure)").min(1.0),
-            p("calipers.points_circumferential", Ty::Integer, "integer", "—", Value::Integer(6), "6", "≥ 1; all points together ≤ 400", "contact points along the arc, at the centres of equal sub-arcs").min(1.0),
-        ],
-    },
-    Section {
-        name: "tool",
-        title: "`tool` — lathe tool (paper 5.1; docs/scenes.md)",
-        before: "Off unless `tool.ale_node` is given (0 or absent: no tool).",
-        after: "",
-        params: &[
-            p("tool.ale_node", Ty::Integer, "integer", "—", Value::Integer(0), "0 (no tool)", "an existing ALE node (from 1) at ξ_r = 1 (the rim)", "where the feed force acts"),
-            p("tool.depth_of_cut", Ty::Double, "double", "m", Value::Double(0.002), "0.002", "> 0, < r_a − r_i", "radial depth of cut = chip width b"),
-            p("tool.feed_rate", Ty::Double, "double", "m/s", Value::Double(0.002), "0.002 (120 mm/min)", "\\|v\\| ≤ 1", "feed along −z at t = 0 (the command `set_tool_feed` changes it; negative retracts)"),
-            p("tool.start_clearance", Ty::Double, "double", "m", Value::Double(0.0), "0", "≥ 0", "gap between the tool tip and the +z face at t = 0").min(0.0),
-            p("tool.stiffness", Ty::Double, "double", "N/m", Value::Double(20000000.0), "2e7", "> 0", "spring between tool holder and tip").above(0.0),
-            p("tool.damping", Ty::Double, "double", "N·s/m", Value::Double(2000.0), "2e3", "≥ 0", "damper between tool holder and tip (no tip mass)").min(0.0),
-            p("tool.specific_force", Ty::Double, "double", "Pa", Value::Double(351000000.0), "3.51e8", "> 0", "k_f1.1 of eq. (21): 351 N/mm² for a 1 mm × 1 mm chip").above(0.0),
-            p("tool.force_exponent", Ty::Double, "double", "—", Value::Double(0.7013), "0.7013", "≥ 0, < 1", "m_f of eq. (21)"),
-        ],
-    },
-    Section {
-        name: "links",
-        title: "`links` — swash-plate pitch links (paper 5.2; docs/scenes.md)",
-        before: "Off unless `links.lagrange_nodes` is given. Each link pushes its node along +z with
-F = `links.mean_force` + `links.cyclic_force` · cos(ψ − `links.cyclic_phase`), ψ = φ + χ the node's azimuth.",
-        after: "",
-        params: &[
-            p("links.lagrange_nodes", Ty::IntegerArray, "integer array", "—", Value::Integers(&[]), "[]", "each an existing Lagrangian node (from 1), distinct", "the linkage attachment points"),
-            p("links.mean_force", Ty::Double, "double", "N", Value::Double(0.0), "0", "\\|F\\| ≤ `limits.max_force`", "steady part of each link force"),
-            p("links.cyclic_force", Ty::Double, "double", "N", Value::Double(0.0), "0", "\\|F\\| ≤ `limits.max_force`", "amplitude of the once-per-revolution part"),
-            p("links.cyclic_phase", Ty::Double, "double", "rad", Value::Double(0.0), "0", "finite", "azimuth of the largest push"),
-        ],
-    },
-    Section {
-        name: "springs",
-        title: "`springs` — space-fixed point springs (the load-model example of docs/architecture.md)",
-        before: "Off unless `springs.ale_nodes` is given. Each spring pushes the plate under its node along z with F = −`springs.stiffness` · w − `springs.damping` · ∂w/∂t.",
-        after: "",
-        params: &[
-            p("springs.ale_nodes", Ty::IntegerArray, "integer array", "—", Value::Integers(&[]), "[]", "each an existing ALE node (from 1), distinct", "where the springs act"),
-            p("springs.stiffness", Ty::Double, "double", "N/m", Value::Double(0.0), "0", "≥ 0", "stiffness k_s of each spring").min(0.0),
-            p("springs.damping", Ty::Double, "double", "N·s/m", Value::Double(0.0), "0", "≥ 0", "damping c_s of each spring").min(0.0),
-        ],
-    },
+];
+
+/// The sections after the load models'.
+pub const AFTER_LOAD_MODELS: &[Section] = &[
     Section {
         name: "initial",
         title: "`initial` — initial elastic state",
@@ -456,98 +391,3 @@ F = `links.mean_force` + `links.cyclic_force` · cos(ψ − `links.cyclic_phase`
         ],
     },
 ];
-
-/// Every parameter, section by section.
-pub fn params() -> impl Iterator<Item = &'static Param> {
-    SECTIONS.iter().flat_map(|s| s.params.iter())
-}
-
-/// The declaration of `key`.
-pub fn find(key: &str) -> Option<&'static Param> {
-    params().find(|p| p.key == key)
-}
-
-/// The section named `name` (`pads`, `ros`; `""`: top level).
-pub fn section(name: &str) -> Option<&'static Section> {
-    SECTIONS.iter().find(|s| s.name == name)
-}
-
-/// The keys of section `name`.
-pub fn keys(name: &str) -> Vec<&'static str> {
-    section(name).map_or_else(Vec::new, |s| s.params.iter().map(|p| p.key).collect())
-}
-
-/// Sections that are off unless their first key is given (load models):
-/// their other keys have no effect, and no default, without it.
-pub fn enabled_by(section_name: &str) -> Option<&'static str> {
-    match section_name {
-        "pads" | "calipers" | "tool" | "links" | "springs" => {
-            section(section_name).map(|s| s.params[0].key)
-        }
-        _ => None,
-    }
-}
-
-fn cell(text: &str) -> &str {
-    if text.is_empty() {
-        "—"
-    } else {
-        text
-    }
-}
-
-/// The reference of docs/parameters.md: per section its text and a table of
-/// key, type, unit, default, rule and meaning.
-pub fn reference_markdown() -> String {
-    let mut out = String::new();
-    for s in SECTIONS {
-        out.push_str(&format!("### {}\n\n", s.title));
-        if !s.before.is_empty() {
-            out.push_str(&format!("{}\n\n", s.before));
-        }
-        out.push_str(
-            "| Key | Type | Unit | Default | Rule | Meaning |\n|---|---|---|---|---|---|\n",
-        );
-        for p in s.params {
-            out.push_str(&format!(
-                "| `{}` | {} | {} | {} | {} | {} |\n",
-                p.key,
-                p.type_text,
-                cell(p.unit),
-                cell(p.default_text),
-                cell(p.rule),
-                cell(p.meaning)
-            ));
-        }
-        if !s.after.is_empty() {
-            out.push_str(&format!("\n{}\n", s.after));
-        }
-        out.push('\n');
-    }
-    out
-}
-
-/// The README's key index: per section the keys, linking to the reference.
-pub fn key_index_markdown() -> String {
-    let mut out = String::from("| Section | Keys |\n|---|---|\n");
-    for s in SECTIONS {
-        let anchor: String = s
-            .title
-            .to_lowercase()
-            .chars()
-            .filter(|c| c.is_alphanumeric() || *c == ' ' || *c == '-' || *c == '_')
-            .map(|c| if c == ' ' { '-' } else { c })
-            .collect();
-        let name = if s.name.is_empty() {
-            "top level".to_string()
-        } else {
-            format!("`{}`", s.name)
-        };
-        let keys: Vec<String> = s.params.iter().map(|p| format!("`{}`", p.key)).collect();
-        out.push_str(&format!(
-            "| [{name}](docs/parameters.md#{anchor}) | {} |\n",
-            keys.join(", ")
-        ));
-    }
-    out
-}

@@ -1,31 +1,29 @@
 //! From a flat [`Params`] set to the validated [`Config`].
 //!
-//! Every key this crate accepts is declared once in [`super::table`]; any
-//! other key is rejected (with the nearest known key as a suggestion). Each
-//! section has a `read_<section>` function that reads its keys and checks the
-//! rules the table states (the plate's: `plate_section.rs`; the load models'
-//! sections: `load_model_sections.rs`).
+//! Every key this crate accepts is declared once ([`super::Parameters`]: the
+//! configuration's sections in [`super::table`], the load models' in their
+//! own files); any other key is rejected (with the nearest known key as a
+//! suggestion). Each section has a `read_<section>` function that reads its
+//! keys and checks the rules the declaration states (the plate's:
+//! `plate_section.rs`); each load model's reader is called through its
+//! declaration ([`super::ModelParameters::read`]).
 //!
-//! Adding a section: declare its keys in the table, write `read_<section>`
-//! and call it in [`config_from_params`] (plus the field in [`Config`]);
-//! docs/parameters.md is generated from the table.
+//! Adding a section of the configuration: declare its keys in the table,
+//! write `read_<section>` and call it in [`config_from_params`] (plus the
+//! field in [`Config`]); a load model's section needs none of this
+//! (docs/architecture.md). docs/parameters.md is generated from the declarations.
 
 use std::f64::consts::FRAC_PI_2;
 
 use super::check::suggest;
-use super::load_model_sections::{at_most, read_links, read_pads, read_springs, read_tool};
+use super::model_sections::{at_most, LoadModelSections, SectionContext};
 use super::plate_section::read_plate;
 use super::raw::{positive, read_choice, Reader};
 use super::{
     Config, ConfigError, Coordinates, InitialConfig, IntegratorKind, JointConfig, LimitsConfig,
-    LoadsConfig, NodePosition, NodesConfig, Params, PlateConfig, ReferenceConfig, SimulationConfig,
-    Surface, WrenchConfig,
+    LoadsConfig, NodePosition, NodesConfig, Parameters, Params, PlateConfig, ReferenceConfig,
+    SimulationConfig, Surface, WrenchConfig,
 };
-
-/// Every accepted parameter name: the declared table ([`super::table`]).
-pub(super) fn known_keys() -> Vec<&'static str> {
-    super::table::params().map(|p| p.key).collect()
-}
 
 const INTEGRATORS: &[&str] = &[
     "exponential",
@@ -36,36 +34,27 @@ const INTEGRATORS: &[&str] = &[
 const COORDINATES: &[&str] = &["ale", "lagrangian"];
 const SURFACES: &[&str] = &["top", "bottom", "mid"];
 
-pub(super) fn config_from_params(params: &Params) -> Result<Config, ConfigError> {
-    let known = known_keys();
+pub(super) fn config_from_params(
+    decl: &Parameters,
+    params: &Params,
+) -> Result<Config, ConfigError> {
+    let known = decl.known_keys();
     check_unknown_keys(params, &known)?;
-    super::check::check_params(params)?;
-    let r = Reader::new(params, &known);
+    decl.check_params(params)?;
+    let r = Reader::new(params, decl, &known);
 
     let plate = read_plate(&r)?;
     let limits = read_limits(&r)?;
     let mut nodes = read_nodes(&r)?;
-    let caliper_contacts = super::calipers::read_calipers(&r, &plate, &mut nodes)?;
+    let simulation = read_simulation(&r)?;
+    let load_models = read_load_models(&r, &plate, &limits, &simulation, &mut nodes)?;
     let loads = read_loads(&r, &nodes, &limits)?;
     let joint = read_joint(&r, &limits)?;
     let reference = read_reference(&r)?;
     let gravity = r.vec3("gravity")?;
-    let simulation = read_simulation(&r)?;
     let _use_sim_time = r.bool("use_sim_time")?;
-    let pads = read_pads(&r, &nodes, &limits, caliper_contacts)?;
-    let tool = read_tool(&r, &plate, &nodes)?;
-    let links = read_links(&r, &nodes, &limits)?;
-    let springs = read_springs(&r, &nodes)?;
     let initial = read_initial(&r, &plate, &limits)?;
     let centrifugal = super::centrifugal::read_centrifugal(&r)?;
-    if pads.as_ref().is_some_and(|p| p.mass > 0.0)
-        && !matches!(
-            simulation.integrator,
-            IntegratorKind::Rk4 | IntegratorKind::ContactExponential
-        )
-    {
-        return Err(ConfigError::PadMass { rule: "pads.mass > 0 needs simulation.integrator: rk4 or contact_exponential (the pads' axial motion is integrated with the modes)" });
-    }
 
     Ok(Config {
         plate,
@@ -76,13 +65,33 @@ pub(super) fn config_from_params(params: &Params) -> Result<Config, ConfigError>
         gravity,
         simulation,
         limits,
-        pads,
-        tool,
-        links,
-        springs,
+        load_models,
         initial,
         centrifugal,
     })
+}
+
+/// Every load model's sections, through the readers the registry declares.
+fn read_load_models(
+    r: &Reader,
+    plate: &PlateConfig,
+    limits: &LimitsConfig,
+    simulation: &SimulationConfig,
+    nodes: &mut NodesConfig,
+) -> Result<LoadModelSections, ConfigError> {
+    let mut ctx = SectionContext {
+        plate,
+        limits,
+        simulation,
+        nodes,
+    };
+    let mut sections = LoadModelSections::default();
+    for model in r.parameters().models {
+        if let Some(section) = (model.read)(r, &mut ctx)? {
+            sections.set(section);
+        }
+    }
+    Ok(sections)
 }
 
 // ---- unknown keys ------------------------------------------------------------
@@ -361,6 +370,10 @@ fn read_initial(
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    fn known_keys() -> Vec<&'static str> {
+        crate::dynamics::load_models::PARAMETERS.known_keys()
+    }
 
     #[test]
     fn suggestions() {

@@ -48,9 +48,9 @@
 use super::integrators::equations::mode_constants;
 use super::load_models::pad::FRICTION_REGULARISATION_SPEED;
 use super::load_models::pad::{PadContactPoint, Pads};
+use super::load_models::pad_config::{Caliper, ContactSurface, PadsConfig};
 use super::scene::Scene;
 use super::stability_pads::NetForce;
-use crate::config::{Caliper, ContactSurface};
 use faer::Mat;
 use nalgebra::Complex;
 
@@ -388,6 +388,25 @@ pub struct CriticalMode {
     pub eigenvalue: Complex<f64>,
     /// The right eigenvector v over y.
     pub vector: Vec<Complex<f64>>,
+}
+
+/// Whether the configuration has pads (`pads.*` or `calipers.*`): something can squeal.
+pub fn has_pads(config: &crate::config::Config) -> bool {
+    config.section::<PadsConfig>().is_some()
+}
+
+/// The squeal frequency of a simulation's scene, Hz: |Im λ|/2π of the least
+/// stable mode ([`critical_mode`]) at the configured speed, friction
+/// coefficient and clamp forces; `None` without pads.
+pub fn squeal_frequency(sim: &super::Simulation) -> Option<f64> {
+    let pads = sim.config().section::<PadsConfig>()?;
+    let mode = critical_mode(
+        sim.scene(),
+        sim.config().joint.speed,
+        pads.friction_coefficient,
+        &pads.clamp_force,
+    );
+    Some(mode.eigenvalue.im.abs() / std::f64::consts::TAU)
 }
 
 /// The eigenvalue with the largest real part (positive imaginary part among a

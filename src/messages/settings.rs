@@ -12,7 +12,7 @@ use ros2_client::ServiceMapping;
 use std::fmt;
 
 use super::marker::{MarkerScale, MarkerSettings, MAX_CELLS};
-use crate::config::table;
+use crate::dynamics::load_models::PARAMETERS;
 
 /// Validated `ros.*` settings.
 #[derive(Debug, Clone, PartialEq)]
@@ -79,8 +79,8 @@ fn value<T: Declared>(params: &Params, key: &str) -> Result<T, SettingsError> {
         key: key.to_string(),
         message: e.to_string(),
     };
-    match declared_value(params, key).map_err(from_config)? {
-        Some(v) => typed(key, &v).map_err(from_config),
+    match declared_value(&PARAMETERS, params, key).map_err(from_config)? {
+        Some(v) => typed(&PARAMETERS, key, &v).map_err(from_config),
         None => Err(err(key, "has no value and no declared default")),
     }
 }
@@ -97,8 +97,8 @@ impl RosSettings {
     /// unknown `ros.*` keys are refused with the list of known ones.
     pub fn from_params(params: &Params) -> Result<RosSettings, SettingsError> {
         for (name, _) in params.iter() {
-            if name.starts_with("ros.") && table::find(name).is_none() {
-                let known = table::keys("ros");
+            if name.starts_with("ros.") && PARAMETERS.find(name).is_none() {
+                let known = PARAMETERS.keys("ros");
                 return Err(err(
                     name,
                     format!(
@@ -253,7 +253,7 @@ fn read_marker(params: &Params) -> Result<MarkerSettings, SettingsError> {
         return Err(err("ros.marker_rings", format!("rings × sectors = {rings} × {sectors} exceeds {MAX_CELLS} cells (lower ros.marker_rings or ros.marker_sectors)")));
     }
     let key = "ros.marker_scale";
-    let scale = match declared_value(params, key).map_err(|e| SettingsError {
+    let scale = match declared_value(&PARAMETERS, params, key).map_err(|e| SettingsError {
         key: key.to_string(),
         message: e.to_string(),
     })? {

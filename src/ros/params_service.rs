@@ -14,6 +14,7 @@
 //! how to change it (restart with `-p name:=value`).
 
 use crate::config::{table, ParamValue, Params};
+use crate::dynamics::load_models::PARAMETERS;
 use crate::messages::settings::RosSettings;
 use ros2_client::parameters::raw;
 use ros2_client::rcl_interfaces::{ListParametersResult, SetParametersAtomicallyResponse};
@@ -86,8 +87,11 @@ pub fn effective_parameters(
         .iter()
         .map(|(k, v)| (k.to_string(), v.clone()))
         .collect();
-    for section in table::SECTIONS {
-        if table::enabled_by(section.name).is_some_and(|key| given.get(key).is_none()) {
+    for section in PARAMETERS.sections() {
+        if PARAMETERS
+            .enabled_by(section.name)
+            .is_some_and(|key| given.get(key).is_none())
+        {
             continue;
         }
         for p in section.params {
@@ -194,7 +198,7 @@ impl ParamStore {
             .iter()
             .map(|n| {
                 let runtime = RUNTIME_KEYS.iter().find(|(k, _)| k == n);
-                let description = table::find(n).map_or_else(String::new, describe);
+                let description = PARAMETERS.find(n).map_or_else(String::new, describe);
                 raw::ParameterDescriptor {
                     name: n.clone(),
                     r#type: self
@@ -249,7 +253,7 @@ impl ParamStore {
         let Some(value) = from_ros_value(value) else {
             return Err(format!("`{name}` cannot be unset or given as a byte array"));
         };
-        crate::config::check(name, &value).map_err(|e| e.to_string())?;
+        PARAMETERS.check(name, &value).map_err(|e| e.to_string())?;
         let change = match (name, &value) {
             ("simulation.realtime_factor", ParamValue::Double(x)) => {
                 RuntimeChange::RealtimeFactor(*x)

@@ -2,6 +2,7 @@
 //! simulation shows, to compare with the eigenvalue's real part.
 #![allow(dead_code)]
 
+use annular_plate::dynamics::load_models::pad_config::PadsConfig;
 use annular_plate::dynamics::{stability, Simulation};
 
 /// The critical mode's eigenvalue (Re λ, Im λ) and the simulated growth.
@@ -21,7 +22,11 @@ pub struct Growth {
 /// `steps` times and fits the growth of the critical pair's ALE amplitude
 /// |z̄| = |(q̄_cos, q̄_sin)| — for a linear run exactly e^{Re λ t}.
 pub fn simulated_growth(sim: &mut Simulation, peak: f64, steps: usize) -> Growth {
-    let pads = sim.config().pads.clone().expect("a scene with pads");
+    let pads = sim
+        .config()
+        .section::<PadsConfig>()
+        .cloned()
+        .expect("a scene with pads");
     let mode = stability::critical_mode(
         sim.scene(),
         sim.config().joint.speed,

@@ -7,7 +7,10 @@
 //! A load model is a [`LoadModel`] implementation in its own file, registered
 //! once in [`REGISTRY`] with its declared outputs ([`outputs`]: named, typed
 //! channels, CSV columns, a topic), which the node, the CSV writer, the
-//! recorder and the messages read without knowing the model. The split follows the rest of `dynamics`: its
+//! recorder and the messages read without knowing the model, and with its
+//! declared parameters (sections of keys and their reader, joined with the
+//! configuration's in [`PARAMETERS`]: [`parameters`]), which the validation,
+//! the parameter services and docs/parameters.md read the same way. The split follows the rest of `dynamics`: its
 //! parameters live in the immutable [`Scene`](super::Scene) (the boxed model),
 //! its internal state in a slot of the [`State`](super::State) (plain numbers,
 //! so reset, checkpoint and replay stay copies), its commands in the
@@ -28,13 +31,14 @@
 pub mod face_friction;
 pub mod model;
 pub mod outputs;
-pub mod pad;
+pub mod pad_calipers;
+pub mod pad_config;
+pub mod pad_contact_law;
 pub mod pad_mass;
 pub mod pad_outputs;
 pub mod pad_series;
-pub mod pitch_link;
-pub mod point_spring;
-pub mod tool;
+pub mod parameters;
+pub mod tool_config;
 pub mod undo;
 
 pub use model::{
@@ -46,6 +50,7 @@ pub use outputs::{
     StateTopic,
 };
 
+pub use parameters::PARAMETERS;
 pub use undo::{LoadModelUndo, SlotUndo};
 
 use crate::config::{Config, IntegratorKind};
@@ -55,14 +60,26 @@ use crate::dynamics::wrench::Wrench;
 use std::any::Any;
 use std::ops::Range;
 
-/// Every load model, once, in evaluation order (also the order of their CSV
-/// columns and topics). A new model: its file and one line here.
-pub const REGISTRY: &[Registration] = &[
-    pad::REGISTRATION,
-    tool::REGISTRATION,
-    pitch_link::REGISTRATION,
-    point_spring::REGISTRATION,
-];
+/// The registered models: each model's module and its line in [`REGISTRY`]
+/// from one name, so a new model is its file and one line here.
+macro_rules! registry {
+    ($($model:ident),* $(,)?) => {
+        $(pub mod $model;)*
+
+        /// Every load model, once, in evaluation order (also the order of
+        /// their CSV columns, topics and parameter sections). A new model:
+        /// its file and one line in the list below.
+        pub const REGISTRY: &[Registration] = &[$($model::REGISTRATION),*];
+    };
+}
+
+registry! {
+    pad,
+    tool,
+    pitch_link,
+    point_spring,
+    point_damper,
+}
 
 /// The scene's load models (immutable) with the layout of their commands.
 #[derive(Debug, Default)]

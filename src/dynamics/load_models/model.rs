@@ -4,7 +4,7 @@
 
 use super::outputs::{OutputContext, Outputs};
 use super::undo::SlotUndo;
-use crate::config::{Config, LimitsConfig};
+use crate::config::{Config, LimitsConfig, ModelParameters};
 use crate::dynamics::contact_compliance::HeldDeflection;
 use crate::dynamics::error::InputError;
 use crate::dynamics::joint::FrictionTorque;
@@ -17,12 +17,16 @@ use std::fmt::Debug;
 /// Builds a load model from a configuration, `None` when the scene does not use it.
 pub type Builder = fn(&Config, &SceneNodes) -> Option<Box<dyn LoadModel>>;
 
-/// A model as the registry lists it: its builder and its declared outputs
-/// (a `const` in the model's file, so the registry line is its name).
+/// A model as the registry lists it: its builder, its declared outputs and
+/// its declared parameters (a `const` in the model's file, so the registry
+/// line is its name).
 #[derive(Debug, Clone, Copy)]
 pub struct Registration {
     pub build: Builder,
     pub outputs: &'static Outputs,
+    /// Its parameters: sections (keys, types, units, defaults, rules, texts)
+    /// and the reader that makes its validated section of the `Config`.
+    pub parameters: &'static ModelParameters,
 }
 
 /// What a model's builder sees of the scene: the node frames and modal masses.

@@ -24,7 +24,7 @@
 
 use super::model::{Coupling, SurfaceKinematics};
 use super::pad::{ContactForces, Pads};
-use crate::config::Caliper;
+use super::pad_config::Caliper;
 
 impl Pads {
     /// Whether the pads have mass (their axial motion is state).

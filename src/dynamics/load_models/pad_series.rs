@@ -8,7 +8,7 @@
 
 use super::model::{Coupling, LoadContext, SurfaceKinematics};
 use super::pad::{PadScratch, Pads};
-use crate::config::Caliper;
+use super::pad_config::Caliper;
 use crate::dynamics::contact_compliance::{stiffness_rate, ContactCompliance};
 use crate::dynamics::node_frame::{NodeFrame, NodeShape};
 

@@ -20,9 +20,85 @@
 
 use super::model::{LoadContext, LoadModel, ModelOut, Registration, SceneNodes};
 use super::outputs::{ChannelKind, ChannelShape, CsvColumn, OutputChannel, OutputContext, Outputs};
-use crate::config::Config;
+use crate::config::model_sections::{at_most, no_other_keys, node_refs};
+use crate::config::table::{param, Section, Ty, Value};
+use crate::config::{
+    Config, ConfigError, LoadModelSection, ModelParameters, Reader, SectionContext, SectionData,
+};
 use crate::dynamics::Simulation;
+use serde::Serialize;
 use std::any::Any;
+
+/// The links' validated section (`links.*`, paper 5.2): prescribed axial
+/// forces at Lagrangian nodes, F_z = mean_force + cyclic_force · cos(ψ − cyclic_phase).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct LinksConfig {
+    /// Lagrangian nodes, 0-based (`links.lagrange_nodes` counts from 1).
+    pub nodes: Vec<usize>,
+    /// N.
+    pub mean_force: f64,
+    /// N.
+    pub cyclic_force: f64,
+    /// rad.
+    pub cyclic_phase: f64,
+}
+
+impl LoadModelSection for LinksConfig {
+    const SECTION: &'static str = "links";
+}
+
+/// The links' keys.
+pub const SECTIONS: &[Section] = &[Section {
+    name: "links",
+    title: "`links` — swash-plate pitch links (paper 5.2; docs/scenes.md)",
+    before: "Off unless `links.lagrange_nodes` is given. Each link pushes its node along +z with
+F = `links.mean_force` + `links.cyclic_force` · cos(ψ − `links.cyclic_phase`), ψ = φ + χ the node's azimuth.",
+    after: "",
+    params: &[
+        param("links.lagrange_nodes", Ty::IntegerArray, "integer array", "—", Value::Integers(&[]), "[]", "each an existing Lagrangian node (from 1), distinct", "the linkage attachment points"),
+        param("links.mean_force", Ty::Double, "double", "N", Value::Double(0.0), "0", "\\|F\\| ≤ `limits.max_force`", "steady part of each link force"),
+        param("links.cyclic_force", Ty::Double, "double", "N", Value::Double(0.0), "0", "\\|F\\| ≤ `limits.max_force`", "amplitude of the once-per-revolution part"),
+        param("links.cyclic_phase", Ty::Double, "double", "rad", Value::Double(0.0), "0", "finite", "azimuth of the largest push"),
+    ],
+}];
+
+/// The links' parameters: their keys and their reader.
+pub const PARAMETERS: ModelParameters = ModelParameters {
+    sections: SECTIONS,
+    read,
+};
+
+/// `links.*`: the section when `links.lagrange_nodes` names nodes.
+fn read(r: &Reader, ctx: &mut SectionContext) -> Result<Option<Box<dyn SectionData>>, ConfigError> {
+    let numbers = r.i64_array("links.lagrange_nodes")?;
+    if numbers.is_empty() {
+        no_other_keys(r, "links", "links.lagrange_nodes")?;
+        return Ok(None);
+    }
+    let nodes = node_refs(
+        "links.lagrange_nodes",
+        &numbers,
+        "lagrange",
+        ctx.nodes.lagrange.len(),
+    )?;
+    let max_force = ctx.limits.max_force;
+    let mean_force = at_most("links.mean_force", r.f64("links.mean_force")?, max_force)?;
+    let cyclic_force = at_most(
+        "links.cyclic_force",
+        r.f64("links.cyclic_force")?,
+        max_force,
+    )?;
+    let cyclic_phase = r.f64("links.cyclic_phase")?;
+    Ok(Some(
+        LinksConfig {
+            nodes,
+            mean_force,
+            cyclic_force,
+            cyclic_phase,
+        }
+        .boxed(),
+    ))
+}
 
 /// Prescribed link forces at Lagrangian nodes.
 #[derive(Debug, Clone, PartialEq)]
@@ -65,11 +141,12 @@ pub const OUTPUTS: Outputs = Outputs {
 pub const REGISTRATION: Registration = Registration {
     build,
     outputs: &OUTPUTS,
+    parameters: &PARAMETERS,
 };
 
 /// The registered builder: links where `links.*` gives their nodes.
 pub fn build(config: &Config, nodes: &SceneNodes) -> Option<Box<dyn LoadModel>> {
-    let l = config.links.as_ref()?;
+    let l = config.section::<LinksConfig>()?;
     Some(Box::new(PitchLinks {
         nodes: l.nodes.clone(),
         angles: l.nodes.iter().map(|&j| nodes.lagrange[j].angle).collect(),

@@ -17,8 +17,68 @@ use super::model::{
     SceneNodes,
 };
 use super::outputs::NO_OUTPUTS;
-use crate::config::Config;
+use crate::config::model_sections::{no_other_keys, node_refs, non_negative};
+use crate::config::table::{param, Section, Ty, Value};
+use crate::config::{
+    Config, ConfigError, LoadModelSection, ModelParameters, Reader, SectionContext, SectionData,
+};
+use serde::Serialize;
 use std::any::Any;
+
+/// The springs' validated section (`springs.*`): a spring-damper between the
+/// ground and the plate under each listed ALE node, F_z = −k_s w − c_s ẇ.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct SpringsConfig {
+    /// ALE nodes, 0-based (`springs.ale_nodes` counts from 1).
+    pub nodes: Vec<usize>,
+    /// k_s, N/m.
+    pub stiffness: f64,
+    /// c_s, N·s/m.
+    pub damping: f64,
+}
+
+impl LoadModelSection for SpringsConfig {
+    const SECTION: &'static str = "springs";
+}
+
+/// The springs' keys.
+pub const SECTIONS: &[Section] = &[Section {
+    name: "springs",
+    title: "`springs` — space-fixed point springs (the load-model example of docs/architecture.md)",
+    before: "Off unless `springs.ale_nodes` is given. Each spring pushes the plate under its node along z with F = −`springs.stiffness` · w − `springs.damping` · ∂w/∂t.",
+    after: "",
+    params: &[
+        param("springs.ale_nodes", Ty::IntegerArray, "integer array", "—", Value::Integers(&[]), "[]", "each an existing ALE node (from 1), distinct", "where the springs act"),
+        param("springs.stiffness", Ty::Double, "double", "N/m", Value::Double(0.0), "0", "≥ 0", "stiffness k_s of each spring").min(0.0),
+        param("springs.damping", Ty::Double, "double", "N·s/m", Value::Double(0.0), "0", "≥ 0", "damping c_s of each spring").min(0.0),
+    ],
+}];
+
+/// The springs' parameters: their keys and their reader.
+pub const PARAMETERS: ModelParameters = ModelParameters {
+    sections: SECTIONS,
+    read,
+};
+
+/// `springs.*`: the section when `springs.ale_nodes` names nodes.
+fn read(r: &Reader, ctx: &mut SectionContext) -> Result<Option<Box<dyn SectionData>>, ConfigError> {
+    let numbers = r.i64_array("springs.ale_nodes")?;
+    if numbers.is_empty() {
+        no_other_keys(r, "springs", "springs.ale_nodes")?;
+        return Ok(None);
+    }
+    let nodes = node_refs("springs.ale_nodes", &numbers, "ale", ctx.nodes.ale.len())?;
+    let stiffness = non_negative("springs.stiffness", r.f64("springs.stiffness")?)?;
+    let damping = non_negative("springs.damping", r.f64("springs.damping")?)?;
+    Ok(Some(
+        SpringsConfig {
+            nodes,
+            stiffness,
+            damping,
+        }
+        .boxed(),
+    ))
+}
 
 /// Springs under ALE nodes (immutable; in the `Scene`).
 #[derive(Debug, Clone, PartialEq)]
@@ -37,11 +97,12 @@ pub struct PointSprings {
 pub const REGISTRATION: Registration = Registration {
     build,
     outputs: &NO_OUTPUTS,
+    parameters: &PARAMETERS,
 };
 
 /// The registered builder: springs where `springs.ale_nodes` names nodes.
 pub fn build(config: &Config, nodes: &SceneNodes) -> Option<Box<dyn LoadModel>> {
-    let s = config.springs.as_ref()?;
+    let s = config.section::<SpringsConfig>()?;
     let shapes: Vec<&[crate::dynamics::node_frame::NodeShape]> = s
         .nodes
         .iter()

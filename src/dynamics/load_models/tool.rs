@@ -40,6 +40,7 @@ use super::model::{
     SceneNodes,
 };
 use super::outputs::{CsvColumn, OutputChannel, OutputContext, Outputs, StateTopic};
+use super::tool_config::{ToolConfig, MAX_TOOL_FEED_RATE, PARAMETERS};
 use super::undo::SlotUndo;
 use crate::config::Config;
 use crate::dynamics::contact_compliance::solve_monotone;
@@ -175,7 +176,7 @@ pub const FEED_RATE: CommandSpec = CommandSpec {
     token: "feed",
     unit: "m/s",
     indexed: false,
-    rule: CommandRule::MagnitudeAtMost(crate::config::MAX_TOOL_FEED_RATE),
+    rule: CommandRule::MagnitudeAtMost(MAX_TOOL_FEED_RATE),
 };
 
 /// The tool's declared outputs: ~/tool_state (`msg/ToolState.msg`) and its
@@ -206,11 +207,12 @@ pub const OUTPUTS: Outputs = Outputs {
 pub const REGISTRATION: Registration = Registration {
     build,
     outputs: &OUTPUTS,
+    parameters: &PARAMETERS,
 };
 
 /// The registered builder: a tool where `tool.*` gives its node.
 pub fn build(config: &Config, nodes: &SceneNodes) -> Option<Box<dyn LoadModel>> {
-    let t = config.tool.as_ref()?;
+    let t = config.section::<ToolConfig>()?;
     Some(Box::new(Tool {
         node: t.node,
         angle: nodes.ale[t.node].angle,

@@ -7,7 +7,7 @@
 //! (clamp force, contact stiffness per point, caliper kind, friction) apply.
 //!
 //! Uniform pressure: the pads share the clamp force equally among their
-//! contacts (`load_models/pad.rs`), so each point stands for an equal area.
+//! contacts (`pad.rs`), so each point stands for an equal area.
 //! The sector is cut into `points_radial` rings of equal area,
 //! ρ_j² = r_in² + j (r_out² − r_in²)/n_r, and each ring's point sits at its
 //! mean friction radius (2/3)(ρ_{j+1}³ − ρ_j³)/(ρ_{j+1}² − ρ_j²), so the
@@ -15,8 +15,18 @@
 //! μ N₀ (2/3)(r_out³ − r_in³)/(r_out² − r_in²) per face. Circumferentially the
 //! points sit at the centres of `points_circumferential` equal sub-arcs.
 
-use super::raw::Reader;
-use super::{ConfigError, NodePosition, NodesConfig, PadContact, PlateConfig};
+use crate::config::model_sections::no_other_keys;
+use crate::config::{ConfigError, NodePosition, NodesConfig, PlateConfig, Reader};
+use serde::Serialize;
+
+/// One pad contact point: an ALE node with a pad on each face of the disc.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct PadContact {
+    /// ALE node, 0-based (`pads.ale_nodes` counts from 1).
+    pub node: usize,
+    /// Pad it belongs to, 0-based (`pads.contact_pad` counts from 1).
+    pub pad: usize,
+}
 
 /// Largest number of contact points of all calipers together.
 const MAX_CALIPER_POINTS: i64 = 400;
@@ -54,11 +64,7 @@ pub(super) fn read_calipers(
 ) -> Result<Option<Vec<PadContact>>, ConfigError> {
     let angles = r.f64_array("calipers.angles_deg")?;
     if angles.is_empty() {
-        super::load_model_sections::no_other_keys(
-            r,
-            &super::table::keys("calipers"),
-            "calipers.angles_deg",
-        )?;
+        no_other_keys(r, "calipers", "calipers.angles_deg")?;
         return Ok(None);
     }
     if r.has("pads.ale_nodes") || r.has("pads.contact_pad") {
