@@ -65,7 +65,7 @@ fn scene(surface: ContactSurface, mu: f64) -> Config {
 /// its slope at r; m, ω, ζ the pair's modal mass, frequency, damping; p = N₀ the
 /// preload per face; V = Ωr):
 ///
-///   q̈_c + (d₀ + β) q̇_c + G q̇_s + (K₀ + κ) q_c + (s + φ + βkΩ) q_s = 0
+///   q̈_c + (d₀ + β) q̇_c + G q̇_s + (K₀ + κ) q_c + (s + φ + βkΩρ) q_s = 0
 ///   q̈_s + d₀ q̇_s − G q̇_c + K₀ q_s − (s + χ) q_c = 0
 ///
 /// K₀ = ω² − k²Ω², d₀ = 2ζω, s = 2ζωkΩ, G = 2kΩ (the ALE pair, docs/dynamics.md);
@@ -74,13 +74,17 @@ fn scene(surface: ContactSurface, mu: f64) -> Config {
 /// χ = μ h k_c kR²/(r m) the faces' couple: N_t − N_b = 2k_c R q_c at lever h/2
 ///   acting on ∂_θ w_s / r = kR/r;
 /// β = (h²/2) μ p R′²/(V m) the sliding direction: the faces' radial velocity
-///   ∓(h/2) ∂_r Ẇ, ∂_r Ẇ = R′(q̇_c + kΩ q_s), turns the friction ±μp δv_r/V.
+///   v_r = ∓(h/2) (D(∂_r w)/Dt − Ω ∂_θ w / r) (the face point's in-plane
+///   displacement turns with the plate), D(∂_r w)/Dt = R′(q̇_c + kΩ q_s) and
+///   ∂_θ w / r = kR q_s / r, so v_r = ∓(h/2) R′(q̇_c + kΩρ q_s) with
+///   ρ = 1 − R/(rR′), turns the friction ±μp δv_r/V.
 ///
 /// With the speed-dependent μ(v) = μ + Δμ e^(−v/v_S) (`stribeck` = (Δμ, v_S)),
-/// μ in φ, χ, β is μ(V), and the faces' tangential velocity ∓(h/2)(1/r) ∂_θ Ẇ,
-/// ∂_θ Ẇ = kR (q̇_s − kΩ q_c), changes their friction by ∓μ′ p δv_θ at
-/// lever ±h/2 on ∂_θ w_s / r: γ = (h²/2) p μ′(V) k²R²/(r² m) adds
-/// γ q̇_s − γkΩ q_c to the q_s equation.
+/// μ in φ, χ, β is μ(V), and the faces' tangential velocity
+/// v_θ = ∓(h/2)(D(∂_θ w / r)/Dt + Ω ∂_r w) = ∓(h/2)(kR/r)(q̇_s − kΩσ q_c),
+/// σ = 1 − rR′/(k²R), changes their friction by ∓μ′ p δv_θ at lever ±h/2 on
+/// ∂_θ w_s / r: γ = (h²/2) p μ′(V) k²R²/(r² m) adds γ q̇_s − γkΩσ q_c to the
+/// q_s equation.
 fn quartic(mu: f64, face: bool) -> [f64; 4] {
     quartic_with(mu, face, (0.0, 1.0))
 }
@@ -122,7 +126,13 @@ fn quartic_with(mu: f64, face: bool, stribeck: (f64, f64)) -> [f64; 4] {
     } else {
         (0.0, 0.0)
     };
-    let (a, b) = (s + phi + beta * k * SPEED, s + chi + gamma * k * SPEED);
+    // The polar basis' rotation under the face point (docs/scenes.md).
+    let rho = 1.0 - rr / (r * rr_slope);
+    let sigma = 1.0 - r * rr_slope / (k * k * rr);
+    let (a, b) = (
+        s + phi + beta * k * SPEED * rho,
+        s + chi + gamma * k * SPEED * sigma,
+    );
     [
         2.0 * d0 + beta + gamma,
         2.0 * k0 + kappa + (d0 + beta) * (d0 + gamma) + g * g,
@@ -284,9 +294,12 @@ fn ale_and_lagrangian_descriptions_converge_to_one_motion_with_face_friction() {
 /// contacts, R, R′ the radial shape and slope at r, V = Ωr: the follower and
 /// the faces' couple are both circulatory, σ = μ k R² (N₀ + h k_c n/2)/r; the
 /// sliding direction adds the damping D = μ (h²/4) N₀ R′²/V on the material
-/// rate, whose Ω ∂_θ part is circulatory too and cancels the damping's
-/// i D kΩ in the ALE frame. The root crosses at σ = (2ζωm + D) ω_p:
-///   μ_c = 2ζω m ω_p / (k R² (N₀ + h k_c n/2)/r − (h²/4) N₀ R′² ω_p / V).
+/// rate D(∂_r w)/Dt, whose Ω ∂_θ part is circulatory too and cancels the
+/// damping's i D kΩ in the ALE frame; the polar basis' rotation, −Ω ∂_θ w / r
+/// in the radial velocity, is circulatory and opposes σ by
+/// μ (h²/4) N₀ k R R′/r². The root crosses at σ = (2ζωm + D) ω_p:
+///   μ_c = 2ζω m ω_p / (k R² (N₀ + h k_c n/2)/r − (h²/4) N₀ k R R′/r²
+///         − (h²/4) N₀ R′² ω_p / V).
 #[test]
 fn the_ring_of_pads_threshold_with_face_friction_matches_its_closed_form() {
     let mut c = support::scene_files::load("brake_squeal_paper.yaml");
@@ -312,7 +325,8 @@ fn the_ring_of_pads_threshold_with_face_friction_matches_its_closed_form() {
         let [rr, slope, ..] = model.radial_shapes()[m.radial].eval(r);
         let k = m.k as f64;
         let omega_p = (m.omega * m.omega + kc * n * rr * rr / m.modal_mass).sqrt();
-        let circulatory = k * rr * rr * (clamp + 0.5 * h * kc * n) / r;
+        let circulatory = k * rr * rr * (clamp + 0.5 * h * kc * n) / r
+            - 0.25 * h * h * clamp * k * rr * slope / (r * r);
         let direction = 0.25 * h * h * clamp * slope * slope * omega_p / (speed * r);
         let mu = 2.0 * m.damping * m.omega * m.modal_mass * omega_p / (circulatory - direction);
         println!(

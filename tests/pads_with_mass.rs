@@ -157,6 +157,8 @@ fn one_pad_on_one_mode_pair_has_the_frequencies_of_its_characteristic_polynomial
 /// the faces' springs act on R q_c − a, so κ q_c → κ (q_c − a/R) and the
 /// couple's χ q_c → χ (q_c − a/R), each with its damping ε = c_c/k_c times
 /// the rates; the pad: m_p ä = −(k_c + k_b) a − c_c ȧ + k_c R q_c + c_c R q̇_c.
+/// The sliding direction's circulatory part is βkΩρ, ρ = 1 − R/(rR′) (the
+/// face point's radial velocity carries the basis' rotation −Ω ∂_θ w / r).
 /// Returns max Re λ of the 6×6 first-order system (q_c, q_s, a and rates).
 /// In series with the residual flexibility k_c, c_c are divided by 1 + 2k_c γ.
 fn own_growth_rate(sim: &Simulation, mu: f64, backing: f64) -> f64 {
@@ -192,13 +194,14 @@ fn own_growth_rate(sim: &Simulation, mu: f64, backing: f64) -> f64 {
     for i in 0..3 {
         a[(i, 3 + i)] = 1.0;
     }
-    // q̈_c = −(d₀ + β) q̇_c − G q̇_s − K₀ q_c − κ (q_c − a/R) − κε (q̇_c − ȧ/R) − (s + φ + βkΩ) q_s
+    // q̈_c = −(d₀ + β) q̇_c − G q̇_s − K₀ q_c − κ (q_c − a/R) − κε (q̇_c − ȧ/R) − (s + φ + βkΩρ) q_s
+    let rho = 1.0 - p.rr / (p.r * p.slope);
     a[(3, 3)] = -(d0 + beta) - kappa * eps;
     a[(3, 5)] = kappa * eps / p.rr;
     a[(3, 4)] = -g;
     a[(3, 0)] = -k0 - kappa;
     a[(3, 2)] = kappa / p.rr;
-    a[(3, 1)] = -(s + phi + beta * k * SPEED);
+    a[(3, 1)] = -(s + phi + beta * k * SPEED * rho);
     // q̈_s = −d₀ q̇_s + G q̇_c − K₀ q_s + s q_c + χ (q_c − a/R) + χε (q̇_c − ȧ/R)
     a[(4, 4)] = -d0;
     a[(4, 3)] = g + chi * eps;

@@ -99,7 +99,9 @@ fn ring_closed_form(c: &Config) -> f64 {
             let b = mu * h * cc * n * k * rr * rr / (2.0 * r * mass);
             let big_d = mu * 0.25 * h * h * clamp * slope * slope / (speed * r);
             let a = 2.0 * m.damping * m.omega + (d + big_d) / mass;
-            let cc_ = (sigma - d * k * speed) / mass;
+            // The polar basis' rotation under the face point: circulatory, −D kΩ R/(rR′).
+            let turn = mu * 0.25 * h * h * clamp * k * rr * slope / (r * r);
+            let cc_ = (sigma - d * k * speed - turn) / mass;
             let kk = omega_p2 + b * k * speed;
             let y = cc_ / a;
             // Unstable when the circulatory drive exceeds what the damping balances at the

@@ -36,9 +36,10 @@ pub struct NodeFrame {
     pub shapes: Vec<NodeShape>,
     /// Per mode ∂w_i/∂φ (for the material velocity under an ALE point).
     pub w_phi: Vec<f64>,
-    /// Per mode ∇(∂w_i/∂φ) in the parent frame's Cartesian axes, 1/m·m (the
+    /// Per mode ∂(∇w_i)/∂φ: the change of ∇w_i's components in the parent
+    /// frame's Cartesian axes along the turn, ∇(∂w_i/∂φ) + e_z × ∇w_i (the
     /// in-plane velocity of a face point under an ALE node, docs/scenes.md).
-    pub w_phi_grad: Vec<[f64; 2]>,
+    pub gradient_phi: Vec<[f64; 2]>,
     /// z of the frame through the thickness: +h/2 (top face), −h/2 (bottom
     /// face) or 0 (mid-plane), m (`nodes.*_surface`).
     pub z: f64,
@@ -60,6 +61,27 @@ impl NodeFrame {
         let values: Vec<ShapeValue> = (0..model.n_modes())
             .map(|i| model.mode_shape(i, radius, angle))
             .collect();
+        let gradient_phi = (0..model.n_modes())
+            .map(|i| {
+                let m = &model.modes()[i];
+                let rr = model.radial_shapes()[m.radial].eval(radius);
+                let k2 = (m.k * m.k) as f64;
+                gradient_phi(radius, angle, [rr[0], rr[1]], m.shape.eval(m.k, angle), k2)
+            })
+            .collect();
+        NodeFrame::from_values(kind, radius, angle, z, &values, gradient_phi)
+    }
+
+    /// The frame at (r, φ) on the surface at `z` from the shapes' values
+    /// there and their [`gradient_phi`].
+    pub(crate) fn from_values(
+        kind: NodeKind,
+        radius: f64,
+        angle: f64,
+        z: f64,
+        values: &[ShapeValue],
+        gradient_phi: Vec<[f64; 2]>,
+    ) -> NodeFrame {
         NodeFrame {
             kind,
             radius,
@@ -72,9 +94,7 @@ impl NodeFrame {
                 })
                 .collect(),
             w_phi: values.iter().map(|s| s.w_phi).collect(),
-            w_phi_grad: (0..model.n_modes())
-                .map(|i| angular_rate_gradient(model, i, radius, angle))
-                .collect(),
+            gradient_phi,
             z,
             xy: [radius * angle.cos(), radius * angle.sin()],
         }
@@ -132,14 +152,74 @@ impl NodeFrame {
     }
 }
 
-/// ∇(∂w_i/∂φ) at (r, φ): with w_i = R(r) Θ(φ), ∂_r ∂_φ w_i = R′ Θ′ and
-/// (1/r) ∂²_φ w_i = −k² R Θ / r, turned into Cartesian axes.
-fn angular_rate_gradient(model: &PlateModel, i: usize, r: f64, phi: f64) -> [f64; 2] {
-    let m = &model.modes()[i];
-    let rr = model.radial_shapes()[m.radial].eval(r);
-    let (t, dt) = m.shape.eval(m.k, phi);
-    let k2 = (m.k * m.k) as f64;
-    let (radial, tangential) = (rr[1] * dt, -k2 * rr[0] * t / r);
+/// ∂(∇w)/∂φ at (r, φ) for w = R(r) Θ(φ) (`radial` = (R, R′), `angular` =
+/// (Θ, Θ′), Θ″ = −k² Θ) in Cartesian axes: the gradient is a vector that turns
+/// with the plate, so besides ∇(∂w/∂φ) its components change by the basis'
+/// rotation e_z × ∇w (docs/scenes.md, "Friction on the faces"). In polar
+/// components
+///
+///   e_r: ∂_r ∂_φ w − (1/r) ∂_φ w = R′Θ′ − RΘ′/r,
+///   e_φ: (1/r) ∂²_φ w + ∂_r w     = −k² RΘ/r + R′Θ,
+///
+/// both zero for a rigid tilt w = α r cos φ, whose gradient is uniform.
+pub(crate) fn gradient_phi(
+    r: f64,
+    phi: f64,
+    radial: [f64; 2],
+    angular: (f64, f64),
+    k2: f64,
+) -> [f64; 2] {
+    let ([rr, rr_slope], (t, dt)) = (radial, angular);
+    let e_r = rr_slope * dt - rr * dt / r;
+    let e_phi = -k2 * rr * t / r + rr_slope * t;
     let (s, c) = phi.sin_cos();
-    [c * radial - s * tangential, s * radial + c * tangential]
+    [c * e_r - s * e_phi, s * e_r + c * e_phi]
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// ∇w in Cartesian axes for w = R(r) cos kφ with R = r², from the tilt.
+    fn cartesian_gradient(r: f64, phi: f64, k: f64) -> [f64; 2] {
+        let (w_r, w_phi) = (2.0 * r * (k * phi).cos(), -k * r * r * (k * phi).sin());
+        let v = ShapeValue {
+            w: r * r * (k * phi).cos(),
+            w_r,
+            w_phi,
+        };
+        let t = v.tilt(r, phi);
+        [-t[1], t[0]]
+    }
+
+    #[test]
+    fn gradient_phi_is_the_turn_of_the_cartesian_gradient_by_central_differences() {
+        let (r, k, eps) = (0.13, 3.0, 1e-5);
+        for phi in [0.0, 0.4, 1.9, 4.2] {
+            let plus = cartesian_gradient(r, phi + eps, k);
+            let minus = cartesian_gradient(r, phi - eps, k);
+            let fd = [
+                (plus[0] - minus[0]) / (2.0 * eps),
+                (plus[1] - minus[1]) / (2.0 * eps),
+            ];
+            let (t, dt) = ((k * phi).cos(), -k * (k * phi).sin());
+            let exact = gradient_phi(r, phi, [r * r, 2.0 * r], (t, dt), k * k);
+            for a in 0..2 {
+                assert!(
+                    (fd[a] - exact[a]).abs() < 1e-8,
+                    "φ = {phi}: {fd:?} vs {exact:?}"
+                );
+            }
+        }
+    }
+
+    #[test]
+    fn a_rigid_tilt_s_gradient_does_not_turn() {
+        let alpha = 2e-3;
+        for phi in [0.0f64, 0.7, 2.5, 5.1] {
+            let (t, dt) = (phi.cos(), -phi.sin());
+            let g = gradient_phi(0.11, phi, [alpha * 0.11, alpha], (t, dt), 1.0);
+            assert!(g[0].abs() < 1e-18 && g[1].abs() < 1e-18, "{g:?}");
+        }
+    }
 }

@@ -23,9 +23,12 @@
 //! preload per face, δN = k_c (w − w̄) + c_c (ẇ − ẇ̄) and Ẇ = ∂w/∂t + Ω ∂w/∂θ:
 //!
 //! - the friction couple  f_i += h g sign V (1/r) ∂_θ w_i δN,
-//! - the sliding direction f_i −= (h²/2) p (g/|V|) ∂_r w_i ∂_r Ẇ,
-//! - the speed slope      f_i −= (h²/2) p g′ (1/r²) ∂_θ w_i ∂_θ Ẇ, g′ = dg/d|v|
-//!   (μ(v) = μ + (μ_s − μ) e^(−v/v_S) and the regularisation),
+//! - the sliding direction f_i −= (h²/2) p (g/|V|) ∂_r w_i (D(∂_r w)/Dt − Ω ∂_θ w / r),
+//! - the speed slope      f_i −= (h²/2) p g′ (1/r) ∂_θ w_i (D(∂_θ w / r)/Dt + Ω ∂_r w),
+//!   g′ = dg/d|v| (μ(v) = μ + (μ_s − μ) e^(−v/v_S) and the regularisation),
+//!
+//! the face point's radial and tangential velocity over −z, with the polar
+//! basis' rotation (`face_friction.rs`; zero for a tilt held in space);
 //!
 //! (`add_face_terms`); the follower term above is the normal part of the
 //! sliding direction and is the same.
@@ -243,20 +246,21 @@ fn add_face_terms(
         mu_v / (FRICTION_REGULARISATION_SPEED * x.cosh().powi(2)) + law.slope(v.abs()) * x.tanh();
     let couple = h * mu_v * (v / FRICTION_REGULARISATION_SPEED).tanh();
     let lever = 0.5 * h * h * preload;
-    // Per mode: ∂_r w, ∂_θ w and of ∂_θ w: ∂_r ∂_θ w, ∂²_θ w.
+    // Per mode: ∂_r w, ∂_θ w and the turn of the gradient ∂(∇w)/∂θ in the same
+    // components: ∂_r ∂_θ w − ∂_θ w / r and ∂²_θ w + r ∂_r w.
     let radial = |g: [f64; 2]| c * g[0] + s * g[1];
     let angular = |g: [f64; 2]| r * (-s * g[0] + c * g[1]);
     for i in 0..n {
         let (dr_i, dt_i) = (radial(node.gradient(i)), angular(node.gradient(i)));
         for m in 0..n {
             let (dr_m, dt_m) = (radial(node.gradient(m)), angular(node.gradient(m)));
-            let (drt_m, dtt_m) = (radial(node.w_phi_grad[m]), angular(node.w_phi_grad[m]));
+            let (drt_m, dtt_m) = (radial(node.gradient_phi[m]), angular(node.gradient_phi[m]));
             let dn = node.shapes[m].w - mean[m];
             let dn_times = |coef: f64, stiff: f64, row: Option<&[f64]>| match row {
                 None => coef * stiff * dn,
                 Some(r) => coef * (-0.5 * r[m]),
             };
-            // δN = k_c dn q + c_c dn q̇; ∂_r Ẇ = dr q̇ + Ω drt q; ∂_θ Ẇ = dt q̇ + Ω dtt q.
+            // δN = k_c dn q + c_c dn q̇; v_r / −z = dr q̇ + Ω drt q, r v_θ / −z ∋ dt q̇ + Ω dtt q.
             let on_q = dn_times(couple * dt_i / r, pads.stiffness, series.map(|s| s.0))
                 - lever * g_over_v * dr_i * speed * drt_m
                 - lever * g_slope / (r * r) * dt_i * speed * dtt_m;

@@ -1,17 +1,24 @@
 //! Pad friction on the faces of the disc (`pads.contact_surface: faces`;
 //! docs/scenes.md, "Friction on the faces").
 //!
-//! A Kirchhoff face point at z = ±h/2 moves in-plane by −z∇w. Under a
-//! space-fixed pad at (r, θ) (an ALE node) the face material slides with
+//! A Kirchhoff face point at z = ±h/2 moves in-plane by u = −z∇w, a vector
+//! that turns with the plate. Under a space-fixed pad at (r, θ) (an ALE node)
+//! the face material slides with
 //!
-//!   v = Ω r e_θ − z ∇Ẇ + Ω ∂w/∂θ e_z,   Ẇ = Dw/Dt = ∂w/∂t + Ω ∂w/∂θ,
+//!   v = Ω r e_θ + D u/Dt + Ω ∂w/∂θ e_z,   D/Dt = ∂/∂t + Ω ∂/∂θ,
 //!
 //! relative to the pad (whose contact point follows the gap at ∂w/∂t): the
 //! rotation, the vibration's in-plane velocity and the normal part of the
-//! sliding along the tilted surface (the paper's follower direction). In the
-//! ALE description ∇Ẇ = Σ_i (q̄̇_i ∇w_i + Ω q̄_i ∇(∂w_i/∂θ)) — the rotation of
-//! the gradient's axes cancels against the rigid turn of the displacement
-//! (docs/scenes.md). Friction is regularised Coulomb along v:
+//! sliding along the tilted surface (the paper's follower direction). D/Dt
+//! acts on u's Cartesian components, which change along the turn by the
+//! rotation of the polar basis as well: D u/Dt = −z (∇Ẇ + Ω e_z × ∇w),
+//! Ẇ = ∂w/∂t + Ω ∂w/∂θ, in polar components
+//!
+//!   v_r = −z (D(∂_r w)/Dt − Ω ∂_θ w / r),   v_θ ∋ −z (D(∂_θ w / r)/Dt + Ω ∂_r w),
+//!
+//! zero for a tilt held in space (w = α r cos θ). In the ALE description
+//! D(∇w)/Dt = Σ_i (q̄̇_i ∇w_i + Ω q̄_i ∂(∇w_i)/∂θ) with the nodes'
+//! `NodeFrame::gradient_phi`. Friction is regularised Coulomb along v:
 //!
 //!   F = −μ N tanh(|v| / v_reg) v/|v|,
 //!
@@ -23,7 +30,8 @@ use crate::dynamics::node_frame::NodeFrame;
 /// The vibration's velocity terms under a contact point (ALE amplitudes).
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct FaceKinematics {
-    /// ∇Ẇ = ∇(∂w/∂t + Ω ∂w/∂θ) in frame A's Cartesian axes, 1/s.
+    /// D(∇w)/Dt = ∇Ẇ + Ω e_z × ∇w in frame A's Cartesian axes, 1/s: the
+    /// face point's in-plane velocity is −z times it.
     pub grad_material_rate: [f64; 2],
     /// Ω ∂w/∂θ: the normal part of the sliding velocity, m/s.
     pub normal_rate: f64,
@@ -36,7 +44,7 @@ pub fn face_kinematics(node: &NodeFrame, q: &[f64], q_dot: &[f64], speed: f64) -
     let mut w_theta = 0.0;
     for (i, (&qi, &vi)) in q.iter().zip(q_dot).enumerate() {
         let g = node.gradient(i);
-        let gp = node.w_phi_grad[i];
+        let gp = node.gradient_phi[i];
         k.grad_material_rate[0] += vi * g[0] + speed * qi * gp[0];
         k.grad_material_rate[1] += vi * g[1] + speed * qi * gp[1];
         w_theta += qi * node.w_phi[i];
@@ -110,4 +118,51 @@ pub fn friction_force(
     }
     let scale = -law.mu(speed) * normal * (speed / regularisation_speed).tanh() / speed;
     [scale * v[0], scale * v[1], scale * v[2]]
+}
+
+/// An ALE frame at (r, θ) whose one "mode" is the rigid tilt w = α r cos θ
+/// (a plate tilted about the y axis, held in space by q̄ = 1, q̄̇ = 0).
+#[cfg(test)]
+pub(crate) fn rigid_tilt_frame(radius: f64, theta: f64, alpha: f64) -> NodeFrame {
+    use crate::dynamics::node_frame::{gradient_phi, NodeKind};
+    use crate::model::ShapeValue;
+    let (s, c) = theta.sin_cos();
+    let value = ShapeValue {
+        w: alpha * radius * c,
+        w_r: alpha * c,
+        w_phi: -alpha * radius * s,
+    };
+    let turn = gradient_phi(radius, theta, [alpha * radius, alpha], (c, -s), 1.0);
+    NodeFrame::from_values(NodeKind::Ale, radius, theta, 0.0, &[value], vec![turn])
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_tilt_held_in_space_changes_neither_face_s_sliding_direction_at_any_contact() {
+        let (alpha, speed, h) = (3e-3, 40.0, 0.018);
+        for radius in [0.08, 0.12, 0.15] {
+            for j in 0..12 {
+                let theta = j as f64 * std::f64::consts::TAU / 12.0 + 0.1;
+                let node = rigid_tilt_frame(radius, theta, alpha);
+                let k = face_kinematics(&node, &[1.0], &[0.0], speed);
+                assert!(
+                    k.grad_material_rate[0].abs() < 1e-15 && k.grad_material_rate[1].abs() < 1e-15,
+                    "θ = {theta}: {k:?}"
+                );
+                // The face material moves with the rigid turn only: Ω r e_θ in-plane
+                // and the tilted surface's normal rate Ω ∂w/∂θ = −Ω α r sin θ.
+                let (s, c) = theta.sin_cos();
+                for z in [0.5 * h, -0.5 * h] {
+                    let v = sliding_velocity(&k, z, radius, (s, c), speed, true);
+                    let (v_r, v_t) = (c * v[0] + s * v[1], -s * v[0] + c * v[1]);
+                    assert!(v_r.abs() < 1e-15, "θ = {theta}, z = {z}: v_r = {v_r}");
+                    assert!((v_t - speed * radius).abs() < 1e-13, "v_θ = {v_t}");
+                    assert!((v[2] + speed * alpha * radius * s).abs() < 1e-15);
+                }
+            }
+        }
+    }
 }

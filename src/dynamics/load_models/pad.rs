@@ -540,4 +540,43 @@ mod tests {
         assert!((f[1].bottom - 1000.0).abs() < 1e-9, "{f:?}");
         assert!((f[0].top - 1000.0).abs() < 1e-9 && f[1].top == 0.0, "{f:?}");
     }
+
+    #[test]
+    fn a_tilt_held_in_space_leaves_both_faces_friction_along_minus_e_theta_without_a_couple() {
+        let mut p = pads(Caliper::Fixed, false);
+        p.contact_surface = ContactSurface::Faces;
+        let (speed, n) = (30.0, 500.0);
+        for follower in [false, true] {
+            p.follower_friction = follower;
+            for contact in &p.contacts {
+                let node = super::super::face_friction::rigid_tilt_frame(
+                    contact.radius,
+                    contact.angle,
+                    4e-3,
+                );
+                let k = face_kinematics(&node, &[1.0], &[0.0], speed);
+                let mut f = ContactForces {
+                    top: n,
+                    bottom: n,
+                    ..ContactForces::default()
+                };
+                let w = p.face_wrench(contact, &mut f, &k, speed);
+                let (s, c) = contact.sin_cos;
+                let radial = c * w.force[0] + s * w.force[1];
+                assert!(radial.abs() < 1e-12, "radial friction {radial} N");
+                // Both faces slide at Ω r e_θ in-plane: equal forces, no couple.
+                assert!(
+                    w.moment[0].abs() < 1e-12 && w.moment[1].abs() < 1e-12,
+                    "{w:?}"
+                );
+                if !follower {
+                    let expected = -2.0
+                        * 0.5
+                        * n
+                        * (speed * contact.radius / FRICTION_REGULARISATION_SPEED).tanh();
+                    assert!((f.tangential - expected).abs() < 1e-9, "{}", f.tangential);
+                }
+            }
+        }
+    }
 }
