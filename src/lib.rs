@@ -26,5 +26,4 @@ pub mod model;
 #[cfg(feature = "ros")]
 #[allow(missing_docs)]
 pub mod ros;
-#[allow(missing_docs)]
 pub mod study;
