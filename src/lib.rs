@@ -10,7 +10,6 @@
 #![warn(missing_docs)]
 
 #[cfg(feature = "ros")]
-#[allow(missing_docs)]
 pub mod bag;
 #[cfg(feature = "cli")]
 #[allow(missing_docs)]
