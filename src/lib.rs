@@ -19,7 +19,6 @@ pub mod colour_map;
 pub mod config;
 pub mod dynamics;
 #[cfg(feature = "ros")]
-#[allow(missing_docs)]
 pub mod messages;
 pub mod model;
 #[cfg(feature = "ros")]
