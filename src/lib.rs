@@ -22,6 +22,5 @@ pub mod dynamics;
 pub mod messages;
 pub mod model;
 #[cfg(feature = "ros")]
-#[allow(missing_docs)]
 pub mod ros;
 pub mod study;
