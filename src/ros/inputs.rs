@@ -53,8 +53,8 @@ pub enum Input {
 }
 
 impl Input {
-    #[cfg(test)]
     /// The commands it holds (0-based indices).
+    #[cfg(test)]
     pub fn commands(&self) -> Vec<Command> {
         match self {
             Input::One(c) => vec![c.command()],
@@ -236,14 +236,14 @@ impl InputValidator {
             })
     }
 
-    #[cfg(test)]
     /// The model named `name` (`pads`, `tool`), if the scene has it.
+    #[cfg(test)]
     fn model(&self, name: &str) -> Option<usize> {
         self.rules.model(name).map(|(i, _)| i)
     }
 
-    #[cfg(test)]
     /// A clamp force on the topic of pad `pad` (0-based), N.
+    #[cfg(test)]
     pub fn clamp_force(&self, pad: usize, newtons: f64) -> Result<Input, Rejection> {
         match self.model("pads") {
             Some(model) => self.load_command(model, 0, pad, newtons),
@@ -255,8 +255,8 @@ impl InputValidator {
         }
     }
 
-    #[cfg(test)]
     /// A PadClampForces message: pad numbers (from 1) and their clamp forces, N.
+    #[cfg(test)]
     pub fn clamp_forces(&self, pads: &[u32], forces: &[f64]) -> Result<Input, Rejection> {
         match self.model("pads") {
             Some(model) => self.load_batch(model, 0, pads, forces),
@@ -271,8 +271,8 @@ impl InputValidator {
         }
     }
 
-    #[cfg(test)]
     /// A tool feed rate, m/s.
+    #[cfg(test)]
     pub fn tool_feed(&self, rate: f64) -> Result<Input, Rejection> {
         match self.model("tool") {
             Some(model) => self.load_command(model, 0, 0, rate),
