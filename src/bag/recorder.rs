@@ -301,9 +301,7 @@ fn write_all(
 #[derive(Debug, Clone)]
 pub struct RecordingResult {
     pub summary: Result<BagSummary, String>,
-    pub handed: u64,
     pub dropped: u64,
-    pub written: u64,
     /// A write error that stopped the recording early.
     pub error: Option<String>,
 }
@@ -319,9 +317,7 @@ impl RecorderThread {
         let c = &self.counters;
         RecordingResult {
             summary,
-            handed: c.handed.load(Ordering::Relaxed),
             dropped: c.dropped.load(Ordering::Relaxed),
-            written: c.written.load(Ordering::Relaxed),
             error: c.error.lock().map(|e| e.clone()).unwrap_or(None),
         }
     }

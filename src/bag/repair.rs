@@ -2,7 +2,7 @@
 //! power cut) leaves an MCAP file without its summary and end magic, and a
 //! metadata.yaml from its last checkpoint. Repair reads every complete
 //! message up to where the file breaks off (the writer closes a chunk and
-//! rewrites metadata.yaml every [`CHECKPOINT_PERIOD`](super::writer::CHECKPOINT_PERIOD),
+//! rewrites metadata.yaml every `CHECKPOINT_PERIOD` (0.5 s),
 //! so at most that much is lost) and writes them into a complete MCAP file
 //! of a fresh name beside it, `<stem>.repaired.mcap` (`-2`, `-3`, … if that
 //! name is taken by a file it cannot use).
@@ -46,9 +46,13 @@ const MAX_FILES: usize = 10_000;
 #[derive(Debug)]
 pub enum Repair {
     /// Every file was complete (or repaired before): nothing changed.
-    AlreadyComplete { files: Vec<PathBuf> },
+    AlreadyComplete {
+        /// The directory's `.mcap` files.
+        files: Vec<PathBuf>,
+    },
     /// Damaged files repaired into new files beside them (originals untouched).
     Repaired {
+        /// Each repaired file (the new one) and what it holds.
         repaired: Vec<(PathBuf, BagSummary)>,
     },
 }

@@ -101,7 +101,7 @@ pub fn own_text(type_name: &str) -> Option<&'static str> {
 
 /// The non-primitive field types of a `.msg` text as `pkg/Type`, sorted and
 /// unique (relative names are in `package`), as rosbag2 finds them.
-pub fn dependencies(text: &str, package: &str) -> Vec<String> {
+pub(crate) fn dependencies(text: &str, package: &str) -> Vec<String> {
     let mut out = std::collections::BTreeSet::new();
     for line in text.lines() {
         let line = line.split('#').next().unwrap_or("").trim();

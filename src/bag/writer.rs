@@ -52,23 +52,30 @@ struct Topic {
 /// One topic of a finished bag.
 #[derive(Debug, Clone, PartialEq)]
 pub struct TopicSummary {
+    /// The ROS topic name.
     pub name: String,
+    /// Its ROS type, `package/msg/Type`.
     pub type_name: String,
+    /// Messages recorded on it.
     pub count: u64,
 }
 
 /// What a finished bag holds.
 #[derive(Debug, Clone, PartialEq)]
 pub struct BagSummary {
+    /// The rosbag2 directory.
     pub dir: PathBuf,
     /// The MCAP file, relative to `dir`.
     pub file: String,
+    /// Messages in the file, all topics.
     pub message_count: u64,
     /// Log time of the first message, ns (0 for an empty bag).
     pub starting_time: u64,
     /// Last minus first log time, ns.
     pub duration: u64,
+    /// Per topic, in the order they were added.
     pub topics: Vec<TopicSummary>,
+    /// Size of the MCAP file, bytes.
     pub bytes: u64,
 }
 
@@ -307,11 +314,6 @@ impl BagWriter {
         write_metadata_yaml(&self.dir, &self.metadata())?;
         self.checkpoint = Some(Instant::now());
         Ok(())
-    }
-
-    /// Messages written so far.
-    pub fn message_count(&self) -> u64 {
-        self.count
     }
 
     fn metadata(&self) -> Metadata {

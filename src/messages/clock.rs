@@ -12,7 +12,7 @@
 //!   Gazebo's reset_world), so tf buffers and bag files stay consistent.
 //! - **followed** (`use_sim_time: true`): outputs are stamped with an
 //!   external `/clock`, and the loop steps as that clock advances
-//!   ([`ClockFollower`]); the node publishes no `/clock` of its own.
+//!   (`clock_follower::ClockFollower`); the node publishes no `/clock` of its own.
 //!
 //! **The /clock type trap.** ros2-client's `Spinner` subscribes `/clock`
 //! typed `builtin_interfaces/msg/Time`; a Clock-typed writer in the same
@@ -39,6 +39,7 @@ pub struct StepClock {
 }
 
 impl StepClock {
+    /// A clock for steps of `dt` seconds: simulated stamps if `sim`, wall stamps otherwise.
     pub fn new(sim: bool, dt: f64) -> Self {
         StepClock {
             sim,
@@ -49,7 +50,7 @@ impl StepClock {
     }
 
     /// Stamps from an external `/clock` (`use_sim_time: true`).
-    /// `max_jump`: `ros.max_clock_jump`, s ([`ClockFollower::with_max_jump`]).
+    /// `max_jump`: `ros.max_clock_jump`, s (`ClockFollower::with_max_jump`).
     pub fn following(dt: f64, max_jump: f64) -> Self {
         StepClock {
             sim: false,
@@ -64,10 +65,12 @@ impl StepClock {
         self.follow.as_ref()
     }
 
+    /// The follower of the external `/clock` (`use_sim_time`), if there is one.
     pub fn follower_mut(&mut self) -> Option<&mut ClockFollower> {
         self.follow.as_mut()
     }
 
+    /// Whether the stamps are simulated time (steps × dt).
     pub fn is_sim(&self) -> bool {
         self.sim
     }
@@ -80,6 +83,7 @@ impl StepClock {
         }
     }
 
+    /// Steps since the node started (not reset by `~/reset`).
     pub fn total_steps(&self) -> u64 {
         self.total_steps
     }
@@ -139,6 +143,7 @@ impl Pacer {
         }
     }
 
+    /// The wall-clock period between deadlines (None: as fast as possible).
     pub fn period(&self) -> Option<Duration> {
         self.period
     }
@@ -175,6 +180,7 @@ impl Pacer {
         self.next = now;
     }
 
+    /// Times the loop fell more than one period behind and restarted its schedule.
     pub fn overruns(&self) -> u64 {
         self.overruns
     }

@@ -24,6 +24,7 @@ pub enum RejectReason {
 }
 
 impl RejectReason {
+    /// Every reason, in the order /diagnostics lists them.
     pub const ALL: [RejectReason; 6] = [
         RejectReason::NonFinite,
         RejectReason::Absurd,
@@ -33,6 +34,7 @@ impl RejectReason {
         RejectReason::Undecodable,
     ];
 
+    /// The counter's name in /diagnostics: `rejected_<name>`.
     pub fn name(self) -> &'static str {
         match self {
             RejectReason::NonFinite => "non_finite",
@@ -71,15 +73,22 @@ impl RejectReason {
 /// Which topic an input came from (for counting).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Source {
+    /// `~/speed_command` (Ω, rad/s).
     SpeedCommand,
+    /// A node's wrench topic (`~/ale_<j>/wrench`, `~/lagrange_<j>/wrench`).
     NodeWrench,
+    /// The batch of node wrenches (NodeWrenchArray).
     WrenchArray,
+    /// One pad's clamp force (`~/pad_<j>/clamp_force`).
     PadClampForce,
+    /// The batch of clamp forces (`~/pad_clamp_forces`).
     PadClampForces,
+    /// The tool's feed rate (`~/tool_feed`).
     ToolFeed,
 }
 
 impl Source {
+    /// Every source, in the order /diagnostics lists them.
     pub const ALL: [Source; 6] = [
         Source::SpeedCommand,
         Source::NodeWrench,
@@ -126,10 +135,12 @@ pub struct InputStats {
 }
 
 impl InputStats {
+    /// Count an accepted input from `source`.
     pub fn accept(&self, source: Source) {
         self.accepted[source.index()].fetch_add(1, Ordering::Relaxed);
     }
 
+    /// Count an input refused for `reason`.
     pub fn reject(&self, reason: RejectReason) {
         self.rejected[reason.index()].fetch_add(1, Ordering::Relaxed);
     }
@@ -139,10 +150,12 @@ impl InputStats {
         self.expired.fetch_add(1, Ordering::Relaxed);
     }
 
+    /// Inputs accepted from `source` so far.
     pub fn accepted(&self, source: Source) -> u64 {
         self.accepted[source.index()].load(Ordering::Relaxed)
     }
 
+    /// Inputs accepted from every source.
     pub fn accepted_total(&self) -> u64 {
         self.accepted
             .iter()
@@ -150,10 +163,12 @@ impl InputStats {
             .sum()
     }
 
+    /// Inputs refused for `reason` so far.
     pub fn rejected(&self, reason: RejectReason) -> u64 {
         self.rejected[reason.index()].load(Ordering::Relaxed)
     }
 
+    /// Inputs refused for any reason.
     pub fn rejected_total(&self) -> u64 {
         self.rejected
             .iter()
@@ -161,6 +176,7 @@ impl InputStats {
             .sum()
     }
 
+    /// Held wrenches dropped to zero by `ros.wrench_timeout`.
     pub fn expired(&self) -> u64 {
         self.expired.load(Ordering::Relaxed)
     }

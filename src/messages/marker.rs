@@ -248,15 +248,6 @@ impl PlateMarker {
         }
     }
 
-    pub fn grid(&self) -> &MarkerGrid {
-        &self.grid
-    }
-
-    /// The magnification of the last message.
-    pub fn scale(&self) -> f64 {
-        self.scale
-    }
-
     pub fn message(&self) -> &Shared<MarkerArray> {
         &self.message
     }

@@ -25,16 +25,23 @@ use std::sync::Arc;
 /// Frame and joint names, with `ros.frame_prefix` applied.
 #[derive(Debug, Clone, PartialEq)]
 pub struct FrameNames {
+    /// The fixed frame the base is placed in (`ros.world_frame`).
     pub world: String,
+    /// `<prefix>plate_base`: the base frame, fixed to the bearing (the joint's space-fixed side).
     pub base: String,
+    /// `<prefix>plate_rotor`: the floating frame of reference, turned by the joint angle χ.
     pub rotor: String,
+    /// `<prefix>plate_joint`: the rotational joint in /joint_states.
     pub joint: String,
     /// `ale[j]` is the frame of ALE node j + 1.
     pub ale: Vec<String>,
+    /// `lagrange[j]` is the frame of Lagrangian node j + 1.
     pub lagrange: Vec<String>,
 }
 
 impl FrameNames {
+    /// The names for `n_ale` ALE and `n_lagrange` Lagrangian nodes, `prefix` prepended
+    /// to every frame but `world`.
     pub fn new(prefix: &str, world: &str, n_ale: usize, n_lagrange: usize) -> Self {
         FrameNames {
             world: world.to_string(),
@@ -70,6 +77,7 @@ impl<'de, T: Deserialize<'de>> Deserialize<'de> for Shared<T> {
 impl<T: Serialize + for<'de> Deserialize<'de>> ros2_client::Message for Shared<T> {}
 
 impl<T> Shared<T> {
+    /// Share `t`.
     pub fn new(t: T) -> Self {
         Shared(Arc::new(t))
     }
@@ -126,9 +134,11 @@ pub fn x_rotation(angle: f64) -> Quaternion {
 /// The per-step messages, preallocated for one scene.
 #[derive(Debug)]
 pub struct OutputMessages {
+    /// /joint_states: the joint's position, velocity and effort.
     pub joint_state: Shared<JointState>,
     /// `transforms[0]`: base → rotor; then base → ale_j; then rotor → lagrange_j.
     pub tf: Shared<TFMessage>,
+    /// `~/modal_amplitudes`: the modal amplitudes and rates, Lagrangian and ALE.
     pub modal: Shared<ModalAmplitudes>,
     /// Per load model with a topic (registry order): its index and message.
     pub models: Vec<(usize, Shared<ModelStates>)>,
@@ -136,6 +146,7 @@ pub struct OutputMessages {
 }
 
 impl OutputMessages {
+    /// The messages for `sim`'s scene, named by `names`, with zero content.
     pub fn new(sim: &Simulation, names: &FrameNames) -> Self {
         let header = |frame: &str| Header {
             stamp: Time::default(),

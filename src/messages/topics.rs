@@ -22,8 +22,10 @@ pub const PLATE_MARKER: &str = "~/plate_marker";
 pub const CLOCK: &str = "/clock";
 pub const DIAGNOSTICS: &str = "/diagnostics";
 /// Only when the scene has pads (`pads.*`).
+#[cfg(test)]
 pub const PAD_CLAMP_FORCES: &str = "~/pad_clamp_forces";
 /// Only when the scene has a tool (`tool.*`).
+#[cfg(test)]
 pub const TOOL_FEED: &str = "~/tool_feed";
 // The load models' state topics (`~/pad_states`, `~/tool_state`) are
 // declared by the models (`dynamics::load_models::outputs::StateTopic`).
@@ -50,6 +52,7 @@ pub fn load_batch(spec: &CommandSpec) -> String {
 }
 
 /// `~/pad_<j>/clamp_force`, pad j from 1.
+#[cfg(test)]
 pub fn pad_clamp_force(j: usize) -> String {
     format!("~/pad_{j}/clamp_force")
 }

@@ -13,7 +13,7 @@ use crate::model::campbell::{critical_speeds, CriticalSpeed};
 use ros2_client::Publisher;
 
 /// Compute the critical speeds and publish them once on `publisher` (created
-/// by the node with [`qos::CRITICAL_SPEEDS`](crate::messages::qos::CRITICAL_SPEEDS);
+/// by the node with `qos::CRITICAL_SPEEDS`;
 /// it must live as long as the node: a transient-local writer serves late
 /// joiners from its history). Returns the list for the loop's status.
 pub fn publish(

@@ -9,6 +9,7 @@ use crate::messages::names::ArgsError;
 use crate::messages::settings::SettingsError;
 use thiserror::Error;
 
+/// Why the node could not start or stopped with an error (`annular_plate run`).
 #[derive(Debug, Error)]
 pub enum NodeError {
     /// `--ros-args`, a node or topic name, `ROS_DOMAIN_ID`.
@@ -17,32 +18,50 @@ pub enum NodeError {
     /// A scene or parameter file (`source`: its path, `-p` or the built-in scene).
     #[error("{source_name}: {error}")]
     Config {
+        /// The file's path, `-p` or the built-in scene.
         source_name: String,
+        /// The key and the rule it breaks.
         error: ConfigError,
     },
     /// The node's own `ros.*` settings in the scene.
     #[error("{scene}: {error}")]
-    Settings { scene: String, error: SettingsError },
+    Settings {
+        /// The scene's source.
+        scene: String,
+        /// The `ros.*` key and the rule it breaks.
+        error: SettingsError,
+    },
     /// The scene cannot be simulated as configured.
     #[error("{scene}: {error}")]
     Simulation {
+        /// The scene's source.
         scene: String,
+        /// Why the simulation refuses it.
         error: SimulationError,
     },
     /// `--record DIR`.
     #[error("--record: {0}")]
     Record(String),
+    /// The bag of `--record DIR` could not be created or written.
     #[error("--record: {0}")]
     Bag(#[from] BagError),
     /// A DDS entity could not be created (`what`: the domain, node, topic or service).
     #[error("{what}: {detail}")]
-    Dds { what: String, detail: String },
+    Dds {
+        /// The entity.
+        what: String,
+        /// The DDS layer's message.
+        detail: String,
+    },
     /// An operating-system resource (runtime, thread, signal handler).
     #[error("{what}: {error}")]
     System {
+        /// The resource.
         what: &'static str,
+        /// The operating system's error.
         error: std::io::Error,
     },
+    /// The simulation thread panicked or could not be joined.
     #[error("the simulation thread ended abnormally")]
     SimulationThread,
     /// The loop stopped for a reason other than a signal.

@@ -25,7 +25,7 @@ use std::time::{Duration, Instant};
 
 /// An input refused, with a sentence for the log.
 #[derive(Debug, Clone, PartialEq)]
-pub struct Rejection {
+pub(crate) struct Rejection {
     pub reason: RejectReason,
     pub detail: String,
 }
@@ -46,6 +46,7 @@ impl Rejection {
 /// A checked input, ready for the simulation: it is applied without another check.
 #[derive(Debug, Clone, PartialEq)]
 pub enum Input {
+    /// One command.
     One(Checked),
     /// Applied whole.
     Batch(CheckedBatch),
@@ -53,6 +54,7 @@ pub enum Input {
 
 impl Input {
     /// The commands it holds (0-based indices).
+    #[cfg(test)]
     pub fn commands(&self) -> Vec<Command> {
         match self {
             Input::One(c) => vec![c.command()],
@@ -62,13 +64,13 @@ impl Input {
 }
 
 /// `NodeWrench.kind` values of msg/NodeWrench.msg.
-pub const KIND_ALE: u8 = 0;
-pub const KIND_LAGRANGE: u8 = 1;
+pub(crate) const KIND_ALE: u8 = 0;
+pub(crate) const KIND_LAGRANGE: u8 = 1;
 
 /// Converts input messages to checked commands: the scene's rules plus the
 /// node frames' names.
 #[derive(Debug, Clone)]
-pub struct InputValidator {
+pub(crate) struct InputValidator {
     ale_frames: Vec<String>,
     lagrange_frames: Vec<String>,
     rules: InputRules,
@@ -235,11 +237,13 @@ impl InputValidator {
     }
 
     /// The model named `name` (`pads`, `tool`), if the scene has it.
+    #[cfg(test)]
     fn model(&self, name: &str) -> Option<usize> {
         self.rules.model(name).map(|(i, _)| i)
     }
 
     /// A clamp force on the topic of pad `pad` (0-based), N.
+    #[cfg(test)]
     pub fn clamp_force(&self, pad: usize, newtons: f64) -> Result<Input, Rejection> {
         match self.model("pads") {
             Some(model) => self.load_command(model, 0, pad, newtons),
@@ -252,6 +256,7 @@ impl InputValidator {
     }
 
     /// A PadClampForces message: pad numbers (from 1) and their clamp forces, N.
+    #[cfg(test)]
     pub fn clamp_forces(&self, pads: &[u32], forces: &[f64]) -> Result<Input, Rejection> {
         match self.model("pads") {
             Some(model) => self.load_batch(model, 0, pads, forces),
@@ -267,6 +272,7 @@ impl InputValidator {
     }
 
     /// A tool feed rate, m/s.
+    #[cfg(test)]
     pub fn tool_feed(&self, rate: f64) -> Result<Input, Rejection> {
         match self.model("tool") {
             Some(model) => self.load_command(model, 0, 0, rate),
@@ -304,7 +310,7 @@ fn batch_rejection(e: BatchError, what: &str, duplicate: impl Fn(usize) -> Strin
 /// At most one log line per reason per period; the next line says how many
 /// were suppressed in between.
 #[derive(Debug)]
-pub struct RateLimiter {
+pub(crate) struct RateLimiter {
     period: Duration,
     state: Mutex<[(Option<Instant>, u64); RejectReason::ALL.len()]>,
 }

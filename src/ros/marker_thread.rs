@@ -1,7 +1,7 @@
 //! `~/plate_marker` off the fixed-rate loop: the loop copies the amplitudes
-//! and node forces into a pooled [`MarkerInput`] every `every` steps
+//! and node forces into a pooled `MarkerInput` every `every` steps
 //! ([`MarkerFeed::offer`], no allocation, never waits); this thread builds
-//! the MarkerArray ([`PlateMarker`]), publishes it and, with `run --record`,
+//! the MarkerArray (`PlateMarker`), publishes it and, with `run --record`,
 //! hands it to the bag writer. Two inputs circulate: a marker step that
 //! comes while the thread is still building the previous marker, or has not
 //! yet been scheduled to pick it up (`~/step` while paused runs its steps in

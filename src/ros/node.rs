@@ -52,11 +52,15 @@ const RECORD_QUEUE: usize = crate::bag::recorder::DEFAULT_QUEUE;
 /// effective parameters, the validated configuration and `ros.*` settings.
 #[derive(Debug, Clone)]
 pub struct NodeSetup {
+    /// The parsed `--ros-args`.
     pub args: RosArgs,
+    /// Resolves `~/` and relative names against the node's namespace and name (remappings applied).
     pub names: NameResolver,
     /// Parameters as given (scene file, `--params-file`, `-p`), `ros.*` included.
     pub params: Params,
+    /// The validated scene.
     pub config: Config,
+    /// The node's `ros.*` settings.
     pub settings: RosSettings,
     /// Where the scene came from, for the log.
     pub scene: String,
@@ -150,6 +154,7 @@ impl NodeSetup {
         })
     }
 
+    /// The frame and joint names of the scene, with `ros.frame_prefix`.
     pub fn frame_names(&self) -> FrameNames {
         FrameNames::new(
             &self.settings.frame_prefix,

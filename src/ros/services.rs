@@ -25,7 +25,9 @@ use tokio::task::JoinHandle;
 /// A change accepted at run time, for the simulation loop.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum RuntimeChange {
+    /// `simulation.realtime_factor` (0: as fast as possible).
     RealtimeFactor(f64),
+    /// `ros.wrench_timeout`, s.
     WrenchTimeout(f64),
 }
 

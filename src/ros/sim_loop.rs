@@ -48,7 +48,7 @@ const PAUSED_INPUT_POLL: Duration = Duration::from_millis(5);
 use tokio::sync::oneshot;
 
 /// The loop's writers.
-pub struct Publishers {
+pub(crate) struct Publishers {
     pub joint_states: Publisher<Shared<JointState>>,
     pub tf: Publisher<Shared<TFMessage>>,
     pub modal: Publisher<Shared<ModalAmplitudes>>,
@@ -61,7 +61,7 @@ pub struct Publishers {
 
 /// Settings of the loop (from the config and `ros.*`).
 #[derive(Debug, Clone)]
-pub struct LoopSettings {
+pub(crate) struct LoopSettings {
     pub publish_divisor: u32,
     pub realtime_factor: f64,
     pub start_paused: bool,
@@ -77,7 +77,7 @@ pub struct LoopSettings {
 }
 
 /// The loop's state.
-pub struct SimLoop {
+pub(crate) struct SimLoop {
     sim: Simulation,
     clock: StepClock,
     pacer: Pacer,

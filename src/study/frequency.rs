@@ -20,7 +20,9 @@ use std::collections::BTreeMap;
 /// ⟨k, l⟩ of a mode.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
 pub struct ModeId {
+    /// Nodal diameters.
     pub k: u32,
+    /// Nodal circles.
     pub l: u32,
 }
 
@@ -42,6 +44,7 @@ pub struct FrequencyRow {
 /// The reference model.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct FrequencyReference {
+    /// Radial splines of the reference model.
     pub radial_splines: usize,
     /// The half-resolution model used to bound the reference's own error.
     pub check_radial_splines: usize,
@@ -51,18 +54,27 @@ pub struct FrequencyReference {
     pub frequencies_hz: Vec<(ModeId, f64)>,
 }
 
+/// A setting of this axis: `plate.radial_splines`.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct FrequencySetting {
+    /// A fixed count or `auto`.
     pub radial_splines: RadialSplines,
 }
 
+/// Axis 1: natural-frequency error against `plate.radial_splines`, cost = model build time.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct FrequencyAxis {
+    /// What the axis varies, in words.
     pub what: &'static str,
+    /// How the error is measured, in words.
     pub error_measure: &'static str,
+    /// How the cost is measured, in words.
     pub cost_measure: &'static str,
+    /// The reference model the errors are measured against.
     pub reference: FrequencyReference,
+    /// One row per spline count measured (`auto` included).
     pub rows: Vec<FrequencyRow>,
+    /// One per plan target.
     pub recommendations: Vec<Recommendation<FrequencySetting>>,
     /// The scene's own `plate.radial_splines`.
     pub default_setting: FrequencySetting,
@@ -99,7 +111,7 @@ fn max_error(
 
 /// The spline counts studied for this plate: the plan's, less those below
 /// the plate's minimum (highest requested nodal circle and edge conditions).
-pub fn spline_grid(plate: &PlateConfig, plan: &StudyPlan) -> Vec<usize> {
+pub(crate) fn spline_grid(plate: &PlateConfig, plan: &StudyPlan) -> Vec<usize> {
     let min = plate.min_radial_splines();
     let mut grid: Vec<usize> = plan.splines.iter().copied().filter(|&n| n >= min).collect();
     if grid.is_empty() {
@@ -110,7 +122,7 @@ pub fn spline_grid(plate: &PlateConfig, plan: &StudyPlan) -> Vec<usize> {
     grid
 }
 
-pub fn run(
+pub(crate) fn run(
     plate: &PlateConfig,
     plan: &StudyPlan,
     tick: &mut dyn FnMut(&str),

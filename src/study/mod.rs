@@ -37,23 +37,39 @@ pub use response::ResponseAxis;
 pub use trajectory::TrajectoryAxis;
 
 /// Version of the JSON document (`study --json`); bumped on any incompatible change.
-pub const SCHEMA: &str = "annular_plate.study/1";
+pub(crate) const SCHEMA: &str = "annular_plate.study/1";
 
 /// Largest `plate.radial_splines` the configuration accepts.
-pub const MAX_RADIAL_SPLINES: usize = 400;
+pub(crate) const MAX_RADIAL_SPLINES: usize = 400;
 
+/// Why a study could not run.
 #[derive(Debug, Error)]
 pub enum StudyError {
+    /// A model of the grid (or the reference) could not be built.
     #[error(transparent)]
     Model(#[from] ModelError),
+    /// A simulation of the grid refused its scene or diverged where a result was needed.
     #[error(transparent)]
     Simulation(#[from] SimulationError),
+    /// An axis has no setting left to measure (e.g. every spline count below the plate's minimum).
     #[error("the {axis} grid is empty")]
-    EmptyGrid { axis: &'static str },
+    EmptyGrid {
+        /// The axis: `radial splines`, `mode count` or `integrator`.
+        axis: &'static str,
+    },
+    /// The plan breaks a rule (a non-positive target, a rate that is not a
+    /// whole multiple of the sample rate, …).
     #[error("bad study plan: {detail}")]
-    BadPlan { detail: String },
+    BadPlan {
+        /// The rule and the offending value.
+        detail: String,
+    },
+    /// The scene gives the response axis no deflection to compare.
     #[error("nothing to measure: {detail}")]
-    NoResponse { detail: String },
+    NoResponse {
+        /// Why the response is zero or undefined.
+        detail: String,
+    },
 }
 
 /// What the study measures: the grids, the references and the targets.
@@ -64,18 +80,24 @@ pub struct StudyPlan {
     /// The frequency reference uses this many times the largest count (capped at 400);
     /// its error is bounded by its difference from half as many splines.
     pub spline_reference_factor: usize,
-    /// Axis 2: k_max and l_max of the rectangular mode sets k = 0..k_max, l = 0..l_max.
+    /// Axis 2: k_max of the rectangular mode sets k = 0..k_max, l = 0..l_max
+    /// (k: nodal diameters).
     pub k_max: Vec<u32>,
+    /// Axis 2: l_max of those mode sets (l: nodal circles).
     pub l_max: Vec<u32>,
     /// Axis 2: the reference set (K, L).
     pub response_reference: (u32, u32),
     /// Axis 2: radial splines of every mode (enough for l ≤ L).
     pub response_splines: usize,
-    /// Axis 3: integrators and output rates (whole multiples of `sample_rate_hz`);
-    /// `contact_exponential` runs only on scenes whose load models switch.
+    /// Axis 3: the integrators compared; `contact_exponential` runs only on
+    /// scenes whose load models switch.
     pub integrators: Vec<IntegratorKind>,
+    /// Axis 3: output rates (`simulation.rate_hz`, one substep per step), Hz;
+    /// whole multiples of `sample_rate_hz`.
     pub rates_hz: Vec<f64>,
+    /// Axis 3: rate at which the ALE modal amplitudes are sampled and compared, Hz.
     pub sample_rate_hz: f64,
+    /// Axis 3: rate of the reference run, Hz.
     pub trajectory_reference_rate_hz: f64,
     /// Axis 3: simulated time, s.
     pub duration_s: f64,
@@ -155,7 +177,9 @@ impl StudyPlan {
 /// The cheapest measured setting for one target error (None: none in the grid reaches it).
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct Recommendation<S> {
+    /// The target relative error.
     pub target: f64,
+    /// The recommended setting (None: no measured setting reaches the target).
     pub setting: Option<S>,
     /// Measured error against the reference.
     pub error: Option<f64>,
@@ -169,11 +193,14 @@ pub struct Recommendation<S> {
 
 /// One measured setting offered to [`recommend`].
 #[derive(Debug, Clone)]
-pub struct Candidate<S> {
+pub(crate) struct Candidate<S> {
+    /// Measured relative error against the reference.
     pub error: f64,
     /// The uncertainty of the reference this error was measured against.
     pub uncertainty: f64,
+    /// The measured cost (the axis' cost measure).
     pub cost: f64,
+    /// The setting measured.
     pub setting: S,
     /// The scene's own setting.
     pub is_default: bool,
@@ -181,7 +208,7 @@ pub struct Candidate<S> {
 
 /// For each target the cheapest candidate with error + uncertainty ≤ target;
 /// ties in cost go to the smaller claimed error.
-pub fn recommend<S: Clone>(
+pub(crate) fn recommend<S: Clone>(
     targets: &[f64],
     candidates: impl Iterator<Item = Candidate<S>>,
 ) -> Vec<Recommendation<S>> {
@@ -222,7 +249,7 @@ pub fn recommend<S: Clone>(
 }
 
 /// Which (error, cost) points no other point beats in both.
-pub fn mark_pareto(points: &[(f64, f64)]) -> Vec<bool> {
+pub(crate) fn mark_pareto(points: &[(f64, f64)]) -> Vec<bool> {
     points
         .iter()
         .map(|&(e, c)| {
@@ -240,28 +267,46 @@ pub fn mark_pareto(points: &[(f64, f64)]) -> Vec<bool> {
 pub struct SceneSummary {
     /// The params file, or "built-in lathe disc".
     pub source: String,
+    /// r_i, m.
     pub inner_radius: f64,
+    /// r_a, m.
     pub outer_radius: f64,
+    /// h, m.
     pub thickness: f64,
+    /// Boundary condition at r_i (`clamped`, `free`, …).
     pub inner_boundary: &'static str,
+    /// Boundary condition at r_a.
     pub outer_boundary: &'static str,
+    /// The k of the scene's modes (nodal diameters).
     pub nodal_diameters: Vec<u32>,
+    /// The l of the scene's modes (nodal circles).
     pub nodal_circles: Vec<u32>,
+    /// The scene's `plate.radial_splines`.
     pub radial_splines: crate::config::RadialSplines,
+    /// Elastic modes of the scene's model.
     pub modes: usize,
+    /// The joint's speed Ω, rad/s.
     pub speed_rad_s: f64,
+    /// The scene's `simulation.integrator`.
     pub integrator: &'static str,
+    /// The scene's `simulation.rate_hz`, Hz.
     pub rate_hz: f64,
 }
 
 /// Everything `study` measured.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct StudyReport {
+    /// The JSON document's version, `annular_plate.study/1`.
     pub schema: &'static str,
+    /// The scene studied.
     pub scene: SceneSummary,
+    /// The plan measured.
     pub plan: StudyPlan,
+    /// Axis 1: natural-frequency error against radial splines.
     pub radial_splines: FrequencyAxis,
+    /// Axis 2: steady deflection error against the mode set.
     pub mode_count: ResponseAxis,
+    /// Axis 3: trajectory error against integrator and rate.
     pub integrator: TrajectoryAxis,
     /// Wall time of the whole study, s.
     pub wall_time_s: f64,

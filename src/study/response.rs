@@ -42,7 +42,7 @@ use serde::Serialize;
 use std::f64::consts::TAU;
 
 /// Safety factor on the estimated tail of the reference (Roache's GCI, three levels).
-pub const SAFETY_FACTOR: f64 = 1.25;
+pub(crate) const SAFETY_FACTOR: f64 = 1.25;
 
 /// Where the response is read and which wrenches act.
 #[derive(Debug, Clone, PartialEq, Serialize)]
@@ -53,6 +53,7 @@ pub struct LoadCase {
     pub ale_node: usize,
     /// The ALE nodes and their wrenches (fx fy fz mx my mz in the node frame).
     pub loads: Vec<(NodePosition, [f64; 6])>,
+    /// The joint's speed Ω, rad/s.
     pub speed_rad_s: f64,
     /// What was added because the scene had no ALE load (empty otherwise).
     pub note: Option<String>,
@@ -184,7 +185,7 @@ pub fn partial_sum(c: &[Vec<f64>], k_max: u32, l_max: u32) -> f64 {
 
 /// The damping ratio the axis uses for every mode: the scene's, if one for
 /// all; otherwise the mean of its per-mode list.
-pub fn scalar_damping(config: &Config) -> (f64, Option<String>) {
+pub(crate) fn scalar_damping(config: &Config) -> (f64, Option<String>) {
     let d = &config.plate.damping;
     if d.len() == 1 {
         (d[0], None)
@@ -194,9 +195,12 @@ pub fn scalar_damping(config: &Config) -> (f64, Option<String>) {
     }
 }
 
+/// One mode set k = 0..k_max, l = 0..l_max.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct ResponseRow {
+    /// Highest nodal diameter k of the set.
     pub k_max: u32,
+    /// Highest nodal circle l of the set.
     pub l_max: u32,
     /// Elastic modes in the set.
     pub modes: usize,
@@ -222,12 +226,18 @@ pub struct ResponseRow {
     pub pareto_with_residual: bool,
 }
 
+/// The reference mode set (K, L).
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct ResponseReference {
+    /// K: highest nodal diameter of the reference set.
     pub k_max: u32,
+    /// L: highest nodal circle of the reference set.
     pub l_max: u32,
+    /// Elastic modes in the reference set.
     pub modes: usize,
+    /// Radial splines of its model.
     pub radial_splines: usize,
+    /// Its steady deflection at the load point, m.
     pub response_m: f64,
     /// The response plus the reference set's residual flexibility, m.
     pub response_with_residual_m: f64,
@@ -235,15 +245,20 @@ pub struct ResponseReference {
     pub nested: Vec<((u32, u32), f64)>,
     /// Estimated relative truncation error of the reference (see module docs).
     pub uncertainty: f64,
+    /// How that uncertainty was estimated, in words.
     pub uncertainty_method: String,
     /// Estimated relative error of the reference plus its residual (see module docs).
     pub uncertainty_with_residual: f64,
 }
 
+/// A setting of this axis: a rectangular mode set, with or without the residual flexibility.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct ModeSetSetting {
+    /// Highest nodal diameter k (`plate.nodal_diameters` = 0..k_max).
     pub k_max: u32,
+    /// Highest nodal circle l (`plate.nodal_circles` = 0..l_max).
     pub l_max: u32,
+    /// Elastic modes in the set.
     pub modes: usize,
     /// Radial splines the errors were measured with (enough for every ⟨k, l⟩ of the grid).
     pub radial_splines: usize,
@@ -254,28 +269,41 @@ pub struct ModeSetSetting {
 /// The scene's own mode set, if it is rectangular (k = 0..k_max, l = 0..l_max).
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct DefaultModeSet {
+    /// Highest nodal diameter k.
     pub k_max: u32,
+    /// Highest nodal circle l.
     pub l_max: u32,
+    /// The scene's `plate.residual_flexibility`.
     pub residual_flexibility: bool,
 }
 
+/// Axis 2: steady deflection at the load point against the mode set, cost = wall time per step.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct ResponseAxis {
+    /// What the axis varies, in words.
     pub what: &'static str,
+    /// How the error is measured, in words.
     pub error_measure: &'static str,
+    /// How the cost is measured, in words.
     pub cost_measure: &'static str,
+    /// Where the response is read and which wrenches act.
     pub load_case: LoadCase,
+    /// The modal damping ratio ζ every mode set uses.
     pub damping: f64,
+    /// The reference mode set the errors are measured against.
     pub reference: ResponseReference,
+    /// One row per mode set of the grid (k_max ≤ K, l_max ≤ L).
     pub rows: Vec<ResponseRow>,
+    /// One per plan target.
     pub recommendations: Vec<Recommendation<ModeSetSetting>>,
     /// The scene's own mode set and `plate.residual_flexibility` (None: not a rectangular set).
     pub default_setting: Option<DefaultModeSet>,
+    /// What the axis changed or left out of the scene (loads added or dropped, damping averaged).
     pub notes: Vec<String>,
 }
 
 /// The scene's own rectangular mode set, if it is one.
-pub fn default_mode_set(config: &Config) -> Option<DefaultModeSet> {
+pub(crate) fn default_mode_set(config: &Config) -> Option<DefaultModeSet> {
     let p = &config.plate;
     let k_max = *p.nodal_diameters.iter().max()?;
     let l_max = *p.nodal_circles.iter().max()?;
@@ -286,14 +314,6 @@ pub fn default_mode_set(config: &Config) -> Option<DefaultModeSet> {
         l_max,
         residual_flexibility: p.residual_flexibility,
     })
-}
-
-/// Number of elastic modes of the set on this plate (rigid-body modes of a free–free plate excluded).
-pub fn mode_count(config: &Config, k_max: u32, l_max: u32) -> usize {
-    let mut p = config.plate.clone();
-    p.nodal_diameters = (0..=k_max).collect();
-    p.nodal_circles = (0..=l_max).collect();
-    p.mode_count()
 }
 
 /// The scene restricted to a rectangular mode set (for timing its steps).
@@ -309,7 +329,8 @@ pub fn scene_with_set(config: &Config, k_max: u32, l_max: u32, damping: f64) -> 
     c
 }
 
-pub fn run(
+/// Measure axis 2: every mode set of the plan against the reference set.
+pub(crate) fn run(
     config: &Config,
     plan: &StudyPlan,
     tick: &mut dyn FnMut(&str),

@@ -39,6 +39,7 @@ pub type Samples = Vec<Vec<f64>>;
 #[derive(Debug, Clone, PartialEq, Serialize)]
 #[serde(rename_all = "snake_case")]
 pub enum RunStatus {
+    /// The run completed (not an error: the row's status when it has a trajectory).
     Ok,
     /// `rk4` would need more substeps than it allows.
     Refused,
@@ -114,31 +115,42 @@ pub fn relative_error(a: &Samples, b: &Samples) -> f64 {
     diff / scale
 }
 
+/// One integrator at one output rate.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct TrajectoryRow {
+    /// `simulation.integrator`.
     pub integrator: &'static str,
+    /// `simulation.rate_hz`, Hz.
     pub rate_hz: f64,
+    /// Whether the run gave a trajectory.
     pub status: RunStatus,
     /// The refusal or divergence message.
     pub detail: Option<String>,
+    /// max_t ‖q(t) − q_ref(t)‖₂ / max_t ‖q_ref(t)‖₂ (None: no trajectory).
     pub relative_error: Option<f64>,
     /// Wall time / simulated time (the fastest of repeated runs).
     pub wall_s_per_simulated_s: Option<f64>,
+    /// On the error-vs-cost Pareto front of this axis.
     pub pareto: bool,
 }
 
 /// A run compared with the reference.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct Check {
+    /// `simulation.integrator` of the check run.
     pub integrator: &'static str,
+    /// Its output rate, Hz.
     pub rate_hz: f64,
     /// Its relative difference from the reference (the errors' measure).
     pub difference: f64,
 }
 
+/// The reference run.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct TrajectoryReference {
+    /// `simulation.integrator` of the reference run.
     pub integrator: &'static str,
+    /// Its output rate, Hz.
     pub rate_hz: f64,
     /// The reference run again with another method, and with the same method at twice the step.
     pub checks: Vec<Check>,
@@ -148,32 +160,47 @@ pub struct TrajectoryReference {
     pub peak_amplitude_m: f64,
 }
 
+/// A setting of this axis: an integrator at an output rate.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct IntegratorSetting {
+    /// `simulation.integrator`.
     pub integrator: &'static str,
+    /// `simulation.rate_hz`, Hz.
     pub rate_hz: f64,
 }
 
+/// Axis 3: trajectory error against integrator and rate, cost = wall time per simulated second.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct TrajectoryAxis {
+    /// What the axis varies, in words.
     pub what: &'static str,
+    /// How the error is measured, in words.
     pub error_measure: &'static str,
+    /// How the cost is measured, in words.
     pub cost_measure: &'static str,
+    /// Simulated time of every run, s.
     pub duration_s: f64,
+    /// Rate at which the ALE amplitudes are compared, Hz.
     pub sample_rate_hz: f64,
+    /// Elastic modes of the scene.
     pub modes: usize,
     /// The plan's integrators this scene is studied with (`contact_exponential`
     /// only where its load models switch); each runs at every rate.
     pub integrators: Vec<&'static str>,
+    /// The reference run the errors are measured against.
     pub reference: TrajectoryReference,
+    /// One row per integrator and rate.
     pub rows: Vec<TrajectoryRow>,
+    /// One per plan target.
     pub recommendations: Vec<Recommendation<IntegratorSetting>>,
     /// The scene's own integrator and rate.
     pub default_setting: IntegratorSetting,
+    /// What the axis changed or could not measure, in words.
     pub notes: Vec<String>,
 }
 
-pub fn run(
+/// Measure axis 3: every integrator at every rate against the reference run.
+pub(crate) fn run(
     config: &Config,
     plan: &StudyPlan,
     tick: &mut dyn FnMut(&str),
@@ -354,7 +381,7 @@ pub fn run(
 
 /// The plan's integrators `config` is compared with: `contact_exponential`
 /// only where its load models switch.
-pub fn integrators(config: &Config, plan: &StudyPlan) -> Vec<IntegratorKind> {
+pub(crate) fn integrators(config: &Config, plan: &StudyPlan) -> Vec<IntegratorKind> {
     compared(
         plan,
         reference_kind(config, plan.trajectory_reference_rate_hz),
