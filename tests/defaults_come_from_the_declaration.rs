@@ -15,32 +15,31 @@ use annular_plate::ros::params_service::{effective_parameters, ParamStore};
 use ros2_client::parameters::raw::ParameterType;
 
 /// The scene a key of `section` is read in: its load model switched on
-/// (every other key of a load-model section is refused without it).
+/// (every other key of a load-model section is refused without it). A model
+/// switched on by nodes (`…ale_node(s)`, `…lagrange_nodes`) gets one node of
+/// that kind; any registered model, not a list of them.
 fn base(section: &str) -> Params {
     let mut p = Params::new();
     let mut set = |k: &str, v: &str| p.set_override(k, v).unwrap();
-    match section {
-        "pads" | "tool" | "springs" => {
-            set("nodes.ale_radial", "[1.0]");
-            set("nodes.ale_angular", "[0.0]");
-            match section {
-                "pads" => set("pads.ale_nodes", "[1]"),
-                "tool" => set("tool.ale_node", "1"),
-                _ => set("springs.ale_nodes", "[1]"),
-            }
-        }
-        "links" => {
-            set("nodes.lagrange_radial", "[1.0]");
-            set("nodes.lagrange_angular", "[0.0]");
-            set("links.lagrange_nodes", "[1]");
-        }
-        "calipers" => {
-            set("calipers.angles_deg", "[0.0]");
-            set("calipers.inner_radius", "0.1");
-            set("calipers.outer_radius", "0.15");
-        }
-        _ => {}
+    if section == "calipers" {
+        set("calipers.angles_deg", "[0.0]");
+        set("calipers.inner_radius", "0.1");
+        set("calipers.outer_radius", "0.15");
+        return p;
     }
+    let Some(enabling) = PARAMETERS.enabled_by(section) else {
+        return p;
+    };
+    let kind = if enabling.contains("lagrange_node") {
+        "lagrange"
+    } else if enabling.contains("ale_node") {
+        "ale"
+    } else {
+        panic!("{section}: switched on by {enabling}, not by nodes: give it a base scene here")
+    };
+    set(&format!("nodes.{kind}_radial"), "[1.0]");
+    set(&format!("nodes.{kind}_angular"), "[0.0]");
+    set(enabling, if enabling.ends_with('s') { "[1]" } else { "1" });
     p
 }
 
