@@ -26,6 +26,8 @@ const FAMILIES: &[(&str, &[&str])] = &[
             "pad_contact_law.rs",
             "pad_mass.rs",
             "pad_series.rs",
+            "pad_shear.rs",
+            "pad_patch.rs",
             "pad_outputs.rs",
             "face_friction.rs",
         ],
@@ -43,6 +45,7 @@ const ALSO_OWN: &[(&str, &str)] = &[
     ("pads", "src/dynamics/stability.rs"),
     ("pads", "src/dynamics/stability_pads.rs"),
     ("pads", "src/dynamics/stability_map.rs"),
+    ("pads", "src/dynamics/stability_shear.rs"),
 ];
 
 /// The machinery that defines the downcast for the models' own use.

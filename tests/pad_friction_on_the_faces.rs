@@ -52,6 +52,7 @@ fn scene(surface: ContactSurface, mu: f64) -> Config {
         stribeck_speed: 1.0,
         mass: 0.0,
         backing_stiffness: None,
+        shear: None,
     });
     c.simulation.integrator = IntegratorKind::Rk4;
     c.simulation.rk4_step_limit = 0.05;

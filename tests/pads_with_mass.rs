@@ -62,6 +62,7 @@ fn scene(caliper: Caliper, mass: f64, backing: Option<f64>, mu: f64, angles: &[f
         stribeck_speed: 1.0,
         mass,
         backing_stiffness: backing,
+        shear: None,
     });
     c.simulation.integrator = IntegratorKind::Rk4;
     c.simulation.rk4_step_limit = 0.05;

@@ -264,6 +264,9 @@ pub enum ConfigError {
     #[error("{rule}")]
     PadMass { rule: &'static str },
 
+    #[error("{rule}")]
+    PadShear { rule: &'static str },
+
     #[error("tool.ale_node = {node} is at ξ_r = {radial} (nodes.ale_radial[{}]); the tool cuts the rim, so its ALE node must be at ξ_r = 1", node - 1)]
     ToolNotOnRim { node: usize, radial: f64 },
 

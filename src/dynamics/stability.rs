@@ -60,7 +60,9 @@ use nalgebra::Complex;
 /// The matrix A of ẏ = A y, y = (q̄, q̄̇), at speed Ω with friction
 /// coefficient μ and pad clamp forces `clamp_force` (one per pad). With
 /// massive pads (`pads.mass`) y = (q̄, q̄̇, ξ, ξ̇): ξ the pads' compressions
-/// from rest, per pad (top, bottom) as in their slot ([`pad_dofs`]).
+/// from rest, per pad (top, bottom) as in their slot ([`pad_dofs`]). With
+/// the lining's patches (`pads.shear_stiffness`) one ζ per contact point
+/// follows (`stability_shear.rs`).
 pub fn linear_system(
     scene: &Scene,
     speed: f64,
@@ -69,7 +71,8 @@ pub fn linear_system(
 ) -> Mat<f64> {
     let n = scene.n_modes();
     let extra = pad_dofs(scene);
-    let mut a = Mat::<f64>::zeros(2 * n + 2 * extra, 2 * n + 2 * extra);
+    let len = 2 * n + 2 * extra + patch_dofs(scene);
+    let mut a = Mat::<f64>::zeros(len, len);
     for i in 0..n {
         a[(i, n + i)] = 1.0;
     }
@@ -119,6 +122,7 @@ pub fn linear_system(
             .series
             .as_ref()
             .map(|g| pads.linear_series_forces(g, &scene.ale_nodes, &active));
+        super::stability_shear::add_patch_relaxation(&mut a, n, extra, pads);
         for (ci, contact) in pads.contacts.iter().enumerate() {
             let clamp = clamp_force[contact.pad];
             if pads.lift_off && clamp <= 0.0 {
@@ -173,6 +177,11 @@ pub fn linear_system(
                     friction_coefficient,
                     rows,
                 );
+                if let Some(law) = &pads.shear {
+                    super::stability_shear::add_patch_terms(
+                        &mut a, scene, law, contact, ci, extra, preload, speed, mu,
+                    );
+                }
             }
             if pads.is_massive() {
                 let couple = match pads.contact_surface {
@@ -201,6 +210,14 @@ pub fn pad_dofs(scene: &Scene) -> usize {
         .load_models
         .find::<Pads>()
         .map_or(0, |(_, p)| p.pad_states() / 2)
+}
+
+/// First-order states the lining's patches add (one ζ per contact point; `stability_shear.rs`).
+pub fn patch_dofs(scene: &Scene) -> usize {
+    scene
+        .load_models
+        .find::<Pads>()
+        .map_or(0, |(_, p)| super::stability_shear::patch_dofs(p))
 }
 
 /// h μ(V) tanh(V/v_reg): the faces' couple per unit (δN_t − δN_b)/2 (see [`add_face_terms`]).
@@ -290,7 +307,8 @@ fn balanced_system(
         .fold(1.0, f64::max)
         .sqrt();
     let len = a.nrows();
-    let position = |r: usize| is_position(r, n, len);
+    let extra = pad_dofs(scene);
+    let position = |r: usize| is_position(r, n, extra);
     for r in 0..len {
         for c in 0..len {
             match (position(r), position(c)) {
@@ -303,9 +321,10 @@ fn balanced_system(
     (a, s)
 }
 
-/// Whether entry `r` of y = (q̄, q̄̇, ξ, ξ̇) (length `len`, n modes) is a position.
-fn is_position(r: usize, n: usize, len: usize) -> bool {
-    r < n || (r >= 2 * n && r < n + len / 2)
+/// Whether entry `r` of y = (q̄, q̄̇, ξ, ξ̇, ζ) (n modes, `extra` pad dofs)
+/// is a position (the patches' ζ are balanced with the rates).
+fn is_position(r: usize, n: usize, extra: usize) -> bool {
+    r < n || (r >= 2 * n && r < 2 * n + extra)
 }
 
 /// Eigenvalues of [`linear_system`], largest real part first.
@@ -384,7 +403,8 @@ pub fn friction_threshold(scene: &Scene, speed: f64, mu_max: f64) -> Option<f64>
 }
 
 /// The least stable eigenvalue of [`linear_system`] and its eigenvector
-/// y = (q̄, q̄̇) — with massive pads (q̄, q̄̇, ξ, ξ̇) — (complex; a real
+/// y = (q̄, q̄̇) — with massive pads (q̄, q̄̇, ξ, ξ̇), with patches ζ after
+/// them — (complex; a real
 /// motion is Re(v e^{λt})).
 #[derive(Debug, Clone, PartialEq)]
 pub struct CriticalMode {
@@ -439,7 +459,7 @@ pub fn critical_mode(
         vector: (0..n)
             .map(|r| {
                 Complex::new(u[(r, best)].re, u[(r, best)].im)
-                    / if is_position(r, scene.n_modes(), n) {
+                    / if is_position(r, scene.n_modes(), pad_dofs(scene)) {
                         scale
                     } else {
                         1.0

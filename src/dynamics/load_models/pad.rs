@@ -72,6 +72,7 @@ use super::model::{
 };
 use super::outputs::OutputContext;
 use super::pad_config::{Caliper, ContactSurface, PadsConfig, PARAMETERS};
+use super::pad_patch::PatchLaw;
 use crate::config::Config;
 use crate::dynamics::contact_compliance::{ContactCompliance, SeriesScratch};
 use crate::dynamics::joint::FrictionTorque;
@@ -129,6 +130,8 @@ pub struct Pads {
     pub mass: f64,
     /// k_b behind a fixed caliper's massive pad, N/m (0 otherwise).
     pub backing_stiffness: f64,
+    /// The lining's tangential patches (`pad_shear.rs`; None: rigid).
+    pub shear: Option<PatchLaw>,
 }
 
 /// Forces at one contact point.
@@ -183,6 +186,8 @@ pub struct PadScratch {
     pub(super) axial: Vec<f64>,
     pub(super) w_free: Vec<f64>,
     pub(super) tried: Vec<SurfaceKinematics>,
+    /// With `pads.shear_stiffness`: each face's speed relative to its patch, m/s.
+    pub slip: Vec<[f64; 2]>,
 }
 
 /// The pads' one command: a clamp force per pad.
@@ -246,8 +251,14 @@ pub fn build(config: &Config, nodes: &SceneNodes) -> Option<Box<dyn LoadModel>> 
             }),
             mass: p.mass,
             backing_stiffness: p.backing_stiffness.unwrap_or(0.0),
+            shear: p.shear.map(|(stiffness, damping)| PatchLaw {
+                stiffness,
+                damping,
+                initial_speed: config.joint.speed,
+            }),
         }
-        .with_coupling(nodes),
+        .with_coupling(nodes)
+        .with_patch_coupling(),
     ))
 }
 
@@ -293,10 +304,13 @@ impl LoadModel for Pads {
         self.initial_clamp_force.clone()
     }
     fn initial_state(&self) -> Vec<f64> {
-        self.initial_pad_state()
+        let mut slot = self.initial_pad_state();
+        slot.resize(self.pad_states() + self.patch_states(), 0.0);
+        self.initial_patches(&mut slot[self.pad_states()..]);
+        slot
     }
     fn continuous_states(&self) -> usize {
-        self.pad_states()
+        self.pad_states() + self.patch_states()
     }
     fn new_scratch(&self) -> Box<dyn Any + Send + Sync> {
         let n = self.contacts.len();
@@ -313,6 +327,7 @@ impl LoadModel for Pads {
             axial: vec![0.0; n],
             w_free: vec![0.0; n],
             tried: vec![SurfaceKinematics::default(); n],
+            slip: vec![[0.0; 2]; n * self.shear.is_some() as usize],
         })
     }
     fn friction_terms(&self) -> usize {
@@ -377,14 +392,22 @@ impl LoadModel for Pads {
         }
         self.friction_torque_terms(&s.forces, out.friction);
         if self.contact_surface == ContactSurface::Faces {
-            for ((c, f), k) in self
+            let patches = self.pad_states()..self.pad_states() + self.patch_states();
+            let (mut x, mut rates) = (slot[patches.clone()].chunks_exact(4), out.rates[patches].chunks_exact_mut(4));
+            for (ci, ((c, f), k)) in self
                 .contacts
                 .iter()
                 .zip(s.forces.iter_mut())
                 .zip(s.faces.iter_mut())
+                .enumerate()
             {
                 *k = face_kinematics(&ctx.ale_nodes[c.node], ctx.q_ale, ctx.q_dot_ale, ctx.speed);
-                let w = self.face_wrench(c, f, k, ctx.speed);
+                let w = match (&self.shear, x.next(), rates.next()) {
+                    (Some(law), Some(x), Some(r)) => {
+                        self.patch_wrench(law, c, f, k, ctx.speed, x, r, &mut s.slip[ci])
+                    }
+                    _ => self.face_wrench(c, f, k, ctx.speed),
+                };
                 let slot = &mut out.ale[c.node];
                 for a in 0..3 {
                     slot.force[a] += w.force[a];
@@ -444,6 +467,7 @@ mod tests {
             series: None,
             mass: 0.0,
             backing_stiffness: 0.0,
+            shear: None,
         }
     }
 

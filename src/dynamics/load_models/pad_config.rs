@@ -91,6 +91,9 @@ pub struct PadsConfig {
     pub mass: f64,
     /// k_b behind a fixed caliper's massive pad, N/m (`pads.backing_stiffness`).
     pub backing_stiffness: Option<f64>,
+    /// k_t and c_t of the lining's tangential patch per contact point and
+    /// face (`pads.shear_stiffness`, `pads.shear_damping`; `None`: rigid).
+    pub shear: Option<(f64, f64)>,
 }
 
 impl PadsConfig {
@@ -125,6 +128,8 @@ pub const SECTIONS: &[Section] = &[
             param("pads.static_friction_coefficient", Ty::Double, "double", "—", Value::None, "not given (constant μ)", "≥ 0, ≤ 2; only with `pads.contact_surface: faces`", "μ_s of the speed-dependent friction μ(v) = μ + (μ_s − μ) e^(−v/v_S), v the face's sliding speed (a falling μ(v), μ_s > μ, feeds energy into the vibration; docs/scenes.md)"),
             param("pads.stribeck_speed", Ty::Double, "double", "m/s", Value::Double(1.0), "1", "> 0", "v_S of that law").above(0.0),
             param("pads.mass", Ty::Double, "double", "kg", Value::Double(0.0), "0", "≥ 0, finite; > 0 needs `simulation.integrator: rk4` or `contact_exponential`", "mass m_p of each face's pad (lining and backing plate), moving axially between its contact springs k_c, c_c and the caliper: the pad's compression and rate are state, in series with the residual flexibility when `plate.residual_flexibility` (docs/scenes.md, \"Pad mass\"); 0: massless pads (the backing force balances the contacts at every instant)").min(0.0),
+            param("pads.shear_stiffness", Ty::Double, "double", "N/m", Value::None, "not given (rigid lining)", "> 0, finite; with `pads.shear_damping`, `pads.contact_surface: faces`, constant μ (no `pads.static_friction_coefficient`) and `simulation.integrator: rk4` or `contact_exponential`", "k_t of the lining's tangential patch per contact point and face, in series with the friction: each face's friction acts on a massless patch, k_t x + c_t ẋ = friction, and the face slides relative to the patch (stick when that relative velocity vanishes; docs/scenes.md, \"Pad shear\"). From lining data: G A / t per pad face (shear modulus G of lining and shim, pad area A, thickness t), divided by the pad's contact points").above(0.0),
+            param("pads.shear_damping", Ty::Double, "double", "N·s/m", Value::None, "not given", "> 0, finite; required with `pads.shear_stiffness`, refused without it", "c_t of the patch per contact point and face, parallel to k_t: from the lining's loss factor η at the squeal frequency ω, c_t = η k_t / ω (per pad face likewise divided by its contact points)").above(0.0),
             param("pads.backing_stiffness", Ty::Double, "double", "N/m", Value::None, "not given", "> 0, finite; required with `pads.mass` > 0 and `pads.caliper: fixed`, refused otherwise", "k_b of the fixed caliper behind each massive pad: the backing force is N₀ − k_b (x − N₀/(n k_c)), x the pad's compression of its contact springs").above(0.0),
         ],
     },
@@ -171,6 +176,7 @@ fn read(r: &Reader, ctx: &mut SectionContext) -> Result<Option<Box<dyn SectionDa
     {
         return Err(ConfigError::PadMass { rule: "pads.mass > 0 needs simulation.integrator: rk4 or contact_exponential (the pads' axial motion is integrated with the modes)" });
     }
+    check_shear_integrator(section.shear.is_some(), ctx.simulation.integrator)?;
     Ok(Some(section.boxed()))
 }
 
@@ -271,6 +277,7 @@ fn read_pad_data(
         _ => None,
     })?;
     let (mass, backing_stiffness) = read_pad_mass(r, caliper)?;
+    let shear = read_shear(r, contact_surface, static_friction_coefficient)?;
     Ok(PadsConfig {
         contacts,
         clamp_force,
@@ -285,6 +292,7 @@ fn read_pad_data(
         stribeck_speed: r.positive("pads.stribeck_speed")?,
         mass,
         backing_stiffness,
+        shear,
     })
 }
 
@@ -302,4 +310,50 @@ fn read_pad_mass(r: &Reader, caliper: Caliper) -> Result<(f64, Option<f64>), Con
         (false, _, Some(_)) => Err(ConfigError::PadMass { rule: "pads.backing_stiffness needs pads.mass > 0 (massless pads have no backing spring)" }),
         _ => Ok((mass, backing)),
     }
+}
+
+/// `pads.shear_stiffness` and `pads.shear_damping`: both or neither, each
+/// > 0 and finite, with friction on the faces at constant μ.
+fn read_shear(
+    r: &Reader,
+    surface: ContactSurface,
+    static_friction: Option<f64>,
+) -> Result<Option<(f64, f64)>, ConfigError> {
+    let positive_finite = |key: &str| -> Result<Option<f64>, ConfigError> {
+        match r.f64_opt(key)? {
+            None => Ok(None),
+            Some(x) if !x.is_finite() => Err(ConfigError::NonFinite {
+                key: key.to_string(),
+            }),
+            Some(x) => positive(key, x).map(Some),
+        }
+    };
+    let stiffness = positive_finite("pads.shear_stiffness")?;
+    let damping = positive_finite("pads.shear_damping")?;
+    let (k, c) = match (stiffness, damping) {
+        (None, None) => return Ok(None),
+        (Some(k), Some(c)) => (k, c),
+        (Some(_), None) => return Err(ConfigError::PadShear { rule: "pads.shear_stiffness needs pads.shear_damping > 0 (without damping the sliding patch is an infinitely stiff constraint)" }),
+        (None, Some(_)) => return Err(ConfigError::PadShear { rule: "pads.shear_damping needs pads.shear_stiffness (a damper beside a rigid lining does nothing)" }),
+    };
+    if surface == ContactSurface::MidPlane {
+        return Err(ConfigError::PadShear { rule: "pads.shear_stiffness needs pads.contact_surface: faces (the patch carries the friction of a face against the face point's sliding velocity)" });
+    }
+    if static_friction.is_some() {
+        return Err(ConfigError::PadShear { rule: "pads.shear_stiffness is refused with pads.static_friction_coefficient: the patch is solved for constant μ" });
+    }
+    Ok(Some((k, c)))
+}
+
+/// Patches are continuous state: only RK4 and `contact_exponential` integrate them.
+fn check_shear_integrator(shear: bool, integrator: IntegratorKind) -> Result<(), ConfigError> {
+    if shear
+        && !matches!(
+            integrator,
+            IntegratorKind::Rk4 | IntegratorKind::ContactExponential
+        )
+    {
+        return Err(ConfigError::PadShear { rule: "pads.shear_stiffness needs simulation.integrator: rk4 or contact_exponential (the patches' deflections are integrated with the modes)" });
+    }
+    Ok(())
 }

@@ -97,7 +97,7 @@ impl Pads {
         rates: &mut [f64],
     ) {
         let half = 2 * self.pad_count();
-        rates[..half].copy_from_slice(&slot[half..]);
+        rates[..half].copy_from_slice(&slot[half..2 * half]);
         for (pad, &clamp) in clamp_force.iter().enumerate().take(self.pad_count()) {
             for face in 0..2 {
                 let x = slot[2 * pad + face];

@@ -1,0 +1,112 @@
+//! The lining's shear on the pads (`pads.shear_stiffness`,
+//! `pads.shear_damping`; docs/scenes.md, "Pad shear"): each contact face
+//! carries its friction through a massless tangential patch
+//! (`pad_patch.rs`), whose in-plane deflection is state of the pads.
+//!
+//! Stick is the rigid pads' regularised one: while |k_t x| < μN the relative
+//! speed stays below a few v_reg and the patch creeps at the rate
+//! k_t/(c_t + μN/v_reg); sliding, the spring force sits at μN and the patch
+//! relaxes along the sliding direction at k_t/c_t, the fastest rate the
+//! patch adds (in the pads' coupling, so RK4 substeps resolve it;
+//! `contact_exponential` takes it into its linearisation). c_t > 0 is
+//! required: with c_t = 0 the sliding patch is an algebraic constraint
+//! (|k_t x| = μN exactly), infinitely stiff.
+//!
+//! The slot holds, after the massive pads' states, per contact point
+//! (top radial, top tangential, bottom radial, bottom tangential), m.
+
+use super::face_friction::{sliding_velocity, FaceKinematics};
+use super::model::Coupling;
+use super::pad::{ContactForces, PadContactPoint, Pads, FRICTION_REGULARISATION_SPEED};
+use super::pad_patch::PatchLaw;
+use crate::dynamics::wrench::Wrench;
+
+impl Pads {
+    /// Entries of the patches' part of the slot: 4 per contact point with
+    /// `pads.shear_stiffness`, else none.
+    pub fn patch_states(&self) -> usize {
+        self.shear.map_or(0, |_| 4 * self.contacts.len())
+    }
+
+    /// The patches at steady sliding under the initial clamp forces at the
+    /// initial speed: x_θ = μ N₀/n τ(|Ω r|) sign Ω / k_t per face.
+    pub(super) fn initial_patches(&self, slot: &mut [f64]) {
+        let Some(law) = self.shear else { return };
+        for (c, x) in self.contacts.iter().zip(slot.chunks_exact_mut(4)) {
+            let normal = self.initial_clamp_force[c.pad] / self.contacts_per_pad[c.pad] as f64;
+            let theta = self.friction_coefficient * normal.max(0.0) / law.stiffness
+                * Pads::sliding_sign(law.initial_speed, c.radius);
+            x.copy_from_slice(&[0.0, theta, 0.0, theta]);
+        }
+    }
+
+    /// The wrench of both faces' friction through their patches (deflections
+    /// `x`, 4 entries) and the normal forces at the node, as
+    /// [`Pads::face_wrench`]; writes the patches' rates into `rates` and
+    /// the faces' relative sliding speeds into `slip`.
+    #[allow(clippy::too_many_arguments)]
+    pub(super) fn patch_wrench(
+        &self,
+        law: &PatchLaw,
+        contact: &PadContactPoint,
+        f: &mut ContactForces,
+        k: &FaceKinematics,
+        speed: f64,
+        x: &[f64],
+        rates: &mut [f64],
+        slip: &mut [f64; 2],
+    ) -> Wrench {
+        let mut w = Wrench::default();
+        let (s, c) = contact.sin_cos;
+        let node_z = 0.5 * (contact.face_z[0] + contact.face_z[1]);
+        f.tangential = 0.0;
+        for (face, (normal, z)) in [(f.top, contact.face_z[0]), (f.bottom, contact.face_z[1])]
+            .into_iter()
+            .enumerate()
+        {
+            // The faces are at node z + face_z: the lever of the velocity is
+            // the face's z in the plate (mid-plane at 0).
+            let v = sliding_velocity(
+                k,
+                z - node_z,
+                contact.radius,
+                contact.sin_cos,
+                speed,
+                self.follower_friction,
+            );
+            let polar = [c * v[0] + s * v[1], -s * v[0] + c * v[1], v[2]];
+            let patch = law.face(
+                [x[2 * face], x[2 * face + 1]],
+                normal,
+                self.friction_coefficient,
+                polar,
+                FRICTION_REGULARISATION_SPEED,
+            );
+            rates[2 * face..2 * face + 2].copy_from_slice(&patch.rate);
+            slip[face] = patch.slip;
+            let [fr, ft, fz] = patch.force;
+            let fx = c * fr - s * ft;
+            let fy = s * fr + c * ft;
+            w.force[0] += fx;
+            w.force[1] += fy;
+            w.force[2] += fz;
+            w.moment[0] -= z * fy;
+            w.moment[1] += z * fx;
+            f.tangential += ft;
+        }
+        w.force[2] += f.axial;
+        w
+    }
+
+    /// The patches' fastest rate k_t/c_t (the sliding patch's relaxation
+    /// along the sliding direction) added to the coupling bound.
+    pub(super) fn with_patch_coupling(mut self) -> Pads {
+        if let Some(law) = self.shear {
+            self.coupling = Coupling {
+                stiffness_rate_sq: self.coupling.stiffness_rate_sq,
+                damping_rate: self.coupling.damping_rate + law.stiffness / law.damping,
+            };
+        }
+        self
+    }
+}
