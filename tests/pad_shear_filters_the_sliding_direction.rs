@@ -441,3 +441,40 @@ fn bad_shear_data_is_refused_naming_the_key() {
     }
     Config::from_yaml_str(&file("contact_exponential", both), "annular_plate").unwrap();
 }
+
+/// `contact_exponential` carries the patches in its linearisation: its
+/// motion (q̄ and the patches' radial deflections, 0.05 s above threshold)
+/// converges to RK4's as its tolerance tightens.
+#[test]
+fn contact_exponential_carries_the_patches_as_rk4_does() {
+    let mu = 1.5 * threshold(Some(SHEAR));
+    let run = |integrator: IntegratorKind, tolerance: f64| {
+        let mut c = scene(mu, Some(SHEAR));
+        c.simulation.integrator = integrator;
+        c.simulation.contact_tolerance = tolerance;
+        c.simulation.rate_hz = 20_000.0;
+        c.simulation.rk4_step_limit = 0.05;
+        c.initial.q = vec![2e-6, 1e-6];
+        let mut sim = Simulation::new(c).unwrap();
+        let mut out = Vec::new();
+        for _ in 0..1000 {
+            sim.step().unwrap();
+            out.extend_from_slice(sim.q_ale());
+            let slot = &sim.state().load_models.slots[0];
+            out.extend([slot[0], slot[2]]);
+        }
+        out
+    };
+    let reference = run(IntegratorKind::Rk4, 1e-6);
+    let mut last = f64::INFINITY;
+    for tolerance in [1e-5, 1e-7, 1e-9] {
+        let d = relative_difference(
+            &run(IntegratorKind::ContactExponential, tolerance),
+            &reference,
+        );
+        println!("contact_exponential, tolerance {tolerance:e}: {d:.3e} from rk4");
+        assert!(d < last, "{d} after {last}");
+        last = d;
+    }
+    assert!(last < 1e-5, "{last}");
+}
