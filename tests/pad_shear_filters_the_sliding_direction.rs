@@ -478,3 +478,24 @@ fn contact_exponential_carries_the_patches_as_rk4_does() {
     }
     assert!(last < 1e-5, "{last}");
 }
+
+/// A configuration built in code passes no reader: the simulation itself
+/// refuses an integrator that cannot carry the patches, naming their keys.
+#[test]
+fn an_integrator_without_continuous_states_is_refused_naming_the_shear_keys() {
+    for integrator in [
+        IntegratorKind::Exponential,
+        IntegratorKind::ImplicitMidpoint,
+    ] {
+        let mut c = scene(0.3, Some(SHEAR));
+        c.simulation.integrator = integrator;
+        let e = match Simulation::new(c) {
+            Ok(_) => panic!("{} accepted the patches", integrator.name()),
+            Err(e) => e.to_string(),
+        };
+        assert!(
+            e.contains("pads.shear_stiffness") && e.contains(integrator.name()),
+            "{e}"
+        );
+    }
+}

@@ -353,10 +353,12 @@ impl LoadModel for Pads {
         self.write_output_values(at, out);
     }
     fn coupling_keys(&self) -> &'static str {
-        if self.is_massive() {
-            return "pads.mass, pads.contact_stiffness, pads.contact_damping, pads.backing_stiffness";
+        match (self.is_massive(), self.shear.is_some()) {
+            (true, true) => "pads.mass, pads.contact_stiffness, pads.contact_damping, pads.backing_stiffness, pads.shear_stiffness, pads.shear_damping",
+            (true, false) => "pads.mass, pads.contact_stiffness, pads.contact_damping, pads.backing_stiffness",
+            (false, true) => "pads.contact_stiffness, pads.contact_damping, pads.shear_stiffness, pads.shear_damping",
+            (false, false) => "pads.contact_stiffness, pads.contact_damping",
         }
-        "pads.contact_stiffness, pads.contact_damping"
     }
 
     /// Contact forces from the deflection and its rate under each contact
