@@ -45,7 +45,7 @@ pub struct PatchFace {
 /// Newton iterations at most (the bracket halves when a step leaves it).
 const MAX_ITERATIONS: usize = 200;
 
-/// τ(R)/R and the share s²/R² (R → 0: 1/v_reg and 1).
+/// τ(R)/R, the share s²/R² and R/v_reg at R = √(s² + v_n²) (R → 0: 1/v_reg, 1).
 fn tau_over_r(s: f64, normal_speed: f64, v_reg: f64) -> (f64, f64, f64) {
     let r = (s * s + normal_speed * normal_speed).sqrt();
     let x = r / v_reg;
