@@ -11,6 +11,8 @@ use std::path::PathBuf;
 /// Speeds when `--speeds` is not given.
 pub const DEFAULT_SPEED_COUNT: usize = 121;
 
+/// `annular_plate campbell`: the natural frequencies of the spinning plate
+/// over a range of speeds and the critical speeds.
 #[derive(clap::Args, Debug, Clone)]
 pub struct CampbellArgs {
     /// Params file (ROS 2 format); `plate.centrifugal_stiffening` decides whether the prestress stiffens the plate.
@@ -74,6 +76,7 @@ pub fn parse_range(option: &str, text: &str) -> CliResult<Vec<f64>> {
     Ok(linspace(from, to, n))
 }
 
+/// `n` speeds from `from` to `to`, both included (exactly `to` last).
 pub fn linspace(from: f64, to: f64, n: usize) -> Vec<f64> {
     if n == 1 {
         return vec![from];
@@ -89,6 +92,7 @@ pub fn linspace(from: f64, to: f64, n: usize) -> Vec<f64> {
         .collect()
 }
 
+/// Run `annular_plate campbell`.
 pub fn main(args: CampbellArgs) -> CliResult<()> {
     let config = super::load_config_with(&args.file, &args.overrides)?;
     if let Some(p) = &args.plot {

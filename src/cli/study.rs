@@ -9,6 +9,8 @@ use std::fmt::Write as _;
 use std::io::{IsTerminal, Write};
 use std::path::PathBuf;
 
+/// `annular_plate study`: the scene's natural frequencies, critical speeds
+/// and recommendations.
 #[derive(clap::Args, Debug, Clone)]
 pub struct StudyArgs {
     /// Params file (ROS 2 format); omitted: the built-in lathe disc of the paper's section 5.1.
@@ -68,6 +70,7 @@ pub fn plan(args: &StudyArgs) -> CliResult<StudyPlan> {
     Ok(plan)
 }
 
+/// Run `annular_plate study`.
 pub fn main(args: StudyArgs) -> CliResult<()> {
     let plan = plan(&args)?;
     let (config, source) = match &args.file {

@@ -25,9 +25,10 @@ pub use centrifugal::{CentrifugalConfig, InPlaneInner};
 pub(crate) use check::{declared_value, typed, Declared};
 pub use declarations::{ModelParameters, Parameters};
 pub use error::{ConfigError, Degeneracy};
-pub use model_sections::{LoadModelSection, LoadModelSections, SectionContext, SectionData};
+pub(crate) use model_sections::SectionContext;
+pub use model_sections::{LoadModelSection, LoadModelSections, SectionData};
 pub use params_file::{ParamValue, Params};
-pub use raw::Reader;
+pub(crate) use raw::Reader;
 pub use simulation::{
     Coordinates, IntegratorKind, SimulationConfig, DEFAULT_MIDPOINT_STEP_LIMIT,
     DEFAULT_RK4_STEP_LIMIT, MAX_MIDPOINT_STEP_LIMIT, MAX_RK4_STEP_LIMIT, MIN_CONTACT_TOLERANCE,
@@ -49,8 +50,10 @@ pub enum Boundary {
 }
 
 impl Boundary {
+    /// The three conditions, in the order of the reference.
     pub const ALL: [Boundary; 3] = [Boundary::Free, Boundary::Supported, Boundary::Clamped];
 
+    /// The parameter value (`free`, `supported`, `clamped`).
     pub fn name(self) -> &'static str {
         match self {
             Boundary::Free => "free",
@@ -59,6 +62,7 @@ impl Boundary {
         }
     }
 
+    /// From the parameter value; `None` for any other text.
     pub fn from_name(s: &str) -> Option<Self> {
         match s {
             "free" => Some(Boundary::Free),
@@ -94,7 +98,9 @@ pub struct PlateConfig {
     pub youngs_modulus: f64,
     /// ν (given directly, or from the shear modulus as ν = E/2G − 1).
     pub poisson_ratio: f64,
+    /// Boundary condition at r_i (`plate.inner_boundary`).
     pub inner_boundary: Boundary,
+    /// Boundary condition at r_a (`plate.outer_boundary`).
     pub outer_boundary: Boundary,
     /// Nodal diameters k, as given (distinct, not sorted).
     pub nodal_diameters: Vec<u32>,
@@ -292,7 +298,9 @@ impl std::fmt::Display for RadialSplines {
 /// radial ξ_r ∈ [0, 1] from r_i to r_a, angular ξ_φ ∈ [0, 1] for 0..2π.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct NodePosition {
+    /// ξ_r ∈ [0, 1]: r = r_i + ξ_r (r_a − r_i).
     pub radial: f64,
+    /// ξ_φ ∈ [0, 1]: φ = 2π ξ_φ.
     pub angular: f64,
 }
 
@@ -312,6 +320,7 @@ pub enum Surface {
 }
 
 impl Surface {
+    /// The parameter value (`top`, `bottom`, `mid`).
     pub fn name(self) -> &'static str {
         match self {
             Surface::Top => "top",
@@ -357,14 +366,18 @@ impl NodesConfig {
 /// A wrench: force (N) and moment (N·m), in the node frame.
 #[derive(Debug, Clone, Copy, PartialEq, Default, Serialize)]
 pub struct WrenchConfig {
+    /// Force (f_x, f_y, f_z), N, in the node frame.
     pub force: [f64; 3],
+    /// Moment (m_x, m_y, m_z), N m, in the node frame.
     pub moment: [f64; 3],
 }
 
 /// Constant wrenches held from t = 0 (`loads.*`), one per node (zero where not given).
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct LoadsConfig {
+    /// One wrench per ALE node (`loads.ale_wrench`).
     pub ale: Vec<WrenchConfig>,
+    /// One wrench per Lagrangian node (`loads.lagrange_wrench`).
     pub lagrange: Vec<WrenchConfig>,
     /// Wrenches turn with the deformed surface (follower loads, paper 5.3).
     pub follower: bool,
@@ -462,21 +475,30 @@ impl Default for LimitsConfig {
 /// in `modes` order; empty: at rest.
 #[derive(Debug, Clone, PartialEq, Default, Serialize)]
 pub struct InitialConfig {
+    /// Lagrangian modal amplitudes at t = 0, m (`initial.q`).
     pub q: Vec<f64>,
+    /// Their rates at t = 0, m/s (`initial.q_dot`).
     pub q_dot: Vec<f64>,
 }
 
 /// The whole validated configuration.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct Config {
+    /// The plate (`plate.*`).
     pub plate: PlateConfig,
+    /// The node frames (`nodes.*`).
     pub nodes: NodesConfig,
+    /// The held wrenches (`loads.*`).
     pub loads: LoadsConfig,
+    /// The rotational joint at the axis (`joint.*`).
     pub joint: JointConfig,
+    /// The motion of the reference frame (`reference.*`).
     pub reference: ReferenceConfig,
     /// m/s², in the world frame (the reference frame before its tilt).
     pub gravity: [f64; 3],
+    /// Rate, integrator and coordinates (`simulation.*`).
     pub simulation: SimulationConfig,
+    /// The plausibility limits of inputs and state (`limits.*`).
     pub limits: LimitsConfig,
     /// The load models' validated sections (each declared and read in its
     /// model's own file); a model is on when its section is here.

@@ -15,12 +15,19 @@ use super::ParamValue;
 /// The ROS 2 parameter type of a key.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Ty {
+    /// `bool`.
     Bool,
+    /// `integer` (i64).
     Integer,
+    /// `double` (a finite f64).
     Double,
+    /// `string`.
     String,
+    /// `integer[]`.
     IntegerArray,
+    /// `double[]`.
     DoubleArray,
+    /// `string[]`.
     StringArray,
     /// The string `auto` or an integer (`plate.radial_splines`).
     AutoOrInteger,
@@ -48,6 +55,7 @@ impl Ty {
 /// One end of a declared numeric range.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Bound {
+    /// No bound at this end.
     Open,
     /// `≥ x` (or `≤ x` as the upper end).
     Inclusive(f64),
@@ -61,12 +69,16 @@ pub enum Bound {
 /// (`simulation.realtime_factor`: 0 = as fast as possible).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Range {
+    /// The lower end.
     pub min: Bound,
+    /// The upper end.
     pub max: Bound,
+    /// Whether 0 is accepted besides the range.
     pub or_zero: bool,
 }
 
 impl Range {
+    /// Any finite number.
     pub const ANY: Range = Range {
         min: Bound::Open,
         max: Bound::Open,
@@ -128,12 +140,19 @@ impl Range {
 /// A declared default value (`None`: the key has no value unless given).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Value {
+    /// No default: the key has no value unless given.
     None,
+    /// A bool.
     Bool(bool),
+    /// An integer.
     Integer(i64),
+    /// A double.
     Double(f64),
+    /// A string.
     Str(&'static str),
+    /// An integer array.
     Integers(&'static [i64]),
+    /// A double array.
     Doubles(&'static [f64]),
 }
 
@@ -155,15 +174,21 @@ impl Value {
 /// One parameter.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Param {
+    /// The full key (`plate.inner_radius`).
     pub key: &'static str,
+    /// Its ROS 2 type.
     pub ty: Ty,
     /// The type as the reference shows it (`double array (3)`).
     pub type_text: &'static str,
+    /// Its SI unit (`m`, `N`; `—` for none).
     pub unit: &'static str,
+    /// Its default value.
     pub default: Value,
     /// The default as the reference shows it (`0.3 (when neither is given)`).
     pub default_text: &'static str,
+    /// The rule a value must satisfy, as the reference states it.
     pub rule: &'static str,
+    /// What the key sets, as the reference states it.
     pub meaning: &'static str,
     /// The numeric range the rule states (`Range::ANY`: none beyond finite).
     pub range: Range,
@@ -204,11 +229,15 @@ impl Param {
 /// One section of keys (`plate.*`; `""`: the top-level keys).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Section {
+    /// The section's prefix (`plate`; `""` for the top-level keys).
     pub name: &'static str,
+    /// The section's heading in the reference.
     pub title: &'static str,
-    /// Text before and after the section's table in the reference.
+    /// Text before the section's table in the reference.
     pub before: &'static str,
+    /// Text after the section's table in the reference.
     pub after: &'static str,
+    /// Its keys, in the reference's order.
     pub params: &'static [Param],
 }
 

@@ -41,6 +41,7 @@ const SECTORS: usize = 360;
 /// What to render.
 #[derive(Debug, Clone)]
 pub struct Animation {
+    /// Frames per second of the animation.
     pub fps: u32,
     /// Refuse more frames than this (`--max-frames`).
     pub max_frames: usize,
@@ -48,20 +49,24 @@ pub struct Animation {
     pub slowdown: f64,
     /// Side-view magnification; None: auto.
     pub scale: Option<f64>,
+    /// Picture size.
     pub size: Size,
 }
 
 /// The frames' layout and the run's numbers, for tests.
 #[derive(Debug, Clone, PartialEq)]
 pub struct AnimationInfo {
+    /// Frames drawn.
     pub frames: usize,
     /// CSV row of each frame.
     pub rows: Vec<usize>,
     /// Largest |w| of the run (colour reference), m.
     pub w_ref: f64,
+    /// The side view's magnification of the deflection.
     pub scale: f64,
     /// Top view: centre (px) and pixels per metre.
     pub top_centre: (f64, f64),
+    /// Pixels per metre of the top view.
     pub px_per_m: f64,
 }
 

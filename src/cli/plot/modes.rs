@@ -29,18 +29,25 @@ pub fn diverging(t: f64) -> RGBColor {
 /// Where one top view of a mode was drawn.
 #[derive(Debug, Clone, PartialEq)]
 pub struct TopView {
+    /// Nodal diameters k.
     pub k: u32,
+    /// Nodal circles l.
     pub l: u32,
     /// Index into the model's modes (of the model that drew it), None if ⟨k, l⟩ is a rigid-body motion.
     pub mode: Option<usize>,
+    /// cos or sin (None for k = 0).
     pub shape: Option<AngularShape>,
     /// Disc centre, pixels.
     pub center: (i32, i32),
     /// Pixels per metre.
     pub scale: f64,
+    /// r_i, m.
     pub inner_radius: f64,
+    /// r_a, m.
     pub outer_radius: f64,
+    /// Radii of the nodal circles, m.
     pub nodal_radii: Vec<f64>,
+    /// Angles of the nodal half-diameters, rad.
     pub nodal_angles: Vec<f64>,
 }
 
@@ -308,9 +315,13 @@ impl Painter for ModeGrid<'_> {
 pub enum ModeChoice {
     /// As numbered by `annular_plate modes` (from 1).
     Index(usize),
+    /// By ⟨k, l⟩ and shape.
     KL {
+        /// Nodal diameters k.
         k: u32,
+        /// Nodal circles l.
         l: u32,
+        /// cos or sin.
         shape: AngularShape,
     },
 }

@@ -12,10 +12,13 @@ use std::path::Path;
 /// Picture format, from the output's extension.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Format {
+    /// PNG.
     Png,
+    /// SVG.
     Svg,
 }
 
+/// The format of `path` by its extension (.png or .svg); any other is refused.
 pub fn format_of(path: &Path) -> CliResult<Format> {
     match path
         .extension()
