@@ -180,6 +180,38 @@ pub(crate) fn no_other_keys(
     }
 }
 
+/// A section of point elements read by [`read_ale_node_list`].
+pub(crate) struct AleNodeList<const N: usize> {
+    /// The ALE nodes, 0-based.
+    pub(crate) nodes: Vec<usize>,
+    /// The coefficients, in the order of their keys.
+    pub(crate) values: [f64; N],
+}
+
+/// The section of point elements under ALE nodes (`springs.*`,
+/// `dampers.*`): `enabling_key` lists the nodes (from 1, existing and
+/// distinct), each key of `coefficients` a non-negative coefficient, read in
+/// that order. `None` when the list is empty (then no other key of `section`
+/// may be given).
+pub(crate) fn read_ale_node_list<const N: usize>(
+    r: &Reader,
+    ctx: &SectionContext,
+    section: &str,
+    enabling_key: &'static str,
+    coefficients: [&str; N],
+) -> Result<Option<AleNodeList<N>>, ConfigError> {
+    let numbers = r.i64_array(enabling_key)?;
+    if numbers.is_empty() {
+        no_other_keys(r, section, enabling_key)?;
+        return Ok(None);
+    }
+    let nodes = node_refs(enabling_key, &numbers, "ale", ctx.nodes.ale.len())?;
+    let mut values = [0.0; N];
+    for (value, key) in values.iter_mut().zip(coefficients) {
+        *value = non_negative(key, r.f64(key)?)?;
+    }
+    Ok(Some(AleNodeList { nodes, values }))
+}
 /// Node numbers (from 1) of existing, distinct nodes of one kind → 0-based indices.
 pub(crate) fn node_refs(
     key: &str,

@@ -301,6 +301,15 @@ pub fn surface_kinematics(node: &NodeFrame, q: &[f64], q_dot: &[f64]) -> Surface
     s
 }
 
+/// [`contact_rate`] of contacts at the given ALE nodes (0-based) of the scene.
+pub fn ale_contact_rate(nodes: &SceneNodes, ale: &[usize]) -> f64 {
+    let shapes: Vec<&[NodeShape]> = ale
+        .iter()
+        .map(|&j| nodes.ale[j].shapes.as_slice())
+        .collect();
+    contact_rate(&shapes, nodes.modal_mass)
+}
+
 /// Largest eigenvalue of M^(−½) (Σ_c w_c w_cᵀ) M^(−½), w_c the mode shapes at contact c.
 pub fn contact_rate(shapes: &[&[NodeShape]], modal_mass: &[f64]) -> f64 {
     let n = modal_mass.len();
