@@ -77,11 +77,12 @@ pub enum MergeCommand {
 /// The least stable mode of a grid point.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 pub struct UnstableMode {
-    /// Nodal diameters k of the plate mode it is closest to.
+    /// Nodal diameters k of the plate mode with the largest amplitude in
+    /// its eigenvector.
     pub k: u32,
     /// Nodal circles l.
     pub l: u32,
-    /// Its frequency, Hz (|Im λ| / 2π).
+    /// Its frequency |Im λ| / 2π in the space-fixed frame, Hz.
     pub frequency_hz: f64,
 }
 
@@ -123,7 +124,8 @@ pub struct StabilityMap {
     pub mu: Vec<f64>,
     /// Largest real part of the eigenvalues at speed s and μ m, 1/s (> 0: unstable).
     pub growth_rate: Vec<Vec<f64>>,
-    /// Per speed, the first μ of the grid at which the plate is unstable (None: stable throughout).
+    /// Per speed, the smallest μ of the range where max Re λ > 0, bisected
+    /// between grid points (None: stable throughout).
     pub threshold_mu: Vec<Option<f64>>,
     /// The least stable mode at speed s and μ m.
     pub mode: Vec<Vec<UnstableMode>>,

@@ -127,7 +127,7 @@ pub fn main(args: StudyArgs) -> CliResult<()> {
 }
 
 /// A duration, s, in readable units.
-pub fn fmt_time(s: f64) -> String {
+pub(crate) fn fmt_time(s: f64) -> String {
     if !s.is_finite() {
         return "—".into();
     }
@@ -169,7 +169,7 @@ fn fmt_rec<S>(
 }
 
 /// A mode set as the recommendations name it.
-pub fn fmt_mode_set(k_max: u32, l_max: u32, residual_flexibility: bool) -> String {
+pub(crate) fn fmt_mode_set(k_max: u32, l_max: u32, residual_flexibility: bool) -> String {
     format!(
         "k ≤ {k_max}, l ≤ {l_max}{}",
         if residual_flexibility {

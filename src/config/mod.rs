@@ -9,7 +9,7 @@
 mod centrifugal;
 mod check;
 mod declarations;
-pub mod defaults;
+pub(crate) mod defaults;
 mod error;
 pub mod model_sections;
 mod params_file;
@@ -29,10 +29,8 @@ pub(crate) use model_sections::SectionContext;
 pub use model_sections::{LoadModelSection, LoadModelSections, SectionData};
 pub use params_file::{ParamValue, Params};
 pub(crate) use raw::Reader;
-pub use simulation::{
-    Coordinates, IntegratorKind, SimulationConfig, DEFAULT_MIDPOINT_STEP_LIMIT,
-    DEFAULT_RK4_STEP_LIMIT, MAX_MIDPOINT_STEP_LIMIT, MAX_RK4_STEP_LIMIT, MIN_CONTACT_TOLERANCE,
-};
+pub use simulation::{Coordinates, IntegratorKind, SimulationConfig};
+pub(crate) use simulation::{MAX_MIDPOINT_STEP_LIMIT, MAX_RK4_STEP_LIMIT, MIN_CONTACT_TOLERANCE};
 
 use serde::Serialize;
 
@@ -232,10 +230,11 @@ impl PlateConfig {
 
 /// The count the
 /// `auto` search starts from for the first k (`plate.radial_splines`).
-pub const DEFAULT_RADIAL_SPLINES: usize = 32;
+pub(crate) const DEFAULT_RADIAL_SPLINES: usize = 32;
 
 /// Default of `plate.frequency_tolerance` (its declaration).
-pub const DEFAULT_FREQUENCY_TOLERANCE: f64 = defaults::default_f64("plate.frequency_tolerance");
+pub(crate) const DEFAULT_FREQUENCY_TOLERANCE: f64 =
+    defaults::default_f64("plate.frequency_tolerance");
 
 /// `plate.radial_splines`: `auto` (the default) or a fixed count.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

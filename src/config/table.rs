@@ -270,7 +270,7 @@ pub const fn param(
 }
 
 /// The sections before the load models' (in the reference's order).
-pub const BEFORE_LOAD_MODELS: &[Section] = &[
+pub(crate) const BEFORE_LOAD_MODELS: &[Section] = &[
     Section {
         name: "plate",
         title: "`plate` — geometry, material, modal discretisation",
@@ -386,7 +386,7 @@ pub const BEFORE_LOAD_MODELS: &[Section] = &[
 ];
 
 /// The sections after the load models'.
-pub const AFTER_LOAD_MODELS: &[Section] = &[
+pub(crate) const AFTER_LOAD_MODELS: &[Section] = &[
     Section {
         name: "initial",
         title: "`initial` — initial elastic state",

@@ -30,10 +30,10 @@ use std::path::Path;
 /// `--max-frames` unless given.
 pub const DEFAULT_MAX_FRAMES: usize = 10_000;
 /// Rendering time of a frame (960×480 GIF, release build, one core: 0.07 s measured), for estimates.
-pub const FRAME_SECONDS: f64 = 0.08;
+pub(crate) const FRAME_SECONDS: f64 = 0.08;
 
 /// The largest |w| of the run is drawn this fraction of r_a high in the side view.
-pub const SIDE_FRACTION: f64 = 0.1;
+pub(crate) const SIDE_FRACTION: f64 = 0.1;
 /// Cells of the polar grid the frames are drawn from.
 const RINGS: usize = 48;
 const SECTORS: usize = 360;
@@ -137,7 +137,7 @@ fn amplitudes(data: &CsvData, n: usize, rows: &[usize]) -> CliResult<Vec<Vec<f64
 }
 
 /// Rows of the frames: round(span × slowdown × fps) frames, first and last rows included.
-pub fn frame_rows(
+pub(crate) fn frame_rows(
     times: &[f64],
     fps: u32,
     slowdown: f64,

@@ -45,7 +45,7 @@ struct CampbellPicture<'a> {
 }
 
 /// Marker radius, px.
-pub const CRITICAL_MARKER_RADIUS: i32 = 6;
+pub(crate) const CRITICAL_MARKER_RADIUS: i32 = 6;
 
 impl Painter for CampbellPicture<'_> {
     type Out = CampbellGeometry;

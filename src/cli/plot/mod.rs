@@ -362,6 +362,6 @@ fn first_sorted(v: &[u32], n: usize) -> Vec<u32> {
 }
 
 /// Read a params file and apply `name:=value` overrides.
-pub fn load_with_overrides(path: &Path, overrides: &[String]) -> CliResult<Config> {
+pub(crate) fn load_with_overrides(path: &Path, overrides: &[String]) -> CliResult<Config> {
     super::load_config_with(path, overrides)
 }

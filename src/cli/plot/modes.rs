@@ -14,7 +14,7 @@ use std::path::Path;
 // ---------------------------------------------------------------- mode shapes
 
 /// Diverging colour for w/max|w| ∈ [−1, 1]: blue below zero, white at zero, red above.
-pub fn diverging(t: f64) -> RGBColor {
+pub(crate) fn diverging(t: f64) -> RGBColor {
     let t = t.clamp(-1.0, 1.0);
     let (end, s) = if t >= 0.0 {
         ((178.0, 24.0, 43.0), t)

@@ -23,7 +23,8 @@ pub struct StabilityGrid<'a> {
     pub mu: &'a [f64],
     /// Largest real part of the eigenvalues per speed and μ, 1/s.
     pub growth_rate: &'a [Vec<f64>],
-    /// Per speed, the first unstable μ (None: stable throughout).
+    /// Per speed, the smallest unstable μ of the range (None: stable
+    /// throughout).
     pub threshold_mu: &'a [Option<f64>],
 }
 
