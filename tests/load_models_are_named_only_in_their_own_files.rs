@@ -42,7 +42,6 @@ const FAMILIES: &[(&str, &[&str])] = &[
 const ALSO_OWN: &[(&str, &str)] = &[
     ("pads", "src/dynamics/stability.rs"),
     ("pads", "src/dynamics/stability_pads.rs"),
-    ("pads", "src/dynamics/stability_map.rs"),
 ];
 
 /// The machinery that defines the downcast for the models' own use.
