@@ -60,27 +60,21 @@ pub trait SectionData: Any + Debug + Send + Sync {
 }
 
 impl<T: LoadModelSection> SectionData for T {
-    /// The section's name ([`LoadModelSection::SECTION`]).
     fn name(&self) -> &'static str {
         T::SECTION
     }
-    /// A boxed copy.
     fn clone_box(&self) -> Box<dyn SectionData> {
         Box::new(self.clone())
     }
-    /// Whether `other` is a section of the same type with equal values.
     fn eq_box(&self, other: &dyn SectionData) -> bool {
         other.as_any().downcast_ref::<T>() == Some(self)
     }
-    /// The section's values as JSON (the effective-parameter dump).
     fn to_json(&self) -> serde_json::Value {
         serde_json::to_value(self).unwrap_or(serde_json::Value::Null)
     }
-    /// For downcasting to the model's own section type.
     fn as_any(&self) -> &dyn Any {
         self
     }
-    /// For downcasting to the model's own section type, to change it.
     fn as_any_mut(&mut self) -> &mut dyn Any {
         self
     }
@@ -212,6 +206,7 @@ pub(crate) fn read_ale_node_list<const N: usize>(
     }
     Ok(Some(AleNodeList { nodes, values }))
 }
+
 /// Node numbers (from 1) of existing, distinct nodes of one kind → 0-based indices.
 pub(crate) fn node_refs(
     key: &str,
