@@ -99,8 +99,11 @@ pub enum ConfigError {
         found: String,
     },
 
-    #[error("{key} = {value} is not a boundary condition; use one of: free, supported, clamped")]
+    #[error("{key} = {value} is not a boundary condition; use one of: free, supported, clamped, supported_soft (the last with plate.theory: mindlin)")]
     UnknownBoundary { key: String, value: String },
+
+    #[error("{key} = supported_soft is an edge of Mindlin plate theory (w = 0 with the normal free to twist), but plate.theory = kirchhoff; set plate.theory: mindlin or use supported")]
+    SoftSupportNeedsMindlin { key: &'static str },
 
     #[error("{key} = {value} is not one of: {}", allowed.join(", "))]
     UnknownChoice {

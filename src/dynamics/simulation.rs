@@ -98,6 +98,7 @@ pub struct Simulation {
 impl Simulation {
     pub fn new(config: Config) -> Result<Simulation, SimulationError> {
         let model = PlateModel::new(&config.plate)?;
+        model.require_kirchhoff("the dynamics (the node, `simulate`, `stability`, `study`)")?;
         let scene = Scene::new(&config, model);
         let settings = StepperSettings::from_config(&config);
         let stepper = Stepper::new(&scene);

@@ -63,9 +63,12 @@
 
 mod assembly;
 mod error;
+mod model;
 
 pub use assembly::MindlinDiscretisation;
 pub use error::MindlinError;
+pub(crate) use model::build_model;
+pub use model::{mindlin_edge, mindlin_plate};
 
 use super::bspline::BSplineBasis;
 use super::modes::{AngularShape, RadialShape};
