@@ -230,3 +230,59 @@ fn every_command_but_modes_refuses_a_mindlin_scene() {
     assert!(!csv.exists() && !study.exists() && !png.exists());
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// Kirchhoff's ⟨2, 0⟩ of the bench disc against the exact Mindlin root: the
+/// model error the warning reports.
+#[test]
+fn modes_warns_of_the_bench_disc_and_not_of_a_thin_plate() {
+    let (ok, _, stderr) = run(&["modes", BENCH]);
+    assert!(ok, "{stderr}");
+    let warning = stderr
+        .lines()
+        .find(|l| l.starts_with("warning:"))
+        .unwrap_or_else(|| panic!("no warning for the 18.1 mm bench disc: {stderr}"));
+    assert!(warning.contains("plate.theory"), "{warning}");
+    println!("{warning}");
+
+    // The number it states: Kirchhoff / exact Mindlin − 1 for the worst of the lowest three ⟨k, l⟩.
+    let text = std::fs::read_to_string(BENCH).unwrap();
+    let config = Config::from_yaml_str(&text, NODE).expect("bench");
+    let model = PlateModel::new(&config.plate).expect("kirchhoff");
+    let worst = model
+        .thickness_warning()
+        .expect("the check runs")
+        .expect("the bench disc warns");
+    let exact = bench_disc(Edge::Supported).roots(worst.k, worst.l as usize + 1, 64)
+        [worst.l as usize]
+        / std::f64::consts::TAU;
+    let e_exact = worst.kirchhoff_hz / exact - 1.0;
+    assert!(
+        (worst.relative_error() - e_exact).abs() < 1e-6,
+        "{} against {e_exact}",
+        worst.relative_error()
+    );
+    assert!(e_exact > 0.01, "{e_exact}");
+    // Mindlin modes and a thin version of the disc (h = 2 mm, h/b = 0.024) do not warn.
+    for overrides in [
+        ["-p", "plate.theory:=mindlin"],
+        ["-p", "plate.thickness:=0.002"],
+    ] {
+        let mut args = vec!["modes", BENCH];
+        args.extend(overrides);
+        let (ok, _, stderr) = run(&args);
+        assert!(ok, "{stderr}");
+        assert!(!stderr.contains("warning"), "{overrides:?}: {stderr}");
+    }
+    let mut thin = config.plate.clone();
+    thin.thickness = 0.002;
+    let thin_error = PlateModel::new(&thin)
+        .unwrap()
+        .kirchhoff_thickness_error()
+        .unwrap()
+        .expect("a Kirchhoff model is checked");
+    println!(
+        "h = 2 mm: worst of the lowest three ⟨k, l⟩ {:.3} %",
+        100.0 * thin_error.relative_error()
+    );
+    assert!(thin_error.relative_error() < 0.01);
+}
