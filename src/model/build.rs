@@ -127,20 +127,50 @@ pub(super) fn build(plate: &PlateConfig) -> Result<PlateModel, ModelError> {
             });
         }
     }
-    if entries.is_empty() {
-        return Err(ModelError::NoElasticModes { skipped });
+    finish(
+        plate,
+        rigidity,
+        Parts {
+            entries,
+            radial_shapes,
+            skipped,
+            radial_resolution,
+            mindlin: Vec::new(),
+        },
+    )
+}
+
+/// What a theory's build hands to [`finish`].
+pub(super) struct Parts {
+    pub entries: Vec<TableEntry>,
+    pub radial_shapes: Vec<RadialShape>,
+    pub skipped: Vec<(u32, u32)>,
+    pub radial_resolution: Vec<KResolution>,
+    pub mindlin: Vec<super::mindlin::MindlinMode>,
+}
+
+/// The model of the elastic ⟨k, l⟩: the mode table and the body data.
+pub(super) fn finish(
+    plate: &PlateConfig,
+    rigidity: f64,
+    parts: Parts,
+) -> Result<PlateModel, ModelError> {
+    if parts.entries.is_empty() {
+        return Err(ModelError::NoElasticModes {
+            skipped: parts.skipped,
+        });
     }
-    let modes = mode_table(plate, &entries);
-    let body = BodyData::new(plate, &modes, &radial_shapes);
+    let modes = mode_table(plate, &parts.entries);
+    let body = BodyData::new(plate, &modes, &parts.radial_shapes);
     Ok(PlateModel {
         plate: plate.clone(),
         rigidity,
         modes,
-        radial_shapes,
-        skipped_rigid_body_modes: skipped,
+        radial_shapes: parts.radial_shapes,
+        skipped_rigid_body_modes: parts.skipped,
         body,
-        radial_resolution,
-        mindlin: Vec::new(),
+        radial_resolution: parts.radial_resolution,
+        mindlin: parts.mindlin,
     })
 }
 

@@ -19,8 +19,7 @@
 
 use super::{MindlinDiscretisation, MindlinEdge, MindlinPlate, DEFAULT_SPLINES};
 use crate::config::{Boundary, PlateConfig, RadialSplines};
-use crate::model::body::BodyData;
-use crate::model::build::{mode_table, TableEntry};
+use crate::model::build::{finish, Parts, TableEntry};
 use crate::model::modes::is_rigid_body;
 use crate::model::resolution::KResolution;
 use crate::model::{bending_rigidity, ModelError, PlateModel};
@@ -91,19 +90,15 @@ pub(crate) fn build_model(plate: &PlateConfig) -> Result<PlateModel, ModelError>
             mindlin.push(mode.clone());
         }
     }
-    if entries.is_empty() {
-        return Err(ModelError::NoElasticModes { skipped });
-    }
-    let modes = mode_table(plate, &entries);
-    let body = BodyData::new(plate, &modes, &radial_shapes);
-    Ok(PlateModel {
-        plate: plate.clone(),
-        rigidity: bending_rigidity(plate.youngs_modulus, plate.thickness, plate.poisson_ratio),
-        modes,
-        radial_shapes,
-        skipped_rigid_body_modes: skipped,
-        body,
-        radial_resolution,
-        mindlin,
-    })
+    finish(
+        plate,
+        bending_rigidity(plate.youngs_modulus, plate.thickness, plate.poisson_ratio),
+        Parts {
+            entries,
+            radial_shapes,
+            skipped,
+            radial_resolution,
+            mindlin,
+        },
+    )
 }
