@@ -99,6 +99,7 @@ pub fn main(args: CampbellArgs) -> CliResult<()> {
         super::plot::check_output_path(p)?;
     }
     let model = PlateModel::new(&config.plate)?;
+    model.require_kirchhoff("`campbell`")?;
     let speeds = match &args.speeds {
         Some(text) => {
             let speeds = parse_range("--speeds", text)?;

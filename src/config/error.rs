@@ -176,13 +176,20 @@ pub enum ConfigError {
         found: String,
     },
 
-    /// A boundary condition other than `free`, `supported` or `clamped`.
-    #[error("{key} = {value} is not a boundary condition; use one of: free, supported, clamped")]
+    /// A boundary condition other than `free`, `supported`, `clamped` or `supported_soft`.
+    #[error("{key} = {value} is not a boundary condition; use one of: free, supported, clamped, supported_soft (the last with plate.theory: mindlin)")]
     UnknownBoundary {
         /// The parameter.
         key: String,
         /// The value given.
         value: String,
+    },
+
+    /// `supported_soft` (a Mindlin edge) on a Kirchhoff plate.
+    #[error("{key} = supported_soft is an edge of Mindlin plate theory (w = 0 with the normal free to twist), but plate.theory = kirchhoff; set plate.theory: mindlin or use supported")]
+    SoftSupportNeedsMindlin {
+        /// The edge key (`plate.inner_boundary` or `plate.outer_boundary`).
+        key: &'static str,
     },
 
     /// A string value outside its key's declared choices.

@@ -41,43 +41,81 @@ use serde::Serialize;
 pub enum Boundary {
     /// No essential condition; moment and Kirchhoff shear vanish naturally.
     Free,
-    /// Simply supported: w = 0; the radial moment vanishes naturally.
+    /// Simply supported: w = 0; the radial moment vanishes naturally. Under
+    /// Mindlin theory the hard support w = ψ_θ = 0 (docs/mindlin.md).
     Supported,
-    /// w = 0 and ∂w/∂r = 0.
+    /// w = 0 and ∂w/∂r = 0 (Mindlin: w = ψ_r = ψ_θ = 0).
     Clamped,
+    /// Mindlin theory only: the soft support w = 0, M_r = M_rθ = 0 (the
+    /// normal may twist about it); refused under Kirchhoff theory.
+    SupportedSoft,
 }
 
 impl Boundary {
-    /// The three conditions, in the order of the reference.
-    pub const ALL: [Boundary; 3] = [Boundary::Free, Boundary::Supported, Boundary::Clamped];
+    /// Every edge condition.
+    pub const ALL: [Boundary; 4] = [
+        Boundary::Free,
+        Boundary::Supported,
+        Boundary::Clamped,
+        Boundary::SupportedSoft,
+    ];
+    /// The edge conditions of Kirchhoff theory (all but `supported_soft`).
+    pub const KIRCHHOFF: [Boundary; 3] = [Boundary::Free, Boundary::Supported, Boundary::Clamped];
 
-    /// The parameter value (`free`, `supported`, `clamped`).
+    /// The parameter value (`free`, `supported`, `clamped`, `supported_soft`).
     pub fn name(self) -> &'static str {
         match self {
             Boundary::Free => "free",
             Boundary::Supported => "supported",
             Boundary::Clamped => "clamped",
+            Boundary::SupportedSoft => "supported_soft",
         }
     }
 
     /// From the parameter value; `None` for any other text.
     pub fn from_name(s: &str) -> Option<Self> {
-        match s {
-            "free" => Some(Boundary::Free),
-            "supported" => Some(Boundary::Supported),
-            "clamped" => Some(Boundary::Clamped),
-            _ => None,
-        }
+        Boundary::ALL.into_iter().find(|b| b.name() == s)
     }
 
     /// B-splines the essential conditions of this edge remove from the radial
-    /// basis: free 0, supported 1 (w = 0), clamped 2 (w = ∂w/∂r = 0).
+    /// basis of w: free 0, supported 1 (w = 0), clamped 2 (w = ∂w/∂r = 0);
+    /// `supported_soft` (Mindlin only) 1.
     pub fn essential_conditions(self) -> usize {
         match self {
             Boundary::Free => 0,
-            Boundary::Supported => 1,
+            Boundary::Supported | Boundary::SupportedSoft => 1,
             Boundary::Clamped => 2,
         }
+    }
+}
+
+/// The plate theory of the modes (`plate.theory`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum PlateTheory {
+    /// Thin plate (the paper's model): rotations −∇w, no rotary inertia.
+    Kirchhoff,
+    /// First-order shear deformation with rotary inertia (docs/mindlin.md).
+    Mindlin,
+}
+
+impl PlateTheory {
+    /// The names `plate.theory` takes.
+    pub const NAMES: &'static [&'static str] = &["kirchhoff", "mindlin"];
+
+    /// `kirchhoff` or `mindlin`.
+    pub fn name(self) -> &'static str {
+        match self {
+            PlateTheory::Kirchhoff => "kirchhoff",
+            PlateTheory::Mindlin => "mindlin",
+        }
+    }
+
+    /// The theory named `s`, if any.
+    pub fn from_name(s: &str) -> Option<Self> {
+        [PlateTheory::Kirchhoff, PlateTheory::Mindlin]
+            .into_iter()
+            .find(|t| t.name() == s)
     }
 }
 
@@ -116,6 +154,11 @@ pub struct PlateConfig {
     /// Add the truncated modes' static deflection at the node frames
     /// (`plate.residual_flexibility`, docs/residual_flexibility.md).
     pub residual_flexibility: bool,
+    /// Kirchhoff or Mindlin modes (`plate.theory`).
+    pub theory: PlateTheory,
+    /// Mindlin's shear correction κ (`plate.shear_correction`; no effect
+    /// under Kirchhoff theory).
+    pub shear_correction: f64,
 }
 
 /// Bending rigidity D = E h³ / (12 (1 − ν²)), eq. (2).
@@ -148,6 +191,9 @@ impl PlateConfig {
             radial_splines: RadialSplines::from_declared_default(),
             frequency_tolerance: DEFAULT_FREQUENCY_TOLERANCE,
             residual_flexibility: const { default_bool("plate.residual_flexibility") },
+            theory: PlateTheory::from_name(default_str("plate.theory"))
+                .expect("the declared default is a theory"),
+            shear_correction: const { default_f64("plate.shear_correction") },
         }
     }
 

@@ -113,6 +113,7 @@ impl Simulation {
     /// Build the model, the scene and the stepper of a validated configuration, at its initial state.
     pub fn new(config: Config) -> Result<Simulation, SimulationError> {
         let model = PlateModel::new(&config.plate)?;
+        model.require_kirchhoff("the dynamics (the node, `simulate`, `stability`, `study`)")?;
         let scene = Scene::new(&config, model);
         let settings = StepperSettings::from_config(&config);
         let stepper = Stepper::new(&scene);

@@ -181,6 +181,9 @@ pub fn animate(
 ) -> CliResult<AnimationInfo> {
     let model = PlateModel::new(&config.plate)
         .map_err(|e| CliError::Usage(format!("the params file's plate: {e}")))?;
+    model
+        .require_kirchhoff("`plot`")
+        .map_err(|e| CliError::Usage(format!("{e}")))?;
     let times = data.column("time")?;
     let chi = data.column("joint_position")?;
     // The work is the frames' (bounded by --max-frames), not the rows'.

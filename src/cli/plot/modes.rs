@@ -179,7 +179,11 @@ pub(super) fn model_for(config: &Config, ks: &[u32], ls: &[u32]) -> CliResult<Pl
             "nodal diameters must be ≤ 200 and nodal circles ≤ 50".to_string(),
         ));
     }
-    PlateModel::new(&plate).map_err(|e| CliError::Usage(format!("{e}")))
+    let model = PlateModel::new(&plate).map_err(|e| CliError::Usage(format!("{e}")))?;
+    model
+        .require_kirchhoff("`plot`")
+        .map_err(|e| CliError::Usage(format!("{e}")))?;
+    Ok(model)
 }
 
 pub(super) struct ModeGrid<'a> {
@@ -344,6 +348,9 @@ pub fn mode_picture(
         ModeChoice::Index(i) => {
             let model =
                 PlateModel::new(&config.plate).map_err(|e| CliError::Usage(format!("{e}")))?;
+            model
+                .require_kirchhoff("`plot`")
+                .map_err(|e| CliError::Usage(format!("{e}")))?;
             if i == 0 || i > model.n_modes() {
                 return Err(CliError::Usage(format!(
                     "--index {i}: the model has modes 1..{} (see `annular_plate modes`)",
