@@ -173,6 +173,9 @@ fn run() -> anyhow::Result<()> {
             let config = cli::load_config_with(&file, &overrides)?;
             let model = annular_plate::model::PlateModel::new(&config.plate)
                 .with_context(|| format!("{}", file.display()))?;
+            if let Some(text) = model.thickness_warning_text() {
+                eprintln!("warning: {text}");
+            }
             let stdout = std::io::stdout();
             cli::modes::write(&model, json, &mut stdout.lock())?;
             Ok(())

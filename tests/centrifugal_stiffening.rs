@@ -385,6 +385,7 @@ impl Shooting {
                     - (3.0 - nu) * k2 * v / r.powi(3);
                 [v, d1, d2, d3]
             }),
+            Boundary::SupportedSoft => unreachable!("Kirchhoff edges only"),
         }
     }
 

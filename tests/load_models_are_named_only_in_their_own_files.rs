@@ -44,7 +44,6 @@ const FAMILIES: &[(&str, &[&str])] = &[
 const ALSO_OWN: &[(&str, &str)] = &[
     ("pads", "src/dynamics/stability.rs"),
     ("pads", "src/dynamics/stability_pads.rs"),
-    ("pads", "src/dynamics/stability_map.rs"),
     ("pads", "src/dynamics/stability_shear.rs"),
 ];
 

@@ -362,11 +362,7 @@ fn kirchhoff_model(
 /// and Kirchhoff ⟨k, l⟩ for h/b = 0.2 / 2ⁿ, n = 0 … 5 (below, the
 /// difference, ~1e-6, nears the solvers' ~1e-8 floor).
 fn thin_ratios(inner: Boundary, outer: Boundary, k: u32, l: u32) -> (Vec<f64>, Vec<f64>) {
-    let edge = |b: Boundary| match b {
-        Boundary::Clamped => MindlinEdge::Clamped,
-        Boundary::Supported => MindlinEdge::Supported,
-        Boundary::Free => MindlinEdge::Free,
-    };
+    let edge = annular_plate::model::mindlin::mindlin_edge;
     let width = R_A - R_I;
     let mut cs = Vec::new();
     let mut mass_cs = Vec::new();

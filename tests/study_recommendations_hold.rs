@@ -38,6 +38,7 @@ fn edge(b: Boundary) -> Edge {
         Boundary::Free => Edge::Free,
         Boundary::Supported => Edge::Supported,
         Boundary::Clamped => Edge::Clamped,
+        Boundary::SupportedSoft => unreachable!("Kirchhoff edges only"),
     }
 }
 

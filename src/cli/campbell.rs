@@ -9,8 +9,10 @@ use std::io::Write;
 use std::path::PathBuf;
 
 /// Speeds when `--speeds` is not given.
-pub const DEFAULT_SPEED_COUNT: usize = 121;
+pub(crate) const DEFAULT_SPEED_COUNT: usize = 121;
 
+/// `annular_plate campbell`: the natural frequencies of the spinning plate
+/// over a range of speeds and the critical speeds.
 #[derive(clap::Args, Debug, Clone)]
 pub struct CampbellArgs {
     /// Params file (ROS 2 format); `plate.centrifugal_stiffening` decides whether the prestress stiffens the plate.
@@ -30,17 +32,17 @@ pub struct CampbellArgs {
 }
 
 /// The fastest speed of `--speeds`, rad/s (the declared maximum of `limits.max_speed`).
-pub const MAX_SPEED: f64 = 1e6;
+pub(crate) const MAX_SPEED: f64 = 1e6;
 
 /// The most `--speeds` with centrifugal stiffening (an eigensolution per speed):
 /// 100,000 took 55 s and 1.6 GB (brake-squeal scene), this many ~6 s.
-pub const MAX_STIFFENED_SPEEDS: usize = 10_000;
+pub(crate) const MAX_STIFFENED_SPEEDS: usize = 10_000;
 
 /// The most points of a `FROM:TO:N` range.
-pub const MAX_POINTS: usize = 100_000;
+pub(crate) const MAX_POINTS: usize = 100_000;
 
 /// `FROM:TO:N` → N speeds from FROM to TO inclusive (N = 1: FROM, which must equal TO).
-pub fn parse_range(option: &str, text: &str) -> CliResult<Vec<f64>> {
+pub(crate) fn parse_range(option: &str, text: &str) -> CliResult<Vec<f64>> {
     let bad = |why: &str| {
         CliError::Usage(format!(
             "{option} {text}: {why} (give FROM:TO:N, e.g. 0:6000:121)"
@@ -74,7 +76,8 @@ pub fn parse_range(option: &str, text: &str) -> CliResult<Vec<f64>> {
     Ok(linspace(from, to, n))
 }
 
-pub fn linspace(from: f64, to: f64, n: usize) -> Vec<f64> {
+/// `n` speeds from `from` to `to`, both included (exactly `to` last).
+pub(crate) fn linspace(from: f64, to: f64, n: usize) -> Vec<f64> {
     if n == 1 {
         return vec![from];
     }
@@ -89,12 +92,14 @@ pub fn linspace(from: f64, to: f64, n: usize) -> Vec<f64> {
         .collect()
 }
 
+/// Run `annular_plate campbell`.
 pub fn main(args: CampbellArgs) -> CliResult<()> {
     let config = super::load_config_with(&args.file, &args.overrides)?;
     if let Some(p) = &args.plot {
         super::plot::check_output_path(p)?;
     }
     let model = PlateModel::new(&config.plate)?;
+    model.require_kirchhoff("`campbell`")?;
     let speeds = match &args.speeds {
         Some(text) => {
             let speeds = parse_range("--speeds", text)?;

@@ -6,7 +6,7 @@
 //! shortest digit string that reads back to the same `f64`, the one closest to
 //! the exact value; they differ in layout, and when the exact value lies
 //! midway between two shortest candidates (the digit generators may round the tie to even, Rust
-//! up). [`push_exp`] and [`push_display`] take Żmij's digits and decimal
+//! up). [`write_exp`] and [`push_display`] take Żmij's digits and decimal
 //! exponent and lay them out as Rust does, and leave the values that can be
 //! such a tie (an exact expansion of at most 18 significant digits — never a
 //! simulation's amplitudes) to Rust's formatter, so `simulate` writes the
@@ -111,7 +111,7 @@ fn push_non_finite(out: &mut Vec<u8>, v: f64) -> bool {
 
 /// Bytes [`write_exp`] needs: a sign, 17 digits, the point, `e`, the
 /// exponent's sign and three digits (24), rounded up.
-pub const EXP_SLOT: usize = 32;
+pub(crate) const EXP_SLOT: usize = 32;
 
 /// Copy `src` (at most `dst.len()` bytes) to the start of `dst` by two
 /// overlapping fixed-size copies (no call to `memcpy` for a 20-byte value).
@@ -139,7 +139,7 @@ fn copy_short(dst: &mut [u8], src: &[u8]) {
 /// and exponent. (Żmij's text is scientific exactly when the shortest
 /// decimal's exponent is outside −5..=15; for an `f64` the shortest decimal of
 /// a value below the `f64` 1e-5 is below 1e-5, so comparing the `f64` decides.)
-pub fn write_exp(out: &mut [u8; EXP_SLOT], v: f64, digits: &mut zmij::Buffer) -> usize {
+pub(crate) fn write_exp(out: &mut [u8; EXP_SLOT], v: f64, digits: &mut zmij::Buffer) -> usize {
     if v.is_nan() {
         return write_exp_rare(out, v);
     }
@@ -204,16 +204,9 @@ fn write_exp_rare(out: &mut [u8], v: f64) -> usize {
     space - rest.len()
 }
 
-/// Append `v` as `format!("{v:e}")` would: [`write_exp`] on a `Vec`.
-pub fn push_exp(out: &mut Vec<u8>, v: f64, digits: &mut zmij::Buffer) {
-    let mut slot = [0u8; EXP_SLOT];
-    let n = write_exp(&mut slot, v, digits);
-    out.extend_from_slice(&slot[..n]);
-}
-
 /// Append `v` as `format!("{v}")` would: no exponent, no trailing `.0`
 /// (`0`, `-0`, `11.11111111111111`, `0.0001`, `1000000000000000000000`).
-pub fn push_display(out: &mut Vec<u8>, v: f64, digits: &mut zmij::Buffer) {
+pub(crate) fn push_display(out: &mut Vec<u8>, v: f64, digits: &mut zmij::Buffer) {
     if push_non_finite(out, v) {
         return;
     }
@@ -257,6 +250,13 @@ pub fn push_display(out: &mut Vec<u8>, v: f64, digits: &mut zmij::Buffer) {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Append `v` as `format!("{v:e}")` would: [`write_exp`] on a `Vec`.
+    fn push_exp(out: &mut Vec<u8>, v: f64, digits: &mut zmij::Buffer) {
+        let mut slot = [0u8; EXP_SLOT];
+        let n = write_exp(&mut slot, v, digits);
+        out.extend_from_slice(&slot[..n]);
+    }
 
     fn check(v: f64, digits: &mut zmij::Buffer, out: &mut Vec<u8>) {
         out.clear();

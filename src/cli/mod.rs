@@ -2,7 +2,7 @@
 
 pub mod campbell;
 pub mod error;
-pub mod float_text;
+pub(crate) mod float_text;
 pub mod modes;
 pub mod plot;
 pub mod record;
@@ -15,7 +15,7 @@ use crate::config::{Config, Params};
 use std::path::Path;
 
 /// Node name whose entry the CLI reads from a params file (and `/**`).
-pub const DEFAULT_NODE_NAME: &str = "annular_plate";
+pub(crate) const DEFAULT_NODE_NAME: &str = "annular_plate";
 
 /// Read and validate a params file, printing the geometry notes of paper 4.2 to stderr.
 pub fn load_config(path: &Path) -> CliResult<Config> {
@@ -29,7 +29,7 @@ pub fn load_config(path: &Path) -> CliResult<Config> {
 
 /// The parameters of a params file with `-p NAME:=VALUE` overrides (as after
 /// `--ros-args`) applied; each override names itself in an error.
-pub fn params_with_overrides(path: &Path, overrides: &[String]) -> CliResult<Params> {
+pub(crate) fn params_with_overrides(path: &Path, overrides: &[String]) -> CliResult<Params> {
     let mut params = Params::from_file(path, DEFAULT_NODE_NAME)
         .map_err(|e| CliError::Usage(format!("{}: {e}", path.display())))?;
     for o in overrides {

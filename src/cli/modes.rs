@@ -1,5 +1,6 @@
 //! `annular_plate modes FILE [--json]`: the mode table.
 
+use crate::config::PlateTheory;
 use crate::model::PlateModel;
 use serde::Serialize;
 use std::io::Write;
@@ -25,6 +26,12 @@ struct JsonRadialResolution {
 
 #[derive(Serialize)]
 struct JsonModes {
+    /// `mindlin` (absent for the default `kirchhoff`, whose output is unchanged).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    theory: Option<&'static str>,
+    /// κ under Mindlin theory.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    shear_correction: Option<f64>,
     modes: Vec<JsonMode>,
     skipped_rigid_body_modes: Vec<(u32, u32)>,
     /// `"auto"` or the fixed count, as configured.
@@ -36,7 +43,10 @@ struct JsonModes {
 /// Write the table (or JSON) for `model` to `out`.
 pub fn write(model: &PlateModel, json: bool, out: &mut impl Write) -> std::io::Result<()> {
     if json {
+        let mindlin = model.theory() == PlateTheory::Mindlin;
         let doc = JsonModes {
+            theory: mindlin.then_some("mindlin"),
+            shear_correction: mindlin.then_some(model.plate().shear_correction),
             modes: model
                 .modes()
                 .iter()
@@ -67,6 +77,13 @@ pub fn write(model: &PlateModel, json: bool, out: &mut impl Write) -> std::io::R
         return Ok(());
     }
     let p = model.plate();
+    if model.theory() == PlateTheory::Mindlin {
+        write!(
+            out,
+            "Mindlin (shear correction κ = {}, rotary inertia in the modal mass) ",
+            p.shear_correction
+        )?;
+    }
     writeln!(
         out,
         "annular plate r_i = {} m, r_a = {} m, h = {} m, {}–{}, radial B-splines {}, D = {:.6e} N·m",
@@ -108,6 +125,12 @@ fn splines_text(model: &PlateModel) -> String {
     let p = model.plate();
     if let Some(n) = p.radial_splines.fixed() {
         return n.to_string();
+    }
+    if model.theory() == PlateTheory::Mindlin {
+        return format!(
+            "auto ({} per field)",
+            crate::model::mindlin::DEFAULT_SPLINES
+        );
     }
     let counts = model.radial_resolution().iter().map(|r| r.splines);
     let (lo, hi) = (counts.clone().min().unwrap_or(0), counts.max().unwrap_or(0));

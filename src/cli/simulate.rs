@@ -84,7 +84,7 @@ pub fn column_unit(name: &str) -> Option<&'static str> {
 /// allocation per row. The buffer is kept at least [`EXP_SLOT`] bytes past
 /// the text, so each value is written in place at a cursor (no capacity check
 /// or `memcpy` call per value).
-pub struct RowWriter {
+pub(crate) struct RowWriter {
     line: Vec<u8>,
     len: usize,
     text: Vec<u8>,
@@ -174,12 +174,12 @@ impl RowWriter {
 /// speed, friction coefficient and clamp forces (`dynamics::stability`) — the
 /// squeal — at the space-fixed nodes (|Im λ|/2π of the ALE system). `None`
 /// for scenes without pads.
-pub fn relevant_frequency(sim: &Simulation) -> Option<f64> {
+pub(crate) fn relevant_frequency(sim: &Simulation) -> Option<f64> {
     stability::squeal_frequency(sim)
 }
 
 /// Refuses `--output-rate` `rate` Hz when its Nyquist frequency rate/2 is
-/// below [`relevant_frequency`] (the rows would alias the squeal), naming
+/// below `relevant_frequency` (the rows would alias the squeal), naming
 /// both, unless `allow_aliasing` (`--allow-aliasing`).
 pub fn check_output_rate(sim: &Simulation, rate: f64, allow_aliasing: bool) -> CliResult<()> {
     match relevant_frequency(sim) {

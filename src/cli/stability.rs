@@ -16,9 +16,12 @@ use std::path::{Path, PathBuf};
 /// The largest friction coefficient (`pads.friction_coefficient`'s rule).
 const MAX_MU: f64 = 2.0;
 
+/// `annular_plate stability`: the linear stability map over speed and
+/// friction coefficient μ (or `stability merge` of its shards).
 #[derive(clap::Args, Debug, Clone)]
 #[command(args_conflicts_with_subcommands = true, subcommand_negates_reqs = true)]
 pub struct StabilityArgs {
+    /// `stability merge SHARDS…` instead of a map.
     #[command(subcommand)]
     pub merge: Option<MergeCommand>,
     /// Params file (ROS 2 format) of a scene with pads.
@@ -61,17 +64,25 @@ pub struct StabilityArgs {
     pub overrides: Vec<String>,
 }
 
+/// The subcommand of `stability`.
 #[derive(clap::Subcommand, Debug, Clone)]
 pub enum MergeCommand {
     /// Join the JSON of all shards of one map into the single run's JSON.
-    Merge { shards: Vec<PathBuf> },
+    Merge {
+        /// The shards' JSON files, all of one map.
+        shards: Vec<PathBuf>,
+    },
 }
 
 /// The least stable mode of a grid point.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 pub struct UnstableMode {
+    /// Nodal diameters k of the plate mode with the largest amplitude in
+    /// its eigenvector.
     pub k: u32,
+    /// Nodal circles l.
     pub l: u32,
+    /// Its frequency |Im λ| / 2π in the space-fixed frame, Hz.
     pub frequency_hz: f64,
 }
 
@@ -89,11 +100,15 @@ pub const MAX_SHARD_BYTES: u64 = 256 << 20;
 /// Which part of the map a document holds, and the whole grid it is part of.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 pub struct Shard {
+    /// Which shard (from 0).
     pub index: usize,
+    /// Shards of the whole map.
     pub count: usize,
+    /// Speeds of the whole map.
     pub speeds_total: usize,
     /// `--speeds FROM:TO:N` of the whole map (N = `speeds_total`).
     pub speeds_from: f64,
+    /// `TO` of `--speeds FROM:TO:N` of the whole map, rad/s.
     pub speeds_to: f64,
 }
 
@@ -103,11 +118,18 @@ pub struct StabilityMap {
     /// FNV-1a 64 of the effective parameters (every declared key's value or
     /// default) the map was computed with: shards of one map carry the same.
     pub params_digest: String,
+    /// The speeds, rad/s.
     pub speeds_rad_s: Vec<f64>,
+    /// The friction coefficients μ.
     pub mu: Vec<f64>,
+    /// Largest real part of the eigenvalues at speed s and μ m, 1/s (> 0: unstable).
     pub growth_rate: Vec<Vec<f64>>,
+    /// Per speed, the smallest μ of the range where max Re λ > 0, bisected
+    /// between grid points (None: stable throughout).
     pub threshold_mu: Vec<Option<f64>>,
+    /// The least stable mode at speed s and μ m.
     pub mode: Vec<Vec<UnstableMode>>,
+    /// The part of the map this document holds (None: all of it).
     #[serde(skip_serializing_if = "Option::is_none", default)]
     pub shard: Option<Shard>,
 }
@@ -201,6 +223,7 @@ fn parse_shard(text: &str) -> CliResult<(usize, usize)> {
     Ok((i, n))
 }
 
+/// Run `annular_plate stability`.
 pub fn main(args: StabilityArgs) -> CliResult<()> {
     if let Some(MergeCommand::Merge { shards }) = args.merge {
         let merged = merge(&shards)?;

@@ -9,6 +9,8 @@ use std::fmt::Write as _;
 use std::io::{IsTerminal, Write};
 use std::path::PathBuf;
 
+/// `annular_plate study`: the scene's natural frequencies, critical speeds
+/// and recommendations.
 #[derive(clap::Args, Debug, Clone)]
 pub struct StudyArgs {
     /// Params file (ROS 2 format); omitted: the built-in lathe disc of the paper's section 5.1.
@@ -68,6 +70,7 @@ pub fn plan(args: &StudyArgs) -> CliResult<StudyPlan> {
     Ok(plan)
 }
 
+/// Run `annular_plate study`.
 pub fn main(args: StudyArgs) -> CliResult<()> {
     let plan = plan(&args)?;
     let (config, source) = match &args.file {
@@ -124,7 +127,7 @@ pub fn main(args: StudyArgs) -> CliResult<()> {
 }
 
 /// A duration, s, in readable units.
-pub fn fmt_time(s: f64) -> String {
+pub(crate) fn fmt_time(s: f64) -> String {
     if !s.is_finite() {
         return "—".into();
     }
@@ -166,7 +169,7 @@ fn fmt_rec<S>(
 }
 
 /// A mode set as the recommendations name it.
-pub fn fmt_mode_set(k_max: u32, l_max: u32, residual_flexibility: bool) -> String {
+pub(crate) fn fmt_mode_set(k_max: u32, l_max: u32, residual_flexibility: bool) -> String {
     format!(
         "k ≤ {k_max}, l ≤ {l_max}{}",
         if residual_flexibility {

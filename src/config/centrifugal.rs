@@ -19,8 +19,10 @@ pub enum InPlaneInner {
 }
 
 impl InPlaneInner {
+    /// The parameter values, as the reference lists them.
     pub const NAMES: &'static [&'static str] = &["auto", "fixed", "free"];
 
+    /// The parameter value (`auto`, `fixed`, `free`).
     pub fn name(self) -> &'static str {
         match self {
             InPlaneInner::Fixed => "fixed",
@@ -29,6 +31,7 @@ impl InPlaneInner {
         }
     }
 
+    /// From the parameter value; `None` for any other text.
     pub fn from_name(s: &str) -> Option<Self> {
         match s {
             "fixed" => Some(InPlaneInner::Fixed),
@@ -53,6 +56,7 @@ impl InPlaneInner {
 pub struct CentrifugalConfig {
     /// The geometric stiffness of the spinning prestress, ∝ Ω², acts on the plate.
     pub stiffening: bool,
+    /// The in-plane condition at r_i for the prestress (`plate.in_plane_inner`).
     pub in_plane_inner: InPlaneInner,
 }
 

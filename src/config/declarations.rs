@@ -19,15 +19,15 @@ use super::{Config, ConfigError, ParamValue, Params};
 /// makes the model's validated section ([`super::model_sections`]).
 #[derive(Debug, Clone, Copy)]
 pub struct ModelParameters {
-    pub sections: &'static [Section],
-    pub read: ReadModel,
+    pub(crate) sections: &'static [Section],
+    pub(crate) read: ReadModel,
 }
 
 /// The declarations of every key: the configuration's sections and the load
 /// models' (in the registry's order, between `limits` and `initial`).
 #[derive(Debug, Clone, Copy)]
 pub struct Parameters {
-    pub models: &'static [&'static ModelParameters],
+    pub(crate) models: &'static [&'static ModelParameters],
 }
 
 impl Parameters {

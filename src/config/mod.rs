@@ -9,7 +9,7 @@
 mod centrifugal;
 mod check;
 mod declarations;
-pub mod defaults;
+pub(crate) mod defaults;
 mod error;
 pub mod model_sections;
 mod params_file;
@@ -25,13 +25,12 @@ pub use centrifugal::{CentrifugalConfig, InPlaneInner};
 pub(crate) use check::{declared_value, typed, Declared};
 pub use declarations::{ModelParameters, Parameters};
 pub use error::{ConfigError, Degeneracy};
-pub use model_sections::{LoadModelSection, LoadModelSections, SectionContext, SectionData};
+pub(crate) use model_sections::SectionContext;
+pub use model_sections::{LoadModelSection, LoadModelSections, SectionData};
 pub use params_file::{ParamValue, Params};
-pub use raw::Reader;
-pub use simulation::{
-    Coordinates, IntegratorKind, SimulationConfig, DEFAULT_MIDPOINT_STEP_LIMIT,
-    DEFAULT_RK4_STEP_LIMIT, MAX_MIDPOINT_STEP_LIMIT, MAX_RK4_STEP_LIMIT, MIN_CONTACT_TOLERANCE,
-};
+pub(crate) use raw::Reader;
+pub use simulation::{Coordinates, IntegratorKind, SimulationConfig};
+pub(crate) use simulation::{MAX_MIDPOINT_STEP_LIMIT, MAX_RK4_STEP_LIMIT, MIN_CONTACT_TOLERANCE};
 
 use serde::Serialize;
 
@@ -42,40 +41,81 @@ use serde::Serialize;
 pub enum Boundary {
     /// No essential condition; moment and Kirchhoff shear vanish naturally.
     Free,
-    /// Simply supported: w = 0; the radial moment vanishes naturally.
+    /// Simply supported: w = 0; the radial moment vanishes naturally. Under
+    /// Mindlin theory the hard support w = ψ_θ = 0 (docs/mindlin.md).
     Supported,
-    /// w = 0 and ∂w/∂r = 0.
+    /// w = 0 and ∂w/∂r = 0 (Mindlin: w = ψ_r = ψ_θ = 0).
     Clamped,
+    /// Mindlin theory only: the soft support w = 0, M_r = M_rθ = 0 (the
+    /// normal may twist about it); refused under Kirchhoff theory.
+    SupportedSoft,
 }
 
 impl Boundary {
-    pub const ALL: [Boundary; 3] = [Boundary::Free, Boundary::Supported, Boundary::Clamped];
+    /// Every edge condition.
+    pub const ALL: [Boundary; 4] = [
+        Boundary::Free,
+        Boundary::Supported,
+        Boundary::Clamped,
+        Boundary::SupportedSoft,
+    ];
+    /// The edge conditions of Kirchhoff theory (all but `supported_soft`).
+    pub const KIRCHHOFF: [Boundary; 3] = [Boundary::Free, Boundary::Supported, Boundary::Clamped];
 
+    /// The parameter value (`free`, `supported`, `clamped`, `supported_soft`).
     pub fn name(self) -> &'static str {
         match self {
             Boundary::Free => "free",
             Boundary::Supported => "supported",
             Boundary::Clamped => "clamped",
+            Boundary::SupportedSoft => "supported_soft",
         }
     }
 
+    /// From the parameter value; `None` for any other text.
     pub fn from_name(s: &str) -> Option<Self> {
-        match s {
-            "free" => Some(Boundary::Free),
-            "supported" => Some(Boundary::Supported),
-            "clamped" => Some(Boundary::Clamped),
-            _ => None,
-        }
+        Boundary::ALL.into_iter().find(|b| b.name() == s)
     }
 
     /// B-splines the essential conditions of this edge remove from the radial
-    /// basis: free 0, supported 1 (w = 0), clamped 2 (w = ∂w/∂r = 0).
+    /// basis of w: free 0, supported 1 (w = 0), clamped 2 (w = ∂w/∂r = 0);
+    /// `supported_soft` (Mindlin only) 1.
     pub fn essential_conditions(self) -> usize {
         match self {
             Boundary::Free => 0,
-            Boundary::Supported => 1,
+            Boundary::Supported | Boundary::SupportedSoft => 1,
             Boundary::Clamped => 2,
         }
+    }
+}
+
+/// The plate theory of the modes (`plate.theory`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum PlateTheory {
+    /// Thin plate (the paper's model): rotations −∇w, no rotary inertia.
+    Kirchhoff,
+    /// First-order shear deformation with rotary inertia (docs/mindlin.md).
+    Mindlin,
+}
+
+impl PlateTheory {
+    /// The names `plate.theory` takes.
+    pub const NAMES: &'static [&'static str] = &["kirchhoff", "mindlin"];
+
+    /// `kirchhoff` or `mindlin`.
+    pub fn name(self) -> &'static str {
+        match self {
+            PlateTheory::Kirchhoff => "kirchhoff",
+            PlateTheory::Mindlin => "mindlin",
+        }
+    }
+
+    /// The theory named `s`, if any.
+    pub fn from_name(s: &str) -> Option<Self> {
+        [PlateTheory::Kirchhoff, PlateTheory::Mindlin]
+            .into_iter()
+            .find(|t| t.name() == s)
     }
 }
 
@@ -94,7 +134,9 @@ pub struct PlateConfig {
     pub youngs_modulus: f64,
     /// ν (given directly, or from the shear modulus as ν = E/2G − 1).
     pub poisson_ratio: f64,
+    /// Boundary condition at r_i (`plate.inner_boundary`).
     pub inner_boundary: Boundary,
+    /// Boundary condition at r_a (`plate.outer_boundary`).
     pub outer_boundary: Boundary,
     /// Nodal diameters k, as given (distinct, not sorted).
     pub nodal_diameters: Vec<u32>,
@@ -112,6 +154,11 @@ pub struct PlateConfig {
     /// Add the truncated modes' static deflection at the node frames
     /// (`plate.residual_flexibility`, docs/residual_flexibility.md).
     pub residual_flexibility: bool,
+    /// Kirchhoff or Mindlin modes (`plate.theory`).
+    pub theory: PlateTheory,
+    /// Mindlin's shear correction κ (`plate.shear_correction`; no effect
+    /// under Kirchhoff theory).
+    pub shear_correction: f64,
 }
 
 /// Bending rigidity D = E h³ / (12 (1 − ν²)), eq. (2).
@@ -144,6 +191,9 @@ impl PlateConfig {
             radial_splines: RadialSplines::from_declared_default(),
             frequency_tolerance: DEFAULT_FREQUENCY_TOLERANCE,
             residual_flexibility: const { default_bool("plate.residual_flexibility") },
+            theory: PlateTheory::from_name(default_str("plate.theory"))
+                .expect("the declared default is a theory"),
+            shear_correction: const { default_f64("plate.shear_correction") },
         }
     }
 
@@ -226,10 +276,11 @@ impl PlateConfig {
 
 /// The count the
 /// `auto` search starts from for the first k (`plate.radial_splines`).
-pub const DEFAULT_RADIAL_SPLINES: usize = 32;
+pub(crate) const DEFAULT_RADIAL_SPLINES: usize = 32;
 
 /// Default of `plate.frequency_tolerance` (its declaration).
-pub const DEFAULT_FREQUENCY_TOLERANCE: f64 = defaults::default_f64("plate.frequency_tolerance");
+pub(crate) const DEFAULT_FREQUENCY_TOLERANCE: f64 =
+    defaults::default_f64("plate.frequency_tolerance");
 
 /// `plate.radial_splines`: `auto` (the default) or a fixed count.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -292,7 +343,9 @@ impl std::fmt::Display for RadialSplines {
 /// radial ξ_r ∈ [0, 1] from r_i to r_a, angular ξ_φ ∈ [0, 1] for 0..2π.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct NodePosition {
+    /// ξ_r ∈ [0, 1]: r = r_i + ξ_r (r_a − r_i).
     pub radial: f64,
+    /// ξ_φ ∈ [0, 1]: φ = 2π ξ_φ.
     pub angular: f64,
 }
 
@@ -312,6 +365,7 @@ pub enum Surface {
 }
 
 impl Surface {
+    /// The parameter value (`top`, `bottom`, `mid`).
     pub fn name(self) -> &'static str {
         match self {
             Surface::Top => "top",
@@ -357,14 +411,18 @@ impl NodesConfig {
 /// A wrench: force (N) and moment (N·m), in the node frame.
 #[derive(Debug, Clone, Copy, PartialEq, Default, Serialize)]
 pub struct WrenchConfig {
+    /// Force (f_x, f_y, f_z), N, in the node frame.
     pub force: [f64; 3],
+    /// Moment (m_x, m_y, m_z), N m, in the node frame.
     pub moment: [f64; 3],
 }
 
 /// Constant wrenches held from t = 0 (`loads.*`), one per node (zero where not given).
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct LoadsConfig {
+    /// One wrench per ALE node (`loads.ale_wrench`).
     pub ale: Vec<WrenchConfig>,
+    /// One wrench per Lagrangian node (`loads.lagrange_wrench`).
     pub lagrange: Vec<WrenchConfig>,
     /// Wrenches turn with the deformed surface (follower loads, paper 5.3).
     pub follower: bool,
@@ -462,21 +520,30 @@ impl Default for LimitsConfig {
 /// in `modes` order; empty: at rest.
 #[derive(Debug, Clone, PartialEq, Default, Serialize)]
 pub struct InitialConfig {
+    /// Lagrangian modal amplitudes at t = 0, m (`initial.q`).
     pub q: Vec<f64>,
+    /// Their rates at t = 0, m/s (`initial.q_dot`).
     pub q_dot: Vec<f64>,
 }
 
 /// The whole validated configuration.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct Config {
+    /// The plate (`plate.*`).
     pub plate: PlateConfig,
+    /// The node frames (`nodes.*`).
     pub nodes: NodesConfig,
+    /// The held wrenches (`loads.*`).
     pub loads: LoadsConfig,
+    /// The rotational joint at the axis (`joint.*`).
     pub joint: JointConfig,
+    /// The motion of the reference frame (`reference.*`).
     pub reference: ReferenceConfig,
     /// m/s², in the world frame (the reference frame before its tilt).
     pub gravity: [f64; 3],
+    /// Rate, integrator and coordinates (`simulation.*`).
     pub simulation: SimulationConfig,
+    /// The plausibility limits of inputs and state (`limits.*`).
     pub limits: LimitsConfig,
     /// The load models' validated sections (each declared and read in its
     /// model's own file); a model is on when its section is here.

@@ -1,5 +1,5 @@
 //! The load models' sections as the configuration holds them: what a
-//! model's reader sees ([`SectionContext`]), what it makes (its validated
+//! model's reader sees (`SectionContext`), what it makes (its validated
 //! section, any type implementing [`LoadModelSection`], held type-erased in
 //! [`LoadModelSections`]) and the rules several sections share (node
 //! references, signs, maxima, keys without their enabling key).
@@ -10,7 +10,7 @@
 //! registry's order, after `plate`, `limits`, `nodes` and `simulation`.
 
 use super::raw::Reader;
-pub use super::raw::{positive, read_choice};
+pub(crate) use super::raw::{positive, read_choice};
 use super::{ConfigError, LimitsConfig, NodesConfig, PlateConfig, SimulationConfig};
 use serde::Serialize;
 use std::any::Any;
@@ -18,16 +18,16 @@ use std::fmt::Debug;
 
 /// A model's reader: its validated section, `None` when its enabling key is
 /// not given (then no other key of its sections may be).
-pub type ReadModel =
+pub(crate) type ReadModel =
     fn(&Reader, &mut SectionContext) -> Result<Option<Box<dyn SectionData>>, ConfigError>;
 
 /// What a model's reader sees of the sections read before it.
-pub struct SectionContext<'a> {
-    pub plate: &'a PlateConfig,
-    pub limits: &'a LimitsConfig,
-    pub simulation: &'a SimulationConfig,
+pub(crate) struct SectionContext<'a> {
+    pub(crate) plate: &'a PlateConfig,
+    pub(crate) limits: &'a LimitsConfig,
+    pub(crate) simulation: &'a SimulationConfig,
     /// The node frames; a reader may append space-fixed nodes (the calipers' contact points).
-    pub nodes: &'a mut NodesConfig,
+    pub(crate) nodes: &'a mut NodesConfig,
 }
 
 /// A load model's validated section (defined in the model's own file).
@@ -45,11 +45,17 @@ pub trait LoadModelSection:
 
 /// A validated section, type-erased (implemented for every [`LoadModelSection`]).
 pub trait SectionData: Any + Debug + Send + Sync {
+    /// The section's name ([`LoadModelSection::SECTION`]).
     fn name(&self) -> &'static str;
+    /// A boxed copy.
     fn clone_box(&self) -> Box<dyn SectionData>;
+    /// Whether `other` is a section of the same type with equal values.
     fn eq_box(&self, other: &dyn SectionData) -> bool;
+    /// The section's values as JSON (the effective-parameter dump).
     fn to_json(&self) -> serde_json::Value;
+    /// For downcasting to the model's own section type.
     fn as_any(&self) -> &dyn Any;
+    /// For downcasting to the model's own section type, to change it.
     fn as_any_mut(&mut self) -> &mut dyn Any;
 }
 
@@ -153,7 +159,7 @@ impl Serialize for LoadModelSections {
 }
 
 /// A load model whose enabling key is empty must not be given other keys of `section`.
-pub fn no_other_keys(
+pub(crate) fn no_other_keys(
     r: &Reader,
     section: &str,
     enabling_key: &'static str,
@@ -168,8 +174,41 @@ pub fn no_other_keys(
     }
 }
 
+/// A section of point elements read by [`read_ale_node_list`].
+pub(crate) struct AleNodeList<const N: usize> {
+    /// The ALE nodes, 0-based.
+    pub(crate) nodes: Vec<usize>,
+    /// The coefficients, in the order of their keys.
+    pub(crate) values: [f64; N],
+}
+
+/// The section of point elements under ALE nodes (`springs.*`,
+/// `dampers.*`): `enabling_key` lists the nodes (from 1, existing and
+/// distinct), each key of `coefficients` a non-negative coefficient, read in
+/// that order. `None` when the list is empty (then no other key of `section`
+/// may be given).
+pub(crate) fn read_ale_node_list<const N: usize>(
+    r: &Reader,
+    ctx: &SectionContext,
+    section: &str,
+    enabling_key: &'static str,
+    coefficients: [&str; N],
+) -> Result<Option<AleNodeList<N>>, ConfigError> {
+    let numbers = r.i64_array(enabling_key)?;
+    if numbers.is_empty() {
+        no_other_keys(r, section, enabling_key)?;
+        return Ok(None);
+    }
+    let nodes = node_refs(enabling_key, &numbers, "ale", ctx.nodes.ale.len())?;
+    let mut values = [0.0; N];
+    for (value, key) in values.iter_mut().zip(coefficients) {
+        *value = non_negative(key, r.f64(key)?)?;
+    }
+    Ok(Some(AleNodeList { nodes, values }))
+}
+
 /// Node numbers (from 1) of existing, distinct nodes of one kind → 0-based indices.
-pub fn node_refs(
+pub(crate) fn node_refs(
     key: &str,
     values: &[i64],
     kind: &'static str,
@@ -203,7 +242,7 @@ pub fn node_refs(
 }
 
 /// `x` ≥ 0, else an error naming `key`.
-pub fn non_negative(key: &str, x: f64) -> Result<f64, ConfigError> {
+pub(crate) fn non_negative(key: &str, x: f64) -> Result<f64, ConfigError> {
     if x < 0.0 {
         Err(ConfigError::Negative {
             key: key.to_string(),
@@ -215,7 +254,7 @@ pub fn non_negative(key: &str, x: f64) -> Result<f64, ConfigError> {
 }
 
 /// |x| ≤ `max`, else an error naming `key`.
-pub fn at_most(key: &str, x: f64, max: f64) -> Result<f64, ConfigError> {
+pub(crate) fn at_most(key: &str, x: f64, max: f64) -> Result<f64, ConfigError> {
     if x.abs() > max {
         Err(ConfigError::AboveMaximum {
             key: key.to_string(),

@@ -22,13 +22,21 @@ use super::{ConfigError, Parameters};
 /// validation accepts an empty array of any type wherever an array is expected.
 #[derive(Debug, Clone, PartialEq)]
 pub enum ParamValue {
+    /// `bool`.
     Bool(bool),
+    /// `integer`.
     Integer(i64),
+    /// `double`.
     Double(f64),
+    /// `string`.
     String(String),
+    /// `bool[]`.
     BoolArray(Vec<bool>),
+    /// `integer[]`.
     IntegerArray(Vec<i64>),
+    /// `double[]`.
     DoubleArray(Vec<f64>),
+    /// `string[]`.
     StringArray(Vec<String>),
 }
 
@@ -275,10 +283,12 @@ impl Params {
         self.values.iter().map(|(k, v)| (k.as_str(), v))
     }
 
+    /// The number of parameters.
     pub fn len(&self) -> usize {
         self.values.len()
     }
 
+    /// Whether there are none.
     pub fn is_empty(&self) -> bool {
         self.values.is_empty()
     }

@@ -6,7 +6,7 @@
 
 use super::error::Degeneracy;
 use super::raw::{positive, Reader};
-use super::{Boundary, ConfigError, PlateConfig, RadialSplines};
+use super::{Boundary, ConfigError, PlateConfig, PlateTheory, RadialSplines};
 
 /// Largest nodal-diameter number k accepted.
 const MAX_NODAL_DIAMETER: i64 = 200;
@@ -55,8 +55,10 @@ pub(super) fn read_plate(r: &Reader) -> Result<PlateConfig, ConfigError> {
     let youngs_modulus = r.positive("plate.youngs_modulus")?;
     let poisson_ratio = read_poisson_ratio(r, youngs_modulus)?;
 
-    let inner_boundary = read_boundary(r, "plate.inner_boundary")?;
-    let outer_boundary = read_boundary(r, "plate.outer_boundary")?;
+    let theory = read_theory(r)?;
+    let shear_correction = read_shear_correction(r)?;
+    let inner_boundary = read_boundary(r, "plate.inner_boundary", theory)?;
+    let outer_boundary = read_boundary(r, "plate.outer_boundary", theory)?;
 
     let nodal_diameters = read_index_list(r, "plate.nodal_diameters", MAX_NODAL_DIAMETER)?;
     let nodal_circles = read_index_list(r, "plate.nodal_circles", MAX_NODAL_CIRCLE)?;
@@ -86,6 +88,8 @@ pub(super) fn read_plate(r: &Reader) -> Result<PlateConfig, ConfigError> {
         radial_splines,
         frequency_tolerance,
         residual_flexibility: r.bool("plate.residual_flexibility")?,
+        theory,
+        shear_correction,
     };
 
     check_derived(&plate)?;
@@ -241,12 +245,46 @@ fn read_poisson_ratio(r: &Reader, youngs_modulus: f64) -> Result<f64, ConfigErro
     Ok(nu)
 }
 
-fn read_boundary(r: &Reader, key: &str) -> Result<Boundary, ConfigError> {
+/// An edge condition; `supported_soft` only under Mindlin theory.
+fn read_boundary(
+    r: &Reader,
+    key: &'static str,
+    theory: PlateTheory,
+) -> Result<Boundary, ConfigError> {
     let name = r.string(key)?;
-    Boundary::from_name(name.trim()).ok_or(ConfigError::UnknownBoundary {
+    let boundary = Boundary::from_name(name.trim()).ok_or(ConfigError::UnknownBoundary {
         key: key.to_string(),
         value: name,
+    })?;
+    if boundary == Boundary::SupportedSoft && theory == PlateTheory::Kirchhoff {
+        return Err(ConfigError::SoftSupportNeedsMindlin { key });
+    }
+    Ok(boundary)
+}
+
+/// `plate.theory`: `kirchhoff` or `mindlin`.
+fn read_theory(r: &Reader) -> Result<PlateTheory, ConfigError> {
+    const KEY: &str = "plate.theory";
+    let name = r.string(KEY)?;
+    PlateTheory::from_name(name.trim()).ok_or(ConfigError::UnknownChoice {
+        key: KEY.into(),
+        value: name,
+        allowed: PlateTheory::NAMES,
     })
+}
+
+/// `plate.shear_correction`: κ in (0, 1].
+fn read_shear_correction(r: &Reader) -> Result<f64, ConfigError> {
+    const KEY: &str = "plate.shear_correction";
+    let kappa = r.positive(KEY)?;
+    if kappa > 1.0 {
+        return Err(ConfigError::AboveMaximum {
+            key: KEY.into(),
+            value: kappa,
+            max: 1.0,
+        });
+    }
+    Ok(kappa)
 }
 
 /// A non-empty list of distinct integers in 0..=max.

@@ -15,14 +15,14 @@ use super::{ConfigError, Parameters, Params};
 /// Reads keys of one parameter set (the configuration's readers and the
 /// load models' section readers). `known` is the table of keys the
 /// validator accepts; in debug builds reading a key outside it is a bug.
-pub struct Reader<'a> {
+pub(crate) struct Reader<'a> {
     params: &'a Params,
     decl: &'a Parameters,
     known: &'a [&'a str],
 }
 
 impl<'a> Reader<'a> {
-    pub fn new(params: &'a Params, decl: &'a Parameters, known: &'a [&'a str]) -> Self {
+    pub(crate) fn new(params: &'a Params, decl: &'a Parameters, known: &'a [&'a str]) -> Self {
         Reader {
             params,
             decl,
@@ -31,7 +31,7 @@ impl<'a> Reader<'a> {
     }
 
     /// The declarations the values are read against.
-    pub fn parameters(&self) -> &Parameters {
+    pub(crate) fn parameters(&self) -> &Parameters {
         self.decl
     }
 
@@ -55,18 +55,18 @@ impl<'a> Reader<'a> {
     }
 
     /// Whether the parameter set gives `key` at all.
-    pub fn has(&self, key: &str) -> bool {
+    pub(crate) fn has(&self, key: &str) -> bool {
         self.debug_known(key);
         self.params.get(key).is_some()
     }
 
     /// A double key's value or its declared default.
-    pub fn f64(&self, key: &str) -> Result<f64, ConfigError> {
+    pub(crate) fn f64(&self, key: &str) -> Result<f64, ConfigError> {
         self.value(key)
     }
 
     /// A double key's value when given (its default not applied).
-    pub fn f64_opt(&self, key: &str) -> Result<Option<f64>, ConfigError> {
+    pub(crate) fn f64_opt(&self, key: &str) -> Result<Option<f64>, ConfigError> {
         self.debug_known(key);
         given_value(self.decl, self.params, key)?
             .map(|v| typed(self.decl, key, &v))
@@ -74,18 +74,18 @@ impl<'a> Reader<'a> {
     }
 
     /// A double > 0 (value or declared default).
-    pub fn positive(&self, key: &str) -> Result<f64, ConfigError> {
+    pub(crate) fn positive(&self, key: &str) -> Result<f64, ConfigError> {
         positive(key, self.f64(key)?)
     }
 
     /// An integer key's value or its declared default.
-    pub fn i64(&self, key: &str) -> Result<i64, ConfigError> {
+    pub(crate) fn i64(&self, key: &str) -> Result<i64, ConfigError> {
         self.value(key)
     }
 
     /// An integer key's value (or its declared default) as a `u32`; its
     /// declared range was checked by `config::check`.
-    pub fn u32(&self, key: &str) -> Result<u32, ConfigError> {
+    pub(crate) fn u32(&self, key: &str) -> Result<u32, ConfigError> {
         let i = self.i64(key)?;
         u32::try_from(i).map_err(|_| ConfigError::AboveMaximum {
             key: key.to_string(),
@@ -94,25 +94,25 @@ impl<'a> Reader<'a> {
         })
     }
 
-    pub fn bool(&self, key: &str) -> Result<bool, ConfigError> {
+    pub(crate) fn bool(&self, key: &str) -> Result<bool, ConfigError> {
         self.value(key)
     }
 
-    pub fn string(&self, key: &str) -> Result<String, ConfigError> {
+    pub(crate) fn string(&self, key: &str) -> Result<String, ConfigError> {
         self.value(key)
     }
 
     /// A list of strings (empty when neither given nor declared).
-    pub fn string_array(&self, key: &str) -> Result<Vec<String>, ConfigError> {
+    pub(crate) fn string_array(&self, key: &str) -> Result<Vec<String>, ConfigError> {
         self.array(key)
     }
 
     /// A list of doubles.
-    pub fn f64_array(&self, key: &str) -> Result<Vec<f64>, ConfigError> {
+    pub(crate) fn f64_array(&self, key: &str) -> Result<Vec<f64>, ConfigError> {
         self.array(key)
     }
 
-    pub fn i64_array(&self, key: &str) -> Result<Vec<i64>, ConfigError> {
+    pub(crate) fn i64_array(&self, key: &str) -> Result<Vec<i64>, ConfigError> {
         self.array(key)
     }
 
@@ -128,7 +128,7 @@ impl<'a> Reader<'a> {
     }
 
     /// Exactly three doubles.
-    pub fn vec3(&self, key: &str) -> Result<[f64; 3], ConfigError> {
+    pub(crate) fn vec3(&self, key: &str) -> Result<[f64; 3], ConfigError> {
         let v = self.f64_array(key)?;
         <[f64; 3]>::try_from(v.as_slice()).map_err(|_| ConfigError::WrongLength {
             key: key.to_string(),
@@ -138,7 +138,7 @@ impl<'a> Reader<'a> {
     }
 }
 
-pub fn positive(key: &str, x: f64) -> Result<f64, ConfigError> {
+pub(crate) fn positive(key: &str, x: f64) -> Result<f64, ConfigError> {
     if x > 0.0 {
         Ok(x)
     } else {
@@ -151,7 +151,7 @@ pub fn positive(key: &str, x: f64) -> Result<f64, ConfigError> {
 
 /// A string key (value or declared default) that must be one of `allowed`,
 /// parsed by `parse`.
-pub fn read_choice<T>(
+pub(crate) fn read_choice<T>(
     r: &Reader,
     key: &str,
     allowed: &'static [&'static str],

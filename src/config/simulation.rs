@@ -18,6 +18,7 @@ pub enum IntegratorKind {
 }
 
 impl IntegratorKind {
+    /// The parameter value (`exponential`, `implicit_midpoint`, `rk4`, `contact_exponential`).
     pub fn name(self) -> &'static str {
         match self {
             IntegratorKind::Exponential => "exponential",
@@ -26,6 +27,7 @@ impl IntegratorKind {
             IntegratorKind::ContactExponential => "contact_exponential",
         }
     }
+    /// From the parameter value; `None` for any other text.
     pub fn from_name(s: &str) -> Option<Self> {
         match s {
             "exponential" => Some(IntegratorKind::Exponential),
@@ -48,6 +50,7 @@ pub enum Coordinates {
 }
 
 impl Coordinates {
+    /// From the parameter value (`ale`, `lagrangian`); `None` for any other text.
     pub fn from_name(s: &str) -> Option<Self> {
         match s {
             "ale" => Some(Coordinates::Ale),
@@ -64,7 +67,9 @@ pub struct SimulationConfig {
     pub rate_hz: f64,
     /// Integration sub-steps per output step.
     pub substeps: u32,
+    /// The time integration scheme (`simulation.integrator`).
     pub integrator: IntegratorKind,
+    /// The coordinates the elastic equations are integrated in (`simulation.coordinates`).
     pub coordinates: Coordinates,
     /// 1 = wall clock, 0 = as fast as possible (the node only).
     pub realtime_factor: f64,

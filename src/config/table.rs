@@ -15,12 +15,19 @@ use super::ParamValue;
 /// The ROS 2 parameter type of a key.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Ty {
+    /// `bool`.
     Bool,
+    /// `integer` (i64).
     Integer,
+    /// `double` (a finite f64).
     Double,
+    /// `string`.
     String,
+    /// `integer[]`.
     IntegerArray,
+    /// `double[]`.
     DoubleArray,
+    /// `string[]`.
     StringArray,
     /// The string `auto` or an integer (`plate.radial_splines`).
     AutoOrInteger,
@@ -48,6 +55,7 @@ impl Ty {
 /// One end of a declared numeric range.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Bound {
+    /// No bound at this end.
     Open,
     /// `≥ x` (or `≤ x` as the upper end).
     Inclusive(f64),
@@ -61,12 +69,16 @@ pub enum Bound {
 /// (`simulation.realtime_factor`: 0 = as fast as possible).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Range {
+    /// The lower end.
     pub min: Bound,
+    /// The upper end.
     pub max: Bound,
+    /// Whether 0 is accepted besides the range.
     pub or_zero: bool,
 }
 
 impl Range {
+    /// Any finite number.
     pub const ANY: Range = Range {
         min: Bound::Open,
         max: Bound::Open,
@@ -128,12 +140,19 @@ impl Range {
 /// A declared default value (`None`: the key has no value unless given).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Value {
+    /// No default: the key has no value unless given.
     None,
+    /// A bool.
     Bool(bool),
+    /// An integer.
     Integer(i64),
+    /// A double.
     Double(f64),
+    /// A string.
     Str(&'static str),
+    /// An integer array.
     Integers(&'static [i64]),
+    /// A double array.
     Doubles(&'static [f64]),
 }
 
@@ -155,15 +174,21 @@ impl Value {
 /// One parameter.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Param {
+    /// The full key (`plate.inner_radius`).
     pub key: &'static str,
+    /// Its ROS 2 type.
     pub ty: Ty,
     /// The type as the reference shows it (`double array (3)`).
     pub type_text: &'static str,
+    /// Its SI unit (`m`, `N`; `—` for none).
     pub unit: &'static str,
+    /// Its default value.
     pub default: Value,
     /// The default as the reference shows it (`0.3 (when neither is given)`).
     pub default_text: &'static str,
+    /// The rule a value must satisfy, as the reference states it.
     pub rule: &'static str,
+    /// What the key sets, as the reference states it.
     pub meaning: &'static str,
     /// The numeric range the rule states (`Range::ANY`: none beyond finite).
     pub range: Range,
@@ -204,11 +229,15 @@ impl Param {
 /// One section of keys (`plate.*`; `""`: the top-level keys).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Section {
+    /// The section's prefix (`plate`; `""` for the top-level keys).
     pub name: &'static str,
+    /// The section's heading in the reference.
     pub title: &'static str,
-    /// Text before and after the section's table in the reference.
+    /// Text before the section's table in the reference.
     pub before: &'static str,
+    /// Text after the section's table in the reference.
     pub after: &'static str,
+    /// Its keys, in the reference's order.
     pub params: &'static [Param],
 }
 
@@ -241,7 +270,7 @@ pub const fn param(
 }
 
 /// The sections before the load models' (in the reference's order).
-pub const BEFORE_LOAD_MODELS: &[Section] = &[
+pub(crate) const BEFORE_LOAD_MODELS: &[Section] = &[
     Section {
         name: "plate",
         title: "`plate` — geometry, material, modal discretisation",
@@ -255,8 +284,10 @@ pub const BEFORE_LOAD_MODELS: &[Section] = &[
             p("plate.youngs_modulus", Ty::Double, "double", "Pa", Value::Double(210000000000.0), "2.1e11", "> 0", "Young's modulus E").above(0.0),
             p("plate.shear_modulus", Ty::Double, "double", "Pa", Value::None, "—", "> 0; gives ν = E/(2G) − 1 (paper 4.1), which must lie in (−1, 0.5), i.e. G > E/3; not together with `plate.poisson_ratio`", "shear modulus G, as the paper's parameter").above(0.0),
             p("plate.poisson_ratio", Ty::Double, "double", "—", Value::Double(0.3), "0.3 (when neither is given)", "in (−1, 0.5) exclusive; not together with `plate.shear_modulus`", "Poisson ratio ν"),
-            p("plate.inner_boundary", Ty::String, "string", "—", Value::Str("clamped"), "`clamped`", "`free`, `supported` or `clamped`", "boundary condition at r_i (`boundaryConditionRI`)"),
-            p("plate.outer_boundary", Ty::String, "string", "—", Value::Str("free"), "`free`", "`free`, `supported` or `clamped`", "boundary condition at r_a (`boundaryConditionRA`)"),
+            p("plate.inner_boundary", Ty::String, "string", "—", Value::Str("clamped"), "`clamped`", "`free`, `supported`, `clamped`, or `supported_soft` with `plate.theory: mindlin`", "boundary condition at r_i (`boundaryConditionRI`); under Mindlin theory `supported` is the hard support w = ψ_θ = 0 and `supported_soft` the soft one w = 0 (docs/mindlin.md)"),
+            p("plate.outer_boundary", Ty::String, "string", "—", Value::Str("free"), "`free`", "`free`, `supported`, `clamped`, or `supported_soft` with `plate.theory: mindlin`", "boundary condition at r_a (`boundaryConditionRA`), as `plate.inner_boundary`"),
+            p("plate.theory", Ty::String, "string", "—", Value::Str("kirchhoff"), "`kirchhoff`", "`kirchhoff` or `mindlin`", "plate theory of the modes: `kirchhoff` (the paper's thin plate) or `mindlin` (shear deformation and rotary inertia, for thick discs; only `modes` uses Mindlin modes so far, every other command refuses them naming this key — docs/mindlin.md)"),
+            p("plate.shear_correction", Ty::Double, "double", "—", Value::Double(5.0 / 6.0), "5/6", "in (0, 1]", "Mindlin's shear correction κ (no effect with `plate.theory: kirchhoff`)").above(0.0).max(1.0),
             p("plate.nodal_diameters", Ty::IntegerArray, "integer array", "—", Value::Integers(&[0, 1, 2, 3, 4, 5, 6, 7]), "[0, 1, 2, 3, 4, 5, 6, 7]", "non-empty, each 0 ≤ k ≤ 200, distinct", "nodal diameter numbers k to include"),
             p("plate.nodal_circles", Ty::IntegerArray, "integer array", "—", Value::Integers(&[0, 1]), "[0, 1]", "non-empty, each 0 ≤ l ≤ 50, distinct", "nodal circle numbers l to include"),
             p("plate.damping", Ty::DoubleArray, "double array", "—", Value::Doubles(&[0.0]), "[0.0]", "each in [0, 1); length 1 (all modes) or n (one per mode, in `modes` order)", "modal damping ratios ζ"),
@@ -357,7 +388,7 @@ pub const BEFORE_LOAD_MODELS: &[Section] = &[
 ];
 
 /// The sections after the load models'.
-pub const AFTER_LOAD_MODELS: &[Section] = &[
+pub(crate) const AFTER_LOAD_MODELS: &[Section] = &[
     Section {
         name: "initial",
         title: "`initial` — initial elastic state",

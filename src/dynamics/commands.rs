@@ -19,9 +19,11 @@ use crate::config::LimitsConfig;
 /// Inputs held over a step, until replaced.
 #[derive(Debug, Clone, PartialEq, Default)]
 pub struct Inputs {
+    /// Commanded joint speed Ω, rad/s.
     pub speed_command: f64,
     /// The user's held wrenches (the load models' wrenches come on top).
     pub ale: Vec<Wrench>,
+    /// The user's held wrenches on the Lagrangian nodes.
     pub lagrange: Vec<Wrench>,
     /// Commands of the load models (pad clamp forces, tool feed).
     pub commands: LoadCommands,
@@ -40,13 +42,17 @@ struct ModelCommands {
 /// threads that receive inputs).
 #[derive(Debug, Clone, PartialEq)]
 pub struct InputRules {
+    /// The plausibility limits (`limits.*`).
     pub limits: LimitsConfig,
+    /// ALE nodes of the scene.
     pub ale_nodes: usize,
+    /// Lagrangian nodes of the scene.
     pub lagrange_nodes: usize,
     models: Vec<ModelCommands>,
 }
 
 impl InputRules {
+    /// The rules of a scene: its limits, its node counts and its load models' commands.
     pub fn new(
         limits: &LimitsConfig,
         ale_nodes: usize,
@@ -147,15 +153,22 @@ pub enum Command {
     Speed(f64),
     /// A wrench held on a node until replaced, in the node frame's axes.
     Wrench {
+        /// Lagrangian or ALE.
         kind: NodeKind,
+        /// The node (from 0).
         node: usize,
+        /// Force (N) and moment (N m) in the node frame's axes.
         wrench: Wrench,
     },
     /// Command `command` of load model `model` (see [`LoadModels::models`](super::load_models::LoadModels::models)) for one instance.
     Load {
+        /// The load model (from 0).
         model: usize,
+        /// Its command (from 0).
         command: usize,
+        /// The instance (from 0; 0 for a model of one).
         instance: usize,
+        /// The commanded value, in the command's unit.
         value: f64,
     },
 }
@@ -174,6 +187,7 @@ enum Target {
 }
 
 impl Checked {
+    /// The command that passed.
     pub fn command(&self) -> Command {
         self.1
     }
@@ -184,12 +198,15 @@ impl Checked {
 pub struct CheckedBatch(Vec<Checked>);
 
 impl CheckedBatch {
+    /// Entries in the batch.
     pub fn len(&self) -> usize {
         self.0.len()
     }
+    /// Whether the batch has no entries.
     pub fn is_empty(&self) -> bool {
         self.0.is_empty()
     }
+    /// The entries, in the batch's order.
     pub fn iter(&self) -> impl Iterator<Item = &Checked> {
         self.0.iter()
     }

@@ -158,14 +158,19 @@ impl ContactCompliance {
                 s.lu_valid = factored.is_ok();
                 factored?;
             }
-            self.apply(&s.f, &mut s.gf);
-            for (c, (fc, force_c)) in s.f.iter_mut().zip(force.iter()).enumerate().take(n) {
-                let jgf: f64 = s.jac[c * n..(c + 1) * n]
-                    .iter()
-                    .zip(&s.gf)
-                    .map(|(j, g)| j * g)
-                    .sum();
-                *fc = *force_c - jgf;
+            if s.passes == 1 {
+                // F_prev = 0: the right-hand side is 𝓕(w) itself.
+                s.f.copy_from_slice(&force[..n]);
+            } else {
+                self.apply(&s.f, &mut s.gf);
+                for (c, (fc, force_c)) in s.f.iter_mut().zip(force.iter()).enumerate().take(n) {
+                    let jgf: f64 = s.jac[c * n..(c + 1) * n]
+                        .iter()
+                        .zip(&s.gf)
+                        .map(|(j, g)| j * g)
+                        .sum();
+                    *fc = *force_c - jgf;
+                }
             }
             lu_solve(&s.lu, &s.perm, &mut s.f, &mut s.gf, n);
             self.apply(&s.f, &mut s.gf);

@@ -59,22 +59,27 @@ pub fn lu_factor(a: &mut [f64], perm: &mut [usize], n: usize) -> Result<(), LuEr
 
 /// Solve A x = b with the factors of [`lu_factor`]; b becomes x (`buf`: n values of scratch).
 pub fn lu_solve(lu: &[f64], perm: &[usize], b: &mut [f64], buf: &mut [f64], n: usize) {
-    for i in 0..n {
-        buf[i] = b[perm[i]];
+    // Slices instead of indices (no bounds checks in the loops); the same
+    // operations in the same order.
+    let (lu, buf) = (&lu[..n * n], &mut buf[..n]);
+    for (x, &p) in buf.iter_mut().zip(&perm[..n]) {
+        *x = b[p];
     }
-    for i in 0..n {
-        let mut v = buf[i];
-        for j in 0..i {
-            v -= lu[i * n + j] * buf[j];
+    for (i, row) in lu.chunks_exact(n).enumerate() {
+        let (solved, rest) = buf.split_at_mut(i);
+        let mut v = rest[0];
+        for (l, x) in row[..i].iter().zip(solved.iter()) {
+            v -= l * x;
         }
-        buf[i] = v;
+        rest[0] = v;
     }
-    for i in (0..n).rev() {
-        let mut v = buf[i];
-        for j in i + 1..n {
-            v -= lu[i * n + j] * buf[j];
+    for (i, row) in lu.chunks_exact(n).enumerate().rev() {
+        let (head, solved) = buf.split_at_mut(i + 1);
+        let mut v = head[i];
+        for (u, x) in row[i + 1..].iter().zip(solved.iter()) {
+            v -= u * x;
         }
-        buf[i] = v / lu[i * n + i];
+        head[i] = v / row[i];
     }
-    b[..n].copy_from_slice(&buf[..n]);
+    b[..n].copy_from_slice(buf);
 }

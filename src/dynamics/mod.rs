@@ -10,22 +10,18 @@
 
 pub(crate) mod ale;
 pub(crate) mod angle;
-#[allow(missing_docs)] // still to be documented item by item
 pub(crate) mod commands;
 pub(crate) mod contact_compliance;
 pub(crate) mod dense;
-#[allow(missing_docs)] // still to be documented item by item
 pub(crate) mod error;
 pub(crate) mod integrators;
 pub(crate) mod joint;
 pub(crate) mod layout;
-#[allow(missing_docs)] // still to be documented item by item
 pub mod load_models;
 pub(crate) mod loads;
 pub(crate) mod node_frame;
 pub(crate) mod residual;
 pub(crate) mod scene;
-#[allow(missing_docs)] // still to be documented item by item
 pub(crate) mod simulation;
 pub mod stability;
 pub mod stability_map;

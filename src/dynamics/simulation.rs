@@ -20,8 +20,11 @@ use super::wrench::{NodeKind, Wrench};
 /// The rotational joint at the axis: angle χ (unwrapped), speed Ω, drive torque.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct JointOutput {
+    /// Joint angle χ (unwrapped), rad.
     pub position: f64,
+    /// Joint speed Ω, rad/s.
     pub velocity: f64,
+    /// Drive torque, N m.
     pub effort: f64,
 }
 
@@ -30,11 +33,14 @@ pub struct JointOutput {
 /// `From<Isometry3>`).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Pose {
+    /// Translation, m.
     pub translation: [f64; 3],
+    /// Unit quaternion (x, y, z, w).
     pub rotation: [f64; 4],
 }
 
 impl Pose {
+    /// No translation, no rotation.
     pub const IDENTITY: Pose = Pose {
         translation: [0.0; 3],
         rotation: [0.0, 0.0, 0.0, 1.0],
@@ -49,6 +55,7 @@ impl Pose {
         .into()
     }
 
+    /// As a nalgebra isometry.
     pub fn isometry(&self) -> Isometry3<f64> {
         let [x, y, z, w] = self.rotation;
         let q = UnitQuaternion::new_unchecked(Quaternion::new(w, x, y, z));
@@ -81,13 +88,20 @@ pub struct NodeOutput {
     pub material_uz_dot: f64,
 }
 
+/// A running simulation: the configuration, the immutable scene, the state,
+/// the stepper and the held inputs (what the CLI and the node drive).
 pub struct Simulation {
+    /// The configuration it was built from.
     config: Config,
+    /// The immutable scene: model, nodes, joint, effects and load models.
     scene: Scene,
+    /// The stepper's settings (step, substeps, integrator).
     settings: StepperSettings,
+    /// The current state.
     state: State,
     initial: State,
     stepper: Stepper,
+    /// The held inputs.
     inputs: Inputs,
     /// The load models' wrenches at the current state (derived, for the outputs).
     model_outputs: ModelWrenches,
@@ -96,8 +110,10 @@ pub struct Simulation {
 }
 
 impl Simulation {
+    /// Build the model, the scene and the stepper of a validated configuration, at its initial state.
     pub fn new(config: Config) -> Result<Simulation, SimulationError> {
         let model = PlateModel::new(&config.plate)?;
+        model.require_kirchhoff("the dynamics (the node, `simulate`, `stability`, `study`)")?;
         let scene = Scene::new(&config, model);
         let settings = StepperSettings::from_config(&config);
         let stepper = Stepper::new(&scene);
@@ -124,18 +140,23 @@ impl Simulation {
         Ok(sim)
     }
 
+    /// The configuration it was built from.
     pub fn config(&self) -> &Config {
         &self.config
     }
+    /// The plate model (modes, frequencies, modal matrices).
     pub fn model(&self) -> &PlateModel {
         &self.scene.model
     }
+    /// The immutable scene: model, nodes, joint, effects and load models.
     pub fn scene(&self) -> &Scene {
         &self.scene
     }
+    /// The stepper's settings (step, substeps, integrator).
     pub fn settings(&self) -> &StepperSettings {
         &self.settings
     }
+    /// The current state.
     pub fn state(&self) -> &State {
         &self.state
     }
@@ -148,6 +169,7 @@ impl Simulation {
     pub fn contact_report(&self) -> super::stepper::ContactReport {
         self.stepper.last_contact()
     }
+    /// The held inputs.
     pub fn inputs(&self) -> &Inputs {
         &self.inputs
     }
@@ -155,6 +177,7 @@ impl Simulation {
     pub fn time(&self) -> f64 {
         self.state.time
     }
+    /// Output steps since start or the last reset.
     pub fn step_count(&self) -> u64 {
         self.state.steps
     }
@@ -162,9 +185,11 @@ impl Simulation {
     pub fn dt(&self) -> f64 {
         self.settings.dt
     }
+    /// ALE nodes of the scene.
     pub fn n_ale_nodes(&self) -> usize {
         self.scene.ale_nodes.len()
     }
+    /// Lagrangian nodes of the scene.
     pub fn n_lagrange_nodes(&self) -> usize {
         self.scene.lagrange_nodes.len()
     }
@@ -267,6 +292,7 @@ impl Simulation {
         Ok(())
     }
 
+    /// Command the joint speed Ω (rad/s), held until replaced.
     pub fn set_speed_command(&mut self, omega: f64) -> Result<(), InputError> {
         self.command(Command::Speed(omega))
     }
@@ -333,6 +359,7 @@ impl Simulation {
 
     // ---- outputs ------------------------------------------------------------
 
+    /// The joint's angle, speed and drive torque.
     pub fn joint(&self) -> JointOutput {
         JointOutput {
             position: self.state.chi.radians(),
@@ -423,6 +450,7 @@ impl Simulation {
     pub fn q_lagrange(&self) -> &[f64] {
         self.state.lagrange().0
     }
+    /// Modal rates (m/s), Lagrangian description.
     pub fn q_dot_lagrange(&self) -> &[f64] {
         self.state.lagrange().1
     }
@@ -430,6 +458,7 @@ impl Simulation {
     pub fn q_ale(&self) -> &[f64] {
         self.state.ale().0
     }
+    /// Modal rates (m/s), ALE description.
     pub fn q_dot_ale(&self) -> &[f64] {
         self.state.ale().1
     }

@@ -361,7 +361,8 @@ pub fn max_growth_rate(scene: &Scene, speed: f64) -> f64 {
     growth_rate(scene, speed, mu, &clamp)
 }
 
-fn configured(scene: &Scene) -> (f64, Vec<f64>) {
+/// The scene's friction coefficient and the clamp forces it starts with.
+pub(crate) fn configured(scene: &Scene) -> (f64, Vec<f64>) {
     scene
         .load_models
         .find::<Pads>()

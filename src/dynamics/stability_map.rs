@@ -5,9 +5,8 @@
 //! machine's cores (`std::thread::scope`); a map can be computed in shards
 //! of whole speed rows and merged (docs/rotor_dynamics.md).
 
-use super::load_models::pad::Pads;
 use super::scene::Scene;
-use super::stability::{critical_mode, growth_rate};
+use super::stability::{configured, critical_mode, growth_rate};
 use serde::{Deserialize, Serialize};
 use std::f64::consts::TAU;
 
@@ -36,14 +35,6 @@ pub struct SpeedRow {
     /// μ with a positive rate, bisected against its stable neighbour to 1e-9
     /// relative (μ_first itself if already unstable there); `None` if none.
     pub threshold_mu: Option<f64>,
-}
-
-/// The clamp forces the scene starts with (the linearisation's preload).
-fn clamp_forces(scene: &Scene) -> Vec<f64> {
-    scene
-        .load_models
-        .find::<Pads>()
-        .map_or(Vec::new(), |(_, p)| p.initial_clamp_force.clone())
 }
 
 fn point(scene: &Scene, speed: f64, mu: f64, clamp: &[f64]) -> GridPoint {
@@ -86,7 +77,7 @@ fn threshold(
 
 /// The rows of `speeds` × `mus`, grid points spread over `threads` threads.
 pub fn stability_map(scene: &Scene, speeds: &[f64], mus: &[f64], threads: usize) -> Vec<SpeedRow> {
-    let clamp = clamp_forces(scene);
+    let (_, clamp) = configured(scene); // the linearisation's preload
     let n = speeds.len() * mus.len();
     let threads = threads.clamp(1, n.max(1));
     let next = std::sync::atomic::AtomicUsize::new(0);

@@ -17,15 +17,10 @@ pub(crate) mod model_states;
 pub(crate) mod names;
 pub mod outputs;
 pub(crate) mod qos;
-// Documented by its own owner; exempt here until then.
-#[allow(missing_docs)]
 pub mod settings;
-#[allow(missing_docs)] // wire structs mirroring their .msg/.srv files; fields to be documented
 pub mod simulation_interfaces;
 pub(crate) mod topics;
-#[allow(missing_docs)] // wire structs mirroring their .msg/.srv files; fields to be documented
 pub mod types;
-#[allow(missing_docs)] // wire structs mirroring their .msg/.srv files; fields to be documented
 pub mod visualization;
 
 pub use names::DEFAULT_NODE_NAME;

@@ -17,7 +17,9 @@ use crate::dynamics::load_models::PARAMETERS;
 /// Validated `ros.*` settings.
 #[derive(Debug, Clone, PartialEq)]
 pub struct RosSettings {
+    /// `ros.frame_prefix`: prefix of every frame and joint name.
     pub frame_prefix: String,
+    /// `ros.world_frame`: parent of plate_base in /tf_static (not prefixed).
     pub world_frame: String,
     /// `ros.publish_clock`: the node's own simulated time, published on `/clock`.
     pub sim_time: bool,
@@ -29,9 +31,13 @@ pub struct RosSettings {
     /// `ros.max_clock_jump`, s: a larger forward step of the followed
     /// `/clock` re-anchors the stamps instead of being stepped through.
     pub max_clock_jump: f64,
+    /// `ros.start_paused`: the node starts paused.
     pub start_paused: bool,
+    /// `ros.diagnostics_period`: wall time between /diagnostics messages, s.
     pub diagnostics_period: f64,
+    /// `ros.reject_log_period`: wall time between log lines about rejected inputs of one kind, s.
     pub reject_log_period: f64,
+    /// `ros.service_mapping`: the request/reply mapping of every service.
     pub service_mapping: ServiceMapping,
     /// `ros.input_reception`: `step_aligned` reads the input datagrams at step
     /// boundaries while they are many (`ros/step_aligned_receive.rs`).
@@ -51,6 +57,7 @@ impl Default for RosSettings {
 /// A rejected `ros.*` value; names the key and the rule.
 #[derive(Debug, Clone, PartialEq)]
 pub struct SettingsError {
+    /// The key refused.
     pub key: String,
     /// The whole refusal, naming the key (for a declared type or range: the
     /// text of `config::check`, as the parameter file and services give it).

@@ -38,7 +38,9 @@ macro_rules! ros_message {
 /// builtin_interfaces/Time.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Default, Serialize, Deserialize)]
 pub struct Time {
+    /// Whole seconds (of the Unix epoch for wall time, of simulated time under `/clock`).
     pub sec: i32,
+    /// Nanoseconds within the second, 0 ..< 1e9.
     pub nanosec: u32,
 }
 
@@ -52,10 +54,12 @@ impl Time {
         }
     }
 
+    /// Nanoseconds in all.
     pub fn to_nanos(self) -> i64 {
         self.sec as i64 * 1_000_000_000 + self.nanosec as i64
     }
 
+    /// Seconds in all.
     pub fn to_secs(self) -> f64 {
         self.sec as f64 + self.nanosec as f64 * 1e-9
     }
@@ -74,7 +78,9 @@ impl Time {
 /// std_msgs/Header.
 #[derive(Debug, Clone, PartialEq, Default, Serialize, Deserialize)]
 pub struct Header {
+    /// When the data holds.
     pub stamp: Time,
+    /// The frame the data is expressed in (empty where unused).
     pub frame_id: String,
 }
 ros_message!(Header, "std_msgs", "Header");
@@ -82,6 +88,7 @@ ros_message!(Header, "std_msgs", "Header");
 /// std_msgs/Float64.
 #[derive(Debug, Clone, Copy, PartialEq, Default, Serialize, Deserialize)]
 pub struct Float64 {
+    /// The value.
     pub data: f64,
 }
 ros_message!(Float64, "std_msgs", "Float64");
@@ -91,12 +98,16 @@ ros_message!(Float64, "std_msgs", "Float64");
 /// geometry_msgs/Vector3.
 #[derive(Debug, Clone, Copy, PartialEq, Default, Serialize, Deserialize)]
 pub struct Vector3 {
+    /// x component.
     pub x: f64,
+    /// y component.
     pub y: f64,
+    /// z component.
     pub z: f64,
 }
 
 impl Vector3 {
+    /// From `[x, y, z]`.
     pub fn from_array(a: [f64; 3]) -> Vector3 {
         Vector3 {
             x: a[0],
@@ -104,6 +115,7 @@ impl Vector3 {
             z: a[2],
         }
     }
+    /// As `[x, y, z]`.
     pub fn to_array(self) -> [f64; 3] {
         [self.x, self.y, self.z]
     }
@@ -112,9 +124,13 @@ impl Vector3 {
 /// geometry_msgs/Quaternion.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 pub struct Quaternion {
+    /// x of the vector part.
     pub x: f64,
+    /// y of the vector part.
     pub y: f64,
+    /// z of the vector part.
     pub z: f64,
+    /// The scalar part (1 for the identity rotation).
     pub w: f64,
 }
 
@@ -144,15 +160,20 @@ impl Quaternion {
 /// geometry_msgs/Transform.
 #[derive(Debug, Clone, Copy, PartialEq, Default, Serialize, Deserialize)]
 pub struct Transform {
+    /// Translation of the child frame's origin in the parent frame, m.
     pub translation: Vector3,
+    /// Rotation from the child frame to the parent frame (unit quaternion).
     pub rotation: Quaternion,
 }
 
 /// geometry_msgs/TransformStamped.
 #[derive(Debug, Clone, PartialEq, Default, Serialize, Deserialize)]
 pub struct TransformStamped {
+    /// Stamp, and the parent frame in `frame_id`.
     pub header: Header,
+    /// The child frame.
     pub child_frame_id: String,
+    /// The child frame's pose in the parent frame.
     pub transform: Transform,
 }
 ros_message!(TransformStamped, "geometry_msgs", "TransformStamped");
@@ -160,7 +181,9 @@ ros_message!(TransformStamped, "geometry_msgs", "TransformStamped");
 /// geometry_msgs/Wrench.
 #[derive(Debug, Clone, Copy, PartialEq, Default, Serialize, Deserialize)]
 pub struct Wrench {
+    /// Force, N.
     pub force: Vector3,
+    /// Torque (moment), N m.
     pub torque: Vector3,
 }
 ros_message!(Wrench, "geometry_msgs", "Wrench");
@@ -168,7 +191,9 @@ ros_message!(Wrench, "geometry_msgs", "Wrench");
 /// geometry_msgs/WrenchStamped.
 #[derive(Debug, Clone, PartialEq, Default, Serialize, Deserialize)]
 pub struct WrenchStamped {
+    /// Stamp, and the frame the wrench is expressed in.
     pub header: Header,
+    /// The force and moment.
     pub wrench: Wrench,
 }
 ros_message!(WrenchStamped, "geometry_msgs", "WrenchStamped");
@@ -178,6 +203,7 @@ ros_message!(WrenchStamped, "geometry_msgs", "WrenchStamped");
 /// tf2_msgs/TFMessage (on `/tf` and `/tf_static`).
 #[derive(Debug, Clone, PartialEq, Default, Serialize, Deserialize)]
 pub struct TFMessage {
+    /// The transforms, each parent → child.
     pub transforms: Vec<TransformStamped>,
 }
 ros_message!(TFMessage, "tf2_msgs", "TFMessage");
@@ -185,10 +211,15 @@ ros_message!(TFMessage, "tf2_msgs", "TFMessage");
 /// sensor_msgs/JointState.
 #[derive(Debug, Clone, PartialEq, Default, Serialize, Deserialize)]
 pub struct JointState {
+    /// The step's time; `frame_id` empty.
     pub header: Header,
+    /// Joint names, one per entry of the other arrays.
     pub name: Vec<String>,
+    /// Joint angles, rad.
     pub position: Vec<f64>,
+    /// Joint speeds, rad/s.
     pub velocity: Vec<f64>,
+    /// Joint torques, N m.
     pub effort: Vec<f64>,
 }
 ros_message!(JointState, "sensor_msgs", "JointState");
@@ -196,6 +227,7 @@ ros_message!(JointState, "sensor_msgs", "JointState");
 /// rosgraph_msgs/Clock: the only type `/clock` carries (see `messages/clock.rs`).
 #[derive(Debug, Clone, Copy, PartialEq, Default, Serialize, Deserialize)]
 pub struct Clock {
+    /// The simulated time.
     pub clock: Time,
 }
 ros_message!(Clock, "rosgraph_msgs", "Clock");
@@ -205,7 +237,9 @@ ros_message!(Clock, "rosgraph_msgs", "Clock");
 /// diagnostic_msgs/KeyValue.
 #[derive(Debug, Clone, PartialEq, Default, Serialize, Deserialize)]
 pub struct KeyValue {
+    /// The name of the value.
     pub key: String,
+    /// The value, as text.
     pub value: String,
 }
 
@@ -214,23 +248,33 @@ pub struct KeyValue {
 pub struct DiagnosticStatus {
     /// [`DiagnosticStatus::OK`] … [`DiagnosticStatus::STALE`] (`byte` in the .msg).
     pub level: u8,
+    /// What is reported on (`<node>: <part>`).
     pub name: String,
+    /// A one-line summary of the status.
     pub message: String,
+    /// The unit reported on (the node's name here).
     pub hardware_id: String,
+    /// The measured values, by key.
     pub values: Vec<KeyValue>,
 }
 
 impl DiagnosticStatus {
+    /// `level`: all is well.
     pub const OK: u8 = 0;
+    /// `level`: a warning.
     pub const WARN: u8 = 1;
+    /// `level`: an error.
     pub const ERROR: u8 = 2;
+    /// `level`: no recent data.
     pub const STALE: u8 = 3;
 }
 
 /// diagnostic_msgs/DiagnosticArray.
 #[derive(Debug, Clone, PartialEq, Default, Serialize, Deserialize)]
 pub struct DiagnosticArray {
+    /// When the statuses were taken.
     pub header: Header,
+    /// One status per part reported on.
     pub status: Vec<DiagnosticStatus>,
 }
 ros_message!(DiagnosticArray, "diagnostic_msgs", "DiagnosticArray");
@@ -241,6 +285,7 @@ ros_message!(DiagnosticArray, "diagnostic_msgs", "DiagnosticArray");
 /// empty structure one `uint8 structure_needs_at_least_one_member`.
 #[derive(Debug, Clone, Copy, PartialEq, Default, Serialize, Deserialize)]
 pub struct TriggerRequest {
+    /// Always 0: the member ROS 2's IDL gives an empty structure.
     pub structure_needs_at_least_one_member: u8,
 }
 impl Message for TriggerRequest {}
@@ -248,7 +293,9 @@ impl Message for TriggerRequest {}
 /// std_srvs/Trigger response.
 #[derive(Debug, Clone, PartialEq, Default, Serialize, Deserialize)]
 pub struct TriggerResponse {
+    /// Whether the request was carried out.
     pub success: bool,
+    /// What was done, or why not.
     pub message: String,
 }
 impl Message for TriggerResponse {}
@@ -256,6 +303,7 @@ impl Message for TriggerResponse {}
 /// std_srvs/SetBool request.
 #[derive(Debug, Clone, Copy, PartialEq, Default, Serialize, Deserialize)]
 pub struct SetBoolRequest {
+    /// The value to set.
     pub data: bool,
 }
 impl Message for SetBoolRequest {}
@@ -263,7 +311,9 @@ impl Message for SetBoolRequest {}
 /// std_srvs/SetBool response.
 #[derive(Debug, Clone, PartialEq, Default, Serialize, Deserialize)]
 pub struct SetBoolResponse {
+    /// Whether the value was set.
     pub success: bool,
+    /// What was done, or why not.
     pub message: String,
 }
 impl Message for SetBoolResponse {}
@@ -273,33 +323,52 @@ impl Message for SetBoolResponse {}
 /// annular_plate/msg/ModalAmplitudes (`msg/ModalAmplitudes.msg`).
 #[derive(Debug, Clone, PartialEq, Default, Serialize, Deserialize)]
 pub struct ModalAmplitudes {
+    /// The step's time; `frame_id` the reference frame (plate_base).
     pub header: Header,
+    /// Output steps since start or the last reset.
     pub step: u64,
+    /// Simulated time since start or the last reset, s.
     pub sim_time: f64,
+    /// `header.stamp` of the newest stamped input applied before this step (zero: none yet).
     pub input_stamp: Time,
+    /// Nodal diameters k, one per elastic mode (modes sorted by frequency).
     pub k: Vec<u32>,
+    /// Nodal circles l, per mode.
     pub l: Vec<u32>,
+    /// Angular shape per mode: one of the `SHAPE_*` constants.
     pub shape: Vec<u8>,
+    /// Natural frequency of the non-rotating plate per mode, Hz.
     pub frequency_hz: Vec<f64>,
+    /// Amplitudes in the rotating plate frame (plate_rotor), m (1 = 1 m peak transverse displacement).
     pub q_lagrange: Vec<f64>,
+    /// Their rates, m/s.
     pub q_dot_lagrange: Vec<f64>,
+    /// The same deformation seen from the non-rotating reference frame (plate_base), m.
     pub q_ale: Vec<f64>,
+    /// Their rates, m/s.
     pub q_dot_ale: Vec<f64>,
 }
 ros_message!(ModalAmplitudes, "annular_plate", "ModalAmplitudes");
 
 impl ModalAmplitudes {
+    /// k = 0: w ~ R(r).
     pub const SHAPE_AXISYMMETRIC: u8 = 0;
+    /// w ~ R(r) cos(k φ).
     pub const SHAPE_COS: u8 = 1;
+    /// w ~ R(r) sin(k φ).
     pub const SHAPE_SIN: u8 = 2;
 }
 
 /// annular_plate/msg/CriticalSpeeds (`msg/CriticalSpeeds.msg`).
 #[derive(Debug, Clone, PartialEq, Default, Serialize, Deserialize)]
 pub struct CriticalSpeeds {
+    /// Whether the speeds include the spinning prestress's geometric stiffness (`plate.centrifugal_stiffening`; else ω/k).
     pub centrifugal_stiffening: bool,
+    /// Nodal diameters k (≥ 1), ascending k then l.
     pub k: Vec<u32>,
+    /// Nodal circles l, per entry.
     pub l: Vec<u32>,
+    /// Critical speed per entry, rad/s: where the backward wave stands still in space, ω(Ω) = k Ω.
     pub rad_s: Vec<f64>,
 }
 ros_message!(CriticalSpeeds, "annular_plate", "CriticalSpeeds");
@@ -307,21 +376,28 @@ ros_message!(CriticalSpeeds, "annular_plate", "CriticalSpeeds");
 /// annular_plate/msg/NodeWrench (`msg/NodeWrench.msg`).
 #[derive(Debug, Clone, Copy, PartialEq, Default, Serialize, Deserialize)]
 pub struct NodeWrench {
+    /// [`NodeWrench::ALE`] or [`NodeWrench::LAGRANGE`].
     pub kind: u8,
+    /// Node number j, from 1 (as in the frame name).
     pub index: u32,
+    /// N and N m, in that node's frame; held until replaced.
     pub wrench: Wrench,
 }
 ros_message!(NodeWrench, "annular_plate", "NodeWrench");
 
 impl NodeWrench {
+    /// `kind`: the space-fixed node frame `plate_ale_<j>`.
     pub const ALE: u8 = 0;
+    /// `kind`: the material node frame `plate_lagrange_<j>`.
     pub const LAGRANGE: u8 = 1;
 }
 
 /// annular_plate/msg/NodeWrenchArray (`msg/NodeWrenchArray.msg`).
 #[derive(Debug, Clone, PartialEq, Default, Serialize, Deserialize)]
 pub struct NodeWrenchArray {
+    /// Stamp (echoed as `ModalAmplitudes::input_stamp`); `frame_id` empty.
     pub header: Header,
+    /// The wrenches, applied all together or not at all.
     pub wrenches: Vec<NodeWrench>,
 }
 ros_message!(NodeWrenchArray, "annular_plate", "NodeWrenchArray");
@@ -329,8 +405,11 @@ ros_message!(NodeWrenchArray, "annular_plate", "NodeWrenchArray");
 /// annular_plate/msg/PadClampForces (`msg/PadClampForces.msg`).
 #[derive(Debug, Clone, PartialEq, Default, Serialize, Deserialize)]
 pub struct PadClampForces {
+    /// Stamp (echoed as `ModalAmplitudes::input_stamp`); `frame_id` unused.
     pub header: Header,
+    /// Pad numbers j, from 1.
     pub pad: Vec<u32>,
+    /// Force each face of the disc is pressed with, N, one per entry of `pad`.
     pub clamp_force: Vec<f64>,
 }
 ros_message!(PadClampForces, "annular_plate", "PadClampForces");
@@ -338,6 +417,8 @@ ros_message!(PadClampForces, "annular_plate", "PadClampForces");
 /// annular_plate/srv/Step request (`srv/Step.srv`).
 #[derive(Debug, Clone, Copy, PartialEq, Default, Serialize, Deserialize)]
 pub struct StepRequest {
+    /// Output steps to take (1/simulation.rate_hz each); 0 only reports the
+    /// state.
     pub steps: u32,
 }
 impl Message for StepRequest {}
@@ -345,9 +426,13 @@ impl Message for StepRequest {}
 /// annular_plate/srv/Step response.
 #[derive(Debug, Clone, PartialEq, Default, Serialize, Deserialize)]
 pub struct StepResponse {
+    /// Whether the steps were taken.
     pub success: bool,
+    /// What was done, or why not.
     pub message: String,
+    /// Output steps since start or the last reset, after the request.
     pub step: u64,
+    /// Simulated time since start or the last reset, s, after the request.
     pub sim_time: f64,
 }
 impl Message for StepResponse {}

@@ -4,6 +4,10 @@
 //! Kirchhoff assumptions throughout: the deformation's rotary inertia (terms
 //! of order h²/r² from the in-plane part of (13)) is neglected, exactly as in
 //! M_e; the undeformed inertia tensor J₀ keeps the plate's thickness.
+//! Under `plate.theory: mindlin` M_e (the modes' modal mass) includes the
+//! rotary inertia and C_t, d_CM are unchanged (z ψ integrates to zero over
+//! the thickness), but C_r and J₁ lack ρh³/12 ∫ ψ dA; the dynamics refuse
+//! Mindlin modes ([`super::PlateModel::require_kirchhoff`]).
 //!
 //! With s_i = ρh ∫ w_i (x, y, 1) dA (first moments of the mode shapes):
 //! - C_t (n×3), row i = ∫ Φ_iᵀ dm = (0, 0, s_iz): non-zero only for k = 0 modes;

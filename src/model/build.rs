@@ -8,10 +8,13 @@ use super::modes::{is_rigid_body, radial_moment, AngularShape, Mode, RadialShape
 use super::radial::{angular_norm, RadialDiscretisation};
 use super::resolution::{self, KResolution, Resolved};
 use super::{bending_rigidity, ModelError, PlateModel};
-use crate::config::{PlateConfig, RadialSplines};
+use crate::config::{PlateConfig, PlateTheory, RadialSplines};
 
 /// Build the plate model (called by [`PlateModel::new`]).
 pub(super) fn build(plate: &PlateConfig) -> Result<PlateModel, ModelError> {
+    if plate.theory == PlateTheory::Mindlin {
+        return super::mindlin::build_model(plate);
+    }
     let nu = plate.poisson_ratio;
     let rigidity = bending_rigidity(plate.youngs_modulus, plate.thickness, nu);
     let rho_h = plate.density * plate.thickness;
@@ -37,11 +40,7 @@ pub(super) fn build(plate: &PlateConfig) -> Result<PlateModel, ModelError> {
     let mut radial_shapes = Vec::new();
     let mut skipped = Vec::new();
     let mut radial_resolution = Vec::new();
-    struct Entry {
-        radial: usize,
-        modal_mass: f64,
-    }
-    let mut entries: Vec<(u32, u32, f64, Entry)> = Vec::new();
+    let mut entries: Vec<TableEntry> = Vec::new();
     let count = max_l as usize + 1;
     // `auto`: every k's count and eigenpairs first (resolution.rs); fixed: one basis for all k.
     let fixed_disc = plate
@@ -119,35 +118,89 @@ pub(super) fn build(plate: &PlateConfig) -> Result<PlateModel, ModelError> {
                     < 1e-6 * modal_mass
             );
             radial_shapes.push(shape);
-            entries.push((
+            entries.push(TableEntry {
                 k,
                 l,
-                w2.sqrt(),
-                Entry {
-                    radial: radial_shapes.len() - 1,
-                    modal_mass,
-                },
-            ));
+                omega: w2.sqrt(),
+                radial: radial_shapes.len() - 1,
+                modal_mass,
+            });
         }
     }
-    if entries.is_empty() {
-        return Err(ModelError::NoElasticModes { skipped });
+    finish(
+        plate,
+        rigidity,
+        Parts {
+            entries,
+            radial_shapes,
+            skipped,
+            radial_resolution,
+            mindlin: Vec::new(),
+        },
+    )
+}
+
+/// What a theory's build hands to [`finish`].
+pub(super) struct Parts {
+    pub entries: Vec<TableEntry>,
+    pub radial_shapes: Vec<RadialShape>,
+    pub skipped: Vec<(u32, u32)>,
+    pub radial_resolution: Vec<KResolution>,
+    pub mindlin: Vec<super::mindlin::MindlinMode>,
+}
+
+/// The model of the elastic ⟨k, l⟩: the mode table and the body data.
+pub(super) fn finish(
+    plate: &PlateConfig,
+    rigidity: f64,
+    parts: Parts,
+) -> Result<PlateModel, ModelError> {
+    if parts.entries.is_empty() {
+        return Err(ModelError::NoElasticModes {
+            skipped: parts.skipped,
+        });
     }
+    let modes = mode_table(plate, &parts.entries);
+    let body = BodyData::new(plate, &modes, &parts.radial_shapes);
+    Ok(PlateModel {
+        plate: plate.clone(),
+        rigidity,
+        modes,
+        radial_shapes: parts.radial_shapes,
+        skipped_rigid_body_modes: parts.skipped,
+        body,
+        radial_resolution: parts.radial_resolution,
+        mindlin: parts.mindlin,
+    })
+}
+
+/// One elastic ⟨k, l⟩ of the mode table: its ω, radial shape and modal mass.
+pub(super) struct TableEntry {
+    pub k: u32,
+    pub l: u32,
+    pub omega: f64,
+    pub radial: usize,
+    pub modal_mass: f64,
+}
+
+/// The mode table (`modes`): one mode per k = 0 entry, a cos/sin pair
+/// otherwise, sorted by frequency, with damping and partners.
+pub(super) fn mode_table(plate: &PlateConfig, entries: &[TableEntry]) -> Vec<Mode> {
     // Expand into modes: one per k = 0, a cos/sin pair otherwise; sort by frequency, then k, then cos before sin.
     let mut modes: Vec<Mode> = Vec::new();
-    for (k, l, omega, e) in &entries {
-        let shapes: &[AngularShape] = if *k == 0 {
+    for e in entries {
+        let shapes: &[AngularShape] = if e.k == 0 {
             &[AngularShape::Axisymmetric]
         } else {
             &[AngularShape::Cos, AngularShape::Sin]
         };
         for &shape in shapes {
             modes.push(Mode {
-                k: *k,
-                l: *l,
+                k: e.k,
+                l: e.l,
                 shape,
-                omega: *omega,
-                frequency_hz: omega / std::f64::consts::TAU,
+                omega: e.omega,
+                frequency_hz: e.omega / std::f64::consts::TAU,
                 modal_mass: e.modal_mass,
                 damping: 0.0,
                 radial: e.radial,
@@ -174,16 +227,7 @@ pub(super) fn build(plate: &PlateConfig) -> Result<PlateModel, ModelError> {
                 .position(|m| m.k == modes[i].k && m.l == modes[i].l && m.shape != modes[i].shape);
         }
     }
-    let body = BodyData::new(plate, &modes, &radial_shapes);
-    Ok(PlateModel {
-        plate: plate.clone(),
-        rigidity,
-        modes,
-        radial_shapes,
-        skipped_rigid_body_modes: skipped,
-        body,
-        radial_resolution,
-    })
+    modes
 }
 
 /// A fixed spline count: the dense eigenproblem of k on the shared basis.

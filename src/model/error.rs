@@ -57,6 +57,15 @@ pub enum ModelError {
         /// The B-splines it was reached with.
         splines: usize,
     },
+    /// The Mindlin modes could not be computed.
+    #[error("plate.theory = mindlin: {0} (plate.radial_splines is the count per field)")]
+    Mindlin(#[from] super::mindlin::MindlinError),
+    /// A consumer of the modes that does not take Mindlin modes yet.
+    #[error("plate.theory = mindlin is not supported by {what}: it would use the Kirchhoff rotations −∇w and body terms with Mindlin modes; only `modes` uses Mindlin modes so far (docs/mindlin.md). Set plate.theory: kirchhoff for {what}")]
+    MindlinNotWired {
+        /// The command or part that refuses (`simulate`, `campbell`, …).
+        what: &'static str,
+    },
     /// Only rigid-body modes were selected.
     #[error("the selected nodal diameters × nodal circles leave no elastic mode (only rigid-body modes {skipped:?} of the free–free plate)")]
     NoElasticModes {

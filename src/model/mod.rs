@@ -7,7 +7,9 @@
 //! and the displacement field (13) (`shape`) and integrates the body data of
 //! eq. (11) (`body`). Immutable once built; no ROS, no time stepping.
 //! [`mindlin`] computes the thick-plate (Mindlin) modes per k by the same
-//! radial machinery, as a library API that the model does not use yet.
+//! radial machinery; with `plate.theory: mindlin` the model's modes are
+//! those (docs/mindlin.md), and the dynamics refuse them so far
+//! ([`PlateModel::require_kirchhoff`]).
 
 pub(crate) mod body;
 pub(crate) mod bspline;
@@ -36,7 +38,7 @@ pub use resolution::KResolution;
 pub use shape::ShapeValue;
 pub use spinning::{ModalGeometricStiffness, SpinningSpectrum};
 
-use crate::config::PlateConfig;
+use crate::config::{PlateConfig, PlateTheory};
 
 /// Bending rigidity D = E h³ / (12 (1 − ν²)), eq. (2) (defined with the
 /// configuration, whose validation checks its range).
@@ -52,6 +54,8 @@ pub struct PlateModel {
     skipped_rigid_body_modes: Vec<(u32, u32)>,
     body: BodyData,
     radial_resolution: Vec<KResolution>,
+    /// Under Mindlin theory the mode of each radial shape (same index); empty under Kirchhoff.
+    mindlin: Vec<mindlin::MindlinMode>,
 }
 
 impl PlateModel {
@@ -101,6 +105,27 @@ impl PlateModel {
     /// `plate.radial_splines: auto` also its estimated frequency error).
     pub fn radial_resolution(&self) -> &[KResolution] {
         &self.radial_resolution
+    }
+
+    /// The plate theory the modes are of (`plate.theory`).
+    pub fn theory(&self) -> PlateTheory {
+        self.plate.theory
+    }
+
+    /// Under Mindlin theory the Mindlin mode (w, ψ_r, ψ_θ) of radial shape
+    /// `radial` ([`Mode::radial`]); `None` under Kirchhoff theory.
+    pub fn mindlin_mode(&self, radial: usize) -> Option<&mindlin::MindlinMode> {
+        self.mindlin.get(radial)
+    }
+
+    /// Refuse Mindlin modes for `what` (a command or part that would use
+    /// Kirchhoff quantities — the rotations −∇w, the body terms of eq. (11)
+    /// without rotary inertia — with them).
+    pub fn require_kirchhoff(&self, what: &'static str) -> Result<(), ModelError> {
+        match self.theory() {
+            PlateTheory::Kirchhoff => Ok(()),
+            PlateTheory::Mindlin => Err(ModelError::MindlinNotWired { what }),
+        }
     }
 
     /// Body data of eq. (11).

@@ -69,7 +69,8 @@ pub struct Mode {
     pub omega: f64,
     /// ω/2π, Hz.
     pub frequency_hz: f64,
-    /// Generalized mass m_i = ρh ∫ w_i² dA, kg (for the unit-peak shape).
+    /// Generalized mass m_i = ρh ∫ w_i² dA, kg (for the unit-peak shape);
+    /// under Mindlin theory plus the rotary inertia ρh³/12 ∫ ψ_i·ψ_i dA.
     pub modal_mass: f64,
     /// Modal damping ratio ζ_i.
     pub damping: f64,

@@ -52,17 +52,6 @@ pub enum Input {
     Batch(CheckedBatch),
 }
 
-impl Input {
-    /// The commands it holds (0-based indices).
-    #[cfg(test)]
-    pub fn commands(&self) -> Vec<Command> {
-        match self {
-            Input::One(c) => vec![c.command()],
-            Input::Batch(b) => b.iter().map(|c| c.command()).collect(),
-        }
-    }
-}
-
 /// `NodeWrench.kind` values of msg/NodeWrench.msg.
 pub(crate) const KIND_ALE: u8 = 0;
 pub(crate) const KIND_LAGRANGE: u8 = 1;
@@ -235,53 +224,6 @@ impl InputValidator {
                 })
             })
     }
-
-    /// The model named `name` (`pads`, `tool`), if the scene has it.
-    #[cfg(test)]
-    fn model(&self, name: &str) -> Option<usize> {
-        self.rules.model(name).map(|(i, _)| i)
-    }
-
-    /// A clamp force on the topic of pad `pad` (0-based), N.
-    #[cfg(test)]
-    pub fn clamp_force(&self, pad: usize, newtons: f64) -> Result<Input, Rejection> {
-        match self.model("pads") {
-            Some(model) => self.load_command(model, 0, pad, newtons),
-            None => Err(Rejection::from_input_error(InputError::NoSuchInstance {
-                instance: "pad",
-                index: pad + 1,
-                count: 0,
-            })),
-        }
-    }
-
-    /// A PadClampForces message: pad numbers (from 1) and their clamp forces, N.
-    #[cfg(test)]
-    pub fn clamp_forces(&self, pads: &[u32], forces: &[f64]) -> Result<Input, Rejection> {
-        match self.model("pads") {
-            Some(model) => self.load_batch(model, 0, pads, forces),
-            None if pads.is_empty() && forces.is_empty() => {
-                Ok(Input::Batch(CheckedBatch::default()))
-            }
-            None => Err(Rejection::from_input_error(InputError::NoSuchInstance {
-                instance: "pad",
-                index: pads.first().map_or(1, |&p| p as usize),
-                count: 0,
-            })),
-        }
-    }
-
-    /// A tool feed rate, m/s.
-    #[cfg(test)]
-    pub fn tool_feed(&self, rate: f64) -> Result<Input, Rejection> {
-        match self.model("tool") {
-            Some(model) => self.load_command(model, 0, 0, rate),
-            None => Err(Rejection::from_input_error(InputError::NoSuchModel {
-                model: "tool",
-                key: "tool.ale_node",
-            })),
-        }
-    }
 }
 
 /// The rejection of a refused batch: `what[position]: why` (or `entry position: why`),
@@ -447,8 +389,18 @@ mod tests {
         validator_with(0, false)
     }
 
+    /// The commands a checked input holds (0-based indices).
     fn cmds(r: Result<Input, Rejection>) -> Result<Vec<Command>, Rejection> {
-        r.map(|i| i.commands())
+        r.map(|i| match i {
+            Input::One(c) => vec![c.command()],
+            Input::Batch(b) => b.iter().map(|c| c.command()).collect(),
+        })
+    }
+
+    /// The index of the model named `name` in the scene's rules (what the
+    /// node's subscriptions carry with each topic).
+    fn model(v: &InputValidator, name: &str) -> usize {
+        v.rules.model(name).expect("the scene has the model").0
     }
 
     fn w(fz: f64) -> Wrench {
@@ -579,6 +531,8 @@ mod tests {
     #[test]
     fn load_model_commands_follow_the_dynamics_rules() {
         let v = validator_with(2, false);
+        let pads = model(&v, "pads");
+        let clamp_force = |pad, newtons| v.load_command(pads, 0, pad, newtons);
         let clamp = |instance, value| {
             Ok(vec![Command::Load {
                 model: 0,
@@ -587,29 +541,30 @@ mod tests {
                 value,
             }])
         };
-        assert_eq!(cmds(v.clamp_force(1, 5000.0)), clamp(1, 5000.0));
-        assert_eq!(cmds(v.clamp_force(0, 0.0)), clamp(0, 0.0));
+        assert_eq!(cmds(clamp_force(1, 5000.0)), clamp(1, 5000.0));
+        assert_eq!(cmds(clamp_force(0, 0.0)), clamp(0, 0.0));
         assert_eq!(
-            cmds(v.clamp_force(0, 1e4)),
+            cmds(clamp_force(0, 1e4)),
             clamp(0, 1e4),
             "limits.max_force itself is allowed"
         );
         let reason = |r: Result<Input, Rejection>| r.unwrap_err().reason;
-        assert_eq!(reason(v.clamp_force(0, f64::NAN)), RejectReason::NonFinite);
+        assert_eq!(reason(clamp_force(0, f64::NAN)), RejectReason::NonFinite);
         assert_eq!(
-            reason(v.clamp_force(0, f64::NEG_INFINITY)),
+            reason(clamp_force(0, f64::NEG_INFINITY)),
             RejectReason::NonFinite
         );
-        assert_eq!(reason(v.clamp_force(0, -1.0)), RejectReason::Absurd);
-        assert_eq!(reason(v.clamp_force(0, 1.5e4)), RejectReason::Absurd);
-        assert_eq!(reason(v.clamp_force(2, 1.0)), RejectReason::NoSuchNode);
-        let e = v.clamp_force(0, -1.0).unwrap_err();
+        assert_eq!(reason(clamp_force(0, -1.0)), RejectReason::Absurd);
+        assert_eq!(reason(clamp_force(0, 1.5e4)), RejectReason::Absurd);
+        assert_eq!(reason(clamp_force(2, 1.0)), RejectReason::NoSuchNode);
+        let e = clamp_force(0, -1.0).unwrap_err();
         assert!(e.detail.contains("pad_1 clamp force"), "{}", e.detail);
-        // The tool: none in this scene; with one, the feed rule.
-        assert_eq!(reason(v.tool_feed(1e-3)), RejectReason::NoSuchNode);
+        // The tool's feed rate, by the same path.
         let t = validator_with(0, true);
+        let tool = model(&t, "tool");
+        let tool_feed = |rate| t.load_command(tool, 0, 0, rate);
         assert_eq!(
-            cmds(t.tool_feed(-2e-3)),
+            cmds(tool_feed(-2e-3)),
             Ok(vec![Command::Load {
                 model: 0,
                 command: 0,
@@ -617,14 +572,15 @@ mod tests {
                 value: -2e-3
             }])
         );
-        assert_eq!(reason(t.tool_feed(f64::NAN)), RejectReason::NonFinite);
-        assert_eq!(reason(t.tool_feed(1.5)), RejectReason::Absurd);
-        assert_eq!(reason(t.clamp_force(0, 1.0)), RejectReason::NoSuchNode);
+        assert_eq!(reason(tool_feed(f64::NAN)), RejectReason::NonFinite);
+        assert_eq!(reason(tool_feed(1.5)), RejectReason::Absurd);
     }
 
     #[test]
     fn clamp_force_arrays_are_all_or_nothing() {
         let v = validator_with(2, false);
+        let pads = model(&v, "pads");
+        let clamp_forces = |p: &[u32], f: &[f64]| v.load_batch(pads, 0, p, f);
         let clamp = |instance, value| Command::Load {
             model: 0,
             command: 0,
@@ -632,18 +588,18 @@ mod tests {
             value,
         };
         assert_eq!(
-            cmds(v.clamp_forces(&[2, 1], &[10.0, 20.0])),
+            cmds(clamp_forces(&[2, 1], &[10.0, 20.0])),
             Ok(vec![clamp(1, 10.0), clamp(0, 20.0)])
         );
-        assert_eq!(cmds(v.clamp_forces(&[], &[])), Ok(vec![]));
-        let reason = |p: &[u32], f: &[f64]| v.clamp_forces(p, f).unwrap_err().reason;
+        assert_eq!(cmds(clamp_forces(&[], &[])), Ok(vec![]));
+        let reason = |p: &[u32], f: &[f64]| clamp_forces(p, f).unwrap_err().reason;
         assert_eq!(reason(&[1], &[1.0, 2.0]), RejectReason::MalformedBatch);
         assert_eq!(reason(&[1, 1], &[1.0, 2.0]), RejectReason::MalformedBatch);
         assert_eq!(reason(&[0], &[1.0]), RejectReason::NoSuchNode);
         assert_eq!(reason(&[1, 3], &[1.0, 1.0]), RejectReason::NoSuchNode);
         assert_eq!(reason(&[1, 2], &[1.0, f64::NAN]), RejectReason::NonFinite);
         assert_eq!(reason(&[1, 2], &[1.0, -5.0]), RejectReason::Absurd);
-        let e = v.clamp_forces(&[1, 2], &[1.0, 2e4]).unwrap_err();
+        let e = clamp_forces(&[1, 2], &[1.0, 2e4]).unwrap_err();
         assert!(
             e.detail.contains("entry 1") && e.detail.contains("not applied"),
             "{}",

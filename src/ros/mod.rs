@@ -36,8 +36,6 @@ pub mod inputs;
 pub(crate) mod logging;
 pub(crate) mod marker_thread;
 mod node;
-// Documented by its own owner; exempt here until then.
-#[allow(missing_docs)]
 pub mod params_service;
 pub(crate) mod services;
 pub mod sim_loop;

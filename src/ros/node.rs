@@ -179,6 +179,9 @@ pub fn run_node(
         scene: setup.scene.clone(),
         error,
     })?;
+    if let Some(text) = sim.model().thickness_warning_text() {
+        eprintln!("[annular_plate] warning: {text}");
+    }
     // The bag first: a directory that exists is refused before any DDS traffic.
     let bag = match &record {
         Some(dir) => {

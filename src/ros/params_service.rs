@@ -35,6 +35,7 @@ pub const RUNTIME_KEYS: &[(&str, &str)] = &[
 
 pub use super::services::RuntimeChange;
 
+/// A parameter value as the parameter services carry it.
 pub fn to_ros_value(v: &ParamValue) -> RosValue {
     match v.clone() {
         ParamValue::Bool(b) => RosValue::Boolean(b),
@@ -131,10 +132,12 @@ pub struct ParamStore {
 }
 
 impl ParamStore {
+    /// A store of the node's effective parameters.
     pub fn new(values: BTreeMap<String, ParamValue>) -> Self {
         ParamStore { values }
     }
 
+    /// The value of `name`, if it is a parameter.
     pub fn get(&self, name: &str) -> Option<&ParamValue> {
         self.values.get(name)
     }
@@ -170,6 +173,7 @@ impl ParamStore {
         }
     }
 
+    /// `get_parameters`: the value of each name (unset for an unknown one).
     pub fn get_values(&self, names: &[String]) -> Vec<raw::ParameterValue> {
         names
             .iter()
@@ -182,6 +186,7 @@ impl ParamStore {
             .collect()
     }
 
+    /// `get_parameter_types`: the type of each name (0, unset, for an unknown one).
     pub fn get_types(&self, names: &[String]) -> Vec<u8> {
         names
             .iter()
@@ -193,6 +198,7 @@ impl ParamStore {
             .collect()
     }
 
+    /// `describe_parameters`: the descriptor of each name (its type, its rule, read-only unless it can change at run time).
     pub fn describe(&self, names: &[String]) -> Vec<raw::ParameterDescriptor> {
         names
             .iter()

@@ -345,6 +345,9 @@ pub fn run(
             detail: format!("targets must be positive, got {:?}", plan.targets),
         });
     }
+    if config.plate.theory == crate::config::PlateTheory::Mindlin {
+        return Err(ModelError::MindlinNotWired { what: "`study`" }.into());
+    }
     let started = Instant::now();
     let total = plan.units(config);
     let mut done = 0usize;

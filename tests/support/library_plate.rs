@@ -5,12 +5,14 @@
 use super::exact_plate::{Edge, Material};
 use annular_plate::config::{Boundary, PlateConfig};
 
-/// The exact solution's edge for the library's boundary condition.
+/// The exact Kirchhoff solution's edge for the library's boundary condition
+/// (`supported_soft` is Mindlin's only: no Kirchhoff edge).
 pub fn edge(b: Boundary) -> Edge {
     match b {
         Boundary::Free => Edge::Free,
         Boundary::Supported => Edge::Supported,
         Boundary::Clamped => Edge::Clamped,
+        Boundary::SupportedSoft => panic!("supported_soft has no Kirchhoff edge"),
     }
 }
 

@@ -30,10 +30,10 @@ use std::path::Path;
 /// `--max-frames` unless given.
 pub const DEFAULT_MAX_FRAMES: usize = 10_000;
 /// Rendering time of a frame (960×480 GIF, release build, one core: 0.07 s measured), for estimates.
-pub const FRAME_SECONDS: f64 = 0.08;
+pub(crate) const FRAME_SECONDS: f64 = 0.08;
 
 /// The largest |w| of the run is drawn this fraction of r_a high in the side view.
-pub const SIDE_FRACTION: f64 = 0.1;
+pub(crate) const SIDE_FRACTION: f64 = 0.1;
 /// Cells of the polar grid the frames are drawn from.
 const RINGS: usize = 48;
 const SECTORS: usize = 360;
@@ -41,6 +41,7 @@ const SECTORS: usize = 360;
 /// What to render.
 #[derive(Debug, Clone)]
 pub struct Animation {
+    /// Frames per second of the animation.
     pub fps: u32,
     /// Refuse more frames than this (`--max-frames`).
     pub max_frames: usize,
@@ -48,20 +49,24 @@ pub struct Animation {
     pub slowdown: f64,
     /// Side-view magnification; None: auto.
     pub scale: Option<f64>,
+    /// Picture size.
     pub size: Size,
 }
 
 /// The frames' layout and the run's numbers, for tests.
 #[derive(Debug, Clone, PartialEq)]
 pub struct AnimationInfo {
+    /// Frames drawn.
     pub frames: usize,
     /// CSV row of each frame.
     pub rows: Vec<usize>,
     /// Largest |w| of the run (colour reference), m.
     pub w_ref: f64,
+    /// The side view's magnification of the deflection.
     pub scale: f64,
     /// Top view: centre (px) and pixels per metre.
     pub top_centre: (f64, f64),
+    /// Pixels per metre of the top view.
     pub px_per_m: f64,
 }
 
@@ -132,7 +137,7 @@ fn amplitudes(data: &CsvData, n: usize, rows: &[usize]) -> CliResult<Vec<Vec<f64
 }
 
 /// Rows of the frames: round(span × slowdown × fps) frames, first and last rows included.
-pub fn frame_rows(
+pub(crate) fn frame_rows(
     times: &[f64],
     fps: u32,
     slowdown: f64,
@@ -176,6 +181,9 @@ pub fn animate(
 ) -> CliResult<AnimationInfo> {
     let model = PlateModel::new(&config.plate)
         .map_err(|e| CliError::Usage(format!("the params file's plate: {e}")))?;
+    model
+        .require_kirchhoff("`plot`")
+        .map_err(|e| CliError::Usage(format!("{e}")))?;
     let times = data.column("time")?;
     let chi = data.column("joint_position")?;
     // The work is the frames' (bounded by --max-frames), not the rows'.

@@ -18,6 +18,7 @@ use std::path::Path;
 /// Where the picture put each critical-speed marker: (k, l, pixel x, pixel y).
 #[derive(Debug, Clone, PartialEq)]
 pub struct CampbellGeometry {
+    /// One per critical speed: (k, l, pixel x, pixel y).
     pub markers: Vec<(u32, u32, i32, i32)>,
 }
 
@@ -44,7 +45,7 @@ struct CampbellPicture<'a> {
 }
 
 /// Marker radius, px.
-pub const CRITICAL_MARKER_RADIUS: i32 = 6;
+pub(crate) const CRITICAL_MARKER_RADIUS: i32 = 6;
 
 impl Painter for CampbellPicture<'_> {
     type Out = CampbellGeometry;

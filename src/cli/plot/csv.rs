@@ -15,7 +15,9 @@ pub const MAX_CSV_BYTES: u64 = 512 << 20;
 /// A CSV of numbers with a header (as `simulate` writes it).
 #[derive(Debug, Clone, PartialEq)]
 pub struct CsvData {
+    /// The file it was read from.
     pub path: PathBuf,
+    /// The column names, in file order.
     pub header: Vec<String>,
     /// Column-major.
     pub columns: Vec<Vec<f64>>,
@@ -46,6 +48,7 @@ impl CsvData {
         Self::parse(&text, path)
     }
 
+    /// Parse the text of a CSV (`path` names it in errors).
     pub fn parse(text: &str, path: &Path) -> CliResult<CsvData> {
         let mut lines = text
             .lines()
@@ -99,6 +102,7 @@ impl CsvData {
         })
     }
 
+    /// The column named `name`; an error names the columns there are.
     pub fn column(&self, name: &str) -> CliResult<&[f64]> {
         match self.header.iter().position(|h| h == name) {
             Some(j) => Ok(&self.columns[j]),
@@ -138,7 +142,7 @@ impl CsvData {
 }
 
 /// `*` matches any run of characters.
-pub fn glob_match(pattern: &str, s: &str) -> bool {
+pub(crate) fn glob_match(pattern: &str, s: &str) -> bool {
     let parts: Vec<&str> = pattern.split('*').collect();
     if parts.len() == 1 {
         return pattern == s;
@@ -250,9 +254,11 @@ fn with_units(names: &[String]) -> String {
 pub struct PanelGeometry {
     /// Plotting area in pixels: x from left to right, y from top to bottom (exclusive ends).
     pub x_px: (i32, i32),
+    /// Plotting area's y pixels, top to bottom (exclusive end).
     pub y_px: (i32, i32),
     /// Data ranges mapped onto it (x left → right, y bottom → top).
     pub x_range: (f64, f64),
+    /// Data range of y (bottom → top).
     pub y_range: (f64, f64),
 }
 
@@ -270,14 +276,20 @@ impl PanelGeometry {
 
 /// Stacked time-history panels from a CSV.
 pub struct CsvPlot<'a> {
+    /// The CSV.
     pub data: &'a CsvData,
+    /// The column on the horizontal axis.
     pub x: &'a str,
+    /// The columns of each panel, top to bottom.
     pub panels: Vec<Vec<String>>,
+    /// Axis label per panel (missing ones from the column names).
     pub ylabels: Vec<String>,
+    /// Title above the panels.
     pub title: Option<String>,
 }
 
 impl CsvPlot<'_> {
+    /// Draw to `out` (.png or .svg); where each panel was drawn.
     pub fn render(&self, out: &Path, size: Size) -> CliResult<Vec<PanelGeometry>> {
         self.data.column(self.x)?;
         for p in &self.panels {

@@ -95,7 +95,12 @@ fn project(p: &Point) -> (f64, f64, f64) {
 }
 
 /// Draw the triangle list of `array` (and its text) to `out` (.png or .svg).
-pub fn render_marker(array: &MarkerArray, caption: &str, out: &Path, size: Size) -> CliResult<()> {
+pub(crate) fn render_marker(
+    array: &MarkerArray,
+    caption: &str,
+    out: &Path,
+    size: Size,
+) -> CliResult<()> {
     let mesh = array
         .markers
         .iter()
@@ -163,7 +168,12 @@ pub fn render_marker(array: &MarkerArray, caption: &str, out: &Path, size: Size)
 }
 
 /// `plot marker`: the message logged at or just after `at` seconds from the bag's first marker.
-pub fn plot_marker(bag: &Path, at: Option<f64>, out: &Path, size: Size) -> CliResult<(u64, usize)> {
+pub(crate) fn plot_marker(
+    bag: &Path,
+    at: Option<f64>,
+    out: &Path,
+    size: Size,
+) -> CliResult<(u64, usize)> {
     let markers = read_markers(bag)?;
     let t0 = markers[0].0;
     let want = at.map_or(markers.last().unwrap().0, |s| {

@@ -48,7 +48,9 @@ pub use crate::model::nodal_lines::{nodal_angles, nodal_radii};
 /// Picture size in pixels, `WIDTHxHEIGHT`.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct Size {
+    /// Width, pixels.
     pub width: u32,
+    /// Height, pixels.
     pub height: u32,
 }
 
@@ -76,6 +78,7 @@ impl std::fmt::Display for Size {
     }
 }
 
+/// `annular_plate plot`: pictures of a run or a scene.
 #[derive(clap::Subcommand, Debug, Clone)]
 pub enum PlotCommand {
     /// Time histories from a `simulate` CSV: one panel per column list, stacked.
@@ -95,11 +98,13 @@ pub enum PlotCommand {
         #[arg(long = "ylabel", value_name = "TEXT")]
         ylabels: Vec<String>,
         #[arg(long)]
+        /// Title above the picture.
         title: Option<String>,
         /// Output file, .png or .svg.
         #[arg(long)]
         out: PathBuf,
         #[arg(long, default_value = "1200x800")]
+        /// Picture size, `WIDTHxHEIGHT` in pixels.
         size: Size,
     },
     /// A grid of mode shapes seen from above (rows: nodal circles l, columns: nodal diameters k).
@@ -116,8 +121,10 @@ pub enum PlotCommand {
         #[arg(long, value_delimiter = ',')]
         l: Option<Vec<u32>>,
         #[arg(long)]
+        /// Title above the picture.
         title: Option<String>,
         #[arg(long)]
+        /// Output file, .png or .svg.
         out: PathBuf,
         /// Picture size; default: 230 × 250 pixels per mode.
         #[arg(long)]
@@ -125,8 +132,10 @@ pub enum PlotCommand {
     },
     /// One mode as a shaded surface beside its top view.
     Mode {
+        /// Params file (ROS 2 format) giving the plate.
         params: PathBuf,
         #[arg(short = 'p', long = "param", value_name = "NAME:=VALUE")]
+        /// Parameter overrides `-p name:=value` (as after --ros-args).
         overrides: Vec<String>,
         /// Mode number as listed by `annular_plate modes` (from 1).
         #[arg(long, conflicts_with_all = ["k", "l"])]
@@ -141,10 +150,13 @@ pub enum PlotCommand {
         #[arg(long, default_value = "cos")]
         shape: String,
         #[arg(long)]
+        /// Title above the picture.
         title: Option<String>,
         #[arg(long)]
+        /// Output file, .png or .svg.
         out: PathBuf,
         #[arg(long, default_value = "1400x640")]
+        /// Picture size, `WIDTHxHEIGHT` in pixels.
         size: Size,
     },
     /// The deformed plate of a `simulate` run as an animation (top and side view, node frames, time).
@@ -167,6 +179,7 @@ pub enum PlotCommand {
         #[arg(long)]
         scale: Option<f64>,
         #[arg(long, default_value = "960x480")]
+        /// Picture size, `WIDTHxHEIGHT` in pixels.
         size: Size,
         /// Refuse an animation of more frames than this (the refusal gives the estimate).
         #[arg(long, default_value_t = animate::DEFAULT_MAX_FRAMES)]
@@ -187,10 +200,12 @@ pub enum PlotCommand {
         #[arg(long)]
         out: PathBuf,
         #[arg(long, default_value = "900x640")]
+        /// Picture size, `WIDTHxHEIGHT` in pixels.
         size: Size,
     },
 }
 
+/// Run `annular_plate plot`.
 pub fn main(cmd: PlotCommand) -> CliResult<()> {
     match cmd {
         PlotCommand::Csv {
@@ -347,6 +362,6 @@ fn first_sorted(v: &[u32], n: usize) -> Vec<u32> {
 }
 
 /// Read a params file and apply `name:=value` overrides.
-pub fn load_with_overrides(path: &Path, overrides: &[String]) -> CliResult<Config> {
+pub(crate) fn load_with_overrides(path: &Path, overrides: &[String]) -> CliResult<Config> {
     super::load_config_with(path, overrides)
 }

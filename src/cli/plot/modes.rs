@@ -14,7 +14,7 @@ use std::path::Path;
 // ---------------------------------------------------------------- mode shapes
 
 /// Diverging colour for w/max|w| ∈ [−1, 1]: blue below zero, white at zero, red above.
-pub fn diverging(t: f64) -> RGBColor {
+pub(crate) fn diverging(t: f64) -> RGBColor {
     let t = t.clamp(-1.0, 1.0);
     let (end, s) = if t >= 0.0 {
         ((178.0, 24.0, 43.0), t)
@@ -29,18 +29,25 @@ pub fn diverging(t: f64) -> RGBColor {
 /// Where one top view of a mode was drawn.
 #[derive(Debug, Clone, PartialEq)]
 pub struct TopView {
+    /// Nodal diameters k.
     pub k: u32,
+    /// Nodal circles l.
     pub l: u32,
     /// Index into the model's modes (of the model that drew it), None if ⟨k, l⟩ is a rigid-body motion.
     pub mode: Option<usize>,
+    /// cos or sin (None for k = 0).
     pub shape: Option<AngularShape>,
     /// Disc centre, pixels.
     pub center: (i32, i32),
     /// Pixels per metre.
     pub scale: f64,
+    /// r_i, m.
     pub inner_radius: f64,
+    /// r_a, m.
     pub outer_radius: f64,
+    /// Radii of the nodal circles, m.
     pub nodal_radii: Vec<f64>,
+    /// Angles of the nodal half-diameters, rad.
     pub nodal_angles: Vec<f64>,
 }
 
@@ -172,7 +179,11 @@ pub(super) fn model_for(config: &Config, ks: &[u32], ls: &[u32]) -> CliResult<Pl
             "nodal diameters must be ≤ 200 and nodal circles ≤ 50".to_string(),
         ));
     }
-    PlateModel::new(&plate).map_err(|e| CliError::Usage(format!("{e}")))
+    let model = PlateModel::new(&plate).map_err(|e| CliError::Usage(format!("{e}")))?;
+    model
+        .require_kirchhoff("`plot`")
+        .map_err(|e| CliError::Usage(format!("{e}")))?;
+    Ok(model)
 }
 
 pub(super) struct ModeGrid<'a> {
@@ -308,9 +319,13 @@ impl Painter for ModeGrid<'_> {
 pub enum ModeChoice {
     /// As numbered by `annular_plate modes` (from 1).
     Index(usize),
+    /// By ⟨k, l⟩ and shape.
     KL {
+        /// Nodal diameters k.
         k: u32,
+        /// Nodal circles l.
         l: u32,
+        /// cos or sin.
         shape: AngularShape,
     },
 }
@@ -333,6 +348,9 @@ pub fn mode_picture(
         ModeChoice::Index(i) => {
             let model =
                 PlateModel::new(&config.plate).map_err(|e| CliError::Usage(format!("{e}")))?;
+            model
+                .require_kirchhoff("`plot`")
+                .map_err(|e| CliError::Usage(format!("{e}")))?;
             if i == 0 || i > model.n_modes() {
                 return Err(CliError::Usage(format!(
                     "--index {i}: the model has modes 1..{} (see `annular_plate modes`)",

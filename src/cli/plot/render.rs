@@ -11,12 +11,15 @@ use std::path::Path;
 
 /// Picture format, from the output's extension.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Format {
+pub(crate) enum Format {
+    /// PNG.
     Png,
+    /// SVG.
     Svg,
 }
 
-pub fn format_of(path: &Path) -> CliResult<Format> {
+/// The format of `path` by its extension (.png or .svg); any other is refused.
+pub(crate) fn format_of(path: &Path) -> CliResult<Format> {
     match path
         .extension()
         .and_then(|e| e.to_str())
@@ -33,7 +36,7 @@ pub fn format_of(path: &Path) -> CliResult<Format> {
 }
 
 /// The output's format is known and its folder exists.
-pub fn check_output_path(path: &Path) -> CliResult<()> {
+pub(crate) fn check_output_path(path: &Path) -> CliResult<()> {
     format_of(path)?;
     if let Some(dir) = path.parent().filter(|d| !d.as_os_str().is_empty()) {
         if !dir.is_dir() {
@@ -54,7 +57,7 @@ pub(super) fn de<E: std::fmt::Debug>(e: E) -> CliError {
 pub(super) const FONT: &str = "sans-serif";
 
 /// Register the embedded DejaVu Sans with plotters (once).
-pub fn ensure_fonts() {
+pub(crate) fn ensure_fonts() {
     static ONCE: std::sync::Once = std::sync::Once::new();
     ONCE.call_once(|| {
         let _ = plotters::style::register_font(FONT, FontStyle::Normal, dejavu::sans::regular());

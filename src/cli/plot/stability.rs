@@ -17,15 +17,21 @@ use std::path::Path;
 
 /// The map's data as the picture needs it: `growth_rate[s][m]`.
 pub struct StabilityGrid<'a> {
+    /// The speeds, rad/s.
     pub speeds: &'a [f64],
+    /// The friction coefficients μ.
     pub mu: &'a [f64],
+    /// Largest real part of the eigenvalues per speed and μ, 1/s.
     pub growth_rate: &'a [Vec<f64>],
+    /// Per speed, the smallest unstable μ of the range (None: stable
+    /// throughout).
     pub threshold_mu: &'a [Option<f64>],
 }
 
 /// Where each cell's centre was drawn and whether it is unstable: (pixel x, pixel y, growing).
 #[derive(Debug, Clone, PartialEq)]
 pub struct StabilityGeometry {
+    /// Per cell: (pixel x, pixel y, unstable).
     pub cells: Vec<(i32, i32, bool)>,
     /// One entry per speed with a threshold: where it was drawn and how.
     pub thresholds: Vec<ThresholdMark>,
@@ -34,6 +40,7 @@ pub struct StabilityGeometry {
 /// Where a threshold lies against the plotted μ range.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Placement {
+    /// Inside the range: a dot.
     Within,
     /// Below the range, or at or below its first μ (unstable there already):
     /// an arrow pointing down at the lower edge, labelled "≤ μ_first" / "< edge".
@@ -43,11 +50,14 @@ pub enum Placement {
     Above,
 }
 
+/// How one speed's threshold μ was drawn.
 #[derive(Debug, Clone, PartialEq)]
 pub struct ThresholdMark {
+    /// The speed, rad/s.
     pub speed: f64,
     /// The map's threshold (∞: stable over the range).
     pub mu: f64,
+    /// Where it lies against the range.
     pub placement: Placement,
     /// Pixel of the dot (within) or of the arrow's tip (at the edge).
     pub pixel: (i32, i32),
@@ -66,6 +76,7 @@ pub fn placement(t: f64, lo: f64, hi: f64) -> Placement {
     }
 }
 
+/// Draw the map (growth rate over speed and μ, thresholds marked) to `out`.
 pub fn stability_map(grid: &StabilityGrid, out: &Path, size: Size) -> CliResult<StabilityGeometry> {
     render(out, size, &MapPicture { grid })
 }

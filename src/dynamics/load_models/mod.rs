@@ -103,6 +103,7 @@ pub struct LoadModels {
 /// The load models' state (part of [`State`](super::State)): one slot per model.
 #[derive(Debug, Clone, PartialEq, Default)]
 pub struct LoadModelState {
+    /// Per model, its state values (empty for a model without state).
     pub slots: Vec<Vec<f64>>,
 }
 
@@ -118,6 +119,7 @@ impl LoadModelState {
         }
     }
 
+    /// Whether every value is finite.
     pub fn is_finite(&self) -> bool {
         self.slots.iter().flatten().all(|v| v.is_finite())
     }
@@ -126,6 +128,7 @@ impl LoadModelState {
 /// Commands of the load models (part of [`Inputs`](super::Inputs)): per model its values.
 #[derive(Debug, Clone, PartialEq, Default)]
 pub struct LoadCommands {
+    /// Per model, its command values.
     pub values: Vec<Vec<f64>>,
 }
 
@@ -134,9 +137,13 @@ pub struct LoadCommands {
 /// scratch (scratch space allocated once).
 #[derive(Debug)]
 pub struct ModelWrenches {
+    /// Per ALE node, the models' wrench in its axes.
     pub ale: Vec<Wrench>,
+    /// Per Lagrangian node, the models' wrench in its axes.
     pub lagrange: Vec<Wrench>,
+    /// Per ALE node, whether that wrench follows the deformed surface.
     pub ale_follower: Vec<bool>,
+    /// Per Lagrangian node, whether that wrench follows the deformed surface.
     pub lagrange_follower: Vec<bool>,
     /// τ_f(Ω) = −Σ capacity · tanh(Ω · slope) of all models, so the joint can
     /// solve its step with the friction at the step's end.
@@ -230,6 +237,7 @@ impl LoadModels {
         }
     }
 
+    /// Whether the scene has no load model.
     pub fn is_empty(&self) -> bool {
         self.models.is_empty()
     }

@@ -22,7 +22,9 @@ pub type Builder = fn(&Config, &SceneNodes) -> Option<Box<dyn LoadModel>>;
 /// line is its name).
 #[derive(Debug, Clone, Copy)]
 pub struct Registration {
+    /// Builds the model of a scene (None when its section is off).
     pub build: Builder,
+    /// Its declared outputs.
     pub outputs: &'static Outputs,
     /// Its parameters: sections (keys, types, units, defaults, rules, texts)
     /// and the reader that makes its validated section of the `Config`.
@@ -31,8 +33,11 @@ pub struct Registration {
 
 /// What a model's builder sees of the scene: the node frames and modal masses.
 pub struct SceneNodes<'a> {
+    /// The ALE node frames.
     pub ale: &'a [NodeFrame],
+    /// The Lagrangian node frames.
     pub lagrange: &'a [NodeFrame],
+    /// Modal masses m_i, kg, in the model's mode order.
     pub modal_mass: &'a [f64],
     /// The residual compliance among the node frames (`plate.residual_flexibility`),
     /// for contacts in series with it (`dynamics::contact_compliance`).
@@ -42,13 +47,17 @@ pub struct SceneNodes<'a> {
 /// The kinematics a model is evaluated at (substep start or an RK4 stage).
 #[derive(Clone, Copy)]
 pub struct LoadContext<'a> {
+    /// The ALE node frames.
     pub ale_nodes: &'a [NodeFrame],
+    /// The Lagrangian node frames.
     pub lagrange_nodes: &'a [NodeFrame],
     /// Amplitudes and rates in the ALE description (eq. 20).
     pub q_ale: &'a [f64],
+    /// Their rates, m/s.
     pub q_dot_ale: &'a [f64],
     /// Joint angle χ (wrapped to [0, 2π), rad) and speed Ω (rad/s).
     pub chi: f64,
+    /// Joint speed Ω, rad/s.
     pub speed: f64,
     /// The residual deflection of the held wrenches (None with
     /// `plate.residual_flexibility: false`): contacts add it to the modal
@@ -74,9 +83,11 @@ pub struct CommandSpec {
     pub name: &'static str,
     /// The name token of its topic (`clamp_force`: `~/pad_<j>/clamp_force`; `feed`: `~/tool_feed`).
     pub token: &'static str,
+    /// SI unit of its value (`N`, `m/s`).
     pub unit: &'static str,
     /// Instances are numbered (`pad_1`, `pad_2`, …) rather than one.
     pub indexed: bool,
+    /// The rule a value must satisfy.
     pub rule: CommandRule,
 }
 
@@ -129,7 +140,9 @@ impl CommandSpec {
 /// M^(−½) C M^(−½) (1/s) with every contact closed.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct Coupling {
+    /// Largest eigenvalue of M^(−½) K M^(−½), 1/s².
     pub stiffness_rate_sq: f64,
+    /// Largest eigenvalue of M^(−½) C M^(−½), 1/s.
     pub damping_rate: f64,
 }
 
@@ -137,9 +150,11 @@ pub struct Coupling {
 pub struct ModelOut<'a> {
     /// Wrenches per node frame, in the node frame's axes (summed over the models).
     pub ale: &'a mut [Wrench],
+    /// Wrenches per Lagrangian node frame, in its axes.
     pub lagrange: &'a mut [Wrench],
     /// Whether the node's model wrench follows the deformed surface.
     pub ale_follower: &'a mut [bool],
+    /// Whether the Lagrangian node's model wrench follows the deformed surface.
     pub lagrange_follower: &'a mut [bool],
     /// This model's friction terms of the joint torque ([`LoadModel::friction_terms`] of them).
     pub friction: &'a mut [FrictionTorque],
@@ -269,7 +284,9 @@ pub trait LoadModel: Debug + Send + Sync {
 /// the fixed point, ∂w/∂t|θ (m/s).
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct SurfaceKinematics {
+    /// Deflection w, m.
     pub w: f64,
+    /// Its rate at the fixed point, ∂w/∂t|θ, m/s.
     pub w_dot: f64,
 }
 
@@ -282,6 +299,15 @@ pub fn surface_kinematics(node: &NodeFrame, q: &[f64], q_dot: &[f64]) -> Surface
         s.w_dot += shape.w * vi;
     }
     s
+}
+
+/// [`contact_rate`] of contacts at the given ALE nodes (0-based) of the scene.
+pub fn ale_contact_rate(nodes: &SceneNodes, ale: &[usize]) -> f64 {
+    let shapes: Vec<&[NodeShape]> = ale
+        .iter()
+        .map(|&j| nodes.ale[j].shapes.as_slice())
+        .collect();
+    contact_rate(&shapes, nodes.modal_mass)
 }
 
 /// Largest eigenvalue of M^(−½) (Σ_c w_c w_cᵀ) M^(−½), w_c the mode shapes at contact c.

@@ -36,7 +36,9 @@ pub struct OutputChannel {
     pub name: &'static str,
     /// SI unit of its values (`N`, `N·m`, `m`; `—` for numbers).
     pub unit: &'static str,
+    /// A physical quantity or a number.
     pub kind: ChannelKind,
+    /// One value or one per instance.
     pub shape: ChannelShape,
 }
 
@@ -59,6 +61,7 @@ impl OutputChannel {
 pub struct CsvColumn {
     /// The channel's name (one of [`Outputs::channels`]).
     pub channel: &'static str,
+    /// The quantity part of the column's name.
     pub quantity: &'static str,
 }
 
@@ -79,6 +82,7 @@ impl CsvColumn {
 pub struct StateTopic {
     /// Relative name (`~/pad_states`).
     pub topic: &'static str,
+    /// Its message package (`annular_plate`).
     pub package: &'static str,
     /// Its message type (`PadStates`).
     pub message: &'static str,
@@ -89,6 +93,7 @@ pub struct StateTopic {
 /// A model's declared outputs (a `static` in its file).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct Outputs {
+    /// The channels, in the message's field order.
     pub channels: &'static [OutputChannel],
     /// Prefix of its CSV columns (`pad`, `tool`, `link`).
     pub column_prefix: &'static str,
@@ -96,6 +101,7 @@ pub struct Outputs {
     pub numbered: bool,
     /// Columns, repeated per instance in this order.
     pub columns: &'static [CsvColumn],
+    /// The topic carrying the channels (None: CSV only).
     pub topic: Option<StateTopic>,
 }
 
@@ -142,15 +148,20 @@ impl Outputs {
 /// the model's slot, commands and scratch at the current state, and the
 /// joint angle χ (wrapped, rad).
 pub struct OutputContext<'a> {
+    /// The model's state values.
     pub slot: &'a [f64],
+    /// The model's command values.
     pub commands: &'a [f64],
+    /// The model's scratch at the last evaluation.
     pub scratch: &'a dyn Any,
+    /// Joint angle χ (wrapped), rad.
     pub chi: f64,
 }
 
 /// Where each channel of one model lies in its flat values.
 #[derive(Debug, Clone, PartialEq, Default)]
 pub struct ChannelLayout {
+    /// Per channel, its range in the model's flat values.
     pub ranges: Vec<Range<usize>>,
 }
 
@@ -174,6 +185,7 @@ impl ChannelLayout {
         self.ranges.last().map_or(0, |r| r.end)
     }
 
+    /// Whether the model has no values.
     pub fn is_empty(&self) -> bool {
         self.len() == 0
     }

@@ -102,6 +102,7 @@ pub struct PadContactPoint {
 /// The pads of a scene: immutable parameters (commands are in `Inputs`).
 #[derive(Debug, Clone, PartialEq)]
 pub struct Pads {
+    /// The contact points.
     pub contacts: Vec<PadContactPoint>,
     /// Contact points per pad.
     pub contacts_per_pad: Vec<usize>,
@@ -109,13 +110,19 @@ pub struct Pads {
     pub stiffness: f64,
     /// c_c per contact point and face, N·s/m.
     pub damping: f64,
+    /// Friction coefficient μ.
     pub friction_coefficient: f64,
+    /// A face whose normal force would pull is released (N ≥ 0).
     pub lift_off: bool,
+    /// Friction follows the deformed surface.
     pub follower_friction: bool,
+    /// Fixed or floating caliper.
     pub caliper: Caliper,
+    /// Where the pads act: faces or mid-plane.
     pub contact_surface: ContactSurface,
     /// μ_s − μ and v_S of the speed-dependent friction (faces only; 0: constant μ).
     pub friction_excess: f64,
+    /// v_S, m/s.
     pub stribeck_speed: f64,
     /// Clamp force per pad the configuration starts with, N (the running
     /// commands are in `Inputs`).
@@ -151,6 +158,7 @@ pub struct ContactForces {
 }
 
 impl Pads {
+    /// The number of pads.
     pub fn pad_count(&self) -> usize {
         self.contacts_per_pad.len()
     }
@@ -176,9 +184,11 @@ impl Pads {
 /// the last evaluation (what ~/pad_states reports).
 #[derive(Debug, Clone, PartialEq, Default)]
 pub struct PadScratch {
+    /// Per contact point, w and ∂w/∂t under it.
     pub kinematics: Vec<SurfaceKinematics>,
     /// The in-plane and normal sliding terms under each contact (faces only).
     pub faces: Vec<FaceKinematics>,
+    /// Per contact point, its forces.
     pub forces: Vec<ContactForces>,
     pub(super) closed: Vec<bool>,
     /// The series solve's scratch (`pad_series.rs`): net axial forces, deflections without them, kinematics tried.

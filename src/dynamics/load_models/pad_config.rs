@@ -33,6 +33,7 @@ pub enum Caliper {
 }
 
 impl Caliper {
+    /// The parameter value (`fixed`, `floating`).
     pub fn name(self) -> &'static str {
         match self {
             Caliper::Fixed => "fixed",
@@ -53,6 +54,7 @@ pub enum ContactSurface {
 }
 
 impl ContactSurface {
+    /// The parameter value (`faces`, `mid_plane`).
     pub fn name(self) -> &'static str {
         match self {
             ContactSurface::Faces => "faces",
@@ -66,6 +68,7 @@ impl ContactSurface {
 /// with the pad's clamp force, and friction μN along the deformed surface.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct PadsConfig {
+    /// The contact points of the pads.
     pub contacts: Vec<PadContact>,
     /// Initial clamp force of each pad, N: the force each face of the disc is
     /// pressed with, shared equally by the pad's contact points.
@@ -80,7 +83,9 @@ pub struct PadsConfig {
     pub lift_off: bool,
     /// Friction follows the deformed surface (the paper's follower forces).
     pub follower_friction: bool,
+    /// Fixed or floating caliper (`pads.caliper`).
     pub caliper: Caliper,
+    /// Where the pads act: on the faces or the mid-plane (`pads.contact_surface`).
     pub contact_surface: ContactSurface,
     /// μ_s of the speed-dependent friction law μ(v) = μ + (μ_s − μ) e^(−v/v_S)
     /// (`pads.static_friction_coefficient`; `None`: constant μ; faces only).

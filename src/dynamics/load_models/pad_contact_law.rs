@@ -62,16 +62,19 @@ impl Pads {
     /// Lift-off (N ≥ 0 with `pads.lift_off`), the net axial force and the
     /// friction of the normal forces in `out`.
     pub(super) fn net_and_friction(&self, speed: f64, out: &mut [ContactForces]) {
+        // sign(Ω) at the last radius: contacts on one radius share it.
+        let mut sign = (f64::NAN, 0.0);
         for (contact, f) in self.contacts.iter().zip(out.iter_mut()) {
+            if contact.radius != sign.0 {
+                sign = (contact.radius, Self::sliding_sign(speed, contact.radius));
+            }
             f.margin = [f.top.max(-f64::MAX), f.bottom.max(-f64::MAX)];
             if self.lift_off {
                 f.top = f.top.max(0.0);
                 f.bottom = f.bottom.max(0.0);
             }
             f.axial = f.bottom - f.top;
-            f.tangential = -self.friction_coefficient
-                * (f.top + f.bottom)
-                * Self::sliding_sign(speed, contact.radius);
+            f.tangential = -self.friction_coefficient * (f.top + f.bottom) * sign.1;
         }
     }
 

@@ -187,7 +187,10 @@ impl Pads {
 /// (n_c × 2 per pad; per unit ξ̇ it is c_c/k_c of it).
 #[derive(Debug, Clone, PartialEq)]
 pub struct LinearSeriesForces {
+    /// Per unit q̄: n_c × n, row-major, N/m.
     pub q: Vec<f64>,
+    /// Per unit q̄̇: n_c × n, row-major, N s/m.
     pub q_dot: Vec<f64>,
+    /// Per unit ξ of a massive pad: n_c × 2 per pad, N/m (empty for massless pads).
     pub pad: Vec<f64>,
 }

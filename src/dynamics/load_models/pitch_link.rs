@@ -107,8 +107,11 @@ pub struct PitchLinks {
     pub nodes: Vec<usize>,
     /// φ of each node in the plate frame, rad.
     pub angles: Vec<f64>,
+    /// Steady part of each link force, N (`links.mean_force`).
     pub mean_force: f64,
+    /// Amplitude of the once-per-revolution part, N (`links.cyclic_force`).
     pub cyclic_force: f64,
+    /// Its phase, rad (`links.cyclic_phase`).
     pub cyclic_phase: f64,
 }
 

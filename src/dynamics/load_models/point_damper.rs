@@ -16,16 +16,15 @@
 //! (docs/architecture.md, "Adding a load model").
 
 use super::model::{
-    contact_rate, surface_kinematics, Coupling, LoadContext, LoadModel, ModelOut, Registration,
+    ale_contact_rate, surface_kinematics, Coupling, LoadContext, LoadModel, ModelOut, Registration,
     SceneNodes,
 };
 use super::outputs::NO_OUTPUTS;
-use crate::config::model_sections::{no_other_keys, node_refs, non_negative};
+use crate::config::model_sections::read_ale_node_list;
 use crate::config::table::{param, Section, Ty, Value};
 use crate::config::{
     Config, ConfigError, LoadModelSection, ModelParameters, Reader, SectionContext, SectionData,
 };
-use crate::dynamics::node_frame::NodeShape;
 use serde::Serialize;
 use std::any::Any;
 
@@ -62,14 +61,15 @@ pub const PARAMETERS: ModelParameters = ModelParameters {
 
 /// `dampers.*`: the section when `dampers.ale_nodes` names nodes.
 fn read(r: &Reader, ctx: &mut SectionContext) -> Result<Option<Box<dyn SectionData>>, ConfigError> {
-    let numbers = r.i64_array("dampers.ale_nodes")?;
-    if numbers.is_empty() {
-        no_other_keys(r, "dampers", "dampers.ale_nodes")?;
-        return Ok(None);
-    }
-    let nodes = node_refs("dampers.ale_nodes", &numbers, "ale", ctx.nodes.ale.len())?;
-    let damping = non_negative("dampers.damping", r.f64("dampers.damping")?)?;
-    Ok(Some(DampersConfig { nodes, damping }.boxed()))
+    let section = read_ale_node_list(r, ctx, "dampers", "dampers.ale_nodes", ["dampers.damping"])?;
+    Ok(section.map(|s| {
+        let [damping] = s.values;
+        DampersConfig {
+            nodes: s.nodes,
+            damping,
+        }
+        .boxed()
+    }))
 }
 
 /// Dampers under ALE nodes (immutable; in the `Scene`).
@@ -93,14 +93,9 @@ pub const REGISTRATION: Registration = Registration {
 /// The registered builder: dampers where `dampers.ale_nodes` names nodes.
 pub fn build(config: &Config, nodes: &SceneNodes) -> Option<Box<dyn LoadModel>> {
     let d = config.section::<DampersConfig>()?;
-    let shapes: Vec<&[NodeShape]> = d
-        .nodes
-        .iter()
-        .map(|&j| nodes.ale[j].shapes.as_slice())
-        .collect();
     let coupling = Coupling {
         stiffness_rate_sq: 0.0,
-        damping_rate: d.damping * contact_rate(&shapes, nodes.modal_mass),
+        damping_rate: d.damping * ale_contact_rate(nodes, &d.nodes),
     };
     Some(Box::new(PointDampers {
         nodes: d.nodes.clone(),

@@ -13,11 +13,11 @@
 //! model"): the model, its builder and one line in `REGISTRY`.
 
 use super::model::{
-    contact_rate, surface_kinematics, Coupling, LoadContext, LoadModel, ModelOut, Registration,
+    ale_contact_rate, surface_kinematics, Coupling, LoadContext, LoadModel, ModelOut, Registration,
     SceneNodes,
 };
 use super::outputs::NO_OUTPUTS;
-use crate::config::model_sections::{no_other_keys, node_refs, non_negative};
+use crate::config::model_sections::read_ale_node_list;
 use crate::config::table::{param, Section, Ty, Value};
 use crate::config::{
     Config, ConfigError, LoadModelSection, ModelParameters, Reader, SectionContext, SectionData,
@@ -62,22 +62,17 @@ pub const PARAMETERS: ModelParameters = ModelParameters {
 
 /// `springs.*`: the section when `springs.ale_nodes` names nodes.
 fn read(r: &Reader, ctx: &mut SectionContext) -> Result<Option<Box<dyn SectionData>>, ConfigError> {
-    let numbers = r.i64_array("springs.ale_nodes")?;
-    if numbers.is_empty() {
-        no_other_keys(r, "springs", "springs.ale_nodes")?;
-        return Ok(None);
-    }
-    let nodes = node_refs("springs.ale_nodes", &numbers, "ale", ctx.nodes.ale.len())?;
-    let stiffness = non_negative("springs.stiffness", r.f64("springs.stiffness")?)?;
-    let damping = non_negative("springs.damping", r.f64("springs.damping")?)?;
-    Ok(Some(
+    let keys = ["springs.stiffness", "springs.damping"];
+    let section = read_ale_node_list(r, ctx, "springs", "springs.ale_nodes", keys)?;
+    Ok(section.map(|s| {
+        let [stiffness, damping] = s.values;
         SpringsConfig {
-            nodes,
+            nodes: s.nodes,
             stiffness,
             damping,
         }
-        .boxed(),
-    ))
+        .boxed()
+    }))
 }
 
 /// Springs under ALE nodes (immutable; in the `Scene`).
@@ -103,12 +98,7 @@ pub const REGISTRATION: Registration = Registration {
 /// The registered builder: springs where `springs.ale_nodes` names nodes.
 pub fn build(config: &Config, nodes: &SceneNodes) -> Option<Box<dyn LoadModel>> {
     let s = config.section::<SpringsConfig>()?;
-    let shapes: Vec<&[crate::dynamics::node_frame::NodeShape]> = s
-        .nodes
-        .iter()
-        .map(|&j| nodes.ale[j].shapes.as_slice())
-        .collect();
-    let lam = contact_rate(&shapes, nodes.modal_mass);
+    let lam = ale_contact_rate(nodes, &s.nodes);
     let coupling = Coupling {
         stiffness_rate_sq: s.stiffness * lam,
         damping_rate: s.damping * lam,
@@ -144,5 +134,60 @@ impl LoadModel for PointSprings {
             let s = surface_kinematics(&ctx.ale_nodes[j], ctx.q_ale, ctx.q_dot_ale);
             out.ale[j].force[2] -= self.stiffness * s.w + self.damping * s.w_dot;
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A scene with two ALE nodes and the given `springs.*` entries.
+    fn read(springs: &str) -> Result<Config, ConfigError> {
+        let yaml = format!(
+            "/**:
+  ros__parameters:
+    nodes:
+      ale_radial: [1.0, 0.5]
+      ale_angular: [0.0, 0.25]
+    springs:
+{springs}
+"
+        );
+        Config::from_yaml_str(&yaml, "annular_plate")
+    }
+
+    #[test]
+    fn each_key_reaches_its_own_field() {
+        let c = read("      ale_nodes: [2, 1]\n      stiffness: 3.0e5\n      damping: 7.0").unwrap();
+        assert_eq!(
+            c.section::<SpringsConfig>(),
+            Some(&SpringsConfig {
+                nodes: vec![1, 0],
+                stiffness: 3.0e5,
+                damping: 7.0,
+            })
+        );
+    }
+
+    #[test]
+    fn bad_keys_are_refused_naming_the_key() {
+        let negative = read("      ale_nodes: [1]\n      stiffness: -1.0").unwrap_err();
+        assert!(
+            matches!(&negative, ConfigError::Negative { key, .. } if key == "springs.stiffness"),
+            "{negative:?}"
+        );
+        let negative = read("      ale_nodes: [1]\n      damping: -1.0").unwrap_err();
+        assert!(
+            matches!(&negative, ConfigError::Negative { key, .. } if key == "springs.damping"),
+            "{negative:?}"
+        );
+        let no_node = read("      ale_nodes: [3]").unwrap_err();
+        assert!(no_node.to_string().contains("springs.ale_nodes"), "{no_node}");
+        let without = read("      damping: 1.0").unwrap_err();
+        assert!(
+            matches!(&without, ConfigError::KeyWithoutSection { enabling_key, .. } if *enabling_key == "springs.ale_nodes"),
+            "{without:?}"
+        );
+        assert_eq!(read("      ale_nodes: []").unwrap().section::<SpringsConfig>(), None);
     }
 }

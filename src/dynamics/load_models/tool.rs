@@ -134,7 +134,9 @@ pub struct ToolStep {
     pub level: f64,
     /// First bin swept and number of bins swept (bins are visited downwards in φ for Ω > 0).
     pub first_bin: i64,
+    /// Number of bins swept.
     pub bins: i64,
+    /// Whether the bins are visited downwards in φ (Ω > 0).
     pub downwards: bool,
 }
 

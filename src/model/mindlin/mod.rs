@@ -63,9 +63,14 @@
 
 mod assembly;
 mod error;
+mod model;
+mod warning;
 
 pub use assembly::MindlinDiscretisation;
 pub use error::MindlinError;
+pub(crate) use model::build_model;
+pub use model::{mindlin_edge, mindlin_plate};
+pub use warning::{ThicknessError, CHECKED_PAIRS, THICKNESS_WARNING_LEVEL};
 
 use super::bspline::BSplineBasis;
 use super::modes::{AngularShape, RadialShape};
