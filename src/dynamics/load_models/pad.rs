@@ -402,7 +402,12 @@ impl LoadModel for Pads {
                 m.copy_from_slice(&f.margin);
             }
         }
-        self.friction_torque_terms(&s.forces, out.friction);
+        // With patches the friction reaches the joint only through the
+        // patches' forces in the node loads (`pad_shear.rs`); the rigid
+        // law's implicit terms would stand for a force the faces do not carry.
+        if self.shear.is_none() {
+            self.friction_torque_terms(&s.forces, out.friction);
+        }
         if self.contact_surface == ContactSurface::Faces {
             let patches = self.pad_states()..self.pad_states() + self.patch_states();
             let (mut x, mut rates) = (slot[patches.clone()].chunks_exact(4), out.rates[patches].chunks_exact_mut(4));

@@ -12,6 +12,11 @@
 //! required: with c_t = 0 the sliding patch is an algebraic constraint
 //! (|k_t x| = μN exactly), infinitely stiff.
 //!
+//! The joint sees the friction only through the patches' forces in the node
+//! loads: the pads declare no implicit friction-torque terms with patches
+//! (`joint.rs`), since the rigid law's μN r tanh(Ω r / v_reg) is not the
+//! force a sticking patch carries.
+//!
 //! The slot holds, after the massive pads' states, per contact point
 //! (top radial, top tangential, bottom radial, bottom tangential), m.
 
