@@ -4,61 +4,19 @@
 //! from the equations of motion; the eigenvalue analysis and the simulation
 //! agree on growth rates; the two descriptions agree to round-off.
 
-use annular_plate::config::{Boundary, Config, Coordinates, IntegratorKind, NodePosition};
-use annular_plate::dynamics::load_models::pad_config::{
-    Caliper, ContactSurface, PadContact, PadsConfig,
-};
+use annular_plate::config::{Config, Coordinates};
+use annular_plate::dynamics::load_models::pad_config::{ContactSurface, PadsConfig};
 use annular_plate::dynamics::{stability, Simulation};
 use annular_plate::model::AngularShape;
 
 mod support;
 use support::fourth_order::assert_fourth_order;
+use support::one_contact::{self, CLAMP, SPEED, STIFFNESS};
 use support::scenes::relative_difference;
 
-const SPEED: f64 = 25.0;
-const CLAMP: f64 = 1000.0;
-const STIFFNESS: f64 = 2.0e7;
-
-/// The brake disc with only the ⟨k = 2, l = 0⟩ pair and one fixed-caliper
-/// contact at θ = 0 on r = 0.1198 m.
+/// The one-contact disc (`support::one_contact`), rigid lining.
 fn scene(surface: ContactSurface, mu: f64) -> Config {
-    let mut c = Config::default();
-    c.plate.inner_radius = 0.07;
-    c.plate.outer_radius = 0.153;
-    c.plate.thickness = 0.0181;
-    c.plate.inner_boundary = Boundary::Supported;
-    c.plate.nodal_diameters = vec![2];
-    c.plate.nodal_circles = vec![0];
-    c.plate.damping = vec![1e-4];
-    // The closed forms are the modal pads' (the contacts in series with the
-    // residual flexibility: tests/contacts_in_series_with_residual.rs).
-    c.plate.residual_flexibility = false;
-    c.nodes.ale.push(NodePosition {
-        radial: 0.6,
-        angular: 0.0,
-    });
-    c.joint.speed = SPEED;
-    c.set_section(PadsConfig {
-        contacts: vec![PadContact { node: 0, pad: 0 }],
-        clamp_force: vec![CLAMP],
-        contact_stiffness: STIFFNESS,
-        contact_damping: 0.0,
-        friction_coefficient: mu,
-        lift_off: false,
-        follower_friction: true,
-        caliper: Caliper::Fixed,
-        contact_surface: surface,
-        static_friction_coefficient: None,
-        stribeck_speed: 1.0,
-        mass: 0.0,
-        backing_stiffness: None,
-        shear: None,
-    });
-    c.simulation.integrator = IntegratorKind::Rk4;
-    c.simulation.rk4_step_limit = 0.05;
-    c.simulation.coordinates = Coordinates::Ale;
-    c.simulation.realtime_factor = 0.0;
-    c
+    one_contact::scene(surface, mu, None)
 }
 
 /// The quartic λ⁴ + a₁λ³ + a₂λ² + a₃λ + a₄ of the pair under the contact at

@@ -6,10 +6,8 @@
 //! a stiff lining reproduces the rigid pads' threshold and motion; ALE and
 //! Lagrangian descriptions converge to one motion; bad keys are refused.
 
-use annular_plate::config::{Boundary, Config, Coordinates, IntegratorKind, NodePosition};
-use annular_plate::dynamics::load_models::pad_config::{
-    Caliper, ContactSurface, PadContact, PadsConfig,
-};
+use annular_plate::config::{Config, Coordinates, IntegratorKind};
+use annular_plate::dynamics::load_models::pad_config::{ContactSurface, PadsConfig};
 use annular_plate::dynamics::{stability, Simulation};
 use annular_plate::model::AngularShape;
 use faer::Mat;
@@ -17,55 +15,17 @@ use nalgebra::Complex;
 
 mod support;
 use support::fourth_order::assert_fourth_order;
+use support::one_contact::{self, CLAMP, SPEED, STIFFNESS, THICKNESS};
 use support::scenes::relative_difference;
 
-const SPEED: f64 = 25.0;
-const CLAMP: f64 = 1000.0;
-const STIFFNESS: f64 = 2.0e7;
-const THICKNESS: f64 = 0.0181;
 /// k_t, c_t per contact point and face: k_t near a ω (a = μN₀/V ≈ 200 N·s/m,
 /// ω ≈ 1e4 1/s), where the patch moves the threshold most.
 const SHEAR: (f64, f64) = (1.0e6, 100.0);
 
-/// The brake disc with only the ⟨k = 2, l = 0⟩ pair and one fixed-caliper
-/// contact at θ = 0 on r = 0.1198 m, friction on the faces, the lining's
-/// patches `shear` (None: rigid).
+/// The one-contact disc (`support::one_contact`) with friction on the faces
+/// and the lining's patches `shear` (None: rigid).
 fn scene(mu: f64, shear: Option<(f64, f64)>) -> Config {
-    let mut c = Config::default();
-    c.plate.inner_radius = 0.07;
-    c.plate.outer_radius = 0.153;
-    c.plate.thickness = THICKNESS;
-    c.plate.inner_boundary = Boundary::Supported;
-    c.plate.nodal_diameters = vec![2];
-    c.plate.nodal_circles = vec![0];
-    c.plate.damping = vec![1e-4];
-    c.plate.residual_flexibility = false;
-    c.nodes.ale.push(NodePosition {
-        radial: 0.6,
-        angular: 0.0,
-    });
-    c.joint.speed = SPEED;
-    c.set_section(PadsConfig {
-        contacts: vec![PadContact { node: 0, pad: 0 }],
-        clamp_force: vec![CLAMP],
-        contact_stiffness: STIFFNESS,
-        contact_damping: 0.0,
-        friction_coefficient: mu,
-        lift_off: false,
-        follower_friction: true,
-        caliper: Caliper::Fixed,
-        contact_surface: ContactSurface::Faces,
-        static_friction_coefficient: None,
-        stribeck_speed: 1.0,
-        mass: 0.0,
-        backing_stiffness: None,
-        shear,
-    });
-    c.simulation.integrator = IntegratorKind::Rk4;
-    c.simulation.rk4_step_limit = 0.05;
-    c.simulation.coordinates = Coordinates::Ale;
-    c.simulation.realtime_factor = 0.0;
-    c
+    one_contact::scene(ContactSurface::Faces, mu, shear)
 }
 
 /// Polynomials in λ, lowest power first.
