@@ -17,7 +17,7 @@
 //! μ δN through k_t + c_t λ and act on nothing (their eigenvalue −k_t/c_t):
 //! they are left out.
 
-use super::load_models::pad::{PadContactPoint, Pads, FRICTION_REGULARISATION_SPEED};
+use super::load_models::pad::{PadContactPoint, Pads};
 use super::load_models::pad_patch::PatchLaw;
 use super::scene::Scene;
 use faer::Mat;
@@ -62,13 +62,7 @@ pub(super) fn add_patch_terms(
     let h = contact.face_z[0] - contact.face_z[1];
     let (s, c) = contact.sin_cos;
     let v = (speed * contact.radius).abs();
-    let x = v / FRICTION_REGULARISATION_SPEED;
-    let g_over_v = if x < 1e-8 {
-        mu / FRICTION_REGULARISATION_SPEED
-    } else {
-        mu * x.tanh() / v
-    };
-    let damp = preload * g_over_v;
+    let damp = preload * super::stability::friction_per_speed(mu, v);
     let lever = 0.5 * h * h * damp;
     let denom = law.damping + damp;
     let (share, relax) = (damp / denom, law.stiffness / denom);
