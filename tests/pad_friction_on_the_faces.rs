@@ -4,15 +4,14 @@
 //! from the equations of motion; the eigenvalue analysis and the simulation
 //! agree on growth rates; the two descriptions agree to round-off.
 
-use annular_plate::config::{Config, Coordinates};
+use annular_plate::config::Config;
 use annular_plate::dynamics::load_models::pad_config::{ContactSurface, PadsConfig};
 use annular_plate::dynamics::{stability, Simulation};
 use annular_plate::model::AngularShape;
 
 mod support;
-use support::fourth_order::assert_fourth_order;
+use support::fourth_order::{assert_fourth_order, descriptions_differ};
 use support::one_contact::{self, CLAMP, SPEED, STIFFNESS};
-use support::scenes::relative_difference;
 
 /// The one-contact disc (`support::one_contact`), rigid lining.
 fn scene(surface: ContactSurface, mu: f64) -> Config {
@@ -218,31 +217,13 @@ fn eigenvalues_and_simulation_agree_on_growth_rates_with_face_friction() {
 #[test]
 fn ale_and_lagrangian_descriptions_converge_to_one_motion_with_face_friction() {
     let mu = 1.5 * closed_form_threshold(true);
-    let run = |coordinates: Coordinates, rate: f64| {
-        let mut c = scene(ContactSurface::Faces, mu);
-        c.simulation.rate_hz = rate;
-        c.simulation.rk4_step_limit = 0.5; // the rate sets RK4's step (h ω ≤ 0.45)
-        c.simulation.coordinates = coordinates;
-        c.initial.q = vec![2e-6, 1e-6];
-        let mut sim = Simulation::new(c).unwrap();
-        let mut out = Vec::new();
-        for _ in 0..(0.05 * rate) as usize {
-            sim.step().unwrap();
-            out.extend_from_slice(sim.q_ale());
-        }
-        out
-    };
+    let config = scene(ContactSurface::Faces, mu);
     // Measured: 1.06e-3, 6.9e-5, 4.3e-6, 2.7e-7 (ratio ≈ 16).
     let last = assert_fourth_order(
         "face friction, rk4 ALE vs Lagrangian",
         &[20_000.0, 40_000.0, 80_000.0, 160_000.0],
-        |rate| {
-            // max |Lagrangian − ALE| over the largest ALE value.
-            relative_difference(
-                &run(Coordinates::Lagrangian, rate),
-                &run(Coordinates::Ale, rate),
-            )
-        },
+        // the rate sets RK4's step (h ω ≤ 0.45)
+        |rate| descriptions_differ(&config, rate, 0.5, |_, _| {}),
     );
     assert!(last < 5e-7);
 }

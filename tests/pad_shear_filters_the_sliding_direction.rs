@@ -6,7 +6,7 @@
 //! a stiff lining reproduces the rigid pads' threshold and motion; ALE and
 //! Lagrangian descriptions converge to one motion; bad keys are refused.
 
-use annular_plate::config::{Config, Coordinates, IntegratorKind};
+use annular_plate::config::{Config, IntegratorKind};
 use annular_plate::dynamics::load_models::pad_config::{ContactSurface, PadsConfig};
 use annular_plate::dynamics::{stability, Simulation};
 use annular_plate::model::AngularShape;
@@ -14,7 +14,7 @@ use faer::Mat;
 use nalgebra::Complex;
 
 mod support;
-use support::fourth_order::assert_fourth_order;
+use support::fourth_order::{assert_fourth_order, descriptions_differ};
 use support::one_contact::{self, CLAMP, SPEED, STIFFNESS, THICKNESS};
 use support::scenes::relative_difference;
 
@@ -309,32 +309,17 @@ fn a_stiff_lining_moves_the_disc_as_the_rigid_pads() {
 #[test]
 fn ale_and_lagrangian_descriptions_converge_to_one_motion_with_the_patches() {
     let mu = 1.5 * threshold(Some(SHEAR));
-    let run = |coordinates: Coordinates, rate: f64| {
-        let mut c = scene(mu, Some(SHEAR));
-        c.simulation.rate_hz = rate;
-        c.simulation.rk4_step_limit = 2.5; // the rate sets RK4's step
-        c.simulation.coordinates = coordinates;
-        c.initial.q = vec![2e-6, 1e-6];
-        let mut sim = Simulation::new(c).unwrap();
-        let mut out = Vec::new();
-        for _ in 0..(0.05 * rate) as usize {
-            sim.step().unwrap();
-            out.extend_from_slice(sim.q_ale());
-            // the radial patch deflections on the amplitudes' scale
-            let slot = &sim.state().load_models.slots[0];
-            out.extend([slot[0], slot[2]]);
-        }
-        out
+    let config = scene(mu, Some(SHEAR));
+    // the radial patch deflections on the amplitudes' scale
+    let patches = |sim: &Simulation, out: &mut Vec<f64>| {
+        let slot = &sim.state().load_models.slots[0];
+        out.extend([slot[0], slot[2]]);
     };
     let last = assert_fourth_order(
         "lining shear, rk4 ALE vs Lagrangian",
         &[20_000.0, 40_000.0, 80_000.0, 160_000.0],
-        |rate| {
-            relative_difference(
-                &run(Coordinates::Lagrangian, rate),
-                &run(Coordinates::Ale, rate),
-            )
-        },
+        // the rate sets RK4's step
+        |rate| descriptions_differ(&config, rate, 2.5, patches),
     );
     assert!(last < 5e-7);
 }

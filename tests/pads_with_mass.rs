@@ -15,8 +15,7 @@ use annular_plate::model::AngularShape;
 use faer::Mat;
 
 mod support;
-use support::fourth_order::assert_fourth_order;
-use support::scenes::relative_difference;
+use support::fourth_order::{assert_fourth_order, descriptions_differ};
 
 const SPEED: f64 = 25.0;
 const CLAMP: f64 = 1000.0;
@@ -444,34 +443,17 @@ fn descriptions_converge_in(series: fn(Config) -> Config) {
     )))
     .unwrap();
     let mu = 1.5 * stability::friction_threshold(sim.scene(), SPEED, 2.0).unwrap();
-    let run = |coordinates: Coordinates, rate: f64| {
-        let mut c = series(scene(Caliper::Fixed, PAD_MASS, Some(BACKING), mu, &[0.0]));
-        c.simulation.rate_hz = rate;
-        // One RK4 step per output step: the rate sets h (the pads' coupling
-        // bound would otherwise set an inner step independent of the rate).
-        c.simulation.rk4_step_limit = 2.5;
-        c.simulation.coordinates = coordinates;
-        c.initial.q = vec![2e-6, 1e-6];
-        let mut sim = Simulation::new(c).unwrap();
-        let mut out = Vec::new();
-        for _ in 0..(0.05 * rate) as usize {
-            sim.step().unwrap();
-            out.extend_from_slice(sim.q_ale());
-            out.extend(sim.state().load_models.slots[0].iter().map(|x| x * 0.1));
-            // pad travel on the amplitudes' scale
-        }
-        out
+    let config = series(scene(Caliper::Fixed, PAD_MASS, Some(BACKING), mu, &[0.0]));
+    // pad travel on the amplitudes' scale
+    let travel = |sim: &Simulation, out: &mut Vec<f64>| {
+        out.extend(sim.state().load_models.slots[0].iter().map(|x| x * 0.1));
     };
     let last = assert_fourth_order(
         "massive pads, rk4 ALE vs Lagrangian",
         &[20_000.0, 40_000.0, 80_000.0, 160_000.0],
-        |rate| {
-            // max |Lagrangian − ALE| over the largest ALE value.
-            relative_difference(
-                &run(Coordinates::Lagrangian, rate),
-                &run(Coordinates::Ale, rate),
-            )
-        },
+        // One RK4 step per output step: the rate sets h (the pads' coupling
+        // bound would otherwise set an inner step independent of the rate).
+        |rate| descriptions_differ(&config, rate, 2.5, travel),
     );
     assert!(last < 5e-7);
 }
