@@ -91,3 +91,18 @@ fn the_shear_correction_must_lie_in_zero_to_one() {
         .unwrap_or_else(|e| panic!("{good}: {e}"));
     }
 }
+
+/// The geometry note that a plate thicker than a quarter of its width is
+/// outside Kirchhoff theory speaks of a Kirchhoff model: a Mindlin plate of
+/// the same geometry does not get it.
+#[test]
+fn the_thick_plate_note_is_given_to_kirchhoff_plates_only() {
+    let mut c = Config::default();
+    c.plate.inner_radius = 0.07;
+    c.plate.outer_radius = 0.153;
+    c.plate.thickness = 0.03; // > (0.153 − 0.07) / 4
+    let thick = |notes: Vec<String>| notes.iter().any(|n| n.contains("outside Kirchhoff"));
+    assert!(thick(c.plate.geometry_notes()));
+    c.plate.theory = PlateTheory::Mindlin;
+    assert!(!thick(c.plate.geometry_notes()));
+}

@@ -254,7 +254,7 @@ impl PlateConfig {
                 ),
             });
         }
-        if self.thickness > 0.25 * (ra - ri) {
+        if self.theory == PlateTheory::Kirchhoff && self.thickness > 0.25 * (ra - ri) {
             notes.push(format!(
                 "plate.thickness = {} m is more than a quarter of the width r_a − r_i = {} m: outside Kirchhoff plate \
                  theory (shear deformation and rotary inertia would lower the frequencies); the model computes the \
