@@ -227,18 +227,6 @@ fn face_couple(pads: &Pads, contact: &PadContactPoint, speed: f64, mu: f64) -> f
     h * pads.friction_law(mu).mu(v.abs()) * (v / FRICTION_REGULARISATION_SPEED).tanh()
 }
 
-/// g(V)/|V| with g = μ τ(|V|) (τ(s) = tanh(s/v_reg)), at the sliding speed
-/// |V|: the radial friction's damping per unit normal force (the sliding
-/// direction's change, docs/scenes.md); μ/v_reg as V → 0.
-pub(super) fn friction_per_speed(mu: f64, speed: f64) -> f64 {
-    let x = speed / FRICTION_REGULARISATION_SPEED;
-    if x < 1e-8 {
-        mu / FRICTION_REGULARISATION_SPEED
-    } else {
-        mu * x.tanh() / speed
-    }
-}
-
 /// The face friction's first-order terms of one contact (module docs) into
 /// the rows of `a` (ALE amplitudes y = (q̄, q̄̇)).
 #[allow(clippy::too_many_arguments)]
@@ -265,7 +253,7 @@ fn add_face_terms(
     let x = v.abs() / FRICTION_REGULARISATION_SPEED;
     let law = pads.friction_law(mu);
     let mu_v = law.mu(v.abs());
-    let g_over_v = friction_per_speed(mu_v, v.abs());
+    let g_over_v = Pads::friction_per_speed(mu_v, v.abs());
     let g_slope =
         mu_v / (FRICTION_REGULARISATION_SPEED * x.cosh().powi(2)) + law.slope(v.abs()) * x.tanh();
     let couple = h * mu_v * (v / FRICTION_REGULARISATION_SPEED).tanh();

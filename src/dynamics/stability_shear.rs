@@ -62,7 +62,7 @@ pub(super) fn add_patch_terms(
     let h = contact.face_z[0] - contact.face_z[1];
     let (s, c) = contact.sin_cos;
     let v = (speed * contact.radius).abs();
-    let damp = preload * super::stability::friction_per_speed(mu, v);
+    let damp = preload * Pads::friction_per_speed(mu, v);
     let lever = 0.5 * h * h * damp;
     let denom = law.damping + damp;
     let (share, relax) = (damp / denom, law.stiffness / denom);

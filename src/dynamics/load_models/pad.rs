@@ -168,6 +168,19 @@ impl Pads {
         (speed * radius / FRICTION_REGULARISATION_SPEED).tanh()
     }
 
+    /// g(V)/|V| with g = μ τ(|V|) (τ(s) = tanh(s/v_reg)), at the sliding
+    /// speed |V| = `speed`: the radial friction's damping per unit normal
+    /// force (the sliding direction's change, docs/scenes.md); μ/v_reg as
+    /// V → 0.
+    pub fn friction_per_speed(mu: f64, speed: f64) -> f64 {
+        let x = speed / FRICTION_REGULARISATION_SPEED;
+        if x < 1e-8 {
+            mu / FRICTION_REGULARISATION_SPEED
+        } else {
+            mu * x.tanh() / speed
+        }
+    }
+
     /// The friction torque as a function of Ω at the contact forces `forces`:
     /// per contact τ = −μ (N_top + N_bottom) r · tanh(Ω r / v_reg).
     pub fn friction_torque_terms(&self, forces: &[ContactForces], out: &mut [FrictionTorque]) {
