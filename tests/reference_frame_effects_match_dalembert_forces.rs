@@ -8,32 +8,11 @@ mod support;
 use annular_plate::config::{Config, Coordinates, IntegratorKind};
 use annular_plate::dynamics::Simulation;
 use nalgebra::Vector3;
-use std::f64::consts::PI;
 use support::scenes::*;
 
-/// ∫∫ f(r, θ) r dr dθ (Gauss–Legendre × trapezoid).
+/// ∫∫ f(r, θ) r dr dθ over the plate (Gauss–Legendre × trapezoid).
 fn integrate(c: &Config, f: impl Fn(f64, f64) -> f64) -> f64 {
-    let gl = [
-        (-0.861_136_311_594_052_6, 0.347_854_845_137_453_9),
-        (-0.339_981_043_584_856_3, 0.652_145_154_862_546_1),
-        (0.339_981_043_584_856_3, 0.652_145_154_862_546_1),
-        (0.861_136_311_594_052_6, 0.347_854_845_137_453_9),
-    ];
-    let (a, b) = (c.plate.inner_radius, c.plate.outer_radius);
-    let (cells, n_phi) = (40, 48);
-    let mut sum = 0.0;
-    for cell in 0..cells {
-        let lo = a + (b - a) * cell as f64 / cells as f64;
-        let hi = lo + (b - a) / cells as f64;
-        for (x, w) in gl {
-            let r = 0.5 * (lo + hi) + 0.5 * (hi - lo) * x;
-            for j in 0..n_phi {
-                let th = 2.0 * PI * j as f64 / n_phi as f64;
-                sum += 0.5 * (hi - lo) * w * r * f(r, th) * 2.0 * PI / n_phi as f64;
-            }
-        }
-    }
-    sum
+    support::quadrature::annulus(c.plate.inner_radius, c.plate.outer_radius, 40, 48, f)
 }
 
 fn settled(c: Config) -> Simulation {

@@ -9,7 +9,7 @@ mod support;
 use annular_plate::config::{Coordinates, IntegratorKind};
 use annular_plate::dynamics::Simulation;
 use nalgebra::Complex;
-use std::f64::consts::PI;
+use support::fit::peak_near;
 use support::scenes::*;
 
 /// The ⟨k = 2, l = 0⟩ pair of the thin disc alone.
@@ -18,44 +18,6 @@ fn pair_scene(speed: f64, zeta: f64) -> annular_plate::config::Config {
     c.plate.damping = vec![zeta];
     c.joint.speed = speed;
     c
-}
-
-/// |Σ z(t) e^{−iνt} w(t)| with a Hann window.
-fn spectrum(z: &[Complex<f64>], dt: f64, nu: f64) -> f64 {
-    let n = z.len() as f64;
-    z.iter()
-        .enumerate()
-        .map(|(j, zj)| {
-            let w = 0.5 - 0.5 * (2.0 * PI * j as f64 / n).cos();
-            zj * Complex::new(0.0, -nu * j as f64 * dt).exp() * w
-        })
-        .sum::<Complex<f64>>()
-        .norm()
-}
-
-/// The spectral peak of z near `guess` (rad/s): grid scan then golden-section refinement.
-fn peak_near(z: &[Complex<f64>], dt: f64, guess: f64, half_width: f64) -> f64 {
-    let (mut best, mut best_v) = (guess, 0.0);
-    for j in 0..=400 {
-        let nu = guess - half_width + 2.0 * half_width * j as f64 / 400.0;
-        let v = spectrum(z, dt, nu);
-        if v > best_v {
-            best = nu;
-            best_v = v;
-        }
-    }
-    let step = 2.0 * half_width / 400.0;
-    let (mut a, mut b) = (best - step, best + step);
-    let g = (5f64.sqrt() - 1.0) / 2.0;
-    for _ in 0..60 {
-        let (c, d) = (b - g * (b - a), a + g * (b - a));
-        if spectrum(z, dt, c) > spectrum(z, dt, d) {
-            b = d;
-        } else {
-            a = c;
-        }
-    }
-    0.5 * (a + b)
 }
 
 #[test]

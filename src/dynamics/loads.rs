@@ -15,7 +15,9 @@
 //!
 //! A frame on a face (z = ±h/2, `nodes.*_surface`) moves in-plane by −z∇w
 //! (Kirchhoff), so its in-plane force F_t does the virtual work −z F_t·∇w_i:
-//! the moment z e_z × F about the mid-plane point, added to M.
+//! the moment z e_z × F about the mid-plane point, added to M. Under Mindlin
+//! theory the tilt is the rotation of the normal, θ = (−ψ_y, ψ_x): a moment
+//! works on ψ, and the face moves by z ψ (`NodeFrame::new`).
 
 use super::commands::Inputs;
 use super::load_models::ModelWrenches;
@@ -122,8 +124,11 @@ pub fn compute(
 /// −C_t (a_R − g) on k = 0 modes, and for a frame turning at constant ω_A
 /// the k = 1 pairs' force in the ALE frame, f̄ = −s (2Ω + ω_z)(ω_x, ω_y)
 /// (Coriolis and centrifugal acceleration (2Ω + ω_z) ω_x x of the spinning
-/// material; s = ρh π ∫ R r² dr). The softening (ω_x² + ω_y²) M_e q enters the
-/// integrators' stiffness instead.
+/// material; s = ρh π ∫ R r² dr). A Mindlin mode's face displacement z ψ
+/// adds the in-plane centrifugal acceleration z ω_z (ω_x, ω_y) of ω × (ω × c)
+/// through its rotary moment p = ρh³/12 ∫ ψ dA: f̄ −= p ω_z (ω_x, ω_y)
+/// (zero under Kirchhoff theory, docs/mindlin.md). The softening
+/// (ω_x² + ω_y²) M_e q enters the integrators' stiffness instead.
 pub fn add_reference_motion(scene: &Scene, speed: f64, ale_frame: &mut [f64]) {
     let body = scene.model.body();
     if scene.effects.axial_body_force {
@@ -139,6 +144,11 @@ pub fn add_reference_motion(scene: &Scene, speed: f64, ale_frame: &mut [f64]) {
             let s = body.first_moments[p.cos][0];
             ale_frame[p.cos] -= s * rate * w[0];
             ale_frame[p.sin] -= s * rate * w[1];
+            let rotary = body.rotary_moments[p.cos][0];
+            if rotary != 0.0 {
+                ale_frame[p.cos] -= rotary * w[2] * w[0];
+                ale_frame[p.sin] -= rotary * w[2] * w[1];
+            }
         }
     }
 }

@@ -3,6 +3,7 @@
 //! mode shapes evaluated once at their points.
 
 use crate::config::NodePosition;
+use crate::model::mindlin::MindlinFieldValue;
 use crate::model::{PlateModel, ShapeValue};
 use std::f64::consts::TAU;
 
@@ -32,7 +33,8 @@ pub struct NodeFrame {
     pub radius: f64,
     /// φ for Lagrangian nodes (plate frame), θ for ALE nodes (ALE frame), rad.
     pub angle: f64,
-    /// Per mode: w_i, and the surface tilt (θ_x, θ_y) = (∂w_i/∂y, −∂w_i/∂x).
+    /// Per mode: w_i, and the tilt (θ_x, θ_y) = (∂w_i/∂y, −∂w_i/∂x) of the
+    /// surface (Kirchhoff), or (−ψ_y, ψ_x) of the normal (Mindlin, [`mindlin_tilt`]).
     pub shapes: Vec<NodeShape>,
     /// Per mode ∂w_i/∂φ (for the material velocity under an ALE point).
     pub w_phi: Vec<f64>,
@@ -54,7 +56,9 @@ pub struct NodeShape {
 }
 
 impl NodeFrame {
-    /// The frame at `p` on the surface at `z` (0: the mid-plane).
+    /// The frame at `p` on the surface at `z` (0: the mid-plane). Under
+    /// Mindlin theory its tilt and [`NodeFrame::gradient_phi`] are of the
+    /// rotation ψ of the normal ([`mindlin_tilt`]), not of the slope ∇w.
     pub(super) fn new(model: &PlateModel, kind: NodeKind, p: NodePosition, z: f64) -> NodeFrame {
         let radius = model.radius_at(p.radial);
         let angle = p.angular * TAU;
@@ -64,12 +68,23 @@ impl NodeFrame {
         let gradient_phi = (0..model.n_modes())
             .map(|i| {
                 let m = &model.modes()[i];
+                let angular = m.shape.eval(m.k, angle);
+                if let Some(mode) = model.mindlin_mode(m.radial) {
+                    let v = mode.eval(radius);
+                    return mindlin_gradient_phi(angle, [v.psi_r, v.psi_theta], angular, m.k);
+                }
                 let rr = model.radial_shapes()[m.radial].eval(radius);
                 let k2 = (m.k * m.k) as f64;
-                gradient_phi(radius, angle, [rr[0], rr[1]], m.shape.eval(m.k, angle), k2)
+                gradient_phi(radius, angle, [rr[0], rr[1]], angular, k2)
             })
             .collect();
-        NodeFrame::from_values(kind, radius, angle, z, &values, gradient_phi)
+        let mut frame = NodeFrame::from_values(kind, radius, angle, z, &values, gradient_phi);
+        for (i, m) in model.modes().iter().enumerate() {
+            if let Some(mode) = model.mindlin_mode(m.radial) {
+                frame.shapes[i].tilt = mindlin_tilt(&mode.field(m.shape, radius, angle), angle);
+            }
+        }
+        frame
     }
 
     /// The frame at (r, φ) on the surface at `z` from the shapes' values
@@ -106,8 +121,8 @@ impl NodeFrame {
     }
 
     /// Position of the frame's point for the deflection `d` there: the
-    /// Kirchhoff face point at z is displaced by w along the axis and by
-    /// −z∇w in-plane, ∇w = (∂w/∂x, ∂w/∂y) = (−θ_y, θ_x).
+    /// face point at z is displaced by w along the axis and by z (θ_y, −θ_x)
+    /// in-plane: −z∇w for Kirchhoff modes (∇w = (−θ_y, θ_x)), z ψ for Mindlin ones.
     pub fn surface_position(&self, d: &NodeShape) -> [f64; 3] {
         [
             self.xy[0] + self.z * d.tilt[1],
@@ -176,6 +191,46 @@ pub(crate) fn gradient_phi(
     [c * e_r - s * e_phi, s * e_r + c * e_phi]
 }
 
+/// The rotation vector (θ_x, θ_y) of a Mindlin normal turned by ψ at angle
+/// φ: the face point at z moves in-plane by z ψ = z (θ_y, −θ_x), so
+/// θ = (−ψ_y, ψ_x) with ψ_x = cos φ ψ_r − sin φ ψ_θ, ψ_y = sin φ ψ_r + cos φ ψ_θ.
+/// A moment M at the node works on the mode through θ·M, the virtual work of
+/// the couple on the rotation of the normal (Kirchhoff's limit ψ = −∇w gives
+/// [`ShapeValue::tilt`]).
+pub(crate) fn mindlin_tilt(f: &MindlinFieldValue, phi: f64) -> [f64; 2] {
+    let (s, c) = phi.sin_cos();
+    let psi_x = c * f.psi_r - s * f.psi_theta;
+    let psi_y = s * f.psi_r + c * f.psi_theta;
+    [-psi_y, psi_x]
+}
+
+/// [`gradient_phi`] of a Mindlin mode: the turn of g = −ψ (the in-plane
+/// face displacement per −z, which is ∇w in Kirchhoff's limit) along φ, for
+/// ψ_r = Ψ_r Θ, ψ_θ = −Ψ_θ Θ′/k (`radial` = (Ψ_r, Ψ_θ), `angular` = (Θ, Θ′),
+/// Θ″ = −k² Θ). In polar components, as for ∇w:
+///
+///   e_r: ∂_φ g_r − g_φ = −Ψ_r Θ′ − Ψ_θ Θ′/k,
+///   e_φ: ∂_φ g_φ + g_r = −k Ψ_θ Θ − Ψ_r Θ,
+///
+/// equal to [`gradient_phi`] for Ψ_r = −R′, Ψ_θ = k R/r. For k = 0 only the
+/// ψ_r terms remain (no ψ_θ family).
+pub(crate) fn mindlin_gradient_phi(
+    phi: f64,
+    radial: [f64; 2],
+    angular: (f64, f64),
+    k: u32,
+) -> [f64; 2] {
+    let ([psi_r, psi_t], (t, dt)) = (radial, angular);
+    let (e_r, e_phi) = if k == 0 {
+        (-psi_r * dt, -psi_r * t)
+    } else {
+        let kf = k as f64;
+        (-psi_r * dt - psi_t * dt / kf, -kf * psi_t * t - psi_r * t)
+    };
+    let (s, c) = phi.sin_cos();
+    [c * e_r - s * e_phi, s * e_r + c * e_phi]
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -220,6 +275,44 @@ mod tests {
             let (t, dt) = (phi.cos(), -phi.sin());
             let g = gradient_phi(0.11, phi, [alpha * 0.11, alpha], (t, dt), 1.0);
             assert!(g[0].abs() < 1e-18 && g[1].abs() < 1e-18, "{g:?}");
+        }
+    }
+
+    /// Kirchhoff's limit ψ = −∇w (Ψ_r = −R′, Ψ_θ = k R/r) of the Mindlin
+    /// tilt and turn is the Kirchhoff tilt and turn of the same w.
+    #[test]
+    fn the_mindlin_tilt_and_turn_of_psi_equal_to_minus_grad_w_are_kirchhoff_s() {
+        use crate::model::AngularShape;
+        let (r, k) = (0.13, 3u32);
+        let (rr, rr_slope) = (r * r, 2.0 * r);
+        let (psi_r, psi_t) = (-rr_slope, k as f64 * rr / r);
+        for shape in [AngularShape::Cos, AngularShape::Sin] {
+            for phi in [0.0, 0.4, 1.9, 4.2] {
+                let (t, dt) = shape.eval(k, phi);
+                let kirchhoff = ShapeValue {
+                    w: rr * t,
+                    w_r: rr_slope * t,
+                    w_phi: rr * dt,
+                };
+                let field = MindlinFieldValue {
+                    w: rr * t,
+                    psi_r: psi_r * t,
+                    psi_theta: -psi_t * dt / k as f64,
+                };
+                let (a, b) = (mindlin_tilt(&field, phi), kirchhoff.tilt(r, phi));
+                let turn_m = mindlin_gradient_phi(phi, [psi_r, psi_t], (t, dt), k);
+                let turn_k = gradient_phi(r, phi, [rr, rr_slope], (t, dt), (k * k) as f64);
+                for i in 0..2 {
+                    assert!(
+                        (a[i] - b[i]).abs() < 1e-15,
+                        "{shape:?} φ = {phi}: {a:?} vs {b:?}"
+                    );
+                    assert!(
+                        (turn_m[i] - turn_k[i]).abs() < 1e-15,
+                        "{turn_m:?} vs {turn_k:?}"
+                    );
+                }
+            }
         }
     }
 }

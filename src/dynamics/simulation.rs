@@ -1,8 +1,8 @@
 //! The facade the CLI and the ROS node drive: scene + state + stepper +
 //! settings + held inputs, with the outputs derived from the state.
 
-use crate::config::{Config, Coordinates, IntegratorKind};
-use crate::model::PlateModel;
+use crate::config::{Config, Coordinates, IntegratorKind, PlateTheory};
+use crate::model::{ModelError, PlateModel};
 use nalgebra::{Isometry3, Quaternion, Translation3, UnitQuaternion, Vector3};
 
 use super::ale::{harmonics, lagrange_to_ale};
@@ -113,8 +113,9 @@ impl Simulation {
     /// Build the model, the scene and the stepper of a validated configuration, at its initial state.
     pub fn new(config: Config) -> Result<Simulation, SimulationError> {
         let model = PlateModel::new(&config.plate)?;
-        model.require_kirchhoff("the dynamics (the node, `simulate`, `stability`, `study`)")?;
+        model.require_no_mindlin_stiffening(config.centrifugal.stiffening)?;
         let scene = Scene::new(&config, model);
+        check_mindlin_scene(&config, &scene)?;
         let settings = StepperSettings::from_config(&config);
         let stepper = Stepper::new(&scene);
         check_inner_substeps(&config, &scene, &settings, &stepper)?;
@@ -568,6 +569,41 @@ pub fn tilt_rotation(tilt: [f64; 2]) -> UnitQuaternion<f64> {
         tilt[1] / angle * s,
         0.0,
     ))
+}
+
+/// Under Mindlin theory, refuse the keys whose terms are Kirchhoff's: the
+/// residual flexibility at the nodes, follower loads and the load models
+/// that do not take Mindlin modes ([`LoadModel::takes_mindlin_modes`],
+/// named by their section).
+///
+/// [`LoadModel::takes_mindlin_modes`]: super::load_models::LoadModel::takes_mindlin_modes
+fn check_mindlin_scene(config: &Config, scene: &Scene) -> Result<(), ModelError> {
+    if scene.model.theory() != PlateTheory::Mindlin {
+        return Ok(());
+    }
+    let refuse = |key, why| Err(ModelError::MindlinKeyNotWired { key, why });
+    if scene.residual.is_some() {
+        return refuse(
+            "plate.residual_flexibility",
+            "Mindlin's static deflection under a point force is infinite at the force (the shear deflection −F ln r / (2π κGh)), so a node's residual compliance has no finite value",
+        );
+    }
+    if config.loads.follower {
+        return refuse(
+            "loads.follower",
+            "a follower force turns with the surface normal (the slope ∇w), and Mindlin node frames turn with the rotation ψ",
+        );
+    }
+    let lm = &scene.load_models;
+    for (model, name) in lm.models().iter().zip(lm.names()) {
+        if !model.takes_mindlin_modes() {
+            return refuse(
+                name,
+                "the load model uses the slope or the face kinematics of Kirchhoff modes",
+            );
+        }
+    }
+    Ok(())
 }
 
 /// Refuse `contact_exponential` on a scene with stiff contacts and more

@@ -1,21 +1,24 @@
 //! Body data of the generalized Newton–Euler equations (11) — the SID
 //! invariants of the plate (Wallrapp [2]) for the displacement field (13).
 //!
-//! Kirchhoff assumptions throughout: the deformation's rotary inertia (terms
-//! of order h²/r² from the in-plane part of (13)) is neglected, exactly as in
-//! M_e; the undeformed inertia tensor J₀ keeps the plate's thickness.
-//! Under `plate.theory: mindlin` M_e (the modes' modal mass) includes the
-//! rotary inertia and C_t, d_CM are unchanged (z ψ integrates to zero over
-//! the thickness), but C_r and J₁ lack ρh³/12 ∫ ψ dA; the dynamics refuse
-//! Mindlin modes ([`super::PlateModel::require_kirchhoff`]).
+//! Kirchhoff theory (`plate.theory: kirchhoff`): the deformation's rotary
+//! inertia (terms of order h²/r² from the in-plane part of (13)) is
+//! neglected, exactly as in M_e; the undeformed inertia tensor J₀ keeps the
+//! plate's thickness. Mindlin theory: the mode's face displacement is z ψ_i,
+//! so M_e (the modal mass) holds the rotary inertia, and so do C_r and J₁
+//! through the rotary moments p_i = ρh³/12 ∫ ψ_i dA (∫ z² dm per area is
+//! ρh³/12; ∫ z dm = 0 leaves C_t and d_CM unchanged). p_i is zero under
+//! Kirchhoff theory.
 //!
-//! With s_i = ρh ∫ w_i (x, y, 1) dA (first moments of the mode shapes):
+//! With s_i = ρh ∫ w_i (x, y, 1) dA (first moments of the mode shapes) and
+//! Φ_i = (z ψ_i, w_i) at the material point c = (x, y, z):
 //! - C_t (n×3), row i = ∫ Φ_iᵀ dm = (0, 0, s_iz): non-zero only for k = 0 modes;
-//! - C_r (n×3), row i = ∫ (c × Φ_i)ᵀ dm = (s_iy, −s_ix, 0): non-zero only for k = 1;
-//! - J(q) = J₀ + Σ J₁ᵢ qᵢ with J₁ᵢ = −(e_z s_{i,xy}ᵀ + s_{i,xy} e_zᵀ) (xz, yz entries, k = 1);
+//! - C_r (n×3), row i = ∫ (c × Φ_i)ᵀ dm = (s_iy − p_iy, −(s_ix − p_ix), 0): non-zero only for k = 1;
+//! - J(q) = J₀ + Σ J₁ᵢ qᵢ with J₁ᵢ = −(e_z (s + p)_{i,xy}ᵀ + (s + p)_{i,xy} e_zᵀ) (xz, yz entries, k = 1);
 //! - m d_CM(q) = C_tᵀ q;
 //! - M_e = diag(m_i), K_e = diag(m_i ω_i²), D_e = diag(2 ζ_i ω_i m_i).
 
+use super::mindlin::MindlinMode;
 use super::modes::{radial_moment, AngularShape, Mode, RadialShape};
 use crate::config::PlateConfig;
 use std::f64::consts::PI;
@@ -30,6 +33,9 @@ pub struct BodyData {
     pub inertia: [[f64; 3]; 3],
     /// s_i = ρh ∫ w_i (x, y, 1) dA per mode.
     pub first_moments: Vec<[f64; 3]>,
+    /// p_i = ρh³/12 ∫ ψ_i dA (x, y) per mode, kg·m: the rotary moments of
+    /// Mindlin modes (non-zero for k = 1), zero under Kirchhoff theory.
+    pub rotary_moments: Vec<[f64; 2]>,
     /// Diagonal of M_e, kg.
     pub modal_mass: Vec<f64>,
     /// Diagonal of K_e, N/m.
@@ -39,8 +45,14 @@ pub struct BodyData {
 }
 
 impl BodyData {
-    /// The body data of `plate` with its modes and their radial shapes.
-    pub fn new(plate: &PlateConfig, modes: &[Mode], shapes: &[RadialShape]) -> BodyData {
+    /// The body data of `plate` with its modes, their radial shapes and (under
+    /// Mindlin theory, else empty) the Mindlin mode of each radial shape.
+    pub fn new(
+        plate: &PlateConfig,
+        modes: &[Mode],
+        shapes: &[RadialShape],
+        mindlin: &[MindlinMode],
+    ) -> BodyData {
         let (ri, ra, h) = (plate.inner_radius, plate.outer_radius, plate.thickness);
         let rho_h = plate.density * h;
         let mass = rho_h * PI * (ra * ra - ri * ri);
@@ -61,10 +73,18 @@ impl BodyData {
                 }
             })
             .collect();
+        let rotary_moments = modes
+            .iter()
+            .map(|m| match mindlin.get(m.radial) {
+                Some(mode) => rotary_moment(plate, mode, m.shape),
+                None => [0.0; 2],
+            })
+            .collect();
         BodyData {
             mass,
             inertia,
             first_moments,
+            rotary_moments,
             modal_mass: modes.iter().map(|m| m.modal_mass).collect(),
             modal_stiffness: modes
                 .iter()
@@ -82,10 +102,10 @@ impl BodyData {
         [0.0, 0.0, self.first_moments[i][2]]
     }
 
-    /// Row i of C_r: ∫ (c × Φ_i)ᵀ dm.
+    /// Row i of C_r: ∫ (c × Φ_i)ᵀ dm = (s_y − p_y, −(s_x − p_x), 0).
     pub fn rotational_coupling(&self, i: usize) -> [f64; 3] {
-        let s = self.first_moments[i];
-        [s[1], -s[0], 0.0]
+        let (s, p) = (self.first_moments[i], self.rotary_moments[i]);
+        [s[1] - p[1], -(s[0] - p[0]), 0.0]
     }
 
     /// Centre of mass d_CM(q) = C_tᵀ q / m (first order).
@@ -102,14 +122,41 @@ impl BodyData {
     pub fn inertia_at(&self, q: &[f64]) -> [[f64; 3]; 3] {
         let mut j = self.inertia;
         let (mut sx, mut sy) = (0.0, 0.0);
-        for (qi, s) in q.iter().zip(&self.first_moments) {
-            sx += qi * s[0];
-            sy += qi * s[1];
+        for ((qi, s), p) in q.iter().zip(&self.first_moments).zip(&self.rotary_moments) {
+            sx += qi * (s[0] + p[0]);
+            sy += qi * (s[1] + p[1]);
         }
         j[0][2] -= sx;
         j[2][0] -= sx;
         j[1][2] -= sy;
         j[2][1] -= sy;
         j
+    }
+}
+
+/// p = ρh³/12 ∫ ψ dA of a Mindlin mode with angular factor `shape`: only
+/// k = 1 has a mean rotation. cos: ψ_x = Ψ_r cos² φ − Ψ_θ sin² φ, so
+/// ∫ ψ_x dφ = π (Ψ_r − Ψ_θ), ∫ ψ_y dφ = 0; sin: the same along y.
+fn rotary_moment(plate: &PlateConfig, mode: &MindlinMode, shape: AngularShape) -> [f64; 2] {
+    if mode.k != 1 {
+        return [0.0; 2];
+    }
+    let basis = mode.w.basis();
+    let mut points = Vec::new();
+    for s in 0..basis.spans() {
+        let (lo, hi) = basis.span_bounds(s);
+        super::quadrature::radial_points(lo, hi, &mut points);
+    }
+    let integral: f64 = points
+        .iter()
+        .map(|&(r, w)| {
+            let v = mode.eval(r);
+            w * (v.psi_r - v.psi_theta) * r
+        })
+        .sum();
+    let p = plate.density * plate.thickness.powi(3) / 12.0 * PI * integral;
+    match shape {
+        AngularShape::Sin => [0.0, p],
+        _ => [p, 0.0],
     }
 }

@@ -161,7 +161,7 @@ pub(super) fn finish(
         });
     }
     let modes = mode_table(plate, &parts.entries);
-    let body = BodyData::new(plate, &modes, &parts.radial_shapes);
+    let body = BodyData::new(plate, &modes, &parts.radial_shapes, &parts.mindlin);
     Ok(PlateModel {
         plate: plate.clone(),
         rigidity,

@@ -61,10 +61,18 @@ pub enum ModelError {
     #[error("plate.theory = mindlin: {0} (plate.radial_splines is the count per field)")]
     Mindlin(#[from] super::mindlin::MindlinError),
     /// A consumer of the modes that does not take Mindlin modes yet.
-    #[error("plate.theory = mindlin is not supported by {what}: it would use the Kirchhoff rotations −∇w and body terms with Mindlin modes; only `modes` uses Mindlin modes so far (docs/mindlin.md). Set plate.theory: kirchhoff for {what}")]
+    #[error("plate.theory = mindlin is not supported by {what}: it would use Kirchhoff quantities (the slope −∇w for the face kinematics, the pads' contact terms) with Mindlin modes (docs/mindlin.md). Set plate.theory: kirchhoff for {what}")]
     MindlinNotWired {
-        /// The command or part that refuses (`simulate`, `campbell`, …).
+        /// The command or part that refuses (`stability`, `study`, `plot`).
         what: &'static str,
+    },
+    /// A key switched on that the dynamics do not have for Mindlin modes.
+    #[error("{key} is not supported with plate.theory = mindlin: {why} (docs/mindlin.md). Switch {key} off or set plate.theory: kirchhoff")]
+    MindlinKeyNotWired {
+        /// The key or section (`plate.residual_flexibility`, `pads`, …).
+        key: &'static str,
+        /// What it would use that Mindlin theory does not give.
+        why: &'static str,
     },
     /// Only rigid-body modes were selected.
     #[error("the selected nodal diameters × nodal circles leave no elastic mode (only rigid-body modes {skipped:?} of the free–free plate)")]

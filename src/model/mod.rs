@@ -8,8 +8,9 @@
 //! eq. (11) (`body`). Immutable once built; no ROS, no time stepping.
 //! [`mindlin`] computes the thick-plate (Mindlin) modes per k by the same
 //! radial machinery; with `plate.theory: mindlin` the model's modes are
-//! those (docs/mindlin.md), and the dynamics refuse them so far
-//! ([`PlateModel::require_kirchhoff`]).
+//! those (docs/mindlin.md); the dynamics take them (node frames turned by
+//! ψ, body data with the rotary inertia), `stability`, `study` and `plot`
+//! refuse them ([`PlateModel::require_kirchhoff`]).
 
 pub(crate) mod body;
 pub(crate) mod bspline;
@@ -126,6 +127,18 @@ impl PlateModel {
             PlateTheory::Kirchhoff => Ok(()),
             PlateTheory::Mindlin => Err(ModelError::MindlinNotWired { what }),
         }
+    }
+
+    /// Refuse `plate.centrifugal_stiffening: true` with Mindlin modes: the
+    /// geometric stiffness of the prestress is derived for Kirchhoff modes only.
+    pub fn require_no_mindlin_stiffening(&self, stiffening: bool) -> Result<(), ModelError> {
+        if stiffening && self.theory() == PlateTheory::Mindlin {
+            return Err(ModelError::MindlinKeyNotWired {
+                key: "plate.centrifugal_stiffening",
+                why: "the geometric stiffness of the spinning prestress is derived for Kirchhoff modes only",
+            });
+        }
+        Ok(())
     }
 
     /// Body data of eq. (11).

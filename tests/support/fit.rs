@@ -1,6 +1,9 @@
 //! Fits the tests share.
 #![allow(dead_code)]
 
+use nalgebra::Complex;
+use std::f64::consts::PI;
+
 /// The least-squares slope of y against x: Σ(x − x̄)(y − ȳ) / Σ(x − x̄)².
 /// With x the times and y = ln|amplitude| of a run, its growth rate (1/s).
 pub fn least_squares_slope(x: &[f64], y: &[f64]) -> f64 {
@@ -11,4 +14,42 @@ pub fn least_squares_slope(x: &[f64], y: &[f64]) -> f64 {
         .map(|(x, y)| (x - mx) * (y - my))
         .sum::<f64>()
         / x.iter().map(|x| (x - mx).powi(2)).sum::<f64>()
+}
+
+/// |Σ z(t) e^{−iνt} w(t)| with a Hann window.
+pub fn spectrum(z: &[Complex<f64>], dt: f64, nu: f64) -> f64 {
+    let n = z.len() as f64;
+    z.iter()
+        .enumerate()
+        .map(|(j, zj)| {
+            let w = 0.5 - 0.5 * (2.0 * PI * j as f64 / n).cos();
+            zj * Complex::new(0.0, -nu * j as f64 * dt).exp() * w
+        })
+        .sum::<Complex<f64>>()
+        .norm()
+}
+
+/// The spectral peak of z near `guess` (rad/s): grid scan then golden-section refinement.
+pub fn peak_near(z: &[Complex<f64>], dt: f64, guess: f64, half_width: f64) -> f64 {
+    let (mut best, mut best_v) = (guess, 0.0);
+    for j in 0..=400 {
+        let nu = guess - half_width + 2.0 * half_width * j as f64 / 400.0;
+        let v = spectrum(z, dt, nu);
+        if v > best_v {
+            best = nu;
+            best_v = v;
+        }
+    }
+    let step = 2.0 * half_width / 400.0;
+    let (mut a, mut b) = (best - step, best + step);
+    let g = (5f64.sqrt() - 1.0) / 2.0;
+    for _ in 0..60 {
+        let (c, d) = (b - g * (b - a), a + g * (b - a));
+        if spectrum(z, dt, c) > spectrum(z, dt, d) {
+            b = d;
+        } else {
+            a = c;
+        }
+    }
+    0.5 * (a + b)
 }

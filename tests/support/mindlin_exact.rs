@@ -291,3 +291,92 @@ fn h_potential(k: u32, d2: f64, r: f64, z: ValDer) -> Fields {
         psi_t_r: -zpp,
     }
 }
+
+/// The radial fields (W, Ψ_r, Ψ_θ) of a mode at one radius (any scale).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ModeFields {
+    pub w: f64,
+    pub psi_r: f64,
+    pub psi_theta: f64,
+}
+
+/// The exact mode of k at its root ω: the edge matrix's null vector
+/// (its right singular vector of the smallest singular value) weighting the
+/// potentials' columns, evaluated anywhere in [r_i, r_a].
+pub struct ExactMode {
+    annulus: MindlinAnnulus,
+    k: u32,
+    omega: f64,
+    weights: Vec<f64>,
+}
+
+impl MindlinAnnulus {
+    /// The exact mode shape of k at the root `omega` (from [`MindlinAnnulus::roots`]).
+    pub fn mode(&self, k: u32, omega: f64) -> ExactMode {
+        let rows = self.matrix(k, omega);
+        let n = rows.len();
+        let mut a = nalgebra::DMatrix::from_fn(n, n, |i, j| rows[i][j]);
+        for mut row in a.row_iter_mut() {
+            let m = row.amax();
+            if m > 0.0 {
+                row /= m;
+            }
+        }
+        let svd = a.svd(false, true);
+        let v_t = svd.v_t.expect("right singular vectors");
+        let smallest = (0..n)
+            .min_by(|&i, &j| svd.singular_values[i].total_cmp(&svd.singular_values[j]))
+            .unwrap();
+        ExactMode {
+            annulus: *self,
+            k,
+            omega,
+            weights: v_t.row(smallest).iter().copied().collect(),
+        }
+    }
+}
+
+impl ExactMode {
+    /// W, Ψ_r, Ψ_θ at r (w = W cos kθ, ψ_r = Ψ_r cos kθ, ψ_θ = Ψ_θ sin kθ).
+    pub fn fields(&self, r: f64) -> ModeFields {
+        let p = &self.annulus;
+        let deltas = p.wave_numbers(self.omega);
+        let p_over_s = p.density * self.omega * self.omega
+            / (p.shear_correction * p.youngs_modulus / (2.0 * (1.0 + p.poisson_ratio)));
+        let potentials = if self.k == 0 { 2 } else { 3 };
+        let mut out = ModeFields {
+            w: 0.0,
+            psi_r: 0.0,
+            psi_theta: 0.0,
+        };
+        let mut c = self.weights.iter();
+        for (q, &d2) in deltas.iter().enumerate().take(potentials) {
+            for second_kind in [false, true] {
+                let z = cylinder(self.k, d2, r, p.inner_radius, p.outer_radius, second_kind);
+                let f = if q < 2 {
+                    w_potential(self.k, d2, r, z, p_over_s / d2 - 1.0)
+                } else {
+                    h_potential(self.k, d2, r, z)
+                };
+                let weight = c.next().unwrap();
+                out.w += weight * f.w;
+                out.psi_r += weight * f.psi_r;
+                out.psi_theta += weight * f.psi_t;
+            }
+        }
+        out
+    }
+
+    /// c_k ∫ [ρh W² + ρh³/12 (Ψ_r² + Ψ_θ²)] r dr for the shape's scale
+    /// (Gauss–Legendre, 4 points on each of `cells` cells).
+    pub fn modal_mass(&self, cells: usize) -> f64 {
+        let p = &self.annulus;
+        let (rho_h, rot) = (p.density * p.thickness, p.inertia());
+        let sum = super::quadrature::radial(p.inner_radius, p.outer_radius, cells, |r| {
+            let f = self.fields(r);
+            (rho_h * f.w * f.w + rot * (f.psi_r * f.psi_r + f.psi_theta * f.psi_theta)) * r
+        });
+        let c_k = if self.k == 0 { 2.0 } else { 1.0 } * std::f64::consts::PI;
+        c_k * sum
+    }
+}

@@ -8,6 +8,7 @@ pub mod fourth_order;
 pub mod library_plate;
 pub mod mindlin_exact;
 pub mod one_contact;
+pub mod quadrature;
 pub mod scene_files;
 pub mod scenes;
 pub mod squeal;

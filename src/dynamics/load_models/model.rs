@@ -177,6 +177,14 @@ pub trait LoadModel: Debug + Send + Sync {
     /// For downcasting to the concrete model (only in the model's own files).
     fn as_any(&self) -> &dyn Any;
 
+    /// Whether the model is right for Mindlin modes (`plate.theory: mindlin`):
+    /// it reads only the deflection w at its nodes and applies only F_z there.
+    /// A model that uses the slope or the face kinematics says no (the
+    /// default), and the scene is refused naming its section.
+    fn takes_mindlin_modes(&self) -> bool {
+        false
+    }
+
     /// Its commands (held in `LoadCommands`, one value per instance and command).
     fn commands(&self) -> &[CommandSpec] {
         &[]

@@ -1,7 +1,7 @@
 //! Mindlin (first-order shear deformation) modes of the annular plate: the
 //! thick-plate counterpart of the Kirchhoff radial problem (paper eq. (4),
-//! section 3.1), by the same radial B-spline Ritz machinery. Library API
-//! only: the model and the node do not use it yet (docs/mindlin.md).
+//! section 3.1), by the same radial B-spline Ritz machinery. With
+//! `plate.theory: mindlin` they are the model's modes (docs/mindlin.md).
 //!
 //! # Fields and kinematics
 //!

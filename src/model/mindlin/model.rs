@@ -12,10 +12,9 @@
 //!   for every k (its accuracy is measured, not estimated per k), a fixed
 //!   `plate.radial_splines` is the count per field.
 //!
-//! The body data's C_t and d_CM (∫ w dm) are exact for Mindlin modes; C_r
-//! and J₁ of eq. (11) lack the rotary term ρh³/12 ∫ ψ dA of the k = 1 modes,
-//! which is one reason the dynamics refuse Mindlin modes
-//! ([`PlateModel::require_kirchhoff`]).
+//! The body data's C_t and d_CM (∫ w dm) are the same in form for Mindlin
+//! modes; C_r and J₁ of eq. (11) gain the rotary moments ρh³/12 ∫ ψ dA of
+//! the k = 1 modes ([`crate::model::BodyData::rotary_moments`]).
 
 use super::{MindlinDiscretisation, MindlinEdge, MindlinPlate, DEFAULT_SPLINES};
 use crate::config::{Boundary, PlateConfig, RadialSplines};
