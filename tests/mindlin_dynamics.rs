@@ -10,7 +10,7 @@
 mod support;
 
 use annular_plate::config::{
-    Boundary, Config, Coordinates, IntegratorKind, NodePosition, PlateTheory, WrenchConfig,
+    Boundary, Config, Coordinates, IntegratorKind, NodePosition, PlateTheory, Surface, WrenchConfig,
 };
 use annular_plate::dynamics::Simulation;
 use annular_plate::model::PlateModel;
@@ -180,46 +180,70 @@ fn exact_slope(mode: &support::mindlin_exact::ExactMode, r: f64) -> f64 {
     (mode.fields(r + e).w - mode.fields(r - e).w) / (2.0 * e)
 }
 
-#[test]
-fn a_static_force_and_moments_at_a_node_deflect_and_turn_it_by_the_exact_mindlin_modal_sum() {
-    let h = 0.0181;
-    let (ks, l_count) = (vec![0, 1, 2, 3, 4], 2usize);
-    let (force, moment) = (-500.0, [40.0, 60.0, 0.0]);
-    let xi = 0.6;
+/// The static w, θ_x, θ_y at (r, φ = 0) under F_z, M_x, M_y there, summed
+/// over the exact Mindlin modes ⟨k, l < l_count⟩ of the bench disc: cos
+/// modes carry w = W and θ_y = ψ_x = Ψ_r, sin modes θ_x = −ψ_y = Ψ_θ, each
+/// mode's amplitude f_i / (m_i ω_i²). Also θ_y with the slope −∂w/∂r in
+/// place of Ψ_r (what Kirchhoff's node frames would use).
+fn exact_static(h: f64, ks: &[u32], l_count: usize, r: f64, f_z: f64, m: [f64; 2]) -> [f64; 4] {
+    let annulus = exact(h);
+    let mut out = [0.0; 4];
+    for &k in ks {
+        for omega in annulus.roots(k, l_count, 64) {
+            let mode = annulus.mode(k, omega);
+            let stiffness = mode.modal_mass(400) * omega * omega;
+            let f = mode.fields(r);
+            let slope = -exact_slope(&mode, r);
+            out[0] += f.w * (f.w * f_z + f.psi_r * m[1]) / stiffness;
+            out[2] += f.psi_r * (f.w * f_z + f.psi_r * m[1]) / stiffness;
+            out[3] += slope * (f.w * f_z + slope * m[1]) / stiffness;
+            if k > 0 {
+                out[1] += f.psi_theta * f.psi_theta * m[0] / stiffness;
+            }
+        }
+    }
+    out
+}
+
+/// The bench disc (k ≤ 4, l ≤ 1), heavily damped, with one ALE node at
+/// (ξ_r = 0.6, φ = 0) on `surface` holding `force`, `moment`, settled: its
+/// radius and the node's output.
+fn settled_node(
+    surface: Surface,
+    force: [f64; 3],
+    moment: [f64; 3],
+) -> (f64, annular_plate::dynamics::NodeOutput) {
     let mut c = integrated(
-        disc(h, ks.clone(), (0..l_count as u32).collect()),
+        disc(0.0181, vec![0, 1, 2, 3, 4], vec![0, 1]),
         IntegratorKind::Exponential,
         Coordinates::Lagrangian,
         1000.0,
     );
     c.plate.damping = vec![0.7];
-    let (p, w) = node(xi, 0.0, [0.0, 0.0, force], moment);
+    let (p, w) = node(0.6, 0.0, force, moment);
     c.nodes.ale.push(p);
     c.loads.ale.push(w);
-    let mut sim = Simulation::new(c.clone()).unwrap();
+    c.nodes.ale_surface = vec![surface];
+    let r = c.plate.inner_radius + 0.6 * (c.plate.outer_radius - c.plate.inner_radius);
+    let mut sim = Simulation::new(c).unwrap();
     for _ in 0..200 {
         sim.step().unwrap();
     }
-    let out = sim.ale_node(0);
-    // The exact modal sum at φ = 0: cos modes carry w = W and θ_y = ψ_x = Ψ_r,
-    // sin modes θ_x = −ψ_y = Ψ_θ; each mode's amplitude is f_i / (m_i ω_i²).
-    let r = c.plate.inner_radius + xi * (c.plate.outer_radius - c.plate.inner_radius);
-    let annulus = exact(h);
-    let (mut w_z, mut theta_x, mut theta_y, mut theta_y_slope) = (0.0, 0.0, 0.0, 0.0);
-    for &k in &ks {
-        for omega in annulus.roots(k, l_count, 64) {
-            let mode = annulus.mode(k, omega);
-            let stiffness = mode.modal_mass(400) * omega * omega;
-            let f = mode.fields(r);
-            w_z += f.w * (f.w * force + f.psi_r * moment[1]) / stiffness;
-            theta_y += f.psi_r * (f.w * force + f.psi_r * moment[1]) / stiffness;
-            let slope = -exact_slope(&mode, r);
-            theta_y_slope += slope * (f.w * force + slope * moment[1]) / stiffness;
-            if k > 0 {
-                theta_x += f.psi_theta * f.psi_theta * moment[0] / stiffness;
-            }
-        }
-    }
+    (r, sim.ale_node(0))
+}
+
+#[test]
+fn a_static_force_and_moments_at_a_node_deflect_and_turn_it_by_the_exact_mindlin_modal_sum() {
+    let (force, moment) = (-500.0, [40.0, 60.0, 0.0]);
+    let (r, out) = settled_node(Surface::Mid, [0.0, 0.0, force], moment);
+    let [w_z, theta_x, theta_y, theta_y_slope] = exact_static(
+        0.0181,
+        &[0, 1, 2, 3, 4],
+        2,
+        r,
+        force,
+        [moment[0], moment[1]],
+    );
     let errors = [
         (out.uz - w_z).abs() / w_z.abs(),
         (out.tilt[0] - theta_x).abs() / theta_x.abs(),
@@ -233,6 +257,32 @@ fn a_static_force_and_moments_at_a_node_deflect_and_turn_it_by_the_exact_mindlin
     // Not vacuous: the slope −∂w/∂r, which Kirchhoff's node frames use, is
     // measurably not the rotation ψ of the thick disc.
     assert!((theta_y_slope - theta_y).abs() > 1e-3 * theta_y.abs());
+}
+
+#[test]
+fn an_in_plane_force_on_a_face_moves_the_face_point_by_z_psi_of_the_exact_modal_sum() {
+    // On the top face (z = h/2) an in-plane force F_t acts through the face
+    // displacement z ψ: the couple z e_z × F_t = (−z F_y, z F_x) on ψ.
+    let (h, force) = (0.0181, [300.0, -200.0, -100.0]);
+    let z = 0.5 * h;
+    let (r, out) = settled_node(Surface::Top, force, [0.0; 3]);
+    let [w_z, theta_x, theta_y, _] = exact_static(
+        h,
+        &[0, 1, 2, 3, 4],
+        2,
+        r,
+        force[2],
+        [-z * force[1], z * force[0]],
+    );
+    // The face point: (r + z ψ_x, z ψ_y, z + w) with ψ = (θ_y, −θ_x).
+    let expected = [r + z * theta_y, -z * theta_x, z + w_z];
+    let got = out.pose.translation;
+    let moved = [z * theta_y, -z * theta_x, w_z];
+    let errors: Vec<f64> = (0..3)
+        .map(|a| (got[a] - expected[a]).abs() / moved[a].abs())
+        .collect();
+    println!("face point {got:?}, exact {expected:?}: errors of the displacement {errors:?}");
+    assert!(errors.iter().all(|&e| e < 1e-6), "{errors:?}");
 }
 
 /// ∫∫ f(r, θ) r dr dθ over the plate (Gauss–Legendre × trapezoid).

@@ -121,12 +121,12 @@ impl LoadModel for PointDampers {
         "dampers.damping"
     }
 
-    /// F_z = −c_d ẇ at each node.
     /// F_z from w and ẇ alone: the same under Mindlin theory.
     fn takes_mindlin_modes(&self) -> bool {
         true
     }
 
+    /// F_z = −c_d ẇ at each node.
     fn evaluate(&self, ctx: &LoadContext, _slot: &[f64], _commands: &[f64], out: ModelOut) {
         for &j in &self.nodes {
             let s = surface_kinematics(&ctx.ale_nodes[j], ctx.q_ale, ctx.q_dot_ale);
