@@ -4,8 +4,9 @@
 //! node frames turned by ψ under a static force and moments against a modal
 //! sum of the exact Mindlin mode shapes; the rotary inertia of the k = 1
 //! modes in the reference-frame terms against d'Alembert forces integrated
-//! through the thickness here; ALE and Lagrangian agree; the thin limit is
-//! Kirchhoff's; the keys whose terms are Kirchhoff's are refused by name.
+//! through the thickness here; a point damper's decay rate from the exact
+//! mode shape; ALE and Lagrangian agree; the thin limit is Kirchhoff's; the
+//! keys whose terms are Kirchhoff's are refused by name.
 
 mod support;
 
@@ -609,4 +610,68 @@ fn simulate_and_campbell_run_a_mindlin_scene_without_pads() {
         "{lowest_campbell} vs {lowest_mode}"
     );
     let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn a_point_damper_decays_a_mindlin_mode_at_the_rate_of_the_exact_mode_shape() {
+    // m q̈ + K q = −c_d Φ² q̇: σ = −c_d Φ²/(2m), where Φ²/m = W(r_a)²/m is
+    // free of the shape's scale — here from the exact Mindlin ⟨0, 0⟩ (with its
+    // rotary inertia in m). Q = q² + ((q̇ − σq)/ω_d)² = A² e^(2σt) (as in
+    // tests/point_damper_decays_a_mode_at_the_closed_form_rate.rs).
+    let (h, r_a) = (0.0181, 0.153);
+    let omega = exact(h).roots(0, 1, 64)[0];
+    let mode = exact(h).mode(0, omega);
+    let phi_sq_over_m = mode.fields(r_a).w.powi(2) / mode.modal_mass(400);
+    for c_d in [50.0, 500.0] {
+        let text = format!(
+            "/**:
+  ros__parameters:
+    plate:
+      theory: mindlin
+      inner_radius: 0.07
+      outer_radius: {r_a}
+      thickness: {h}
+      youngs_modulus: 2.1e11
+      poisson_ratio: 0.3
+      density: 7850.0
+      inner_boundary: supported
+      outer_boundary: free
+      nodal_diameters: [0]
+      nodal_circles: [0]
+      damping: [0.0]
+      residual_flexibility: false
+    nodes:
+      ale_radial: [1.0]
+      ale_angular: [0.0]
+    dampers:
+      ale_nodes: [1]
+      damping: {c_d}
+    simulation:
+      integrator: rk4
+      rate_hz: 20000.0
+      rk4_step_limit: 0.02
+    initial:
+      q: [1.0e-6]
+"
+        );
+        // RK4's own decay at h·ω ≤ 0.02, (hω)⁵ ω/144 ≈ 1e-7 1/s, is far below σ.
+        let config = Config::from_yaml_str(&text, "annular_plate").unwrap();
+        let mut sim = Simulation::new(config).expect("dampers take Mindlin modes");
+        let sigma = -c_d * phi_sq_over_m / 2.0;
+        let omega_d = (omega * omega - sigma * sigma).sqrt();
+        let (mut t, mut ln_q) = (Vec::new(), Vec::new());
+        for _ in 0..8000 {
+            sim.step().unwrap();
+            let (q, v) = (sim.q_lagrange()[0], sim.q_dot_lagrange()[0]);
+            let rotated = (v - sigma * q) / omega_d;
+            t.push(sim.time());
+            ln_q.push((q * q + rotated * rotated).ln());
+        }
+        let fitted = 0.5 * support::fit::least_squares_slope(&t, &ln_q);
+        let decayed = ln_q[0] - ln_q[ln_q.len() - 1];
+        let err = (fitted - sigma).abs() / sigma.abs();
+        println!("c_d = {c_d}: decay rate {fitted:e} 1/s, exact Mindlin shape {sigma:e} 1/s (ζ = {:.1e}), error {err:.1e}", -sigma / omega);
+        assert!(decayed > 0.5, "c_d = {c_d}: ln Q decays by {decayed} only");
+        assert!(err < 1e-6, "c_d = {c_d}: {err:e}");
+    }
 }
