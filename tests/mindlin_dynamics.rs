@@ -76,14 +76,11 @@ fn node(
 }
 
 /// z = q̄_cos + i q̄_sin of the scene's one pair after each of `steps` steps,
-/// from the Lagrangian amplitudes `q`, rates `q_dot`.
+/// from the amplitudes `q` and rates `q_dot` in the scene's own coordinates
+/// (`simulation.coordinates`) at χ = 0.
 fn pair_history(c: Config, q: [f64; 2], q_dot: [f64; 2], steps: usize) -> (Vec<Complex<f64>>, f64) {
     let mut sim = Simulation::new(c).expect("a Mindlin scene without pads");
     let mut state = sim.state().clone();
-    if state.coordinates == Coordinates::Ale {
-        // initial amplitudes are Lagrangian: start at χ = 0, where both agree but the rates
-        assert_eq!(q_dot, [0.0; 2]);
-    }
     state.q[..2].copy_from_slice(&q);
     state.q_dot[..2].copy_from_slice(&q_dot);
     state.rederive(sim.scene());
@@ -161,7 +158,7 @@ fn at_speed_the_ale_frequencies_of_a_mindlin_pair_split_into_omega_plus_and_minu
             40_000.0,
         );
         c.joint.speed = speed;
-        // A standing wave in the plate: both travelling waves at once.
+        // q̄ = (a, 0), q̄̇ = 0: both travelling waves at once.
         let (z, dt) = pair_history(c, [1e-6, 0.0], [0.0; 2], 8000);
         let k_omega = 2.0 * speed;
         let forward = peak_near(&z, dt, omega + k_omega, 0.01 * omega);
@@ -175,7 +172,7 @@ fn at_speed_the_ale_frequencies_of_a_mindlin_pair_split_into_omega_plus_and_minu
     }
 }
 
-/// ∂W/∂r of an exact mode by central differences (the Kirchhoff slope −Ψ_r would be).
+/// ∂W/∂r of an exact mode by central differences (Kirchhoff's Ψ_r would be −∂W/∂r).
 fn exact_slope(mode: &support::mindlin_exact::ExactMode, r: f64) -> f64 {
     let e = 1e-6;
     (mode.fields(r + e).w - mode.fields(r - e).w) / (2.0 * e)
