@@ -132,3 +132,38 @@ impl StateLayout {
         r < n || (r >= 2 * n && r < 2 * n + self.coordinates)
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn every_model_s_coordinates_then_their_rates_then_the_first_order_states() {
+        let (a, b) = (
+            LinearStates {
+                coordinates: 2,
+                first_order: 3,
+            },
+            LinearStates {
+                coordinates: 4,
+                first_order: 1,
+            },
+        );
+        // n = 5: q̄ 0..5, q̄̇ 5..10; ξ: a 10..12, b 12..16; ξ̇: a 16..18,
+        // b 18..22; ζ: a 22..25, b 25..26.
+        let y = StateLayout::new([a, LinearStates::default(), b], 5);
+        assert_eq!(y.len, 26);
+        assert_eq!(y.coordinates, 6);
+        let at = |coordinates, rates, first_order| LinearLayout {
+            modes: 5,
+            coordinates,
+            rates,
+            first_order,
+        };
+        assert_eq!(y.models, [at(10, 16, 22), at(12, 18, 25), at(12, 18, 25)]);
+        let positions: Vec<usize> = (0..y.len).filter(|&r| y.is_position(r)).collect();
+        assert_eq!(positions, [0, 1, 2, 3, 4, 10, 11, 12, 13, 14, 15]);
+        // Without the models' states: (q̄, q̄̇) alone.
+        assert_eq!(StateLayout::new([], 5).len, 10);
+    }
+}
