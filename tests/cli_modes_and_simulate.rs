@@ -1,16 +1,15 @@
 //! The command-line contract of DESIGN.md: `modes FILE [--json]` and
 //! `simulate FILE --duration S --csv OUT`, and clear errors on bad input.
 
+mod support;
+
 use annular_plate::config::Config;
 use annular_plate::dynamics::Simulation;
 use std::process::Command;
-
-const BIN: &str = env!("CARGO_BIN_EXE_annular_plate");
+use support::cli::{run, BIN};
 
 fn write_params(name: &str, body: &str) -> std::path::PathBuf {
-    let dir = std::env::temp_dir().join(format!("annular_plate_cli_{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
-    let p = dir.join(name);
+    let p = support::cli::scratch_dir("cli").join(name);
     std::fs::write(&p, body).unwrap();
     p
 }
@@ -20,16 +19,9 @@ const LATHE: &str = "annular_plate:\n  ros__parameters:\n    plate:\n      densi
 #[test]
 fn modes_json_lists_the_paper_table_1_disc_sorted_with_pairs() {
     let f = write_params("t1.yaml", LATHE);
-    let out = Command::new(BIN)
-        .args(["modes", f.to_str().unwrap(), "--json"])
-        .output()
-        .unwrap();
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    let (ok, out, err) = run(&["modes", f.to_str().unwrap(), "--json"]);
+    assert!(ok, "{err}");
+    let v: serde_json::Value = serde_json::from_str(&out).unwrap();
     let modes = v["modes"].as_array().unwrap();
     assert_eq!(modes.len(), 11);
     let f_hz: Vec<f64> = modes
@@ -60,12 +52,8 @@ fn modes_json_lists_the_paper_table_1_disc_sorted_with_pairs() {
 #[test]
 fn modes_table_is_readable() {
     let f = write_params("t2.yaml", LATHE);
-    let out = Command::new(BIN)
-        .args(["modes", f.to_str().unwrap()])
-        .output()
-        .unwrap();
-    assert!(out.status.success());
-    let text = String::from_utf8(out.stdout).unwrap();
+    let (ok, text, err) = run(&["modes", f.to_str().unwrap()]);
+    assert!(ok, "{err}");
     assert!(
         text.contains("index") && text.contains("frequency_Hz") && text.contains("modal_mass_kg"),
         "{text}"
@@ -91,21 +79,14 @@ fn bad_input_gives_a_message_naming_the_key_and_a_non_zero_exit() {
         for sub in [&["modes"][..], &["simulate", "--duration", "0.01", "--csv", "/dev/null", "--quiet"][..]] {
             let mut args: Vec<&str> = vec![sub[0], f.to_str().unwrap()];
             args.extend_from_slice(&sub[1..]);
-            let out = Command::new(BIN).args(&args).output().unwrap();
-            let err = String::from_utf8_lossy(&out.stderr);
-            assert!(!out.status.success(), "{body} accepted");
+            let (ok, out, err) = run(&args);
+            assert!(!ok, "{body} accepted");
             assert!(err.contains(needle), "stderr for {body} lacks {needle}: {err}");
-            assert!(out.stdout.is_empty() || !String::from_utf8_lossy(&out.stdout).contains("NaN"));
+            assert!(!out.contains("NaN"));
         }
     }
-    let out = Command::new(BIN)
-        .args(["modes", "/nonexistent/params.yaml"])
-        .output()
-        .unwrap();
-    assert!(
-        !out.status.success()
-            && String::from_utf8_lossy(&out.stderr).contains("/nonexistent/params.yaml")
-    );
+    let (ok, _, err) = run(&["modes", "/nonexistent/params.yaml"]);
+    assert!(!ok && err.contains("/nonexistent/params.yaml"), "{err}");
 }
 
 #[test]
@@ -113,23 +94,16 @@ fn simulate_writes_the_contract_columns_one_row_per_step_matching_the_library() 
     let body = "annular_plate:\n  ros__parameters:\n    plate:\n      nodal_diameters: [0, 1, 2]\n      nodal_circles: [0]\n      damping: [0.02]\n    nodes:\n      ale_radial: [1.0, 0.5]\n      ale_angular: [0.0, 0.5]\n      lagrange_radial: [1.0]\n      lagrange_angular: [0.25]\n    loads:\n      ale_wrench: [0.0, 0.0, -100.0, 0.0, 0.0, 0.0, 0.0, 20.0, 0.0, 0.0, 0.0, 0.0]\n      lagrange_wrench: [0.0, 0.0, 50.0, 0.0, 0.0, 0.0]\n    joint:\n      speed: 11.1\n    simulation:\n      rate_hz: 2000.0\n";
     let f = write_params("sim.yaml", body);
     let csv = f.with_extension("csv");
-    let out = Command::new(BIN)
-        .args([
-            "simulate",
-            f.to_str().unwrap(),
-            "--duration",
-            "0.05",
-            "--csv",
-            csv.to_str().unwrap(),
-            "--quiet",
-        ])
-        .output()
-        .unwrap();
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
+    let (ok, _, err) = run(&[
+        "simulate",
+        f.to_str().unwrap(),
+        "--duration",
+        "0.05",
+        "--csv",
+        csv.to_str().unwrap(),
+        "--quiet",
+    ]);
+    assert!(ok, "{err}");
     let text = std::fs::read_to_string(&csv).unwrap();
     let mut lines = text.lines();
     let header: Vec<&str> = lines.next().unwrap().split(',').collect();
@@ -163,18 +137,12 @@ fn simulate_writes_the_contract_columns_one_row_per_step_matching_the_library() 
 
 /// `simulate` with these arguments: (status success, stdout, stderr).
 fn simulate_args(args: &[&str]) -> (bool, String, String) {
-    let scene = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("config/lathe.yaml");
-    let out = Command::new(BIN)
-        .arg("simulate")
-        .arg(&scene)
-        .args(args)
-        .output()
-        .unwrap();
-    (
-        out.status.success(),
-        String::from_utf8_lossy(&out.stdout).into_owned(),
-        String::from_utf8_lossy(&out.stderr).into_owned(),
-    )
+    let scene = concat!(env!("CARGO_MANIFEST_DIR"), "/config/lathe.yaml");
+    let all: Vec<&str> = ["simulate", scene]
+        .into_iter()
+        .chain(args.iter().copied())
+        .collect();
+    run(&all)
 }
 
 #[test]

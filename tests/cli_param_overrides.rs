@@ -5,38 +5,26 @@
 mod support;
 
 use std::path::PathBuf;
-use std::process::{Command, Output};
+use support::cli::run;
 use support::scene_files;
 
-const BIN: &str = env!("CARGO_BIN_EXE_annular_plate");
-
-fn run(args: &[&str]) -> Output {
-    Command::new(BIN).args(args).output().unwrap()
-}
-
 fn ok(args: &[&str]) -> String {
-    let out = run(args);
-    assert!(
-        out.status.success(),
-        "{args:?}: {}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    String::from_utf8(out.stdout).unwrap()
+    let (ok, out, err) = run(args);
+    assert!(ok, "{args:?}: {err}");
+    out
 }
 
 fn refused(args: &[&str]) -> String {
-    let out = run(args);
-    assert!(!out.status.success(), "{args:?} was accepted");
-    String::from_utf8(out.stderr).unwrap()
+    let (ok, _, err) = run(args);
+    assert!(!ok, "{args:?} was accepted");
+    err
 }
 
 /// The brake bench with one line of the file replaced.
 fn edited(name: &str, from: &str, to: &str) -> PathBuf {
     let text = scene_files::text("brake_bench.yaml");
     assert_eq!(text.matches(from).count(), 1, "{from} is in the file once");
-    let dir = std::env::temp_dir().join(format!("annular_plate_overrides_{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
-    let path = dir.join(name);
+    let path = support::cli::scratch_dir("overrides").join(name);
     std::fs::write(&path, text.replace(from, to)).unwrap();
     path
 }

@@ -11,6 +11,7 @@ use annular_plate::model::AngularShape;
 
 mod support;
 use support::fourth_order::{assert_fourth_order, descriptions_differ};
+use support::left_growth::{left_eigenvector_growth, PadLayout};
 use support::one_contact::{self, CLAMP, SPEED, STIFFNESS};
 
 /// The one-contact disc (`support::one_contact`), rigid lining.
@@ -147,51 +148,14 @@ fn one_contact_one_pair_threshold_matches_the_routh_hurwitz_closed_form() {
 
 /// Re λ of the critical mode measured in a simulation started on it: the
 /// critical mode's coordinate c(t) = u_Lᵀ y(t) (u_L its left eigenvector) is
-/// ½ (u_Lᵀ v) e^{λt} for the linear system, so ln|c| has slope Re λ.
+/// ½ (u_Lᵀ v) e^{λt} for the linear system, so ln|c| has slope Re λ
+/// (`support::left_growth`).
 fn simulated_growth_rate(mu: f64) -> (f64, f64) {
     simulated_growth_rate_of(scene(ContactSurface::Faces, mu))
 }
 
 fn simulated_growth_rate_of(c: Config) -> (f64, f64) {
-    let mu = c.section::<PadsConfig>().unwrap().friction_coefficient;
-    let mut sim = Simulation::new(c).unwrap();
-    let mode = stability::critical_mode(sim.scene(), SPEED, mu, &[CLAMP]);
-    let n = sim.model().n_modes();
-    let a = stability::linear_system(sim.scene(), SPEED, mu, &[CLAMP]);
-    let at = a.transpose().to_owned();
-    let eig = at.eigen().unwrap();
-    let (s, u) = (eig.S(), eig.U());
-    let j = (0..2 * n)
-        .min_by(|&x, &y| {
-            let d = |i: usize| (s[i].re - mode.eigenvalue.re).hypot(s[i].im - mode.eigenvalue.im);
-            d(x).total_cmp(&d(y))
-        })
-        .unwrap();
-    let left: Vec<(f64, f64)> = (0..2 * n).map(|r| (u[(r, j)].re, u[(r, j)].im)).collect();
-    let peak = mode.vector[..n]
-        .iter()
-        .map(|v| v.norm())
-        .fold(0.0, f64::max);
-    let mut state = sim.state().clone();
-    for i in 0..n {
-        state.q[i] = 1e-6 * mode.vector[i].re / peak;
-        state.q_dot[i] = 1e-6 * mode.vector[n + i].re / peak;
-    }
-    state.rederive(sim.scene());
-    sim.restore(state);
-    let (mut ts, mut logs) = (Vec::new(), Vec::new());
-    for _ in 0..1000 {
-        sim.step().unwrap();
-        let y: Vec<f64> = sim.q_ale().iter().chain(sim.q_dot_ale()).copied().collect();
-        let (re, im) = y
-            .iter()
-            .zip(&left)
-            .fold((0.0, 0.0), |(re, im), (y, l)| (re + y * l.0, im + y * l.1));
-        ts.push(sim.time());
-        logs.push(re.hypot(im).ln());
-    }
-    let slope = support::fit::least_squares_slope(&ts, &logs);
-    (mode.eigenvalue.re, slope)
+    left_eigenvector_growth(c, PadLayout::Rigid, 1000)
 }
 
 #[test]

@@ -15,6 +15,7 @@ use nalgebra::Complex;
 
 mod support;
 use support::fourth_order::{assert_fourth_order, descriptions_differ};
+use support::left_growth::{left_eigenvector_growth, PadLayout};
 use support::one_contact::{self, CLAMP, SPEED, STIFFNESS, THICKNESS};
 use support::scenes::relative_difference;
 
@@ -180,59 +181,16 @@ fn threshold(shear: Option<(f64, f64)>) -> f64 {
     stability::friction_threshold(sim.scene(), SPEED, 2.0).expect("squeals below μ = 2")
 }
 
-/// Re λ of the critical mode measured in a simulation started on it (as in
-/// tests/pad_friction_on_the_faces.rs, the patch's ζ = −x_r/(h/2) of the
-/// top face in the state): ln|u_Lᵀ y(t)| has slope Re λ.
+/// Re λ of the critical mode measured in a simulation started on it
+/// (`support::left_growth`; the patch's ζ = −x_r/(h/2) of the top face in
+/// the state): ln|u_Lᵀ y(t)| has slope Re λ.
 fn simulated_growth_rate(mu: f64) -> (f64, f64) {
-    let mut sim = Simulation::new(scene(mu, Some(SHEAR))).unwrap();
-    let mode = stability::critical_mode(sim.scene(), SPEED, mu, &[CLAMP]);
-    let n = sim.model().n_modes();
-    let len = 2 * n + 1;
-    let a = stability::linear_system(sim.scene(), SPEED, mu, &[CLAMP]);
-    let eig = a.transpose().to_owned().eigen().unwrap();
-    let (s, u) = (eig.S(), eig.U());
-    let j = (0..len)
-        .min_by(|&x, &y| {
-            let d = |i: usize| (s[i].re - mode.eigenvalue.re).hypot(s[i].im - mode.eigenvalue.im);
-            d(x).total_cmp(&d(y))
-        })
-        .unwrap();
-    let left: Vec<(f64, f64)> = (0..len).map(|r| (u[(r, j)].re, u[(r, j)].im)).collect();
-    let peak = mode.vector[..n]
-        .iter()
-        .map(|v| v.norm())
-        .fold(0.0, f64::max);
-    let half = 0.5 * THICKNESS;
-    let mut state = sim.state().clone();
-    for i in 0..n {
-        state.q[i] = 1e-6 * mode.vector[i].re / peak;
-        state.q_dot[i] = 1e-6 * mode.vector[n + i].re / peak;
-    }
-    let zeta = 1e-6 * mode.vector[2 * n].re / peak;
-    state.load_models.slots[0][0] = -half * zeta;
-    state.load_models.slots[0][2] = half * zeta;
-    state.rederive(sim.scene());
-    sim.restore(state);
-    let (mut ts, mut logs) = (Vec::new(), Vec::new());
-    for _ in 0..1000 {
-        sim.step().unwrap();
-        let slot = &sim.state().load_models.slots[0];
-        let y: Vec<f64> = sim
-            .q_ale()
-            .iter()
-            .chain(sim.q_dot_ale())
-            .copied()
-            .chain([-slot[0] / half])
-            .collect();
-        let (re, im) = y
-            .iter()
-            .zip(&left)
-            .fold((0.0, 0.0), |(re, im), (y, l)| (re + y * l.0, im + y * l.1));
-        ts.push(sim.time());
-        logs.push(re.hypot(im).ln());
-    }
-    let slope = support::fit::least_squares_slope(&ts, &logs);
-    (mode.eigenvalue.re, slope)
+    let half_thickness = 0.5 * THICKNESS;
+    left_eigenvector_growth(
+        scene(mu, Some(SHEAR)),
+        PadLayout::Patch { half_thickness },
+        1000,
+    )
 }
 
 #[test]

@@ -6,7 +6,6 @@
 //! refused naming the key.
 
 use annular_plate::config::{Boundary, Config, Coordinates, IntegratorKind, NodePosition};
-use annular_plate::dynamics::load_models::pad::Pads;
 use annular_plate::dynamics::load_models::pad_config::{
     Caliper, ContactSurface, PadContact, PadsConfig,
 };
@@ -16,6 +15,7 @@ use faer::Mat;
 
 mod support;
 use support::fourth_order::{assert_fourth_order, descriptions_differ};
+use support::left_growth::{left_eigenvector_growth, PadLayout};
 
 const SPEED: f64 = 25.0;
 const CLAMP: f64 = 1000.0;
@@ -290,65 +290,14 @@ fn the_friction_threshold_with_pad_mass_matches_the_tests_own_eigen_solve() {
 }
 
 /// Re λ of the critical mode and the slope of ln|u_Lᵀ y(t)| in a simulation
-/// started on its eigenvector, y = (q̄, q̄̇, ξ, ξ̇) with ξ the pads'
-/// compressions from rest (their slot minus x₀).
+/// started on its eigenvector (`support::left_growth`), y = (q̄, q̄̇, ξ, ξ̇)
+/// with ξ the pads' compressions from rest (their slot minus
+/// x₀ = N₀/(n k_c)).
 fn simulated_growth_rate(c: Config, steps: usize) -> (f64, f64) {
-    let mu = c.section::<PadsConfig>().unwrap().friction_coefficient;
-    let mut sim = Simulation::new(c).unwrap();
-    let mode = stability::critical_mode(sim.scene(), SPEED, mu, &[CLAMP]);
-    let n = sim.model().n_modes();
-    let len = mode.vector.len();
-    let a = stability::linear_system(sim.scene(), SPEED, mu, &[CLAMP]);
-    let eig = a.transpose().to_owned().eigen().unwrap();
-    let (s, u) = (eig.S(), eig.U());
-    let j = (0..len).min_by(|&x, &y| {
-        let d = |i: usize| (s[i].re - mode.eigenvalue.re).hypot(s[i].im - mode.eigenvalue.im);
-        d(x).total_cmp(&d(y))
-    });
-    let left: Vec<(f64, f64)> = (0..len)
-        .map(|r| (u[(r, j.unwrap())].re, u[(r, j.unwrap())].im))
-        .collect();
-    let (index, pads) = sim.scene().load_models.find::<Pads>().unwrap();
-    let x0 = pads.rest_compression(0, CLAMP);
-    let peak = mode.vector[..n]
-        .iter()
-        .map(|v| v.norm())
-        .fold(0.0, f64::max);
-    let scale = 1e-6 / peak;
-    let mut state = sim.state().clone();
-    for i in 0..n {
-        state.q[i] = scale * mode.vector[i].re;
-        state.q_dot[i] = scale * mode.vector[n + i].re;
-    }
-    let slot = &mut state.load_models.slots[index];
-    let faces = slot.len() / 2;
-    for f in 0..faces {
-        slot[f] = x0 + scale * mode.vector[2 * n + f].re;
-        slot[faces + f] = scale * mode.vector[2 * n + faces + f].re;
-    }
-    state.rederive(sim.scene());
-    sim.restore(state);
-    let (mut ts, mut logs) = (Vec::new(), Vec::new());
-    for _ in 0..steps {
-        sim.step().unwrap();
-        let slot = &sim.state().load_models.slots[index];
-        let y: Vec<f64> = sim
-            .q_ale()
-            .iter()
-            .chain(sim.q_dot_ale())
-            .copied()
-            .chain(slot[..faces].iter().map(|x| x - x0))
-            .chain(slot[faces..].iter().copied())
-            .collect();
-        let (re, im) = y
-            .iter()
-            .zip(&left)
-            .fold((0.0, 0.0), |(re, im), (y, l)| (re + y * l.0, im + y * l.1));
-        ts.push(sim.time());
-        logs.push(re.hypot(im).ln());
-    }
-    let slope = support::fit::least_squares_slope(&ts, &logs);
-    (mode.eigenvalue.re, slope)
+    let p = c.section::<PadsConfig>().unwrap();
+    let contacts = p.contacts.iter().filter(|c| c.pad == 0).count();
+    let rest = CLAMP / (contacts as f64 * p.contact_stiffness);
+    left_eigenvector_growth(c, PadLayout::Massive { rest }, steps)
 }
 
 #[test]

@@ -6,7 +6,6 @@ mod support;
 
 use annular_plate::cli::plot::auto_ylabel;
 use annular_plate::cli::simulate::column_unit;
-use std::process::Command;
 use support::scene_files;
 
 fn names(list: &[&str]) -> Vec<String> {
@@ -23,18 +22,17 @@ fn every_column_of_every_shipped_scene_has_a_unit() {
         "lathe.yaml",
         "swash_plate.yaml",
     ] {
-        let out = Command::new(env!("CARGO_BIN_EXE_annular_plate"))
-            .arg("simulate")
-            .arg(scene_files::path(file))
-            .args(["--duration", "0", "--csv", "-", "--quiet"])
-            .output()
-            .unwrap();
-        assert!(
-            out.status.success(),
-            "{file}: {}",
-            String::from_utf8_lossy(&out.stderr)
-        );
-        let text = String::from_utf8(out.stdout).unwrap();
+        let scene = scene_files::path(file);
+        let (ok, text, err) = support::cli::run(&[
+            "simulate",
+            scene.to_str().unwrap(),
+            "--duration",
+            "0",
+            "--csv",
+            "-",
+            "--quiet",
+        ]);
+        assert!(ok, "{file}: {err}");
         let header = text.lines().next().unwrap();
         for column in header.split(',') {
             assert!(

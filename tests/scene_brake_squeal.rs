@@ -335,25 +335,20 @@ fn the_couple_driven_cycle_stays_near_half_the_sliding_speed_and_only_a_steep_mu
 
 #[test]
 fn the_csv_decimation_refuses_to_alias_the_squeal_unless_allowed() {
+    let scene = scenes::path("brake_squeal.yaml");
     let run = |extra: &[&str]| {
-        let out = std::process::Command::new(env!("CARGO_BIN_EXE_annular_plate"))
-            .args([
-                "simulate",
-                scenes::path("brake_squeal.yaml").to_str().unwrap(),
-                "--duration",
-                "0.01",
-                "--csv",
-                "-",
-                "--quiet",
-            ])
-            .args(extra)
-            .output()
-            .unwrap();
-        (
-            out.status.success(),
-            String::from_utf8_lossy(&out.stdout).lines().count(),
-            String::from_utf8_lossy(&out.stderr).into_owned(),
-        )
+        let mut args = vec![
+            "simulate",
+            scene.to_str().unwrap(),
+            "--duration",
+            "0.01",
+            "--csv",
+            "-",
+            "--quiet",
+        ];
+        args.extend_from_slice(extra);
+        let (ok, out, err) = support::cli::run(&args);
+        (ok, out.lines().count(), err)
     };
     // The squeal is the ⟨2, 0⟩ pair with the pads at μ = 0.5, about 1.52 kHz
     // (the critical mode of the shipped file, in series with the residual): 2 kHz would alias it.

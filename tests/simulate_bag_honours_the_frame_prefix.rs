@@ -26,18 +26,16 @@ fn mcap_bytes(dir: &Path) -> Vec<u8> {
 }
 
 fn simulate_bag(scene: &Path, dir: &Path) {
-    let out = std::process::Command::new(env!("CARGO_BIN_EXE_annular_plate"))
-        .arg("simulate")
-        .arg(scene)
-        .args(["--duration", "0.01", "--quiet", "--bag"])
-        .arg(dir)
-        .output()
-        .unwrap();
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
+    let (ok, _, err) = support::cli::run(&[
+        "simulate",
+        scene.to_str().unwrap(),
+        "--duration",
+        "0.01",
+        "--quiet",
+        "--bag",
+        dir.to_str().unwrap(),
+    ]);
+    assert!(ok, "{err}");
 }
 
 #[test]

@@ -245,7 +245,7 @@ pub fn main(args: StabilityArgs) -> CliResult<()> {
     if let Some(p) = &args.plot {
         super::plot::check_output_path(p)?;
     }
-    if !stability::has_pads(&config) {
+    if !stability::can_squeal(&config) {
         return Err(CliError::Usage(format!(
             "{}: the scene has no pads (pads.*): nothing can squeal",
             file.display()

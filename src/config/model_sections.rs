@@ -37,6 +37,11 @@ pub trait LoadModelSection:
     /// The section's name (`pads`, `springs`).
     const SECTION: &'static str;
 
+    /// Whether the model's friction can make the plate squeal: the linear
+    /// stability analysis (`dynamics::stability`) maps over its friction
+    /// coefficient and clamp forces. Default: no.
+    const CAN_SQUEAL: bool = false;
+
     /// Boxed as the configuration holds it.
     fn boxed(self) -> Box<dyn SectionData> {
         Box::new(self)
@@ -47,6 +52,8 @@ pub trait LoadModelSection:
 pub trait SectionData: Any + Debug + Send + Sync {
     /// The section's name ([`LoadModelSection::SECTION`]).
     fn name(&self) -> &'static str;
+    /// [`LoadModelSection::CAN_SQUEAL`].
+    fn can_squeal(&self) -> bool;
     /// A boxed copy.
     fn clone_box(&self) -> Box<dyn SectionData>;
     /// Whether `other` is a section of the same type with equal values.
@@ -62,6 +69,9 @@ pub trait SectionData: Any + Debug + Send + Sync {
 impl<T: LoadModelSection> SectionData for T {
     fn name(&self) -> &'static str {
         T::SECTION
+    }
+    fn can_squeal(&self) -> bool {
+        T::CAN_SQUEAL
     }
     fn clone_box(&self) -> Box<dyn SectionData> {
         Box::new(self.clone())
@@ -122,6 +132,12 @@ impl LoadModelSections {
     /// Whether the section named `name` is on.
     pub fn has(&self, name: &str) -> bool {
         self.sections.iter().any(|s| s.name() == name)
+    }
+
+    /// Whether a section is on whose model's friction can make the plate
+    /// squeal ([`LoadModelSection::CAN_SQUEAL`]).
+    pub fn can_squeal(&self) -> bool {
+        self.sections.iter().any(|s| s.can_squeal())
     }
 }
 

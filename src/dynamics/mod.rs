@@ -25,8 +25,6 @@ pub(crate) mod scene;
 pub(crate) mod simulation;
 pub mod stability;
 pub mod stability_map;
-pub(crate) mod stability_pads;
-pub(crate) mod stability_shear;
 pub(crate) mod state;
 pub(crate) mod stepper;
 pub(crate) mod stiffening;

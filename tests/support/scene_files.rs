@@ -39,24 +39,17 @@ pub fn rejected(file: &str, from: &str, to: &str, key: &str) -> ConfigError {
 
 /// `annular_plate simulate config/<file> --duration S --csv -`: the CSV text.
 pub fn simulate_csv(file: &str, duration: f64) -> String {
-    let out = std::process::Command::new(env!("CARGO_BIN_EXE_annular_plate"))
-        .args([
-            "simulate",
-            path(file).to_str().unwrap(),
-            "--duration",
-            &duration.to_string(),
-            "--csv",
-            "-",
-            "--quiet",
-        ])
-        .output()
-        .unwrap();
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    String::from_utf8(out.stdout).unwrap()
+    let (ok, out, err) = super::cli::run(&[
+        "simulate",
+        path(file).to_str().unwrap(),
+        "--duration",
+        &duration.to_string(),
+        "--csv",
+        "-",
+        "--quiet",
+    ]);
+    assert!(ok, "{err}");
+    out
 }
 
 /// Step until `t` (s).

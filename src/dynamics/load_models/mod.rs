@@ -29,11 +29,15 @@
 //! that a diverged step is undone without copying the slots: [`undo`]).
 
 pub mod face_friction;
+pub mod linear;
 pub mod model;
 pub mod outputs;
 pub mod pad_calipers;
 pub mod pad_config;
 pub mod pad_contact_law;
+mod pad_linear;
+mod pad_linear_mass;
+mod pad_linear_shear;
 pub mod pad_mass;
 pub mod pad_outputs;
 pub mod pad_patch;
@@ -43,6 +47,9 @@ pub mod parameters;
 pub mod tool_config;
 pub mod undo;
 
+pub use linear::{
+    LinearContext, LinearLayout, LinearOut, LinearStates, OperatingPoint, StateLayout,
+};
 pub use model::{
     contact_rate, surface_kinematics, Builder, CommandRule, CommandSpec, Coupling, LoadContext,
     LoadModel, ModelOut, Registration, SceneNodes, SurfaceKinematics,

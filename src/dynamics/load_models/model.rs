@@ -2,6 +2,7 @@
 //! ([`LoadContext`], [`SceneNodes`]), what it declares ([`CommandSpec`],
 //! [`Coupling`]) and where it writes ([`ModelOut`]).
 
+use super::linear::{LinearContext, LinearOut, LinearStates, OperatingPoint};
 use super::outputs::{OutputContext, Outputs};
 use super::undo::SlotUndo;
 use crate::config::{Config, LimitsConfig, ModelParameters};
@@ -279,6 +280,24 @@ pub trait LoadModel: Debug + Send + Sync {
     /// Its outputs at the current state: every channel in declared order,
     /// [`LoadModel::channel_len`] values each, into `out`.
     fn write_outputs(&self, _at: &OutputContext, _out: &mut [f64]) {}
+
+    /// The states it adds to the linear stability analysis ([`super::linear`]):
+    /// coordinates (each with its rate) and first-order states. Default: none.
+    fn linear_states(&self) -> LinearStates {
+        LinearStates::default()
+    }
+
+    /// Its first-order terms about steady motion at constant Ω, added into
+    /// `out.a` on the modes' rows and columns and on its own states'
+    /// ([`super::linear`]). Default: none — not part of the linearisation.
+    fn add_linear_terms(&self, _ctx: &LinearContext, _out: LinearOut) {}
+
+    /// The friction coefficient and clamp forces it starts with, for a model
+    /// whose friction can make the plate squeal (the stability analysis maps
+    /// over them, [`super::linear`]); None otherwise.
+    fn operating_point(&self) -> Option<OperatingPoint> {
+        None
+    }
 
     /// Whether its slot is finite, for the divergence guard after every step
     /// (a model whose slot holds values derived from others may check only

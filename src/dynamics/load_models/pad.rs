@@ -66,6 +66,7 @@
 use super::face_friction::{
     face_kinematics, FaceKinematics,
 };
+use super::linear::{LinearContext, LinearOut, LinearStates, OperatingPoint};
 use super::model::{
     contact_rate, surface_kinematics, CommandRule, CommandSpec, Coupling, LoadContext, LoadModel,
     ModelOut, Registration, SceneNodes, SurfaceKinematics,
@@ -374,6 +375,15 @@ impl LoadModel for Pads {
     }
     fn write_outputs(&self, at: &OutputContext, out: &mut [f64]) {
         self.write_output_values(at, out);
+    }
+    fn linear_states(&self) -> LinearStates {
+        self.linear_state_count()
+    }
+    fn add_linear_terms(&self, ctx: &LinearContext, out: LinearOut) {
+        self.add_linear(ctx, out);
+    }
+    fn operating_point(&self) -> Option<OperatingPoint> {
+        Some(self.configured_operating_point())
     }
     fn coupling_keys(&self) -> &'static str {
         match (self.is_massive(), self.shear.is_some()) {

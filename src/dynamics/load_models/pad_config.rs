@@ -110,6 +110,7 @@ impl PadsConfig {
 
 impl LoadModelSection for PadsConfig {
     const SECTION: &'static str = "pads";
+    const CAN_SQUEAL: bool = true;
 }
 
 /// The pads' keys, and the calipers' that make their contact points.

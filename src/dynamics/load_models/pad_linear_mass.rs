@@ -1,8 +1,9 @@
 //! The massive pads' terms of the linear stability analysis
-//! (the linear system of `stability.rs`, docs/scenes.md "Pad mass").
+//! (`pad_linear.rs`, docs/scenes.md "Pad mass").
 //!
 //! With `pads.mass` > 0 the state is y = (q̄, q̄̇, ξ, ξ̇), ξ the pads'
-//! compressions from rest (per pad: top, bottom; `load_models/pad_mass.rs`).
+//! compressions from rest (per pad: top, bottom; `pad_mass.rs`): the pads'
+//! coordinates and their rates ([`super::linear`]).
 //! About the preloaded rest, per contact c (shape values w_i at its node,
 //! w = W q̄ + G F with the residual flexibility, W q̄ without):
 //!
@@ -18,25 +19,14 @@
 //! The q̄, q̄̇ columns of the disc's rows are the massless analysis's (fixed
 //! caliper); here: the ξ columns and the pads' rows.
 
-use super::load_models::pad::{PadContactPoint, Pads};
-use super::load_models::pad_series::LinearSeriesForces;
-use super::node_frame::NodeFrame;
-use super::scene::Scene;
-use faer::Mat;
+use super::linear::{LinearContext, LinearLayout, LinearOut};
+use super::pad::{PadContactPoint, Pads};
+use super::pad_series::LinearSeriesForces;
+use crate::dynamics::node_frame::NodeFrame;
 
 /// Index of pad face `j` (2 pad + face) among y's positions and rates.
-fn pad_index(n: usize, pads: &Pads, j: usize) -> (usize, usize) {
-    let p2 = 2 * pads.pad_count();
-    (2 * n + j, 2 * n + p2 + j)
-}
-
-/// ξ̇ = ξ̇ and the backing stiffness of every pad face.
-pub(super) fn add_pad_identity(a: &mut Mat<f64>, n: usize, pads: &Pads) {
-    for j in 0..2 * pads.pad_count() {
-        let (x, v) = pad_index(n, pads, j);
-        a[(x, v)] = 1.0;
-        a[(v, x)] -= pads.backing_stiffness / pads.mass;
-    }
+fn pad_index(at: &LinearLayout, j: usize) -> (usize, usize) {
+    (at.coordinates + j, at.rates + j)
 }
 
 /// One contact's net axial force F = δN_b − δN_t per unit q̄, q̄̇ (n each)
@@ -80,51 +70,63 @@ impl NetForce {
     }
 }
 
-/// The terms of contact `contact` that involve the pads' coordinates, and the
-/// pads' equations (module docs), for its net axial force `net`; `couple` =
-/// h μ(V) tanh(V/v_reg) with face friction (0 at the mid-plane).
-pub(super) fn add_pad_terms(
-    a: &mut Mat<f64>,
-    scene: &Scene,
-    pads: &Pads,
-    contact: &PadContactPoint,
-    couple: f64,
-    net: &NetForce,
-) {
-    let n = scene.n_modes();
-    let mass = &scene.model.body().modal_mass;
-    let node = &scene.ale_nodes[contact.node];
-    let (s, co) = contact.sin_cos;
-    let first = pad_index(n, pads, 0);
-    for i in 0..n {
-        let g = node.gradient(i);
-        let arm = couple * (-s * g[0] + co * g[1]); // couple ∂_θ w_i / r
-                                                    // f_i = w_i F + arm δN, δN = −F/2.
-        let on_f = (node.shapes[i].w - 0.5 * arm) / mass[i];
-        for (j, (&x, &v)) in net.pad.iter().zip(&net.pad_rate).enumerate() {
-            a[(n + i, first.0 + j)] += on_f * x;
-            a[(n + i, first.1 + j)] += on_f * v;
+impl Pads {
+    /// ξ̇ = ξ̇ and the backing stiffness of every pad face.
+    pub(super) fn add_pad_identity(&self, out: &mut LinearOut) {
+        for j in 0..2 * self.pad_count() {
+            let (x, v) = pad_index(&out.at, j);
+            out.a[(x, v)] = 1.0;
+            out.a[(v, x)] -= self.backing_stiffness / self.mass;
         }
     }
-    let (k, c) = (pads.stiffness, pads.damping);
-    let (xt, vt) = pad_index(n, pads, 2 * contact.pad);
-    let (xb, vb) = pad_index(n, pads, 2 * contact.pad + 1);
-    let half = 0.5 / pads.mass;
-    for (row, sign) in [(vt, 1.0), (vb, -1.0)] {
-        // m_p ξ̈ ∋ −δN = −(S ∓ F)/2.
-        for x in [xt, xb] {
-            a[(row, x)] -= half * k;
+
+    /// The terms of contact `contact` that involve the pads' coordinates, and the
+    /// pads' equations (module docs), for its net axial force `net`; `couple` =
+    /// h μ(V) tanh(V/v_reg) with face friction (0 at the mid-plane).
+    pub(super) fn add_pad_terms(
+        &self,
+        ctx: &LinearContext,
+        out: &mut LinearOut,
+        contact: &PadContactPoint,
+        couple: f64,
+        net: &NetForce,
+    ) {
+        let n = out.at.modes;
+        let mass = ctx.modal_mass;
+        let node = &ctx.ale_nodes[contact.node];
+        let (s, co) = contact.sin_cos;
+        let first = pad_index(&out.at, 0);
+        let (xt, vt) = pad_index(&out.at, 2 * contact.pad);
+        let (xb, vb) = pad_index(&out.at, 2 * contact.pad + 1);
+        let a = &mut *out.a;
+        for i in 0..n {
+            let g = node.gradient(i);
+            // couple ∂_θ w_i / r; f_i = w_i F + arm δN, δN = −F/2.
+            let arm = couple * (-s * g[0] + co * g[1]);
+            let on_f = (node.shapes[i].w - 0.5 * arm) / mass[i];
+            for (j, (&x, &v)) in net.pad.iter().zip(&net.pad_rate).enumerate() {
+                a[(n + i, first.0 + j)] += on_f * x;
+                a[(n + i, first.1 + j)] += on_f * v;
+            }
         }
-        for v in [vt, vb] {
-            a[(row, v)] -= half * c;
-        }
-        for m in 0..n {
-            a[(row, m)] += sign * half * net.q[m];
-            a[(row, n + m)] += sign * half * net.q_dot[m];
-        }
-        for (j, (&x, &v)) in net.pad.iter().zip(&net.pad_rate).enumerate() {
-            a[(row, first.0 + j)] += sign * half * x;
-            a[(row, first.1 + j)] += sign * half * v;
+        let (k, c) = (self.stiffness, self.damping);
+        let half = 0.5 / self.mass;
+        for (row, sign) in [(vt, 1.0), (vb, -1.0)] {
+            // m_p ξ̈ ∋ −δN = −(S ∓ F)/2.
+            for x in [xt, xb] {
+                a[(row, x)] -= half * k;
+            }
+            for v in [vt, vb] {
+                a[(row, v)] -= half * c;
+            }
+            for m in 0..n {
+                a[(row, m)] += sign * half * net.q[m];
+                a[(row, n + m)] += sign * half * net.q_dot[m];
+            }
+            for (j, (&x, &v)) in net.pad.iter().zip(&net.pad_rate).enumerate() {
+                a[(row, first.0 + j)] += sign * half * x;
+                a[(row, first.1 + j)] += sign * half * v;
+            }
         }
     }
 }
