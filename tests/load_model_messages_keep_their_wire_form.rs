@@ -134,16 +134,17 @@ fn published(mut sim: Simulation, steps: usize) -> (Simulation, FrameNames, Time
 
 #[test]
 fn pad_states_are_the_msg_struct_massless_and_massive() {
-    for (mass, shear) in [("0", false), ("0.3", false), ("0", true)] {
-        let mut params =
-            Params::from_file(&scene_files::path("brake_squeal.yaml"), scene_files::NODE).unwrap();
+    // brake_squeal carries the lining's shear, the bench a rigid lining.
+    for (file, mass, shear) in [
+        ("brake_squeal.yaml", "0", true),
+        ("brake_squeal.yaml", "0.3", true),
+        ("brake_bench.yaml", "0", false),
+        ("brake_bench.yaml", "0.3", false),
+    ] {
+        let mut params = Params::from_file(&scene_files::path(file), scene_files::NODE).unwrap();
         params.set_override("pads.mass", mass).unwrap();
-        if shear {
-            params
-                .set_override("pads.shear_stiffness", "1.07e6")
-                .unwrap();
-            params.set_override("pads.shear_damping", "11.2").unwrap();
-        }
+        params.set_override("simulation.integrator", "rk4").unwrap();
+        params.set_override("pads.clamp_force", "[5000.0]").unwrap();
         params
             .set_override("plate.residual_flexibility", "false")
             .unwrap();
@@ -151,7 +152,7 @@ fn pad_states_are_the_msg_struct_massless_and_massive() {
         let (sim, names, stamp, json) = published(Simulation::new(config).unwrap(), 20);
         assert_eq!(json.len(), 1, "one pad topic");
         let want = serde_json::to_string(&pad_states(&sim, &names, stamp)).unwrap();
-        assert_eq!(json[0], want, "pads.mass {mass}");
+        assert_eq!(json[0], want, "{file}, pads.mass {mass}");
         assert_eq!(json[0].contains("\"pad_compression_top\":[]"), mass == "0");
         assert_eq!(json[0].contains("\"contact_patch_top_radial\":[]"), !shear);
         assert_eq!(json[0].contains("\"contact_slip_bottom\":[]"), !shear);
