@@ -4,9 +4,10 @@
 //! [`PadOutputs`], the pads' typed view of a [`Simulation`].
 //!
 //! With `pads.shear_stiffness` the lining's patches (`pad_shear.rs`) report
-//! per contact point their deflections — the slot's patch states as they
-//! are — and each face's speed relative to its patch (stick: below a few
-//! v_reg); without the key these channels are empty.
+//! per contact point their deflections — the slot's patch states plus their
+//! steady-sliding origin (`Pads::patch_deflections`) — and each face's speed
+//! relative to its patch (stick: below a few v_reg); without the key these
+//! channels are empty.
 
 use super::outputs::{
     ChannelKind, ChannelShape, CsvColumn, OutputChannel, OutputContext, Outputs, StateTopic,
