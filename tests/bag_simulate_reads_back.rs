@@ -651,3 +651,62 @@ fn a_simulate_bag_of_massive_pads_holds_their_compressions() {
         }
     }
 }
+
+/// The lining's patches (config/brake_squeal.yaml carries `pads.shear_*`):
+/// ~/pad_states carries per contact point the patches' deflections and the
+/// faces' slip, equal to the CSV's `contact{c}_…` columns at every step; the
+/// first message holds the steady-sliding start, k_t x_θ = μ N₀/n
+/// (μ = 0.5, N₀ = 5 kN over 18 points, k_t = 1.07e6 N/m, τ(Ωr) = 1).
+#[test]
+fn a_simulate_bag_of_sheared_pads_holds_their_patch_deflections() {
+    let squeal = repo().join("config/brake_squeal.yaml");
+    let topic = "/annular_plate/pad_states";
+    let bag = fresh_dir("simulate_sheared_pads");
+    let csv = repo().join("target/bag-tests/simulate_sheared_pads.csv");
+    let out = simulate(
+        &squeal,
+        &[
+            "--csv".as_ref(),
+            csv.as_os_str(),
+            "--bag".as_ref(),
+            bag.as_os_str(),
+        ],
+    );
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let d = read_bag(&bag, "rosbags", &[topic]);
+    assert_eq!(d["undecodable"], serde_json::json!([]));
+    let msgs = d["topics"][topic]["messages"].as_array().unwrap();
+    let csv = Csv::read(&csv);
+    assert_eq!(msgs.len(), csv.rows.len());
+    let fields = [
+        "patch_top_radial",
+        "patch_top_tangential",
+        "patch_bottom_radial",
+        "patch_bottom_tangential",
+        "slip_top",
+        "slip_bottom",
+    ];
+    for (k, m) in msgs.iter().enumerate() {
+        for field in fields {
+            let values = floats(&m[format!("contact_{field}").as_str()]);
+            assert_eq!(values.len(), 18, "{field}: one per contact point");
+            for (c, v) in values.iter().enumerate() {
+                let col = format!("contact{}_{field}", c + 1);
+                same(*v, csv.col(k, &col), &format!("step {k}: {col}"));
+            }
+        }
+    }
+    let x0 = 0.5 * (5000.0 / 18.0) / 1.07e6;
+    for field in [
+        "contact_patch_top_tangential",
+        "contact_patch_bottom_tangential",
+    ] {
+        for v in floats(&msgs[0][field]) {
+            same(v, x0, field);
+        }
+    }
+}

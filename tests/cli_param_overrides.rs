@@ -115,7 +115,7 @@ fn campbell_and_stability_with_an_override_equal_the_edited_file() {
             "stability",
             squeal.to_str().unwrap(),
             "--mu",
-            "0.3:0.6:4",
+            "0.1:0.6:6",
             "--speeds",
             "3:3:1",
             "--json",
@@ -129,14 +129,28 @@ fn campbell_and_stability_with_an_override_equal_the_edited_file() {
         let v: serde_json::Value = serde_json::from_str(&json).unwrap();
         v["threshold_mu"][0].as_f64().unwrap()
     };
-    // docs/scenes.md: 0.419149 with the pads in series with the residual, 0.417610 modal.
-    let (series, modal) = (
-        threshold(map(&[])),
-        threshold(map(&["-p", "plate.residual_flexibility:=false"])),
+    // docs/scenes.md: with a stiff lining the rigid pads' closed forms,
+    // 0.419149 with the pads in series with the residual, 0.417610 modal;
+    // with the file's lining shear 0.205228 and 0.205096.
+    let stiff = [
+        "-p",
+        "pads.shear_stiffness:=1.0e14",
+        "-p",
+        "pads.shear_damping:=1.0e9",
+    ];
+    let modal = ["-p", "plate.residual_flexibility:=false"];
+    let (series, modal_rigid) = (
+        threshold(map(&stiff)),
+        threshold(map(&[&stiff[..], &modal[..]].concat())),
     );
     assert!(
-        (series - 0.419149).abs() < 5e-6 && (modal - 0.417610).abs() < 5e-6,
-        "thresholds: {series}, {modal}"
+        (series - 0.419149).abs() < 5e-6 && (modal_rigid - 0.417610).abs() < 5e-6,
+        "thresholds: {series}, {modal_rigid}"
+    );
+    let (shipped, shipped_modal) = (threshold(map(&[])), threshold(map(&modal)));
+    assert!(
+        (shipped - 0.205228).abs() < 5e-6 && (shipped_modal - 0.205096).abs() < 5e-6,
+        "thresholds with the lining's shear: {shipped}, {shipped_modal}"
     );
 }
 

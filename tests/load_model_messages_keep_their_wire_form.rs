@@ -4,13 +4,15 @@
 //! structs the `.msg` files describe, filled through the models' typed views
 //! (`PadOutputs`, `ToolOutputs`), they serialize to the same JSON (names,
 //! order, integer or float) as the node's messages after a few steps — on the
-//! massless and the massive brake, and on the lathe.
+//! massless and the massive brake, with and without the lining's patches, and
+//! on the lathe.
 
 #![cfg(feature = "ros")]
 
 mod support;
 
 use annular_plate::config::{Config, Params};
+use annular_plate::dynamics::load_models::pad::PadScratch;
 use annular_plate::dynamics::load_models::pad_config::PadsConfig;
 use annular_plate::dynamics::load_models::pad_outputs::PadOutputs;
 use annular_plate::dynamics::load_models::tool::ToolOutputs;
@@ -37,6 +39,12 @@ struct PadStates {
     contact_friction: Vec<f64>,
     pad_compression_top: Vec<f64>,
     pad_compression_bottom: Vec<f64>,
+    contact_patch_top_radial: Vec<f64>,
+    contact_patch_top_tangential: Vec<f64>,
+    contact_patch_bottom_radial: Vec<f64>,
+    contact_patch_bottom_tangential: Vec<f64>,
+    contact_slip_top: Vec<f64>,
+    contact_slip_bottom: Vec<f64>,
 }
 
 /// `msg/ToolState.msg`.
@@ -64,6 +72,12 @@ fn pad_states(sim: &Simulation, names: &FrameNames, stamp: Time) -> PadStates {
     let compressions: Vec<[f64; 2]> = (0..n).filter_map(|p| sim.pad_compression(p)).collect();
     let contacts = &sim.config().section::<PadsConfig>().unwrap().contacts;
     let forces = sim.pad_contact_forces();
+    let patches = sim.pad_patch_deflections();
+    let patch = |a: usize| patches.iter().map(|x| x[a]).collect();
+    let slip: &[[f64; 2]] = sim
+        .model_wrenches()
+        .scratch::<PadScratch>(0)
+        .map_or(&[], |s| &s.slip);
     PadStates {
         header: header(names, stamp),
         step: sim.step_count(),
@@ -79,6 +93,12 @@ fn pad_states(sim: &Simulation, names: &FrameNames, stamp: Time) -> PadStates {
         contact_friction: forces.iter().map(|f| f.tangential).collect(),
         pad_compression_top: compressions.iter().map(|c| c[0]).collect(),
         pad_compression_bottom: compressions.iter().map(|c| c[1]).collect(),
+        contact_patch_top_radial: patch(0),
+        contact_patch_top_tangential: patch(1),
+        contact_patch_bottom_radial: patch(2),
+        contact_patch_bottom_tangential: patch(3),
+        contact_slip_top: slip.iter().map(|s| s[0]).collect(),
+        contact_slip_bottom: slip.iter().map(|s| s[1]).collect(),
     }
 }
 
@@ -114,10 +134,17 @@ fn published(mut sim: Simulation, steps: usize) -> (Simulation, FrameNames, Time
 
 #[test]
 fn pad_states_are_the_msg_struct_massless_and_massive() {
-    for mass in ["0", "0.3"] {
-        let mut params =
-            Params::from_file(&scene_files::path("brake_squeal.yaml"), scene_files::NODE).unwrap();
+    // brake_squeal carries the lining's shear, the bench a rigid lining.
+    for (file, mass, shear) in [
+        ("brake_squeal.yaml", "0", true),
+        ("brake_squeal.yaml", "0.3", true),
+        ("brake_bench.yaml", "0", false),
+        ("brake_bench.yaml", "0.3", false),
+    ] {
+        let mut params = Params::from_file(&scene_files::path(file), scene_files::NODE).unwrap();
         params.set_override("pads.mass", mass).unwrap();
+        params.set_override("simulation.integrator", "rk4").unwrap();
+        params.set_override("pads.clamp_force", "[5000.0]").unwrap();
         params
             .set_override("plate.residual_flexibility", "false")
             .unwrap();
@@ -125,8 +152,10 @@ fn pad_states_are_the_msg_struct_massless_and_massive() {
         let (sim, names, stamp, json) = published(Simulation::new(config).unwrap(), 20);
         assert_eq!(json.len(), 1, "one pad topic");
         let want = serde_json::to_string(&pad_states(&sim, &names, stamp)).unwrap();
-        assert_eq!(json[0], want, "pads.mass {mass}");
+        assert_eq!(json[0], want, "{file}, pads.mass {mass}");
         assert_eq!(json[0].contains("\"pad_compression_top\":[]"), mass == "0");
+        assert_eq!(json[0].contains("\"contact_patch_top_radial\":[]"), !shear);
+        assert_eq!(json[0].contains("\"contact_slip_bottom\":[]"), !shear);
     }
 }
 

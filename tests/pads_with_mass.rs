@@ -494,14 +494,15 @@ fn bad_pad_mass_data_is_refused_naming_the_key() {
     assert!(e.contains("pads.mass") && e.contains("rk4"), "{e}");
 }
 
-/// The shipped squeal scene (config/brake_squeal.yaml) with modal pads
-/// (`plate.residual_flexibility: false`, which massive pads need) and pad
+/// The shipped squeal scene (config/brake_squeal.yaml) with a rigid lining,
+/// modal pads (`plate.residual_flexibility: false`, which massive pads need) and pad
 /// masses of 0.1–1 kg: the thresholds of docs/scenes.md "Pad mass", and a
 /// vanishing mass gives back the massless threshold.
 #[test]
 fn the_shipped_squeal_scene_thresholds_with_pad_mass() {
     let mut c = support::scene_files::load("brake_squeal.yaml");
     c.plate.residual_flexibility = false;
+    c.section_mut::<PadsConfig>().unwrap().shear = None;
     let speed = c.joint.speed;
     let massless = Simulation::new(c.clone()).unwrap();
     let target = stability::friction_threshold(massless.scene(), speed, 2.0)
@@ -553,7 +554,8 @@ fn the_shipped_squeal_scene_thresholds_with_pad_mass() {
     }
     // The shipped file as it is, in series with the residual flexibility:
     // the ring again leaves the threshold to the massless one.
-    let shipped = support::scene_files::load("brake_squeal.yaml");
+    let mut shipped = support::scene_files::load("brake_squeal.yaml");
+    shipped.section_mut::<PadsConfig>().unwrap().shear = None;
     let clamp = shipped.section::<PadsConfig>().unwrap().clamp_force.clone();
     let massless = stability::friction_threshold(
         Simulation::new(shipped.clone()).unwrap().scene(),

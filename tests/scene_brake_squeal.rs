@@ -1,6 +1,6 @@
 //! The squeal scene with the pads' friction on the faces and documented pad
 //! data, `config/brake_squeal.yaml` (docs/scenes.md, "The squeal scene with
-//! face friction"): its threshold against the ring-of-pads closed form with
+//! face friction") with a rigid lining: its threshold against the ring-of-pads closed form with
 //! the faces' couple, the sliding direction and the contact damping; the
 //! simulation decays below and grows above it at the eigenvalues' rate; at the
 //! scene's μ it settles into a limit cycle with every contact closed, bounded
@@ -9,7 +9,7 @@
 
 mod support;
 
-use annular_plate::config::Config;
+use annular_plate::config::{Config, IntegratorKind};
 use annular_plate::dynamics::load_models::face_friction::face_kinematics;
 use annular_plate::dynamics::load_models::pad_config::PadsConfig;
 use annular_plate::dynamics::load_models::pad_outputs::PadOutputs;
@@ -18,11 +18,24 @@ use annular_plate::model::AngularShape;
 use std::f64::consts::TAU;
 use support::scene_files as scenes;
 
-/// The scene with the modal pads (`plate.residual_flexibility: false`): the
-/// closed forms here are the paper's model. With the contacts in series with
-/// the residual flexibility (the default): tests/contacts_in_series_with_residual.rs.
-fn scene() -> Config {
+/// The shipped file with a rigid lining (the closed forms here are the rigid
+/// pads'; with the file's lining shear: tests/squeal_with_lining_shear_is_bounded.rs),
+/// on `contact_exponential` at `contact_tolerance` 1e-6 (docs/dynamics.md:
+/// 1.7e-4 of the peak over 0.3 s against RK4 converged).
+fn rigid_lining() -> Config {
     let mut c = scenes::load("brake_squeal.yaml");
+    c.section_mut::<PadsConfig>().unwrap().shear = None;
+    c.simulation.integrator = IntegratorKind::ContactExponential;
+    c.simulation.contact_tolerance = 1.0e-6;
+    c
+}
+
+/// The scene with the modal pads (`plate.residual_flexibility: false`) and a
+/// rigid lining: the closed forms here are the paper's model. With the
+/// contacts in series with the residual flexibility (the default):
+/// tests/contacts_in_series_with_residual.rs.
+fn scene() -> Config {
+    let mut c = rigid_lining();
     c.plate.residual_flexibility = false;
     c
 }
@@ -142,8 +155,8 @@ fn the_threshold_is_in_the_brake_range_and_matches_the_ring_closed_form_with_fac
         (0.3..=0.5).contains(&eig),
         "squeal where brake engineers see it: μ_c = {eig}"
     );
-    // The shipped file: the pads in series with the residual flexibility.
-    let shipped = scenes::load("brake_squeal.yaml");
+    // The shipped file's contacts: in series with the residual flexibility.
+    let shipped = rigid_lining();
     assert!(shipped.plate.residual_flexibility);
     let sim = Simulation::new(shipped.clone()).unwrap();
     let eig_series = stability::friction_threshold(sim.scene(), 3.0, 2.0)

@@ -1,5 +1,5 @@
 //! The shipped squeal scene, config/brake_squeal.yaml, with the lining's
-//! shear from its documented lining data (docs/scenes.md, "Pad shear"):
+//! shear it carries from its documented lining data (docs/scenes.md, "Pad shear"):
 //! E = 125 MPa, ν = 0.3 → G = 48 MPa; 40 cm² per face, 10 mm thick →
 //! G A / t = 1.92e7 N/m per pad face, over the 18 contact points
 //! k_t = 1.07e6 N/m; loss factor 0.1 at the 1.52 kHz squeal →
@@ -21,15 +21,13 @@ use support::scene_files as scenes;
 
 const SHEAR: (f64, f64) = (1.07e6, 11.2);
 
-/// The shipped scene with the lining's shear, integrated by RK4 (12 times
-/// faster than `contact_exponential` with these patches: 6.6 s against 79 s
-/// wall for 0.1 s on this machine; both agree to 1e-4 of the amplitude).
+/// The shipped scene (its lining data and its integrator, RK4) at μ = `mu`.
 fn scene(mu: f64) -> Config {
     let mut c = scenes::load("brake_squeal.yaml");
+    assert_eq!(c.simulation.integrator, IntegratorKind::Rk4);
     let pads = c.section_mut::<PadsConfig>().unwrap();
-    pads.shear = Some(SHEAR);
+    assert_eq!(pads.shear, Some(SHEAR), "the documented lining data");
     pads.friction_coefficient = mu;
-    c.simulation.integrator = IntegratorKind::Rk4;
     c
 }
 

@@ -210,6 +210,12 @@ class PadStates(IdlStruct, typename="annular_plate::msg::dds_::PadStates_"):
     contact_friction: sequence[float64] = field(default_factory=list)
     pad_compression_top: sequence[float64] = field(default_factory=list)
     pad_compression_bottom: sequence[float64] = field(default_factory=list)
+    contact_patch_top_radial: sequence[float64] = field(default_factory=list)
+    contact_patch_top_tangential: sequence[float64] = field(default_factory=list)
+    contact_patch_bottom_radial: sequence[float64] = field(default_factory=list)
+    contact_patch_bottom_tangential: sequence[float64] = field(default_factory=list)
+    contact_slip_top: sequence[float64] = field(default_factory=list)
+    contact_slip_bottom: sequence[float64] = field(default_factory=list)
 
 
 @dataclass

@@ -56,13 +56,18 @@ impl OutputChannel {
 
 /// A CSV column per instance: `{prefix}{i}_{quantity}` for numbered models
 /// (`pad2_clamp_force`), `{prefix}_{quantity}` otherwise (`tool_tip_z`),
-/// showing value i of `channel`.
+/// showing value i of `channel`. A column of another instance than the
+/// model's own (a pad's contact points) names its prefix in `instance`
+/// (`contact7_patch_top_tangential`).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct CsvColumn {
     /// The channel's name (one of [`Outputs::channels`]).
     pub channel: &'static str,
     /// The quantity part of the column's name.
     pub quantity: &'static str,
+    /// The prefix of a numbered column whose instances are not the model's
+    /// (None: [`Outputs::column_prefix`]).
+    pub instance: Option<&'static str>,
 }
 
 impl CsvColumn {
@@ -71,6 +76,7 @@ impl CsvColumn {
         CsvColumn {
             channel,
             quantity: channel,
+            instance: None,
         }
     }
 }
@@ -122,23 +128,29 @@ impl Outputs {
 
     /// The CSV column name of `column` for instance `instance` (0-based).
     pub fn column_name(&self, column: &CsvColumn, instance: usize) -> String {
-        if self.numbered {
-            format!("{}{}_{}", self.column_prefix, instance + 1, column.quantity)
-        } else {
-            format!("{}_{}", self.column_prefix, column.quantity)
+        match column.instance {
+            Some(prefix) => format!("{prefix}{}_{}", instance + 1, column.quantity),
+            None if self.numbered => {
+                format!("{}{}_{}", self.column_prefix, instance + 1, column.quantity)
+            }
+            None => format!("{}_{}", self.column_prefix, column.quantity),
         }
     }
 
     /// The unit of a CSV column called `name`, if it is one of these columns.
     pub fn column_unit(&self, name: &str) -> Option<&'static str> {
-        let rest = name.strip_prefix(self.column_prefix)?;
-        let quantity = if self.numbered {
-            let digits = rest.bytes().take_while(u8::is_ascii_digit).count();
-            (digits > 0).then(|| rest[digits..].strip_prefix('_'))??
-        } else {
-            rest.strip_prefix('_')?
-        };
-        let column = self.columns.iter().find(|c| c.quantity == quantity)?;
+        let column = self.columns.iter().find(|c| {
+            let numbered = c.instance.is_some() || self.numbered;
+            name.strip_prefix(c.instance.unwrap_or(self.column_prefix))
+                .and_then(|rest| {
+                    let digits = rest.bytes().take_while(u8::is_ascii_digit).count();
+                    if numbered != (digits > 0) {
+                        return None;
+                    }
+                    rest[digits..].strip_prefix('_')
+                })
+                .is_some_and(|quantity| quantity == c.quantity)
+        })?;
         let channel = self.channel(column.channel)?;
         Some(self.channels[channel].unit)
     }
@@ -240,13 +252,16 @@ mod tests {
         column_prefix: "pad",
         numbered: true,
         columns: &[
-            CsvColumn {
-                channel: "clamp_force",
-                quantity: "clamp_force",
-            },
+            CsvColumn::named("clamp_force"),
             CsvColumn {
                 channel: "compression",
                 quantity: "top_compression",
+                instance: None,
+            },
+            CsvColumn {
+                channel: "compression",
+                quantity: "patch",
+                instance: Some("contact"),
             },
         ],
         topic: None,
@@ -260,6 +275,10 @@ mod tests {
         assert_eq!(PADS.column_unit("pad_clamp_force"), None);
         assert_eq!(PADS.column_unit("padx_clamp_force"), None);
         assert_eq!(PADS.column_unit("tool_tip_z"), None);
+        assert_eq!(PADS.column_name(&PADS.columns[2], 6), "contact7_patch");
+        assert_eq!(PADS.column_unit("contact7_patch"), Some("m"));
+        assert_eq!(PADS.column_unit("contact_patch"), None);
+        assert_eq!(PADS.column_unit("pad7_patch"), None);
     }
 
     #[test]

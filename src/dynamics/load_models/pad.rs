@@ -329,8 +329,8 @@ impl LoadModel for Pads {
     }
     fn initial_state(&self) -> Vec<f64> {
         let mut slot = self.initial_pad_state();
+        // The patches start at steady sliding, their states' origin (`pad_shear.rs`).
         slot.resize(self.pad_states() + self.patch_states(), 0.0);
-        self.initial_patches(&mut slot[self.pad_states()..]);
         slot
     }
     fn continuous_states(&self) -> usize {

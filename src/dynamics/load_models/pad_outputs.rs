@@ -2,6 +2,12 @@
 //! ~/pad_states (`msg/PadStates.msg`, field for field) and the pads' CSV
 //! columns, filled from the pads' commands, slot and scratch; and
 //! [`PadOutputs`], the pads' typed view of a [`Simulation`].
+//!
+//! With `pads.shear_stiffness` the lining's patches (`pad_shear.rs`) report
+//! per contact point their deflections — the slot's patch states plus their
+//! steady-sliding origin (`Pads::patch_deflections`) — and each face's speed
+//! relative to its patch (stick: below a few v_reg); without the key these
+//! channels are empty.
 
 use super::outputs::{
     ChannelKind, ChannelShape, CsvColumn, OutputChannel, OutputContext, Outputs, StateTopic,
@@ -20,11 +26,25 @@ const fn channel(name: &'static str, unit: &'static str, kind: ChannelKind) -> O
 }
 
 const fn column(channel: &'static str, quantity: &'static str) -> CsvColumn {
-    CsvColumn { channel, quantity }
+    CsvColumn {
+        channel,
+        quantity,
+        instance: None,
+    }
+}
+
+/// A per-contact column `contact{c}_{channel without "contact_"}`.
+const fn contact_column(channel: &'static str, quantity: &'static str) -> CsvColumn {
+    CsvColumn {
+        channel,
+        quantity,
+        instance: Some("contact"),
+    }
 }
 
 /// Channels per pad (index p − 1 is pad p), per contact point (order of
-/// `pads.ale_nodes`), and per pad with `pads.mass` (empty without).
+/// `pads.ale_nodes`), per pad with `pads.mass` (empty without), and per
+/// contact point with `pads.shear_stiffness` (empty without).
 const CHANNELS: &[OutputChannel] = &[
     channel("clamp_force", "N", ChannelKind::Real),
     channel("normal_force", "N", ChannelKind::Real),
@@ -37,10 +57,18 @@ const CHANNELS: &[OutputChannel] = &[
     channel("contact_friction", "N", ChannelKind::Real),
     channel("pad_compression_top", "m", ChannelKind::Real),
     channel("pad_compression_bottom", "m", ChannelKind::Real),
+    channel("contact_patch_top_radial", "m", ChannelKind::Real),
+    channel("contact_patch_top_tangential", "m", ChannelKind::Real),
+    channel("contact_patch_bottom_radial", "m", ChannelKind::Real),
+    channel("contact_patch_bottom_tangential", "m", ChannelKind::Real),
+    channel("contact_slip_top", "m/s", ChannelKind::Real),
+    channel("contact_slip_bottom", "m/s", ChannelKind::Real),
 ];
 
-/// Channels 0–3 are per pad, 4–8 per contact point, 9–10 per massive pad.
+/// Channels 0–3 are per pad, 4–8 per contact point, 9–10 per massive pad,
+/// 11–16 per contact point with patches.
 const PER_CONTACT: std::ops::Range<usize> = 4..9;
+const MASSIVE: std::ops::Range<usize> = 9..11;
 
 impl Pads {
     /// The pads' declared outputs (their registration's).
@@ -54,6 +82,12 @@ impl Pads {
             column("friction_torque", "friction_torque"),
             column("pad_compression_top", "top_compression"),
             column("pad_compression_bottom", "bottom_compression"),
+            contact_column("contact_patch_top_radial", "patch_top_radial"),
+            contact_column("contact_patch_top_tangential", "patch_top_tangential"),
+            contact_column("contact_patch_bottom_radial", "patch_bottom_radial"),
+            contact_column("contact_patch_bottom_tangential", "patch_bottom_tangential"),
+            contact_column("contact_slip_top", "slip_top"),
+            contact_column("contact_slip_bottom", "slip_bottom"),
         ],
         topic: Some(StateTopic {
             topic: "~/pad_states",
@@ -67,8 +101,9 @@ impl Pads {
     pub(super) fn output_len(&self, channel: usize) -> usize {
         match channel {
             c if PER_CONTACT.contains(&c) => self.contacts.len(),
-            c if c < PER_CONTACT.start || self.is_massive() => self.pad_count(),
-            _ => 0,
+            c if c < PER_CONTACT.start => self.pad_count(),
+            c if MASSIVE.contains(&c) => self.pad_count() * self.is_massive() as usize,
+            _ => self.contacts.len() * self.shear.is_some() as usize,
         }
     }
 
@@ -80,14 +115,39 @@ impl Pads {
             .downcast_ref::<PadScratch>()
             .map_or(&[][..], |s| &s.forces);
         let (per_pad, rest) = out.split_at_mut(4 * p);
-        let (per_contact, massive) = rest.split_at_mut(5 * c);
+        let (per_contact, rest) = rest.split_at_mut(5 * c);
         self.write_per_pad(at.commands, forces, per_pad);
         self.write_per_contact(forces, per_contact);
+        let (massive, patches) = rest.split_at_mut(2 * p * self.is_massive() as usize);
         if self.is_massive() {
             for pad in 0..p {
                 massive[pad] = at.slot[2 * pad];
                 massive[p + pad] = at.slot[2 * pad + 1];
             }
+        }
+        if self.shear.is_some() {
+            let slip = at
+                .scratch
+                .downcast_ref::<PadScratch>()
+                .map_or(&[][..], |s| &s.slip);
+            self.write_patches(&at.slot[self.pad_states()..], slip, patches);
+        }
+    }
+
+    /// Per contact point its four patch deflections (top radial, top
+    /// tangential, bottom radial, bottom tangential: the slot's patch states
+    /// from their steady-sliding origin, `Pads::patch_deflections`) and its
+    /// faces' speeds relative to their patches.
+    fn write_patches(&self, x: &[f64], slip: &[[f64; 2]], out: &mut [f64]) {
+        let c = self.contacts.len();
+        for (k, (contact, x)) in self.contacts.iter().zip(x.chunks_exact(4)).enumerate() {
+            for (a, v) in self.patch_deflections(contact, x).iter().enumerate() {
+                out[a * c + k] = *v;
+            }
+        }
+        for (k, s) in slip.iter().enumerate().take(c) {
+            out[4 * c + k] = s[0];
+            out[5 * c + k] = s[1];
         }
     }
 
@@ -147,6 +207,10 @@ pub trait PadOutputs {
     fn pad_compression(&self, pad: usize) -> Option<[f64; 2]>;
     /// Forces at every pad contact point (order of `pads.ale_nodes`).
     fn pad_contact_forces(&self) -> &[ContactForces];
+    /// With `pads.shear_stiffness`: the lining's patch deflections, per
+    /// contact point (top radial, top tangential, bottom radial, bottom
+    /// tangential), m; empty without.
+    fn pad_patch_deflections(&self) -> Vec<[f64; 4]>;
     /// Hold the clamp force of pad `pad` (0-based), N: the force each disc
     /// face is pressed with, shared by the pad's contact points. Refused (and
     /// the held commands unchanged) if the pad does not exist or the force is
@@ -187,6 +251,17 @@ impl PadOutputs for Simulation {
         pads(self)
             .and_then(|(i, _)| self.model_wrenches().scratch::<PadScratch>(i))
             .map_or(&[], |s| &s.forces)
+    }
+
+    fn pad_patch_deflections(&self) -> Vec<[f64; 4]> {
+        let Some((model, p)) = pads(self) else {
+            return Vec::new();
+        };
+        let slot = &self.state().load_models.slots[model];
+        let x = &slot[p.pad_states()..p.pad_states() + p.patch_states()];
+        (p.contacts.iter().zip(x.chunks_exact(4)))
+            .map(|(c, x)| p.patch_deflections(c, x))
+            .collect()
     }
 
     fn set_pad_clamp_force(&mut self, pad: usize, newtons: f64) -> Result<(), LoadCommandError> {

@@ -18,7 +18,14 @@
 //! force a sticking patch carries.
 //!
 //! The slot holds, after the massive pads' states, per contact point
-//! (top radial, top tangential, bottom radial, bottom tangential), m.
+//! (top radial, top tangential, bottom radial, bottom tangential) the
+//! patches' deflections from steady sliding under the initial clamp forces
+//! at the initial speed ([`Pads::patch_reference`]), m: the state's origin
+//! is then the steady sliding the brake starts in, where
+//! `contact_exponential` linearises (at x = 0 the patch would be in stick, a
+//! linearisation whose rates, ~k_t/(μN/v_reg), are 1e4 times slower than
+//! the sliding patch's k_t/c_t: on config/brake_squeal.yaml that took 1.8
+//! times the evaluations of the pads).
 
 use super::face_friction::{sliding_velocity, FaceKinematics};
 use super::model::Coupling;
@@ -33,16 +40,23 @@ impl Pads {
         self.shear.map_or(0, |_| 4 * self.contacts.len())
     }
 
-    /// The patches at steady sliding under the initial clamp forces at the
-    /// initial speed: x_θ = μ N₀/n τ(|Ω r|) sign Ω / k_t per face.
-    pub(super) fn initial_patches(&self, slot: &mut [f64]) {
-        let Some(law) = self.shear else { return };
-        for (c, x) in self.contacts.iter().zip(slot.chunks_exact_mut(4)) {
-            let normal = self.initial_clamp_force[c.pad] / self.contacts_per_pad[c.pad] as f64;
-            let theta = self.friction_coefficient * normal.max(0.0) / law.stiffness
-                * Pads::sliding_sign(law.initial_speed, c.radius);
-            x.copy_from_slice(&[0.0, theta, 0.0, theta]);
-        }
+    /// The tangential deflection of both faces' patches at `contact` in
+    /// steady sliding under the initial clamp force at the initial speed,
+    /// x_θ = μ N₀/n τ(|Ω r|) sign Ω / k_t, m: the origin of the slot's patch
+    /// states (the patches start there; 0 without patches).
+    pub fn patch_reference(&self, contact: &PadContactPoint) -> f64 {
+        let Some(law) = self.shear else { return 0.0 };
+        let normal =
+            self.initial_clamp_force[contact.pad] / self.contacts_per_pad[contact.pad] as f64;
+        self.friction_coefficient * normal.max(0.0) / law.stiffness
+            * Pads::sliding_sign(law.initial_speed, contact.radius)
+    }
+
+    /// The patches' deflections of `contact` from its slot entries `x`
+    /// (radial and tangential, top then bottom face), m.
+    pub fn patch_deflections(&self, contact: &PadContactPoint, x: &[f64]) -> [f64; 4] {
+        let reference = self.patch_reference(contact);
+        [x[0], x[1] + reference, x[2], x[3] + reference]
     }
 
     /// The wrench of both faces' friction through their patches (deflections
@@ -62,6 +76,7 @@ impl Pads {
         slip: &mut [f64; 2],
     ) -> Wrench {
         let mut w = Wrench::default();
+        let x = self.patch_deflections(contact, x);
         let (s, c) = contact.sin_cos;
         let node_z = 0.5 * (contact.face_z[0] + contact.face_z[1]);
         f.tangential = 0.0;

@@ -133,10 +133,7 @@ pub const OUTPUTS: Outputs = Outputs {
     }],
     column_prefix: "link",
     numbered: true,
-    columns: &[CsvColumn {
-        channel: "force",
-        quantity: "force",
-    }],
+    columns: &[CsvColumn::named("force")],
     topic: None,
 };
 
