@@ -267,7 +267,7 @@ impl ContactExponential {
             // check) needs no new scan where the last one found none at the
             // same samples: within its reach and ending on a sample.
             let spacing = 1u64 << (self.levels - self.entries[e].tables.sample_level());
-            let scanned = clear.0 == pos && whole <= clear.1 && whole % spacing == 0;
+            let scanned = clear.0 == pos && whole <= clear.1 && whole.is_multiple_of(spacing);
             let found = if whole == 0 || scanned {
                 None
             } else {

@@ -352,9 +352,10 @@ fn taylor_phi(tau: f64, n: usize, b: &mut BuildScratch) {
     }
 }
 
-/// From span t to 2t: H(2t) = (I + E) H + t G + t²/2 F, G(2t) = (I + E) G
-/// + t F, F(2t) = (I + E) F, E(2t) = E² (G over [t, 2t]: ∫₀ᵗ e^{(t−u)J}
-/// (t + u) du = t F + G; H: ∫₀ᵗ e^{(t−u)J} (t + u)²/2 du = t²/2 F + t G + H).
+/// From span t to 2t: H(2t) = (I + E) H + t G + t²/2 F,
+/// G(2t) = (I + E) G + t F, F(2t) = (I + E) F, E(2t) = E² (G over [t, 2t]:
+/// ∫₀ᵗ e^{(t−u)J} (t + u) du = t F + G; H: ∫₀ᵗ e^{(t−u)J} (t + u)²/2 du =
+/// t²/2 F + t G + H).
 fn double(b: &mut BuildScratch, n: usize, t: f64) {
     matmul(&b.e, &b.h_level, &mut b.t1, n);
     for (((h, eh), g), f) in b.h_level.iter_mut().zip(&b.t1).zip(&b.g_level).zip(&b.f) {
