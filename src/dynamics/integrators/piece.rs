@@ -307,17 +307,7 @@ fn taylor_phi(tau: f64, n: usize, b: &mut BuildScratch) {
         *xi = tau * ai;
     }
     let p = &mut b.p;
-    set_identity(p, n);
-    p.iter_mut().for_each(|v| *v /= (TAYLOR_DEGREE + 2) as f64);
-    for k in (0..TAYLOR_DEGREE).rev() {
-        // p ← I/(k+2)! ·(k+2)!… in nested form: p = (I + X p)/(k + 2).
-        matmul(x, p, t, n);
-        set_identity(p, n);
-        let inv = 1.0 / (k + 2) as f64;
-        for (pi, ti) in p.iter_mut().zip(t.iter()) {
-            *pi = inv * (*pi + ti);
-        }
-    }
+    nested_series(x, p, t, n, 2);
     // φ₂ = p; φ₁ = I + X φ₂; E = I + X φ₁.
     let x = &b.t2;
     let t = &mut b.t1;
@@ -336,19 +326,26 @@ fn taylor_phi(tau: f64, n: usize, b: &mut BuildScratch) {
         *g = tau * tau * p;
     }
     // The same nesting with (k + 3) gives 2 φ₃ (its last factor is 1/3, not 1/3!).
-    let (x, t, p) = (&b.t2, &mut b.t1, &mut b.p);
+    nested_series(&b.t2, &mut b.p, &mut b.t1, n, 3);
+    for (h, p) in b.h_level.iter_mut().zip(&b.p) {
+        *h = 0.5 * tau * tau * tau * p;
+    }
+}
+
+/// p ← the nested form p = (I + X p)/(k + first) for k = D−1 … 0 from
+/// p = I/(D + first), D = [`TAYLOR_DEGREE`] (first = 2: φ₂(X); 3: 2 φ₃(X));
+/// `t` scratch.
+fn nested_series(x: &[f64], p: &mut [f64], t: &mut [f64], n: usize, first: usize) {
     set_identity(p, n);
-    p.iter_mut().for_each(|v| *v /= (TAYLOR_DEGREE + 3) as f64);
+    p.iter_mut()
+        .for_each(|v| *v /= (TAYLOR_DEGREE + first) as f64);
     for k in (0..TAYLOR_DEGREE).rev() {
         matmul(x, p, t, n);
         set_identity(p, n);
-        let inv = 1.0 / (k + 3) as f64;
+        let inv = 1.0 / (k + first) as f64;
         for (pi, ti) in p.iter_mut().zip(t.iter()) {
             *pi = inv * (*pi + ti);
         }
-    }
-    for (h, p) in b.h_level.iter_mut().zip(&b.p) {
-        *h = 0.5 * tau * tau * tau * p;
     }
 }
 
