@@ -233,10 +233,10 @@ fn paper_squeal_limit_cycle_closer_to_the_converged_reference_than_rk4() {
 }
 
 /// brake_squeal as shipped: friction on the faces at 0.36 m/s sliding
-/// speed, whose direction is strongly nonlinear in the vibration. Spans
-/// whose held remainder misses the scene's `contact_tolerance` (1e-6) are
-/// taken at third order: measured 2.03e-5 of the peak over 0.3 s of its
-/// growth (the second-order correction alone: 1.72e-4).
+/// speed, whose direction is strongly nonlinear in the vibration. Its
+/// spans are taken at third order at the scene's `contact_tolerance`
+/// (1e-6): measured 2.03e-5 of the peak over 0.3 s of its growth (the
+/// second-order correction alone: 1.72e-4).
 #[test]
 fn brake_squeal_face_friction_within_3e5_of_the_converged_reference() {
     let errors = against_the_reference("brake_squeal.yaml", &[], 3000, &|_| 5000.0);

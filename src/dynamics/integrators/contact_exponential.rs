@@ -234,8 +234,9 @@ impl ContactExponential {
         // the step at its instant, which need not lie on the grid.
         let mut pos = 0.0f64;
         let mut span_level = 0usize;
-        // Whether a span of this step failed the held remainder's check:
-        // the rest of the step is then taken by [`Self::third_order_span`].
+        // Whether a span of this step found its held remainder's estimate
+        // above CORRECTED × tolerance (not an affine piece's rounding): the
+        // rest of the step is then taken by [`Self::third_order_span`].
         let mut nonlinear = false;
         // (pos, units): from the start at pos, no switch within units.
         let mut clear = (-1.0f64, 0u64);
@@ -342,8 +343,9 @@ impl ContactExponential {
                 self.held_error(e, end, unit)
             };
             if error > CORRECTED * tolerance && !nonlinear && !switched && end >= 2.0 {
-                // The held remainder misses: this step's spans are taken
-                // at third order from here on (the same span again first).
+                // The held remainder is more than rounding: this step's
+                // spans are taken at third order from here on (the same
+                // span again first).
                 nonlinear = true;
                 continue;
             }
