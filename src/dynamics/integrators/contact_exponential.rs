@@ -39,14 +39,14 @@ const MIN_CACHE_PIECES: usize = 4;
 const CACHE_BYTES: usize = 128 << 20;
 
 /// Unknowns beyond which `contact_exponential` is refused: a piece holds
-/// 3·levels + 4 matrices of n² (0.5 MB each at n = 256) and its build costs
+/// 4·levels + 5 matrices of n² (0.5 MB each at n = 256) and its build costs
 /// O(n³) per level.
 pub const MAX_UNKNOWNS: usize = 256;
 
 /// Pieces the cache keeps for n unknowns and `levels` dyadic levels: as many
 /// as fit [`CACHE_BYTES`], within [`MIN_CACHE_PIECES`]..=[`CACHE_PIECES`].
 pub(crate) fn cache_pieces(n: usize, levels: usize) -> usize {
-    let piece_bytes = (3 * (levels + 1) + 1) * n * n * std::mem::size_of::<f64>();
+    let piece_bytes = (4 * (levels + 1) + 1) * n * n * std::mem::size_of::<f64>();
     (CACHE_BYTES / piece_bytes.max(1)).clamp(MIN_CACHE_PIECES, CACHE_PIECES)
 }
 
@@ -73,6 +73,10 @@ const COARSEN: f64 = 8.0;
 /// below it the held step meets the tolerance with margin (affine pieces:
 /// the remainder is rounding).
 const CORRECTED: f64 = 1.0e-3;
+
+/// A third-order span whose error estimate is below tolerance / COARSEN_THIRD
+/// is followed by spans twice as long: its estimate grows as the span cubed.
+const COARSEN_THIRD: f64 = 16.0;
 
 /// What a step did, for diagnostics and tests.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
@@ -137,6 +141,11 @@ pub struct ContactExponential {
     series_t: f64,
     /// The remainder's change over a span and the error it makes.
     dg: Vec<f64>,
+    /// The switching functions within their bound's reach of a sign change.
+    near: Vec<usize>,
+    /// The remainder's change at a third-order span's midpoint, and scratch.
+    d_a: Vec<f64>,
+    work: Vec<f64>,
     err: Vec<f64>,
 }
 
@@ -176,6 +185,9 @@ impl ContactExponential {
             s_a: vec![0.0; ns],
             series_t: 0.0,
             dg: vec![0.0; n],
+            near: Vec::with_capacity(ns),
+            d_a: vec![0.0; n],
+            work: vec![0.0; n],
             err: vec![0.0; n],
         }
     }
@@ -222,6 +234,12 @@ impl ContactExponential {
         // the step at its instant, which need not lie on the grid.
         let mut pos = 0.0f64;
         let mut span_level = 0usize;
+        // Whether a span of this step found its held remainder's estimate
+        // above CORRECTED × tolerance (not an affine piece's rounding): the
+        // rest of the step is then taken by [`Self::third_order_span`].
+        let mut nonlinear = false;
+        // (pos, units): from the start at pos, no switch within units.
+        let mut clear = (-1.0f64, 0u64);
         for entry in self.entries.iter_mut().filter(|e| e.this_step_only) {
             entry.valid = false;
         }
@@ -246,12 +264,47 @@ impl ContactExponential {
                 pos += span as f64;
                 continue;
             }
+            // A span tried again from the same start (after a failed
+            // check) needs no new scan where the last one found none at the
+            // same samples: within its reach and ending on a sample.
+            let spacing = 1u64 << (self.levels - self.entries[e].tables.sample_level());
+            let scanned = clear.0 == pos && whole <= clear.1 && whole.is_multiple_of(spacing);
+            let found = if whole == 0 || scanned {
+                None
+            } else {
+                let found = self.first_switch(e, whole);
+                if found.is_none() {
+                    clear = (pos, whole);
+                }
+                found
+            };
+            if nonlinear && whole >= 2 && found.is_none() {
+                // The largest dyadic span within `whole` (a span after a
+                // switch may start off the grid).
+                let span = 1u64 << (63 - whole.leading_zeros());
+                let error = self.third_order_span(e, span, unit, eval);
+                if error > tolerance && span_level < self.levels {
+                    let finer = ((error / tolerance).log2() / 3.0).ceil().max(1.0) as usize;
+                    span_level = (span_level + finer).min(self.levels);
+                    report.halvings += 1;
+                    continue;
+                }
+                eval(&self.y_b, &mut self.f_end, &mut self.s_end);
+                pos += span as f64;
+                self.y_r.copy_from_slice(&self.y_b);
+                std::mem::swap(&mut self.f_r, &mut self.f_end);
+                std::mem::swap(&mut self.s_r, &mut self.s_end);
+                if error < tolerance / COARSEN_THIRD && span_level > 0 {
+                    span_level -= 1;
+                }
+                continue;
+            }
             let (end, switched) = if whole == 0 {
                 // The step's last fraction of a unit: the flow's series.
                 self.y_a.copy_from_slice(&self.y_r);
                 self.within_unit(e, remaining, unit)
             } else {
-                match self.first_switch(e, whole) {
+                match found {
                     None => {
                         self.advance_from_rest(e, whole);
                         self.y_b.copy_from_slice(&self.y_a);
@@ -289,6 +342,13 @@ impl ContactExponential {
             } else {
                 self.held_error(e, end, unit)
             };
+            if error > CORRECTED * tolerance && !nonlinear && !switched && end >= 2.0 {
+                // The held remainder is more than rounding: this step's
+                // spans are taken at third order from here on (the same
+                // span again first).
+                nonlinear = true;
+                continue;
+            }
             if error > tolerance && span_level < self.levels && end > 1.0 {
                 span_level += 1;
                 report.halvings += 1;
@@ -339,6 +399,75 @@ impl ContactExponential {
                 *d = half_t * g;
             }
         }
+        self.scaled_error()
+    }
+
+    /// One span of `units` (a power of two, at least 2) from y_r, no switch
+    /// inside, by the third-order exponential Runge–Kutta step of Cox and
+    /// Matthews (ETD3RK) on the piece's linearisation: with the remainder's
+    /// changes D_a at y_a = y_r + F(T/2) f_r and D_b at y_b = y_r + F(T)
+    /// (f_r + 2 D_a) (each Δg = f − f_r − J (y − y_r)), the remainder taken as
+    /// the quadratic in time through 0, D_a, D_b at 0, T/2, T gives
+    ///
+    ///   y(T) = y_r + F(T) f_r + G(T) (4 D_a − D_b) / T + 4 H(T) (D_b − 2 D_a) / T²,
+    ///
+    /// left in y_b (f not yet evaluated there). Returns the scaled estimate
+    /// of the error of the second-order step y_r + F f_r + G D_b / T it
+    /// extends, (2 G / T − 4 H / T²)(2 D_a − D_b) (the remainder's curvature
+    /// over the span): the third-order step is more accurate than it.
+    fn third_order_span(
+        &mut self,
+        e: usize,
+        units: u64,
+        unit: f64,
+        eval: &mut impl FnMut(&[f64], &mut [f64], &mut [f64]),
+    ) -> f64 {
+        let j = self.levels - units.trailing_zeros() as usize;
+        let t = units as f64 * unit;
+        let tables = &self.entries[e].tables;
+        self.y_a.copy_from_slice(&self.y_r);
+        mul_add(tables.f(j + 1), &self.f_r, &mut self.y_a);
+        eval(&self.y_a, &mut self.f_a, &mut self.s_t);
+        let tables = &self.entries[e].tables;
+        remainder_change(
+            &tables.jac,
+            &self.y_r,
+            &self.f_r,
+            &self.y_a,
+            &self.f_a,
+            &mut self.diff,
+            &mut self.d_a,
+        );
+        for ((w, f), d) in self.work.iter_mut().zip(&self.f_r).zip(&self.d_a) {
+            *w = f + 2.0 * d;
+        }
+        self.y_b.copy_from_slice(&self.y_r);
+        mul_add(tables.f(j), &self.work, &mut self.y_b);
+        eval(&self.y_b, &mut self.f_end, &mut self.s_end);
+        let tables = &self.entries[e].tables;
+        remainder_change(
+            &tables.jac,
+            &self.y_r,
+            &self.f_r,
+            &self.y_b,
+            &self.f_end,
+            &mut self.diff,
+            &mut self.dg,
+        );
+        // The curvature 2 D_a − D_b, and the step.
+        for ((w, a), b) in self.work.iter_mut().zip(&self.d_a).zip(&self.dg) {
+            *w = 2.0 * a - b;
+        }
+        self.y_b.copy_from_slice(&self.y_r);
+        mul_add(tables.f(j), &self.f_r, &mut self.y_b);
+        for ((d, a), b) in self.diff.iter_mut().zip(&self.d_a).zip(&self.dg) {
+            *d = 4.0 * a - b;
+        }
+        mul_add_scaled(tables.g(j), &self.diff, 1.0 / t, &mut self.y_b);
+        mul_add_scaled(tables.h(j), &self.work, -4.0 / (t * t), &mut self.y_b);
+        self.err.iter_mut().for_each(|v| *v = 0.0);
+        mul_add_scaled(tables.g(j), &self.work, 2.0 / t, &mut self.err);
+        mul_add_scaled(tables.h(j), &self.work, -4.0 / (t * t), &mut self.err);
         self.scaled_error()
     }
 
@@ -512,16 +641,35 @@ impl ContactExponential {
         if far && remaining == 1 << self.levels {
             return None;
         }
+        // Only the functions within their bound's reach can change sign at
+        // a sample (|S F(i τ_m) f_r| ≤ bound ‖f_r‖ / 2 there): the others'
+        // rows are skipped, with the same decisions.
+        self.near.clear();
+        self.near.extend(
+            self.s_r
+                .iter()
+                .zip(t.bound())
+                .enumerate()
+                .filter(|(_, (s, b))| !(s.abs() > *b * reach || *b * reach == 0.0))
+                .map(|(i, _)| i),
+        );
+        let n = self.n;
         let mut last = 0;
         for i in 1..=(1usize << m) {
             let at = i as u64 * spacing;
             if at > remaining {
                 break;
             }
-            self.s_t.copy_from_slice(&self.s_r);
-            mul_add(t.sampled(i), &self.f_r, &mut self.s_t);
-            if !same_piece(&self.s_r, &self.s_t) {
-                return Some((last, at));
+            let sampled = t.sampled(i);
+            for &row in &self.near {
+                let moved = sampled[row * n..(row + 1) * n]
+                    .iter()
+                    .zip(&self.f_r)
+                    .map(|(a, b)| a * b)
+                    .sum::<f64>();
+                if (self.s_r[row] + moved > 0.0) != (self.s_r[row] > 0.0) {
+                    return Some((last, at));
+                }
             }
             last = at;
         }
@@ -813,6 +961,45 @@ mod tests {
         }
     }
 
+    /// ẏ = −k y + y² (Bernoulli: 1/y = 1/k + (1/y₀ − 1/k) e^{kt}), strongly
+    /// nonlinear from y₀ = k/2: the piece's J is −k, the remainder y².
+    fn bernoulli(y: &[f64], f: &mut [f64], _: &mut [f64]) {
+        f[0] = -10.0 * y[0] + y[0] * y[0];
+    }
+
+    fn bernoulli_exact(y0: f64, t: f64) -> f64 {
+        let k = 10.0;
+        1.0 / (1.0 / k + (1.0 / y0 - 1.0 / k) * (k * t).exp())
+    }
+
+    #[test]
+    fn a_third_order_span_s_error_falls_as_the_span_to_the_fourth_and_stays_below_its_estimate() {
+        let (h, levels, y0) = (0.1, 10, 5.0);
+        let mut c = ContactExponential::new(1, 0, levels);
+        c.set_scale(&[1e-9], &[0, 1]);
+        let mut eval = bernoulli;
+        let (mut f, mut s) = ([0.0], [0.0; 0]);
+        eval(&[y0], &mut f, &mut s);
+        let mut report = StepReport::default();
+        let unit = h / (1u64 << levels) as f64;
+        let mut errors = Vec::new();
+        for units in [64u64, 32, 16, 8] {
+            c.y_r[0] = y0;
+            c.f_r[0] = f[0];
+            let e = c.piece(h, &[], &mut eval, &mut report);
+            let estimate = c.third_order_span(e, units, unit, &mut eval);
+            let exact = bernoulli_exact(y0, units as f64 * unit);
+            let error = (c.y_b[0] - exact).abs() / y0;
+            println!("{units} units: error {error:.3e}, estimate {estimate:.3e}");
+            assert!(error < estimate, "{units}: {error} vs {estimate}");
+            errors.push(error);
+        }
+        for pair in errors.windows(2) {
+            let ratio = pair[0] / pair[1];
+            assert!((12.0..20.0).contains(&ratio), "{errors:?}");
+        }
+    }
+
     #[test]
     fn the_cache_keeps_its_tables_within_its_memory_bound() {
         // The brake scenes (≤ 40 unknowns) keep every piece.
@@ -820,7 +1007,7 @@ mod tests {
         for n in [40, 100, 190, MAX_UNKNOWNS] {
             for levels in [4, 12, 20, 40] {
                 let pieces = cache_pieces(n, levels);
-                let bytes = pieces * (3 * (levels + 1) + 1) * n * n * 8;
+                let bytes = pieces * (4 * (levels + 1) + 1) * n * n * 8;
                 assert!((MIN_CACHE_PIECES..=CACHE_PIECES).contains(&pieces));
                 assert!(
                     bytes <= CACHE_BYTES || pieces == MIN_CACHE_PIECES,

@@ -5,8 +5,9 @@
 //!
 //! On the piece the solution from y_r is y(t) = y_r + F(t) f(y_r) with
 //! F(t) = ∫₀ᵗ e^{τJ} dτ = t φ₁(tJ), and E(t) = e^{tJ} = I + J F(t); a forcing
-//! growing linearly from 0 adds G(t) = ∫₀ᵗ e^{(t−s)J} s ds = t² φ₂(tJ). The
-//! tables hold E, F and G at the dyadic fractions τ_j = h / 2^j of the step (j = 0..=L)
+//! growing linearly from 0 adds G(t) = ∫₀ᵗ e^{(t−s)J} s ds = t² φ₂(tJ), one
+//! growing as s²/2 adds H(t) = ∫₀ᵗ e^{(t−s)J} s²/2 ds = t³ φ₃(tJ). The
+//! tables hold E, F, G and H at the dyadic fractions τ_j = h / 2^j of the step (j = 0..=L)
 //! and S F(i τ_m) at the m-th level's sample times, so that a step, a
 //! sample of the switching functions or a bisection of a switching instant
 //! costs matrix–vector products only.
@@ -16,7 +17,9 @@
 //! the order of the fastest rate; at the finest level τ ρ ≤ 1/8 and φ₁ is its
 //! Taylor series to degree 10 (remainder below 2e-19); the coarser levels
 //! follow from F(2τ) = (I + E(τ)) F(τ), G(2τ) = (I + E(τ)) G(τ) + τ F(τ),
-//! E(2τ) = E(τ)². Each level is exact
+//! H(2τ) = (I + E(τ)) H(τ) + τ G(τ) + τ²/2 F(τ), E(2τ) = E(τ)² (φ₃ by its
+//! own Taylor series, so that E, F and G are the same bits with or without
+//! H). Each level is exact
 //! to rounding for any stiffness: a contact a thousand times stiffer only
 //! adds squarings (one per factor two in ρ h).
 
@@ -48,6 +51,9 @@ pub(crate) struct PieceTables {
     /// G(τ_j) = ∫₀^τ e^{(τ−s)J} s ds = τ² φ₂(τJ): the response to a
     /// forcing that grows linearly from 0.
     g: Vec<f64>,
+    /// H(τ_j) = ∫₀^τ e^{(τ−s)J} s²/2 ds = τ³ φ₃(τJ): the response to a
+    /// forcing that grows as s²/2 from 0.
+    h: Vec<f64>,
     /// m: the switching functions are sampled every τ_m.
     sample_level: usize,
     /// |λ|max of J (estimated): the fastest rate of the piece, 1/s.
@@ -72,6 +78,7 @@ pub(crate) struct BuildScratch {
     e: Vec<f64>,
     f: Vec<f64>,
     g_level: Vec<f64>,
+    h_level: Vec<f64>,
     p: Vec<f64>,
     t1: Vec<f64>,
     t2: Vec<f64>,
@@ -87,6 +94,7 @@ impl BuildScratch {
             e: vec![0.0; n * n],
             f: vec![0.0; n * n],
             g_level: vec![0.0; n * n],
+            h_level: vec![0.0; n * n],
             p: vec![0.0; n * n],
             t1: vec![0.0; n * n],
             t2: vec![0.0; n * n],
@@ -108,6 +116,7 @@ impl PieceTables {
             e: Vec::new(),
             f: Vec::new(),
             g: Vec::new(),
+            h: Vec::new(),
             sample_level: 0,
             rate: 0.0,
             sf: Vec::new(),
@@ -133,6 +142,12 @@ impl PieceTables {
     pub(crate) fn g(&self, j: usize) -> &[f64] {
         let nn = self.n * self.n;
         &self.g[j * nn..(j + 1) * nn]
+    }
+
+    /// H(τ_j) = τ_j³ φ₃(τ_j J), n × n.
+    pub(crate) fn h(&self, j: usize) -> &[f64] {
+        let nn = self.n * self.n;
+        &self.h[j * nn..(j + 1) * nn]
     }
 
     /// |λ|max of J (estimated), 1/s.
@@ -171,6 +186,7 @@ impl PieceTables {
         self.e.resize(self.levels * n * n, 0.0);
         self.f.resize(self.levels * n * n, 0.0);
         self.g.resize(self.levels * n * n, 0.0);
+        self.h.resize(self.levels * n * n, 0.0);
         b.a.copy_from_slice(&self.jac);
         balance(&mut b.a, &mut b.d, n);
         let rho = norm1(&b.a, n);
@@ -213,6 +229,7 @@ impl PieceTables {
                 self.e[at] = s * b.e[i * n + k];
                 self.f[at] = s * b.f[i * n + k];
                 self.g[at] = s * b.g_level[i * n + k];
+                self.h[at] = s * b.h_level[i * n + k];
             }
         }
     }
@@ -282,24 +299,15 @@ fn sample_level(h: f64, rho: f64, max_level: usize) -> usize {
 
 /// At the finest level: φ₂(X) = Σ X^k/(k+2)! by Horner, φ₁ = I + X φ₂,
 /// E = I + X φ₁ (X = τA); F = τ φ₁ into `b.f`, E into `b.e`, G = τ² φ₂
-/// into `b.g_level`.
+/// into `b.g_level`; φ₃(X) = Σ X^k/(k+3)! by its own Horner, H = τ³ φ₃ into
+/// `b.h_level`.
 fn taylor_phi(tau: f64, n: usize, b: &mut BuildScratch) {
     let (x, t) = (&mut b.t2, &mut b.t1);
     for (xi, ai) in x.iter_mut().zip(&b.a) {
         *xi = tau * ai;
     }
     let p = &mut b.p;
-    set_identity(p, n);
-    p.iter_mut().for_each(|v| *v /= (TAYLOR_DEGREE + 2) as f64);
-    for k in (0..TAYLOR_DEGREE).rev() {
-        // p ← I/(k+2)! ·(k+2)!… in nested form: p = (I + X p)/(k + 2).
-        matmul(x, p, t, n);
-        set_identity(p, n);
-        let inv = 1.0 / (k + 2) as f64;
-        for (pi, ti) in p.iter_mut().zip(t.iter()) {
-            *pi = inv * (*pi + ti);
-        }
-    }
+    nested_series(x, p, t, n, 2);
     // φ₂ = p; φ₁ = I + X φ₂; E = I + X φ₁.
     let x = &b.t2;
     let t = &mut b.t1;
@@ -317,11 +325,39 @@ fn taylor_phi(tau: f64, n: usize, b: &mut BuildScratch) {
     for (g, p) in b.g_level.iter_mut().zip(&b.p) {
         *g = tau * tau * p;
     }
+    // The same nesting with (k + 3) gives 2 φ₃ (its last factor is 1/3, not 1/3!).
+    nested_series(&b.t2, &mut b.p, &mut b.t1, n, 3);
+    for (h, p) in b.h_level.iter_mut().zip(&b.p) {
+        *h = 0.5 * tau * tau * tau * p;
+    }
 }
 
-/// From span t to 2t: G(2t) = (I + E) G + t F, F(2t) = (I + E) F,
-/// E(2t) = E² (G over [t, 2t]: ∫₀ᵗ e^{(t−u)J} (t + u) du = t F + G).
+/// p ← the nested form p = (I + X p)/(k + first) for k = D−1 … 0 from
+/// p = I/(D + first), D = [`TAYLOR_DEGREE`] (first = 2: φ₂(X); 3: 2 φ₃(X));
+/// `t` scratch.
+fn nested_series(x: &[f64], p: &mut [f64], t: &mut [f64], n: usize, first: usize) {
+    set_identity(p, n);
+    p.iter_mut()
+        .for_each(|v| *v /= (TAYLOR_DEGREE + first) as f64);
+    for k in (0..TAYLOR_DEGREE).rev() {
+        matmul(x, p, t, n);
+        set_identity(p, n);
+        let inv = 1.0 / (k + first) as f64;
+        for (pi, ti) in p.iter_mut().zip(t.iter()) {
+            *pi = inv * (*pi + ti);
+        }
+    }
+}
+
+/// From span t to 2t: H(2t) = (I + E) H + t G + t²/2 F,
+/// G(2t) = (I + E) G + t F, F(2t) = (I + E) F, E(2t) = E² (G over [t, 2t]:
+/// ∫₀ᵗ e^{(t−u)J} (t + u) du = t F + G; H: ∫₀ᵗ e^{(t−u)J} (t + u)²/2 du =
+/// t²/2 F + t G + H).
 fn double(b: &mut BuildScratch, n: usize, t: f64) {
+    matmul(&b.e, &b.h_level, &mut b.t1, n);
+    for (((h, eh), g), f) in b.h_level.iter_mut().zip(&b.t1).zip(&b.g_level).zip(&b.f) {
+        *h += eh + t * g + 0.5 * t * t * f;
+    }
     matmul(&b.e, &b.g_level, &mut b.t1, n);
     for ((g, eg), f) in b.g_level.iter_mut().zip(&b.t1).zip(&b.f) {
         *g += eg + t * f;
@@ -477,8 +513,14 @@ mod tests {
                 -(wt - s) / omega,
                 (1.0 - c) / (omega * omega),
             ];
+            // H(t) = Σ_k J^k t^(k+3)/(k+3)! with J² = −ω²: a I + b J.
+            let a = (wt - s) / omega.powi(3);
+            let bj = (0.5 * wt * wt - 1.0 + c) / omega.powi(4);
+            let hh = [a, bj, -omega * omega * bj, a];
             let scale = [1.0, 1.0 / omega, omega, 1.0];
             for i in 0..4 {
+                let err_h = (t.h(j)[i] - hh[i]).abs() / scale[i] * omega.powi(3) / (1.0 + wt * wt);
+                assert!(err_h < 1e-12, "H level {j} entry {i}: {err_h:e}");
                 let err_e = (t.e(j)[i] - e[i]).abs() / scale[i];
                 let err_f = (t.f(j)[i] - f[i]).abs() / scale[i] * omega;
                 let err_g = (t.g(j)[i] - g[i]).abs() / scale[i] * omega * omega;
