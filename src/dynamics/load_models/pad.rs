@@ -73,7 +73,7 @@ use super::model::{
 };
 use super::outputs::OutputContext;
 use super::pad_config::{Caliper, ContactSurface, PadsConfig, PARAMETERS};
-use super::pad_patch::PatchLaw;
+use super::pad_patch::{PatchLaw, PatchSlot};
 use crate::config::Config;
 use crate::dynamics::contact_compliance::{ContactCompliance, SeriesScratch};
 use crate::dynamics::joint::FrictionTorque;
@@ -444,7 +444,12 @@ impl LoadModel for Pads {
                 *k = face_kinematics(&ctx.ale_nodes[c.node], ctx.q_ale, ctx.q_dot_ale, ctx.speed);
                 let w = match (&self.shear, x.next(), rates.next()) {
                     (Some(law), Some(x), Some(r)) => {
-                        self.patch_wrench(law, c, f, k, ctx.speed, x, r, &mut s.slip[ci])
+                        let slot = PatchSlot {
+                            x,
+                            rates: r,
+                            slip: &mut s.slip[ci],
+                        };
+                        self.patch_wrench(law, c, f, k, ctx.speed, slot)
                     }
                     _ => self.face_wrench(c, f, k, ctx.speed),
                 };

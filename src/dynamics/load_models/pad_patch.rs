@@ -117,6 +117,15 @@ impl PatchLaw {
     }
 }
 
+/// One contact's patches in the step: their deflections (4 entries: radial
+/// and tangential, top then bottom face, from the slot's origin), where
+/// their rates go, and where the faces' slip speeds go.
+pub(super) struct PatchSlot<'a> {
+    pub(super) x: &'a [f64],
+    pub(super) rates: &'a mut [f64],
+    pub(super) slip: &'a mut [f64; 2],
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

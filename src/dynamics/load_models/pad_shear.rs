@@ -30,7 +30,7 @@
 use super::face_friction::{sliding_velocity, FaceKinematics};
 use super::model::Coupling;
 use super::pad::{ContactForces, PadContactPoint, Pads, FRICTION_REGULARISATION_SPEED};
-use super::pad_patch::PatchLaw;
+use super::pad_patch::{PatchLaw, PatchSlot};
 use crate::dynamics::wrench::Wrench;
 
 impl Pads {
@@ -59,11 +59,10 @@ impl Pads {
         [x[0], x[1] + reference, x[2], x[3] + reference]
     }
 
-    /// The wrench of both faces' friction through their patches (deflections
-    /// `x`, 4 entries) and the normal forces at the node, as
-    /// [`Pads::face_wrench`]; writes the patches' rates into `rates` and
-    /// the faces' relative sliding speeds into `slip`.
-    #[allow(clippy::too_many_arguments)]
+    /// The wrench of both faces' friction through their patches (the
+    /// slot's deflections) and the normal forces at the node, as
+    /// [`Pads::face_wrench`]; writes the patches' rates and the faces'
+    /// relative sliding speeds into the slot.
     pub(super) fn patch_wrench(
         &self,
         law: &PatchLaw,
@@ -71,10 +70,9 @@ impl Pads {
         f: &mut ContactForces,
         k: &FaceKinematics,
         speed: f64,
-        x: &[f64],
-        rates: &mut [f64],
-        slip: &mut [f64; 2],
+        slot: PatchSlot<'_>,
     ) -> Wrench {
+        let PatchSlot { x, rates, slip } = slot;
         let mut w = Wrench::default();
         let x = self.patch_deflections(contact, x);
         let (s, c) = contact.sin_cos;
