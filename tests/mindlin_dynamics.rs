@@ -656,16 +656,7 @@ fn a_point_damper_decays_a_mindlin_mode_at_the_rate_of_the_exact_mode_shape() {
         let mut sim = Simulation::new(config).expect("dampers take Mindlin modes");
         let sigma = -c_d * phi_sq_over_m / 2.0;
         let omega_d = (omega * omega - sigma * sigma).sqrt();
-        let (mut t, mut ln_q) = (Vec::new(), Vec::new());
-        for _ in 0..8000 {
-            sim.step().unwrap();
-            let (q, v) = (sim.q_lagrange()[0], sim.q_dot_lagrange()[0]);
-            let rotated = (v - sigma * q) / omega_d;
-            t.push(sim.time());
-            ln_q.push((q * q + rotated * rotated).ln());
-        }
-        let fitted = 0.5 * support::fit::least_squares_slope(&t, &ln_q);
-        let decayed = ln_q[0] - ln_q[ln_q.len() - 1];
+        let (fitted, decayed) = support::fit::modal_decay(&mut sim, sigma, omega_d, 8000);
         let err = (fitted - sigma).abs() / sigma.abs();
         println!("c_d = {c_d}: decay rate {fitted:e} 1/s, exact Mindlin shape {sigma:e} 1/s (ζ = {:.1e}), error {err:.1e}", -sigma / omega);
         assert!(decayed > 0.5, "c_d = {c_d}: ln Q decays by {decayed} only");

@@ -14,7 +14,7 @@ mod support;
 
 use annular_plate::config::{Config, ConfigError};
 use annular_plate::dynamics::Simulation;
-use support::fit::least_squares_slope;
+use support::fit::modal_decay;
 
 /// The one-mode lathe disc with a damper of `damping` N·s/m under its rim node.
 fn scene(damping: &str, nodes: &str) -> String {
@@ -59,16 +59,7 @@ fn a_point_damper_decays_the_mode_at_the_closed_form_rate() {
             (1e-4..0.2).contains(&zeta),
             "ζ = {zeta}: a light damping the test resolves"
         );
-        let (mut t, mut ln_q) = (Vec::new(), Vec::new());
-        for _ in 0..8000 {
-            sim.step().unwrap();
-            let (q, v) = (sim.q_lagrange()[0], sim.q_dot_lagrange()[0]);
-            let rotated = (v - sigma * q) / omega_d;
-            t.push(sim.time());
-            ln_q.push((q * q + rotated * rotated).ln());
-        }
-        let fitted = 0.5 * least_squares_slope(&t, &ln_q);
-        let decayed = ln_q[0] - ln_q[ln_q.len() - 1];
+        let (fitted, decayed) = modal_decay(&mut sim, sigma, omega_d, 8000);
         assert!(
             decayed > 0.5,
             "c_d = {c_d}: the run decays ln Q by {decayed} only"

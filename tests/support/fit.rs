@@ -1,6 +1,7 @@
 //! Fits the tests share.
 #![allow(dead_code)]
 
+use annular_plate::dynamics::Simulation;
 use nalgebra::Complex;
 use std::f64::consts::PI;
 
@@ -14,6 +15,22 @@ pub fn least_squares_slope(x: &[f64], y: &[f64]) -> f64 {
         .map(|(x, y)| (x - mx) * (y - my))
         .sum::<f64>()
         / x.iter().map(|x| (x - mx).powi(2)).sum::<f64>()
+}
+
+/// The decay of mode 0 of a damped one-mode run over `steps` steps: the
+/// fitted rate of ½ ln(q² + ((q̇ − σq)/ω_d)²) (1/s; the envelope of
+/// q = Q e^{σt} cos(ω_d t + φ)) and how much that log fell over the run.
+pub fn modal_decay(sim: &mut Simulation, sigma: f64, omega_d: f64, steps: usize) -> (f64, f64) {
+    let (mut t, mut ln_q) = (Vec::new(), Vec::new());
+    for _ in 0..steps {
+        sim.step().unwrap();
+        let (q, v) = (sim.q_lagrange()[0], sim.q_dot_lagrange()[0]);
+        let rotated = (v - sigma * q) / omega_d;
+        t.push(sim.time());
+        ln_q.push((q * q + rotated * rotated).ln());
+    }
+    let fitted = 0.5 * least_squares_slope(&t, &ln_q);
+    (fitted, ln_q[0] - ln_q[ln_q.len() - 1])
 }
 
 /// |Σ z(t) e^{−iνt} w(t)| with a Hann window.
