@@ -74,6 +74,15 @@ pub enum ModelError {
         /// What it would use that Mindlin theory does not give.
         why: &'static str,
     },
+    /// The in-plane modes could not be computed.
+    #[error("plate.in_plane_nodal_diameters: {0} (plate.radial_splines is the count per field, plate.in_plane_orders the orders)")]
+    InPlane(#[from] super::in_plane::InPlaneError),
+    /// In-plane modes selected for a consumer of the model other than `modes`.
+    #[error("plate.in_plane_nodal_diameters = {nodal_diameters:?} selects in-plane modes, which only `modes` lists so far: the dynamics (the floating frame terms, the joint, node frames, loads) and the analyses built on them (simulate, run, campbell, stability, study, plot) do not carry in-plane modes yet (docs/in_plane.md). Set plate.in_plane_nodal_diameters: [] here")]
+    InPlaneNotWired {
+        /// The requested in-plane k.
+        nodal_diameters: Vec<u32>,
+    },
     /// Only rigid-body modes were selected.
     #[error("the selected nodal diameters × nodal circles leave no elastic mode (only rigid-body modes {skipped:?} of the free–free plate)")]
     NoElasticModes {
