@@ -18,7 +18,7 @@
 #![allow(dead_code)]
 
 use super::bessel::jy_val_der;
-use super::exact_plate::bisect;
+use super::exact_plate::{bisect, det};
 
 /// An in-plane edge.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -136,10 +136,9 @@ impl Annulus {
     pub fn determinant(&self, k: u32, family: Family, omega: f64) -> f64 {
         let c = self.columns(k, omega);
         match family {
-            Family::Coupled => {
-                let m: Vec<Vec<f64>> = (0..4).map(|i| (0..4).map(|j| c[j][i]).collect()).collect();
-                det(m)
-            }
+            Family::Coupled => det(std::array::from_fn::<_, 4, _>(|i| {
+                std::array::from_fn::<_, 4, _>(|j| c[j][i])
+            })),
             // φ alone: rows U or σ_rr (entries 0 and 2).
             Family::Radial => c[0][0] * c[1][2] - c[1][0] * c[0][2],
             // ψ alone: rows V or σ_rθ (entries 1 and 3).
@@ -171,33 +170,6 @@ impl Annulus {
         }
         roots.into_iter().map(omega_of_beta).collect()
     }
-}
-
-/// The determinant by Gaussian elimination with partial pivoting.
-fn det(mut m: Vec<Vec<f64>>) -> f64 {
-    let n = m.len();
-    let mut d = 1.0;
-    for c in 0..n {
-        let p = (c..n)
-            .max_by(|&a, &b| m[a][c].abs().total_cmp(&m[b][c].abs()))
-            .unwrap();
-        if m[p][c] == 0.0 {
-            return 0.0;
-        }
-        if p != c {
-            m.swap(p, c);
-            d = -d;
-        }
-        d *= m[c][c];
-        let pivot_row = m[c].clone();
-        for row in m.iter_mut().skip(c + 1) {
-            let f = row[c] / pivot_row[c];
-            for (x, q) in row[c..].iter_mut().zip(&pivot_row[c..]) {
-                *x -= f * q;
-            }
-        }
-    }
-    d
 }
 
 /// The torsional frequency equation of a fixed–free annulus in closed form:
