@@ -171,13 +171,16 @@ fn run() -> anyhow::Result<()> {
             overrides,
         }) => {
             let config = cli::load_config_with(&file, &overrides)?;
-            let model = annular_plate::model::PlateModel::new(&config.plate)
-                .with_context(|| format!("{}", file.display()))?;
+            let (model, in_plane) = annular_plate::model::PlateModel::bending_and_in_plane(
+                &config.plate,
+                &config.centrifugal,
+            )
+            .with_context(|| format!("{}", file.display()))?;
             if let Some(text) = model.thickness_warning_text() {
                 eprintln!("warning: {text}");
             }
             let stdout = std::io::stdout();
-            cli::modes::write(&model, json, &mut stdout.lock())?;
+            cli::modes::write(&model, &in_plane, json, &mut stdout.lock())?;
             Ok(())
         }
         Some(Command::Bag {

@@ -5,7 +5,7 @@
 mod support;
 
 use annular_plate::cli::plot::{self, Size};
-use annular_plate::config::{CentrifugalConfig, Config, InPlaneInner};
+use annular_plate::config::{CentrifugalConfig, Config, InPlaneInner, InPlaneOuter};
 use annular_plate::model::campbell::campbell;
 use annular_plate::model::{PlateModel, SpinningSpectrum};
 use serde_json::Value;
@@ -211,6 +211,7 @@ fn the_picture_marks_each_critical_speed_on_its_speed_line() {
     plate.centrifugal = CentrifugalConfig {
         stiffening: true,
         in_plane_inner: InPlaneInner::Auto,
+        in_plane_outer: InPlaneOuter::Free,
     };
     let model = PlateModel::new(&plate.plate).unwrap();
     let speeds: Vec<f64> = (0..=60).map(|i| 200.0 * i as f64).collect();

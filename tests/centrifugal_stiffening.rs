@@ -22,7 +22,8 @@
 mod support;
 
 use annular_plate::config::{
-    Boundary, CentrifugalConfig, Config, Coordinates, InPlaneInner, IntegratorKind, PlateConfig,
+    Boundary, CentrifugalConfig, Config, Coordinates, InPlaneInner, InPlaneOuter, IntegratorKind,
+    PlateConfig,
 };
 use annular_plate::dynamics::Simulation;
 use annular_plate::model::prestress::LamePrestress;
@@ -56,6 +57,7 @@ fn on() -> CentrifugalConfig {
     CentrifugalConfig {
         stiffening: true,
         in_plane_inner: InPlaneInner::Auto,
+        in_plane_outer: InPlaneOuter::Free,
     }
 }
 
@@ -116,6 +118,7 @@ fn lame_prestress_matches_the_textbook_stress_function() {
             } else {
                 InPlaneInner::Free
             },
+            in_plane_outer: InPlaneOuter::Free,
         };
         let lib = LamePrestress::new(&p, &cfg);
         let exact = Lame::new(&p, fixed);
@@ -147,6 +150,7 @@ fn lame_prestress_matches_the_textbook_stress_function() {
         &CentrifugalConfig {
             stiffening: true,
             in_plane_inner: InPlaneInner::Free,
+            in_plane_outer: InPlaneOuter::Free,
         },
     );
     let (ri, ra, nu) = (p.inner_radius, p.outer_radius, p.poisson_ratio);
@@ -289,14 +293,16 @@ fn bad_centrifugal_keys_are_refused_with_their_name_and_rule() {
         c.centrifugal,
         CentrifugalConfig {
             stiffening: true,
-            in_plane_inner: InPlaneInner::Free
+            in_plane_inner: InPlaneInner::Free,
+            in_plane_outer: InPlaneOuter::Free,
         }
     );
     assert_eq!(
         Config::default().centrifugal,
         CentrifugalConfig {
             stiffening: false,
-            in_plane_inner: InPlaneInner::Auto
+            in_plane_inner: InPlaneInner::Auto,
+            in_plane_outer: InPlaneOuter::Free,
         }
     );
 }

@@ -20,7 +20,7 @@ pub mod table;
 mod text_limits;
 mod validate;
 
-pub use centrifugal::{CentrifugalConfig, InPlaneInner};
+pub use centrifugal::{CentrifugalConfig, InPlaneInner, InPlaneOuter};
 #[cfg(feature = "ros")] // the ROS settings read them
 pub(crate) use check::{declared_value, typed, Declared};
 pub use declarations::{ModelParameters, Parameters};
@@ -159,6 +159,12 @@ pub struct PlateConfig {
     /// Mindlin's shear correction κ (`plate.shear_correction`; no effect
     /// under Kirchhoff theory).
     pub shear_correction: f64,
+    /// Nodal diameters k of the in-plane modes, as given (distinct; empty:
+    /// none), `plate.in_plane_nodal_diameters` (docs/in_plane.md).
+    pub in_plane_nodal_diameters: Vec<u32>,
+    /// Orders l of the in-plane modes per k, as given (distinct, non-empty),
+    /// `plate.in_plane_orders`.
+    pub in_plane_orders: Vec<u32>,
 }
 
 /// Bending rigidity D = E h³ / (12 (1 − ν²)), eq. (2).
@@ -194,6 +200,8 @@ impl PlateConfig {
             theory: PlateTheory::from_name(default_str("plate.theory"))
                 .expect("the declared default is a theory"),
             shear_correction: const { default_f64("plate.shear_correction") },
+            in_plane_nodal_diameters: indices("plate.in_plane_nodal_diameters"),
+            in_plane_orders: indices("plate.in_plane_orders"),
         }
     }
 
@@ -550,7 +558,8 @@ pub struct Config {
     pub load_models: LoadModelSections,
     /// Initial elastic state (`initial.*`).
     pub initial: InitialConfig,
-    /// Centrifugal stiffening (`plate.centrifugal_stiffening`, `plate.in_plane_inner`).
+    /// Centrifugal stiffening and the in-plane edge conditions
+    /// (`plate.centrifugal_stiffening`, `plate.in_plane_inner`, `plate.in_plane_outer`).
     pub centrifugal: CentrifugalConfig,
 }
 

@@ -62,6 +62,9 @@ pub(super) fn read_plate(r: &Reader) -> Result<PlateConfig, ConfigError> {
 
     let nodal_diameters = read_index_list(r, "plate.nodal_diameters", MAX_NODAL_DIAMETER)?;
     let nodal_circles = read_index_list(r, "plate.nodal_circles", MAX_NODAL_CIRCLE)?;
+    let in_plane_nodal_diameters =
+        read_indices(r, "plate.in_plane_nodal_diameters", MAX_NODAL_DIAMETER)?;
+    let in_plane_orders = read_index_list(r, "plate.in_plane_orders", MAX_NODAL_CIRCLE)?;
 
     let radial_splines = read_radial_splines(r)?;
     let frequency_tolerance = r.positive("plate.frequency_tolerance")?;
@@ -90,6 +93,8 @@ pub(super) fn read_plate(r: &Reader) -> Result<PlateConfig, ConfigError> {
         residual_flexibility: r.bool("plate.residual_flexibility")?,
         theory,
         shear_correction,
+        in_plane_nodal_diameters,
+        in_plane_orders,
     };
 
     check_derived(&plate)?;
@@ -289,12 +294,18 @@ fn read_shear_correction(r: &Reader) -> Result<f64, ConfigError> {
 
 /// A non-empty list of distinct integers in 0..=max.
 fn read_index_list(r: &Reader, key: &str, max: i64) -> Result<Vec<u32>, ConfigError> {
-    let values = r.i64_array(key)?;
-    if values.is_empty() {
+    let out = read_indices(r, key, max)?;
+    if out.is_empty() {
         return Err(ConfigError::Empty {
             key: key.to_string(),
         });
     }
+    Ok(out)
+}
+
+/// A list (possibly empty) of distinct integers in 0..=max.
+fn read_indices(r: &Reader, key: &str, max: i64) -> Result<Vec<u32>, ConfigError> {
+    let values = r.i64_array(key)?;
     let mut out: Vec<u32> = Vec::with_capacity(values.len());
     for &v in &values {
         if v < 0 {

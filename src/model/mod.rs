@@ -10,7 +10,11 @@
 //! radial machinery; with `plate.theory: mindlin` the model's modes are
 //! those (docs/mindlin.md); the dynamics take them (node frames turned by
 //! ψ, body data with the rotary inertia), `stability`, `study` and `plot`
-//! refuse them ([`PlateModel::require_kirchhoff`]).
+//! refuse them ([`PlateModel::require_kirchhoff`]). [`in_plane`] computes
+//! the in-plane (plane-stress) modes by the same machinery; `modes` lists
+//! them ([`PlateModel::bending_and_in_plane`]), and [`PlateModel::new`]
+//! refuses them for the dynamics, which do not carry them yet
+//! (docs/in_plane.md).
 
 pub(crate) mod body;
 pub(crate) mod bspline;
@@ -19,6 +23,7 @@ pub mod campbell;
 pub(crate) mod eigen;
 mod error;
 pub(crate) mod fft;
+pub mod in_plane;
 pub(crate) mod lanczos;
 pub mod mindlin;
 pub(crate) mod modes;
@@ -60,9 +65,29 @@ pub struct PlateModel {
 }
 
 impl PlateModel {
-    /// Build the model for a validated plate configuration.
+    /// Build the model for a validated plate configuration. Refuses a
+    /// non-empty `plate.in_plane_nodal_diameters` before any work: the
+    /// dynamics and analyses built on the model do not carry in-plane modes
+    /// yet.
     pub fn new(plate: &PlateConfig) -> Result<PlateModel, ModelError> {
+        if !plate.in_plane_nodal_diameters.is_empty() {
+            return Err(ModelError::InPlaneNotWired {
+                nodal_diameters: plate.in_plane_nodal_diameters.clone(),
+            });
+        }
         build::build(plate)
+    }
+
+    /// The bending model of `plate` whatever its in-plane keys, with the
+    /// in-plane mode table of `plate.in_plane_*` and the in-plane edges of
+    /// `edges` (`modes`, which lists both).
+    pub fn bending_and_in_plane(
+        plate: &PlateConfig,
+        edges: &crate::config::CentrifugalConfig,
+    ) -> Result<(PlateModel, in_plane::InPlaneTable), ModelError> {
+        let bending = build::build(plate)?;
+        let table = in_plane::InPlaneTable::new(plate, edges)?;
+        Ok((bending, table))
     }
 
     /// The plate the model is of.

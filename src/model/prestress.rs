@@ -8,8 +8,9 @@
 //! σ_r = Ē [(1 + ν) A − (1 − ν) B/r² + (3 + ν) c r²],
 //! σ_θ = Ē [(1 + ν) A + (1 − ν) B/r² + (1 + 3ν) c r²].
 //!
-//! Edges: σ_r(r_a) = 0 (outer edge free); at r_i either u = 0 (the disc sits
-//! on a hub) or σ_r = 0 (a free hole), see [`crate::config::InPlaneInner`].
+//! Edges: at r_i either u = 0 (the disc sits on a hub) or σ_r = 0 (a free
+//! hole), see [`crate::config::InPlaneInner`]; at r_a σ_r = 0 (a free rim,
+//! the default) or u = 0, see [`crate::config::InPlaneOuter`].
 
 use crate::config::{CentrifugalConfig, PlateConfig};
 
@@ -23,12 +24,15 @@ pub struct LamePrestress {
     nu: f64,
     /// u(r_i) = 0 (else σ_r(r_i) = 0).
     pub inner_fixed: bool,
+    /// u(r_a) = 0 (else σ_r(r_a) = 0).
+    pub outer_fixed: bool,
 }
 
 impl LamePrestress {
-    /// The prestress of `plate` with the in-plane inner condition of `centrifugal`.
+    /// The prestress of `plate` with the in-plane edge conditions of `centrifugal`.
     pub fn new(plate: &PlateConfig, centrifugal: &CentrifugalConfig) -> LamePrestress {
         let inner_fixed = centrifugal.in_plane_inner.is_fixed(plate.inner_boundary);
+        let outer_fixed = centrifugal.in_plane_outer.is_fixed();
         let (ri, ra, nu, e) = (
             plate.inner_radius,
             plate.outer_radius,
@@ -38,12 +42,15 @@ impl LamePrestress {
         let c = -(1.0 - nu * nu) * plate.density / (8.0 * e);
         // σ_r/Ē at r as a row of (A, B) plus the c term; u at r likewise.
         let stress_row = |r: f64| [(1.0 + nu), -(1.0 - nu) / (r * r), (3.0 + nu) * c * r * r];
-        let outer = stress_row(ra);
-        let inner = if inner_fixed {
-            [ri, 1.0 / ri, c * ri * ri * ri]
-        } else {
-            stress_row(ri)
+        let displacement_row = |r: f64| [r, 1.0 / r, c * r * r * r];
+        let row = |fixed: bool, r: f64| {
+            if fixed {
+                displacement_row(r)
+            } else {
+                stress_row(r)
+            }
         };
+        let (outer, inner) = (row(outer_fixed, ra), row(inner_fixed, ri));
         // Solve [outer; inner] (A, B) = −(c terms) by Cramer's rule.
         let det = outer[0] * inner[1] - outer[1] * inner[0];
         let a = (-outer[2] * inner[1] + outer[1] * inner[2]) / det;
@@ -55,6 +62,7 @@ impl LamePrestress {
             e_bar: e / (1.0 - nu * nu),
             nu,
             inner_fixed,
+            outer_fixed,
         }
     }
 

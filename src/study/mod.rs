@@ -348,6 +348,12 @@ pub fn run(
     if config.plate.theory == crate::config::PlateTheory::Mindlin {
         return Err(ModelError::MindlinNotWired { what: "`study`" }.into());
     }
+    if !config.plate.in_plane_nodal_diameters.is_empty() {
+        return Err(ModelError::InPlaneNotWired {
+            nodal_diameters: config.plate.in_plane_nodal_diameters.clone(),
+        }
+        .into());
+    }
     let started = Instant::now();
     let total = plan.units(config);
     let mut done = 0usize;

@@ -105,7 +105,7 @@ fn quantity(q: Quantity, d: &[f64; 4], z: f64, k: u32, nu: f64) -> f64 {
 }
 
 /// Determinant of a small dense matrix by partial-pivot LU.
-fn det<const N: usize>(mut a: [[f64; N]; N]) -> f64 {
+pub fn det<const N: usize>(mut a: [[f64; N]; N]) -> f64 {
     let mut d = 1.0;
     for c in 0..N {
         let p = (c..N)

@@ -5,6 +5,7 @@ pub mod cli;
 pub mod exact_plate;
 pub mod fit;
 pub mod fourth_order;
+pub mod in_plane_exact;
 pub mod left_growth;
 pub mod library_plate;
 pub mod mindlin_exact;
