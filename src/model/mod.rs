@@ -8,9 +8,9 @@
 //! eq. (11) (`body`). Immutable once built; no ROS, no time stepping.
 //! [`mindlin`] computes the thick-plate (Mindlin) modes per k by the same
 //! radial machinery; with `plate.theory: mindlin` the model's modes are
-//! those (docs/mindlin.md); the dynamics take them (node frames turned by
-//! ψ, body data with the rotary inertia), `stability`, `study` and `plot`
-//! refuse them ([`PlateModel::require_kirchhoff`]).
+//! those (docs/mindlin.md); the dynamics and `stability` take them (node
+//! frames turned by ψ, body data with the rotary inertia), `study` and
+//! `plot` refuse them ([`PlateModel::require_kirchhoff`]).
 
 pub(crate) mod body;
 pub(crate) mod bspline;
