@@ -12,8 +12,11 @@
 
 mod support;
 
+use annular_plate::config::NodePosition;
 use annular_plate::config::{Config, IntegratorKind, PlateTheory, WrenchConfig};
-use annular_plate::dynamics::load_models::pad_config::ContactSurface;
+use annular_plate::dynamics::load_models::pad_config::{
+    Caliper, ContactSurface, PadContact, PadsConfig,
+};
 use annular_plate::dynamics::{stability, Simulation};
 use nalgebra::{DMatrix, DVector};
 use support::fourth_order::{assert_fourth_order, descriptions_differ};
@@ -351,6 +354,87 @@ fn eigenvalues_and_simulation_agree_on_growth_rates_with_pads_on_a_mindlin_plate
             (slope - rate).abs() < 0.02 * rate.abs(),
             "simulated {slope} vs eigenvalue {rate}"
         );
+    }
+}
+
+/// A floating caliper over three contacts at 0, ±15° (c_c = 50 N·s/m).
+fn floating(mu: f64) -> Config {
+    let mut c = scene(ContactSurface::Faces, mu);
+    c.nodes.ale = [1.0 / 24.0, 0.0, 23.0 / 24.0]
+        .map(|angular| NodePosition {
+            radial: 0.6,
+            angular,
+        })
+        .to_vec();
+    let pads = c.section_mut::<PadsConfig>().unwrap();
+    pads.contacts = (0..3).map(|node| PadContact { node, pad: 0 }).collect();
+    pads.caliper = Caliper::Floating;
+    pads.contact_damping = 50.0;
+    c
+}
+
+/// A floating caliper's massive pad, m_p = 0.2 kg per face (c_c = 50 N·s/m).
+fn massive(mu: f64) -> Config {
+    let mut c = scene(ContactSurface::Faces, mu);
+    let pads = c.section_mut::<PadsConfig>().unwrap();
+    pads.caliper = Caliper::Floating;
+    pads.mass = 0.2;
+    pads.contact_damping = 50.0;
+    c
+}
+
+/// The lining's patch, k_t = 1e6 N/m, c_t = 100 N·s/m.
+fn patch(mu: f64) -> Config {
+    let mut c = one_contact::scene(ContactSurface::Faces, mu, Some((1.0e6, 100.0)));
+    c.plate.theory = PlateTheory::Mindlin;
+    c
+}
+
+/// A scene at friction coefficient μ.
+type Build = fn(f64) -> Config;
+
+/// The pads' other laws take the same face kinematics in the simulation and
+/// in `stability`: a run started on the critical eigenvector grows at Re λ
+/// (within 2 %) below and above each law's own threshold
+/// (`support::left_growth`).
+#[test]
+fn eigenvalues_and_simulation_agree_with_a_floating_caliper_pad_mass_and_patches_on_a_mindlin_plate(
+) {
+    let cases: [(&str, Build, PadLayout); 3] = [
+        ("floating caliper, 3 contacts", floating, PadLayout::Rigid),
+        (
+            "massive pad",
+            massive,
+            PadLayout::Massive {
+                rest: CLAMP / STIFFNESS,
+            },
+        ),
+        (
+            "lining patch",
+            patch,
+            PadLayout::Patch {
+                half_thickness: 0.5 * THICKNESS,
+            },
+        ),
+    ];
+    for (name, build, layout) in cases {
+        let sim = Simulation::new(build(0.0)).unwrap();
+        let mu_c = stability::friction_threshold(sim.scene(), SPEED, 20.0)
+            .unwrap_or_else(|| panic!("{name}: no threshold below μ = 20"));
+        for factor in [0.7, 1.5] {
+            // At most e² of growth or decay: the fit stays in the linear range.
+            let lam = stability::growth_rate(sim.scene(), SPEED, factor * mu_c, &[CLAMP]);
+            let steps = (2.0 / lam.abs() * 1000.0).min(1000.0) as usize;
+            let (rate, slope) = left_eigenvector_growth(build(factor * mu_c), layout, steps);
+            println!(
+                "{name}: μ_c = {mu_c:.6}; μ = {factor} μ_c: Re λ = {rate:.6} 1/s, simulated {slope:.6} 1/s"
+            );
+            assert_eq!((rate > 0.0, slope > 0.0), (factor > 1.0, factor > 1.0));
+            assert!(
+                (slope - rate).abs() < 0.02 * rate.abs(),
+                "{name}: simulated {slope} vs eigenvalue {rate}"
+            );
+        }
     }
 }
 
