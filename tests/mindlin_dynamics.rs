@@ -528,18 +528,6 @@ fn keys_whose_terms_are_kirchhoff_s_are_refused_naming_the_key() {
     );
     c.plate.residual_flexibility = false;
     assert!(Simulation::new(c.clone()).is_ok());
-    // The tool (the lathe scene) still uses Kirchhoff's slope: refused by its section.
-    let lathe_file = concat!(env!("CARGO_MANIFEST_DIR"), "/config/lathe.yaml");
-    let text = std::fs::read_to_string(lathe_file).unwrap();
-    let mut tool = Config::from_yaml_str(&text, "annular_plate").expect("lathe");
-    tool.plate.theory = PlateTheory::Mindlin;
-    tool.plate.residual_flexibility = false;
-    let message = refused(&tool);
-    println!("{message}");
-    assert!(
-        message.contains("tool") && message.contains("plate.theory"),
-        "{message}"
-    );
     let mut thin = disc(0.0181, vec![2], vec![0]);
     thin.centrifugal.stiffening = true;
     assert!(refused(&thin).contains("plate.centrifugal_stiffening"));
