@@ -12,8 +12,7 @@
 
 mod support;
 
-use annular_plate::config::NodePosition;
-use annular_plate::config::{Config, IntegratorKind, PlateTheory, WrenchConfig};
+use annular_plate::config::{Config, IntegratorKind, NodePosition, PlateTheory, WrenchConfig};
 use annular_plate::dynamics::load_models::pad_config::{
     Caliper, ContactSurface, PadContact, PadsConfig,
 };
@@ -21,8 +20,9 @@ use annular_plate::dynamics::{stability, Simulation};
 use nalgebra::{DMatrix, DVector};
 use support::fourth_order::{assert_fourth_order, descriptions_differ};
 use support::left_growth::{left_eigenvector_growth, PadLayout};
-use support::mindlin_exact::{Edge, ExactMode, MindlinAnnulus, ModeFields};
+use support::mindlin_exact::{ExactMode, MindlinAnnulus, ModeFields};
 use support::one_contact::{self, CLAMP, SPEED, STIFFNESS, THICKNESS};
+use support::pair_quartic::{hurwitz, threshold, PairTerms};
 
 /// The one-contact disc (`support::one_contact`: bench disc geometry, hard
 /// support inside, ⟨2, 0⟩, a fixed caliper at θ = 0, r = 0.1198 m) under
@@ -31,22 +31,6 @@ fn scene(surface: ContactSurface, mu: f64) -> Config {
     let mut c = one_contact::scene(surface, mu, None);
     c.plate.theory = PlateTheory::Mindlin;
     c
-}
-
-/// The scene's plate for the exact solution.
-fn exact(c: &Config) -> MindlinAnnulus {
-    let p = &c.plate;
-    MindlinAnnulus {
-        youngs_modulus: p.youngs_modulus,
-        poisson_ratio: p.poisson_ratio,
-        density: p.density,
-        thickness: p.thickness,
-        shear_correction: p.shear_correction,
-        inner_radius: p.inner_radius,
-        outer_radius: p.outer_radius,
-        inner: Edge::Supported,
-        outer: Edge::Free,
-    }
 }
 
 /// One exact mode ⟨k, l⟩: k, ω, modal mass and W, Ψ_r, Ψ_θ at the contact
@@ -62,7 +46,7 @@ struct Exact {
 }
 
 fn exact_modes(c: &Config, ks: &[u32], l_count: usize, r: f64) -> Vec<Exact> {
-    let annulus = exact(c);
+    let annulus = MindlinAnnulus::of_plate(&c.plate);
     let mut out = Vec::new();
     for &k in ks {
         for omega in annulus.roots(k, l_count, 64) {
@@ -276,21 +260,17 @@ fn quartic_with(mu: f64, face: bool, kinematics: FaceKinematics) -> [f64; 4] {
     let gamma = 0.0; // constant μ
     let rho = 1.0 + pt / (k * pr);
     let sigma = 1.0 + pr / (k * pt);
-    let (a, b) = (
-        s + phi + beta * k * SPEED * rho,
-        s + chi + gamma * k * SPEED * sigma,
-    );
-    [
-        2.0 * d0 + beta + gamma,
-        2.0 * k0 + kappa + (d0 + beta) * (d0 + gamma) + g * g,
-        (d0 + beta) * k0 + (d0 + gamma) * (k0 + kappa) + g * (a + b),
-        (k0 + kappa) * k0 + a * b,
-    ]
-}
-
-/// Routh–Hurwitz: a quartic with positive coefficients is stable iff a₁a₂a₃ − a₁²a₄ − a₃² > 0.
-fn hurwitz(a: [f64; 4]) -> f64 {
-    a[0] * a[1] * a[2] - a[0] * a[0] * a[3] - a[2] * a[2]
+    PairTerms {
+        k0,
+        kappa,
+        d0,
+        beta,
+        gamma,
+        g,
+        a: s + phi + beta * k * SPEED * rho,
+        b: s + chi + gamma * k * SPEED * sigma,
+    }
+    .quartic()
 }
 
 /// The μ where [`hurwitz`] changes sign in (0, `hi`), by bisection.
@@ -299,18 +279,7 @@ fn closed_form_threshold(face: bool, hi: f64) -> f64 {
 }
 
 fn threshold_with(face: bool, hi: f64, kinematics: FaceKinematics) -> f64 {
-    let q = |mu: f64| hurwitz(quartic_with(mu, face, kinematics));
-    let (mut lo, mut hi) = (0.0, hi);
-    assert!(q(lo) > 0.0 && q(hi) < 0.0);
-    while hi - lo > 1e-12 {
-        let mid = 0.5 * (lo + hi);
-        if q(mid) > 0.0 {
-            lo = mid;
-        } else {
-            hi = mid;
-        }
-    }
-    0.5 * (lo + hi)
+    threshold(hi, |mu| quartic_with(mu, face, kinematics))
 }
 
 #[test]

@@ -14,37 +14,15 @@ use annular_plate::dynamics::load_models::tool::ToolOutputs;
 use annular_plate::dynamics::Simulation;
 use annular_plate::model::AngularShape;
 use std::f64::consts::TAU;
-use support::mindlin_exact::{Edge, MindlinAnnulus};
+use support::mindlin_exact::MindlinAnnulus;
 use support::scene_files::{self as scenes, run_to};
-
-/// The scene's plate for the exact solution.
-fn exact(c: &Config) -> MindlinAnnulus {
-    let edge = |b: Boundary| match b {
-        Boundary::Free => Edge::Free,
-        Boundary::Supported => Edge::Supported,
-        Boundary::Clamped => Edge::Clamped,
-        Boundary::SupportedSoft => Edge::SupportedSoft,
-    };
-    let p = &c.plate;
-    MindlinAnnulus {
-        youngs_modulus: p.youngs_modulus,
-        poisson_ratio: p.poisson_ratio,
-        density: p.density,
-        thickness: p.thickness,
-        shear_correction: p.shear_correction,
-        inner_radius: p.inner_radius,
-        outer_radius: p.outer_radius,
-        inner: edge(p.inner_boundary),
-        outer: edge(p.outer_boundary),
-    }
-}
 
 /// Σ over the model's cos (and k = 0) modes ⟨k, l⟩ of the exact Mindlin
 /// mode's W(r)² F a / (m (a² + b²)), a = ω² − k²Ω², b = 2ζωkΩ: the steady
 /// ALE deflection at (r, θ = 0) under a space-fixed force F there
 /// (docs/dynamics.md; at Ω = 0 the static modal sum).
 fn exact_steady(sim: &Simulation, r: f64, force: f64, speed: f64) -> f64 {
-    let annulus = exact(sim.config());
+    let annulus = MindlinAnnulus::of_plate(&sim.config().plate);
     sim.model()
         .modes()
         .iter()
