@@ -1,7 +1,7 @@
 //! `plate.theory: mindlin` in the model and the commands: `modes` lists the
 //! Mindlin frequencies of a scene (against the exact Mindlin solution written
 //! in `tests/support/mindlin_exact.rs`), and every command that would use
-//! Kirchhoff quantities with Mindlin modes (`stability`, `study`, `plot`)
+//! Kirchhoff quantities with Mindlin modes (`study`, `plot`)
 //! refuses the scene, naming `plate.theory` (the dynamics with Mindlin modes:
 //! tests/mindlin_dynamics.rs).
 
@@ -165,17 +165,6 @@ fn the_commands_that_use_kirchhoff_terms_refuse_a_mindlin_scene() {
     let png = dir.join("modes.png");
     let commands: Vec<(&str, Vec<&str>)> = vec![
         (
-            "stability",
-            vec![
-                "stability",
-                BENCH,
-                "--mu",
-                "0.3:0.4:2",
-                "--speeds",
-                "10:20:2",
-            ],
-        ),
-        (
             "study",
             vec![
                 "study",
@@ -201,6 +190,36 @@ fn the_commands_that_use_kirchhoff_terms_refuse_a_mindlin_scene() {
     }
     assert!(!study.exists() && !png.exists());
     let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// `stability` takes Mindlin modes with the pads (their face kinematics of ψ,
+/// tests/mindlin_pads.rs); the bench scene's residual flexibility is refused
+/// naming its key, and without it the map is written.
+#[test]
+fn stability_maps_a_mindlin_scene_and_refuses_its_residual_flexibility_by_name() {
+    let args = |extra: &'static str| {
+        vec![
+            "stability",
+            BENCH,
+            "--mu",
+            "0.3:0.4:2",
+            "--speeds",
+            "10:20:2",
+            "-p",
+            "plate.theory:=mindlin",
+            "-p",
+            extra,
+        ]
+    };
+    let (ok, _, stderr) = run(&args("plate.residual_flexibility:=true"));
+    assert!(
+        !ok && stderr.contains("plate.residual_flexibility"),
+        "{stderr}"
+    );
+    assert!(!stderr.contains("panicked"), "{stderr}");
+    let (ok, stdout, stderr) = run(&args("plate.residual_flexibility:=false"));
+    assert!(ok, "{stderr}");
+    assert!(!stdout.is_empty(), "no map written");
 }
 
 /// Kirchhoff's ⟨2, 0⟩ of the bench disc against the exact Mindlin root: the

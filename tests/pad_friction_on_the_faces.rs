@@ -13,6 +13,7 @@ mod support;
 use support::fourth_order::{assert_fourth_order, descriptions_differ};
 use support::left_growth::{left_eigenvector_growth, PadLayout};
 use support::one_contact::{self, CLAMP, SPEED, STIFFNESS};
+use support::pair_quartic::{hurwitz, threshold, PairTerms};
 
 /// The one-contact disc (`support::one_contact`), rigid lining.
 fn scene(surface: ContactSurface, mu: f64) -> Config {
@@ -88,21 +89,17 @@ fn quartic_with(mu: f64, face: bool, stribeck: (f64, f64)) -> [f64; 4] {
     // The polar basis' rotation under the face point (docs/scenes.md).
     let rho = 1.0 - rr / (r * rr_slope);
     let sigma = 1.0 - r * rr_slope / (k * k * rr);
-    let (a, b) = (
-        s + phi + beta * k * SPEED * rho,
-        s + chi + gamma * k * SPEED * sigma,
-    );
-    [
-        2.0 * d0 + beta + gamma,
-        2.0 * k0 + kappa + (d0 + beta) * (d0 + gamma) + g * g,
-        (d0 + beta) * k0 + (d0 + gamma) * (k0 + kappa) + g * (a + b),
-        (k0 + kappa) * k0 + a * b,
-    ]
-}
-
-/// Routh–Hurwitz: a quartic with positive coefficients is stable iff a₁a₂a₃ − a₁²a₄ − a₃² > 0.
-fn hurwitz(a: [f64; 4]) -> f64 {
-    a[0] * a[1] * a[2] - a[0] * a[0] * a[3] - a[2] * a[2]
+    PairTerms {
+        k0,
+        kappa,
+        d0,
+        beta,
+        gamma,
+        g,
+        a: s + phi + beta * k * SPEED * rho,
+        b: s + chi + gamma * k * SPEED * sigma,
+    }
+    .quartic()
 }
 
 fn closed_form_threshold(face: bool) -> f64 {
@@ -110,20 +107,7 @@ fn closed_form_threshold(face: bool) -> f64 {
 }
 
 fn closed_form_threshold_with(face: bool, stribeck: (f64, f64)) -> f64 {
-    let (mut lo, mut hi) = (0.0, 2.0);
-    assert!(
-        hurwitz(quartic_with(lo, face, stribeck)) > 0.0
-            && hurwitz(quartic_with(hi, face, stribeck)) < 0.0
-    );
-    while hi - lo > 1e-12 {
-        let mid = 0.5 * (lo + hi);
-        if hurwitz(quartic_with(mid, face, stribeck)) > 0.0 {
-            lo = mid;
-        } else {
-            hi = mid;
-        }
-    }
-    0.5 * (lo + hi)
+    threshold(2.0, |mu| quartic_with(mu, face, stribeck))
 }
 
 #[test]

@@ -61,9 +61,9 @@ pub enum ModelError {
     #[error("plate.theory = mindlin: {0} (plate.radial_splines is the count per field)")]
     Mindlin(#[from] super::mindlin::MindlinError),
     /// A consumer of the modes that does not take Mindlin modes yet.
-    #[error("plate.theory = mindlin is not supported by {what}: it would use Kirchhoff quantities (the slope −∇w for the face kinematics, the pads' contact terms) with Mindlin modes (docs/mindlin.md). Set plate.theory: kirchhoff for {what}")]
+    #[error("plate.theory = mindlin is not supported by {what}: it would use Kirchhoff quantities with Mindlin modes (docs/mindlin.md). Set plate.theory: kirchhoff for {what}")]
     MindlinNotWired {
-        /// The command or part that refuses (`stability`, `study`, `plot`).
+        /// The command or part that refuses (`study`, `plot`).
         what: &'static str,
     },
     /// A key switched on that the dynamics do not have for Mindlin modes.

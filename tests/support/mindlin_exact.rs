@@ -21,6 +21,7 @@
 
 use super::bessel::{i_scaled_val_der, jy_val_der, k_scaled_val_der, ValDer};
 use super::exact_plate::bisect;
+use annular_plate::config::{Boundary, PlateConfig};
 
 /// An edge of the exact solution.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -91,6 +92,30 @@ struct Fields {
     psi_r_r: f64,
     psi_t: f64,
     psi_t_r: f64,
+}
+
+impl MindlinAnnulus {
+    /// The annulus of a configuration's plate (its material, geometry,
+    /// shear correction and edges; the theory key is not read).
+    pub fn of_plate(p: &PlateConfig) -> MindlinAnnulus {
+        let edge = |b: Boundary| match b {
+            Boundary::Free => Edge::Free,
+            Boundary::Supported => Edge::Supported,
+            Boundary::Clamped => Edge::Clamped,
+            Boundary::SupportedSoft => Edge::SupportedSoft,
+        };
+        MindlinAnnulus {
+            youngs_modulus: p.youngs_modulus,
+            poisson_ratio: p.poisson_ratio,
+            density: p.density,
+            thickness: p.thickness,
+            shear_correction: p.shear_correction,
+            inner_radius: p.inner_radius,
+            outer_radius: p.outer_radius,
+            inner: edge(p.inner_boundary),
+            outer: edge(p.outer_boundary),
+        }
+    }
 }
 
 impl MindlinAnnulus {

@@ -10,6 +10,7 @@ pub mod left_growth;
 pub mod library_plate;
 pub mod mindlin_exact;
 pub mod one_contact;
+pub mod pair_quartic;
 pub mod quadrature;
 pub mod scene_files;
 pub mod scenes;

@@ -24,6 +24,13 @@
 //!
 //! and acts at the face, so its in-plane part does the virtual work
 //! −z F·∇w_i: the moment z e_z × F about the mid-plane point.
+//!
+//! Under Mindlin theory the face point moves in-plane by u = z ψ (ψ the
+//! rotation of the normal, docs/mindlin.md): the node frames' gradient is
+//! then −ψ and their `gradient_phi` the turn of −ψ (`NodeFrame::new`), so
+//! the same sums give D u/Dt = z Dψ/Dt and the virtual work z F·ψ_i. The
+//! normal part Ω ∂w/∂θ stays of w: the pad slides along the deformed
+//! mid-surface, whose slope is ∇w in either theory ([`angular_slope`]).
 
 use crate::dynamics::node_frame::NodeFrame;
 
@@ -51,6 +58,13 @@ pub fn face_kinematics(node: &NodeFrame, q: &[f64], q_dot: &[f64], speed: f64) -
     }
     k.normal_rate = speed * w_theta;
     k
+}
+
+/// ∂w/∂θ under an ALE node for ALE amplitudes `q`, m/rad: the deformed
+/// surface's slope along the sliding, of w in either plate theory.
+#[inline]
+pub fn angular_slope(node: &NodeFrame, q: &[f64]) -> f64 {
+    node.w_phi.iter().zip(q).map(|(d, qi)| d * qi).sum()
 }
 
 /// The sliding velocity of the face at `z` under the contact at radius `r`,

@@ -63,9 +63,7 @@
 //! extremes of the wave, where the surface slope and so the follower force
 //! vanish, and the growth saturates — the limit cycles of the paper's Fig. 17.
 
-use super::face_friction::{
-    face_kinematics, FaceKinematics,
-};
+use super::face_friction::{angular_slope, face_kinematics, FaceKinematics};
 use super::linear::{LinearContext, LinearOut, LinearStates, OperatingPoint};
 use super::model::{
     contact_rate, surface_kinematics, CommandRule, CommandSpec, Coupling, LoadContext, LoadModel,
@@ -74,7 +72,7 @@ use super::model::{
 use super::outputs::OutputContext;
 use super::pad_config::{Caliper, ContactSurface, PadsConfig, PARAMETERS};
 use super::pad_patch::{PatchLaw, PatchSlot};
-use crate::config::Config;
+use crate::config::{Config, PlateTheory};
 use crate::dynamics::contact_compliance::{ContactCompliance, SeriesScratch};
 use crate::dynamics::joint::FrictionTorque;
 use std::any::Any;
@@ -140,6 +138,11 @@ pub struct Pads {
     pub backing_stiffness: f64,
     /// The lining's tangential patches (`pad_shear.rs`; None: rigid).
     pub shear: Option<PatchLaw>,
+    /// The plate theory of the modes (`plate.theory`): under Mindlin theory a
+    /// node's tilt is the rotation ψ of the normal, so the follower
+    /// friction's normal part, (F_θ / r) ∂w/∂θ along the deformed surface,
+    /// is taken from w ([`angular_slope`]), not from the tilt.
+    pub theory: PlateTheory,
 }
 
 /// Forces at one contact point.
@@ -280,6 +283,7 @@ pub fn build(config: &Config, nodes: &SceneNodes) -> Option<Box<dyn LoadModel>> 
                 damping,
                 initial_speed: config.joint.speed,
             }),
+            theory: config.plate.theory,
         }
         .with_coupling(nodes)
         .with_patch_coupling(),
@@ -369,6 +373,14 @@ impl LoadModel for Pads {
     }
     fn coupling(&self) -> Coupling {
         self.coupling
+    }
+    /// The contact springs act on w; the face kinematics (friction on the
+    /// faces, the lining's patches) on the node frames' face displacement,
+    /// z ψ under Mindlin theory (`face_friction.rs`); the follower friction's
+    /// normal part on ∂w/∂θ. Residual flexibility, the only Kirchhoff-only
+    /// term, is refused with the scene.
+    fn takes_mindlin_modes(&self) -> bool {
+        true
     }
     fn channel_len(&self, channel: usize) -> usize {
         self.output_len(channel)
@@ -462,13 +474,19 @@ impl LoadModel for Pads {
             }
             return;
         }
+        // Mindlin node frames tilt by ψ: the follower's normal part from ∂w/∂θ here.
+        let slope_from_w = self.follower_friction && self.theory == PlateTheory::Mindlin;
         for (c, f) in self.contacts.iter().zip(&s.forces) {
-            let w = Pads::wrench(c, f);
+            let mut w = Pads::wrench(c, f);
+            if slope_from_w {
+                let node = &ctx.ale_nodes[c.node];
+                w.force[2] += f.tangential * angular_slope(node, ctx.q_ale) / c.radius;
+            }
             let slot = &mut out.ale[c.node];
             for a in 0..3 {
                 slot.force[a] += w.force[a];
             }
-            out.ale_follower[c.node] = self.follower_friction;
+            out.ale_follower[c.node] = self.follower_friction && !slope_from_w;
         }
     }
 }
@@ -513,6 +531,7 @@ mod tests {
             mass: 0.0,
             backing_stiffness: 0.0,
             shear: None,
+            theory: PlateTheory::Kirchhoff,
         }
     }
 

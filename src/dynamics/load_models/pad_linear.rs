@@ -15,7 +15,8 @@
 //!   fixed caliper; with a floating one the pads follow their mean, so
 //!   w − w̄ (w̄ the mean over the pad's contact points) replaces w;
 //! - K_fric,im = w_i (F_y θ_x,m − F_x θ_y,m): the follower friction's normal
-//!   component, (F_θ/r) ∂w/∂θ — not symmetric, hence flutter.
+//!   component, (F_θ/r) ∂w/∂θ — not symmetric, hence flutter (under Mindlin
+//!   theory taken from ∂w_m/∂θ: the tilt is then ψ, not the slope).
 //!
 //! With `pads.contact_surface: faces` (docs/scenes.md, "Friction on the
 //! faces") each contact adds, with g = μ tanh(|V|/v_reg), V = Ωr, p the
@@ -28,6 +29,8 @@
 //!
 //! the face point's radial and tangential velocity over −z, with the polar
 //! basis' rotation (`face_friction.rs`; zero for a tilt held in space);
+//! under Mindlin theory ∂_r w, ∂_θ w / r and their turn are those of −ψ
+//! (the face point moves by z ψ: the node frames' gradient, docs/mindlin.md);
 //!
 //! (`add_face_terms`); the follower term above is the normal part of the
 //! sliding direction and is the same.
@@ -51,6 +54,7 @@ use super::pad::{PadContactPoint, Pads, FRICTION_REGULARISATION_SPEED};
 use super::pad_config::{Caliper, ContactSurface};
 use super::pad_linear_mass::NetForce;
 use super::pad_series::LinearSeriesForces;
+use crate::config::PlateTheory;
 use crate::dynamics::node_frame::NodeFrame;
 
 /// One closed contact at the operating point.
@@ -189,7 +193,7 @@ impl Pads {
                     Some(l) => wi * l.q[ci * n + m],
                 };
                 if self.follower_friction {
-                    k += wi * (fy * sm.tilt[0] - fx * sm.tilt[1]);
+                    k += wi * self.follower_normal(node, m, sm.tilt, [fx, fy], f_theta);
                 }
                 out.a[(n + i, m)] += k / mass[i];
                 let damping = match series {
@@ -198,6 +202,24 @@ impl Pads {
                 };
                 out.a[(n + i, n + m)] -= damping / mass[i];
             }
+        }
+    }
+
+    /// The follower friction's normal force per unit q̄_m at the node:
+    /// F·∇w_m = (F_θ / r) ∂w_m/∂θ, from the surface tilt (F_y θ_x − F_x θ_y)
+    /// under Kirchhoff theory, from ∂w_m/∂θ under Mindlin theory (whose tilt
+    /// is the rotation ψ of the normal, not the slope).
+    fn follower_normal(
+        &self,
+        node: &NodeFrame,
+        m: usize,
+        tilt: [f64; 2],
+        [fx, fy]: [f64; 2],
+        f_theta: f64,
+    ) -> f64 {
+        match self.theory {
+            PlateTheory::Kirchhoff => fy * tilt[0] - fx * tilt[1],
+            PlateTheory::Mindlin => f_theta * node.w_phi[m] / node.radius,
         }
     }
 

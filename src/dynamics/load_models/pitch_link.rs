@@ -160,6 +160,10 @@ impl LoadModel for PitchLinks {
     fn name(&self) -> &'static str {
         "links"
     }
+    /// Prescribed F_z at material points: the same under Mindlin theory.
+    fn takes_mindlin_modes(&self) -> bool {
+        true
+    }
     fn as_any(&self) -> &dyn Any {
         self
     }

@@ -235,6 +235,12 @@ impl LoadModel for Tool {
     fn name(&self) -> &'static str {
         "tool"
     }
+    /// The chip is cut at the axial displacement w of the rim under the
+    /// tool, and the feed force is F_z there: a face point moves axially by w
+    /// in either plate theory.
+    fn takes_mindlin_modes(&self) -> bool {
+        true
+    }
     fn as_any(&self) -> &dyn Any {
         self
     }
