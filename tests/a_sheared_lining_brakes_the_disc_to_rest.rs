@@ -3,12 +3,15 @@
 //! reaches the joint only through the patches' forces, yet the brake bench
 //! clamped above its drive's limit decelerates at the closed form
 //! (2μN₀r − τ_max)/J, J = ½πρh(b⁴ − a⁴) of the annulus, and comes to rest
-//! at the time it gives. What happens at rest is docs/scenes.md's limit
-//! (the joint's explicit update against stiff patches), not a result.
+//! at the time it gives. At rest the joint speed, integrated with the
+//! patches inside the step, settles at the closed-form creep
+//! Ω = atanh(τ_max / Σ μ N r) · v_reg / r, as the same run in eight
+//! substeps a step does.
 
 mod support;
 
 use annular_plate::config::IntegratorKind;
+use annular_plate::dynamics::load_models::pad::FRICTION_REGULARISATION_SPEED;
 use annular_plate::dynamics::load_models::pad_config::PadsConfig;
 use annular_plate::dynamics::load_models::pad_outputs::PadOutputs;
 use annular_plate::dynamics::Simulation;
@@ -25,12 +28,20 @@ struct Braked {
     speeds: Vec<f64>,
     deceleration: f64,
     inertia: f64,
+    /// Ω = atanh(τ_max / Σ μ N r) · v_reg / r.
+    creep: f64,
 }
 
 fn braked(steps: usize) -> Braked {
+    braked_in(steps, 1)
+}
+
+/// [`braked`] with each 1 ms step in `substeps` substeps.
+fn braked_in(steps: usize, substeps: u32) -> Braked {
     let mut c = scenes::load("brake_bench.yaml");
     c.section_mut::<PadsConfig>().unwrap().shear = Some((1.0e6, 100.0));
     c.simulation.integrator = IntegratorKind::Rk4;
+    c.simulation.substeps = substeps;
     let p = &c.plate;
     let inertia =
         0.5 * PI * p.density * p.thickness * (p.outer_radius.powi(4) - p.inner_radius.powi(4));
@@ -64,6 +75,7 @@ fn braked(steps: usize) -> Braked {
         speeds,
         deceleration: (capacity - torque) / inertia,
         inertia,
+        creep: (torque / capacity).atanh() * FRICTION_REGULARISATION_SPEED / radius,
     }
 }
 
@@ -102,4 +114,36 @@ fn the_bench_with_sheared_pads_decelerates_at_the_closed_form_and_stops_when_it_
         b.speeds[..before].windows(2).all(|w| w[1] <= w[0] + 1e-12),
         "not monotone before rest"
     );
+}
+
+#[test]
+fn braked_to_rest_the_disc_settles_at_the_closed_form_creep_without_a_saw() {
+    let (b, reference) = (braked(500), braked_in(500, 8));
+    let rest = b.speeds.iter().position(|&w| w < 0.05).unwrap();
+    let largest = |v: &mut dyn Iterator<Item = f64>| v.fold(0.0f64, |m, x| m.max(x.abs()));
+    let jump = |s: &[f64]| largest(&mut s.windows(2).map(|w| w[1] - w[0]));
+    // The 1 ms step against 125 µs substeps over the whole time at rest: the
+    // joint and the patches meet inside the step, so the disc's ringing on
+    // the patches is the converged one and no step saws.
+    let off = largest(
+        &mut b.speeds[rest..]
+            .iter()
+            .zip(&reference.speeds[rest..])
+            .map(|(a, r)| a - r),
+    );
+    let (steps, converged) = (jump(&b.speeds[rest..]), jump(&reference.speeds[rest..]));
+    println!("at rest: |Ω − Ω(h/8)| ≤ {off:.2e} rad/s; largest |ΔΩ| a step {steps:.5} rad/s, at h/8 {converged:.5}");
+    assert!(off < 1e-4, "{off}");
+    assert!((steps - converged).abs() < 1e-4, "{steps} vs {converged}");
+    // The last 50 ms (0.55–0.6 s after the clamp): settled at the creep.
+    let tail = &b.speeds[b.speeds.len() - 50..];
+    let from_creep = largest(&mut tail.iter().map(|w| w / b.creep - 1.0));
+    println!(
+        "creep {:.6e} rad/s (closed form); last 50 ms within {from_creep:.1e} of it, |ΔΩ| ≤ {:.1e} rad/s a step",
+        b.creep,
+        jump(tail)
+    );
+    assert!((b.creep - 1.88e-2).abs() < 1e-4, "{}", b.creep);
+    assert!(from_creep < 1e-4, "{from_creep}");
+    assert!(jump(tail) < 1e-5, "{}", jump(tail));
 }

@@ -15,6 +15,14 @@
 //! band, the drive solves J_zz (Ω₁ − Ω₀)/h = τ_drive + τ_other + τ_f(Ω₁) instead
 //! (backward Euler in the friction; monotone, so bisection): the plate comes
 //! to rest. Elsewhere the update is the explicit one, unchanged.
+//!
+//! A torque-limited drive against loads that RK4 re-evaluates at every stage
+//! and that declare no such friction term (the lining's patches,
+//! `pads.shear_*`: the friction reaches the joint through the patches'
+//! forces) is not held over the step: Ω and χ are integrated with the
+//! elastic state and the drive's law is evaluated at every stage
+//! ([`StageDrive`]), so the patches' tangential stiffness (k_t r² per contact
+//! against J_zz) and the drive meet inside the step.
 
 use crate::config::JointConfig;
 
@@ -101,6 +109,49 @@ pub fn drive(
                 effort,
             }
         }
+    }
+}
+
+/// Whether the joint is integrated with the elastic state inside the step
+/// ([`StageDrive`]) rather than held at the drive's acceleration from the
+/// step's start: a torque-limited drive (a stiff one follows its profile
+/// whatever the loads), stage-dependent loads (the axial torque changes
+/// within the step), and no implicit friction term (a term's band, rate
+/// C · slope / J_zz ≈ 1e6 1/s on the brake bench, is for the step-end solve
+/// of [`drive`], not for explicit stages). A term with zero slope declares no
+/// friction.
+pub fn integrated_in_step(
+    joint: &JointConfig,
+    stage_dependent_loads: bool,
+    friction: &[FrictionTorque],
+) -> bool {
+    joint.max_torque.is_some() && stage_dependent_loads && friction.iter().all(|f| f.slope == 0.0)
+}
+
+/// The drive's law at one instant inside a step of length h: the speed
+/// control towards the command over h, the acceleration limit and the torque
+/// limit, against the load torque at that instant (the explicit branch of
+/// [`drive`]; J_zz dΩ/dt = τ_drive + τ_loads).
+#[derive(Debug, Clone, Copy)]
+pub struct StageDrive<'a> {
+    pub joint: &'a JointConfig,
+    pub polar_inertia: f64,
+    pub command: f64,
+    pub h: f64,
+}
+
+impl StageDrive<'_> {
+    /// dΩ/dt and the drive torque at speed Ω under the load torque `load_torque`.
+    pub fn at(&self, speed: f64, load_torque: f64) -> DriveStep {
+        drive(
+            self.joint,
+            self.polar_inertia,
+            speed,
+            self.command,
+            load_torque,
+            &[],
+            self.h,
+        )
     }
 }
 

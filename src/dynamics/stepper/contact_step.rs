@@ -61,6 +61,7 @@ impl Stepper {
             consts,
             coords: Coordinates::Ale,
             alpha,
+            drive: None,
             base_ale_frame,
             harm,
             views,
