@@ -162,7 +162,8 @@ pub struct Stepper {
     /// the first step, for its h's levels), the key of what a step holds,
     /// and what the last step did.
     contact: Option<ContactExponential>,
-    contact_levels: Option<usize>,
+    /// The levels and unknowns `contact` is made for.
+    contact_levels: Option<(usize, usize)>,
     contact_key: Vec<u64>,
     last_contact: ContactReport,
 }
@@ -360,11 +361,19 @@ impl Stepper {
         let joint = SubstepMotion::new(h, state.chi, state.speed, d.acceleration);
 
         let stiff_models = models.stage_dependent();
+        let in_step = integrated_in_step(&scene.joint, stiff_models, &self.model_wrenches.friction);
+        let stage_drive = in_step.then_some(StageDrive {
+            joint: &scene.joint,
+            polar_inertia: scene.polar_inertia,
+            command: inputs.speed_command,
+            h,
+        });
         let mut joint_end = None;
         match settings.integrator {
             IntegratorKind::ContactExponential if stiff_models => {
                 let tolerance = settings.contact_tolerance;
-                self.contact_exponential(scene, state, inputs, &joint, tolerance)
+                joint_end =
+                    self.contact_exponential(scene, state, inputs, &joint, tolerance, stage_drive);
             }
             IntegratorKind::Exponential | IntegratorKind::ContactExponential => {
                 add_reference_motion(scene, joint.speed_mean, &mut self.loads.ale_frame);
@@ -378,14 +387,6 @@ impl Stepper {
                 self.implicit_midpoint(scene, state, inner, &joint);
             }
             IntegratorKind::Rk4 => {
-                let in_step =
-                    integrated_in_step(&scene.joint, stiff_models, &self.model_wrenches.friction);
-                let stage_drive = in_step.then_some(StageDrive {
-                    joint: &scene.joint,
-                    polar_inertia: scene.polar_inertia,
-                    command: inputs.speed_command,
-                    h,
-                });
                 joint_end = self.rk4(scene, settings, state, inputs, &joint, stage_drive)?;
             }
         }
@@ -775,7 +776,7 @@ const JOINT_UNKNOWNS: usize = 3;
 /// The joint at a substep's end when it was integrated in the step: the
 /// acceleration and drive torque are the substep's means.
 #[derive(Debug, Clone, Copy)]
-struct JointEnd {
+pub(super) struct JointEnd {
     chi1: JointAngle,
     speed1: f64,
     acceleration: f64,
