@@ -187,6 +187,40 @@ mod tests {
     }
 
     #[test]
+    fn only_a_torque_limited_drive_against_stage_loads_without_implicit_friction_rides_in_the_step()
+    {
+        let none = [FrictionTorque::default(); 3];
+        let rigid_pads = [FrictionTorque {
+            capacity: 0.0,
+            slope: 100.0,
+        }];
+        assert!(integrated_in_step(&joint(Some(20.0)), true, &none));
+        assert!(integrated_in_step(&joint(Some(20.0)), true, &[]));
+        assert!(!integrated_in_step(&joint(None), true, &none));
+        assert!(!integrated_in_step(&joint(Some(20.0)), false, &none));
+        // Unclamped rigid pads still declare their band: the step-end solve keeps it.
+        assert!(!integrated_in_step(&joint(Some(20.0)), true, &rigid_pads));
+    }
+
+    #[test]
+    fn the_stage_drive_saturates_at_the_torque_limit_against_the_instants_load() {
+        let j = joint(Some(20.0));
+        let stage = StageDrive {
+            joint: &j,
+            polar_inertia: 2.0,
+            command: 5.0,
+            h: 1e-3,
+        };
+        // Holding 5 rad/s against −50 N·m needs 50 N·m; the drive has 20.
+        let d = stage.at(5.0, -50.0);
+        assert_eq!(d.effort, 20.0);
+        assert!((d.acceleration - (-15.0)).abs() < 1e-12);
+        // Below the command it asks 10 rad/s² (the limit): J α = 20 N·m, 4 of them from the load.
+        let d = stage.at(4.0, 4.0);
+        assert_eq!((d.acceleration, d.effort), (10.0, 16.0));
+    }
+
+    #[test]
     fn friction_above_the_torque_limit_brings_the_plate_to_rest_without_reversing_it() {
         // 2 kN·m of friction (band 1e-2 rad/s) against a 1.5 kN·m drive: explicit
         // Euler jumps between ±3 rad/s; solved at the step's end the plate stops.
