@@ -16,11 +16,11 @@
 //! (backward Euler in the friction; monotone, so bisection): the plate comes
 //! to rest. Elsewhere the update is the explicit one, unchanged.
 //!
-//! A torque-limited drive against loads that RK4 re-evaluates at every stage
-//! and that declare no such friction term (the lining's patches,
-//! `pads.shear_*`: the friction reaches the joint through the patches'
-//! forces) is not held over the step: Ω and χ are integrated with the
-//! elastic state and the drive's law is evaluated at every stage
+//! A torque-limited drive against stage-dependent loads that declare no such
+//! friction term (the lining's patches, `pads.shear_*`: the friction reaches
+//! the joint through the patches' forces) is not held over the step: RK4 and
+//! `contact_exponential` integrate Ω (and χ) with the elastic state and
+//! evaluate the drive's law at every evaluation of the right-hand side
 //! ([`StageDrive`]), so the patches' tangential stiffness (k_t r² per contact
 //! against J_zz) and the drive meet inside the step.
 

@@ -6,7 +6,10 @@
 //! deflection), the joint drive → constant joint acceleration α over the
 //! substep (χ exact and quadratic in time), then the elastic coordinates by
 //! the chosen integrator, then the tool's state (the surface it cut). RK4
-//! re-evaluates the memoryless load models (pads, links) at every stage. A
+//! re-evaluates the memoryless load models (pads, links) at every stage.
+//! Where [`integrated_in_step`] holds (a torque-limited drive against the
+//! lining's patches), RK4 and `contact_exponential` instead integrate the
+//! joint with the elastic state, the drive's law at every evaluation. A
 //! step that produces a non-finite or implausible state is undone and reported.
 
 use super::ale::{harmonics, lagrange_to_ale, pair_to_ale};
@@ -139,8 +142,8 @@ pub struct Stepper {
     /// Per-mode exact propagators, keyed by (h, kΩ): recomputed when either changes.
     propagators: Vec<ModePropagator>,
     /// RK4's and the contact exponential's state (q, q̇, the load models'
-    /// continuous states; within RK4's step where the joint is integrated in
-    /// it, then the joint's [`JOINT_UNKNOWNS`], in capacity reserved) and RK4's stages.
+    /// continuous states; within a step that integrates the joint, then its
+    /// entries, at most [`JOINT_UNKNOWNS`], in capacity reserved) and RK4's stages.
     y: Vec<f64>,
     rk: [Vec<f64>; 5],
     /// The load models' slots at an RK4 stage (models with continuous states).

@@ -2,7 +2,8 @@
 //! contacts"): the elastic state in the ALE description — where space-fixed
 //! pads make the equations autonomous at a held joint speed — stepped by
 //! [`ContactExponential`] with the right-hand side frozen at the substep's
-//! mid-instant (χ at h/2, the mean speed Ω̄, the acceleration α).
+//! mid-instant (χ at h/2, the mean speed Ω̄, the acceleration α) — or, where
+//! the joint is integrated in the step, Ω from y and the drive's law.
 
 use super::stage_rhs::StageRhs;
 use super::{JointEnd, Stepper, SubstepMotion};
