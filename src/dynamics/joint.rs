@@ -15,6 +15,14 @@
 //! band, the drive solves J_zz (Ω₁ − Ω₀)/h = τ_drive + τ_other + τ_f(Ω₁) instead
 //! (backward Euler in the friction; monotone, so bisection): the plate comes
 //! to rest. Elsewhere the update is the explicit one, unchanged.
+//!
+//! A torque-limited drive against stage-dependent loads that declare no such
+//! friction term (the lining's patches, `pads.shear_*`: the friction reaches
+//! the joint through the patches' forces) is not held over the step: RK4 and
+//! `contact_exponential` integrate Ω (and χ) with the elastic state and
+//! evaluate the drive's law at every evaluation of the right-hand side
+//! ([`StageDrive`]), so the patches' tangential stiffness (k_t r² per contact
+//! against J_zz) and the drive meet inside the step.
 
 use crate::config::JointConfig;
 
@@ -104,6 +112,49 @@ pub fn drive(
     }
 }
 
+/// Whether the joint is integrated with the elastic state inside the step
+/// ([`StageDrive`]) rather than held at the drive's acceleration from the
+/// step's start: a torque-limited drive (a stiff one follows its profile
+/// whatever the loads), stage-dependent loads (the axial torque changes
+/// within the step), and no implicit friction term (a term's band, rate
+/// C · slope / J_zz ≈ 1e6 1/s on the brake bench, is for the step-end solve
+/// of [`drive`], not for explicit stages). A term with zero slope declares no
+/// friction.
+pub fn integrated_in_step(
+    joint: &JointConfig,
+    stage_dependent_loads: bool,
+    friction: &[FrictionTorque],
+) -> bool {
+    joint.max_torque.is_some() && stage_dependent_loads && friction.iter().all(|f| f.slope == 0.0)
+}
+
+/// The drive's law at one instant inside a step of length h: the speed
+/// control towards the command over h, the acceleration limit and the torque
+/// limit, against the load torque at that instant (the explicit branch of
+/// [`drive`]; J_zz dΩ/dt = τ_drive + τ_loads).
+#[derive(Debug, Clone, Copy)]
+pub struct StageDrive<'a> {
+    pub joint: &'a JointConfig,
+    pub polar_inertia: f64,
+    pub command: f64,
+    pub h: f64,
+}
+
+impl StageDrive<'_> {
+    /// dΩ/dt and the drive torque at speed Ω under the load torque `load_torque`.
+    pub fn at(&self, speed: f64, load_torque: f64) -> DriveStep {
+        drive(
+            self.joint,
+            self.polar_inertia,
+            speed,
+            self.command,
+            load_torque,
+            &[],
+            self.h,
+        )
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -133,6 +184,40 @@ mod tests {
         let d = drive(&joint(Some(20.0)), 2.0, 5.0, 5.0, -50.0, &[], 1e-3);
         assert_eq!(d.effort, 20.0);
         assert!((d.acceleration - (-30.0 / 2.0)).abs() < 1e-12);
+    }
+
+    #[test]
+    fn only_a_torque_limited_drive_against_stage_loads_without_implicit_friction_rides_in_the_step()
+    {
+        let none = [FrictionTorque::default(); 3];
+        let rigid_pads = [FrictionTorque {
+            capacity: 0.0,
+            slope: 100.0,
+        }];
+        assert!(integrated_in_step(&joint(Some(20.0)), true, &none));
+        assert!(integrated_in_step(&joint(Some(20.0)), true, &[]));
+        assert!(!integrated_in_step(&joint(None), true, &none));
+        assert!(!integrated_in_step(&joint(Some(20.0)), false, &none));
+        // Unclamped rigid pads still declare their band: the step-end solve keeps it.
+        assert!(!integrated_in_step(&joint(Some(20.0)), true, &rigid_pads));
+    }
+
+    #[test]
+    fn the_stage_drive_saturates_at_the_torque_limit_against_the_instants_load() {
+        let j = joint(Some(20.0));
+        let stage = StageDrive {
+            joint: &j,
+            polar_inertia: 2.0,
+            command: 5.0,
+            h: 1e-3,
+        };
+        // Holding 5 rad/s against −50 N·m needs 50 N·m; the drive has 20.
+        let d = stage.at(5.0, -50.0);
+        assert_eq!(d.effort, 20.0);
+        assert!((d.acceleration - (-15.0)).abs() < 1e-12);
+        // Below the command it asks 10 rad/s² (the limit): J α = 20 N·m, 4 of them from the load.
+        let d = stage.at(4.0, 4.0);
+        assert_eq!((d.acceleration, d.effort), (10.0, 16.0));
     }
 
     #[test]

@@ -6,7 +6,10 @@
 //! deflection), the joint drive → constant joint acceleration α over the
 //! substep (χ exact and quadratic in time), then the elastic coordinates by
 //! the chosen integrator, then the tool's state (the surface it cut). RK4
-//! re-evaluates the memoryless load models (pads, links) at every stage. A
+//! re-evaluates the memoryless load models (pads, links) at every stage.
+//! Where [`integrated_in_step`] holds (a torque-limited drive against the
+//! lining's patches), RK4 and `contact_exponential` instead integrate the
+//! joint with the elastic state, the drive's law at every evaluation. A
 //! step that produces a non-finite or implausible state is undone and reported.
 
 use super::ale::{harmonics, lagrange_to_ale, pair_to_ale};
@@ -19,7 +22,7 @@ use super::integrators::equations::{
 use super::integrators::exponential::ModePropagator;
 use super::integrators::stiffened_midpoint::StiffenedMidpoint;
 use super::integrators::{block_exponential, implicit_midpoint, rk4, MAX_INNER_SUBSTEPS};
-use super::joint::drive;
+use super::joint::{drive, integrated_in_step, StageDrive};
 use super::load_models::{LoadContext, LoadModelState, LoadModelUndo, ModelWrenches};
 use super::loads::{add_reference_motion, compute as node_loads, StepLoads};
 use super::scene::Scene;
@@ -138,7 +141,9 @@ pub struct Stepper {
     views: Views,
     /// Per-mode exact propagators, keyed by (h, kΩ): recomputed when either changes.
     propagators: Vec<ModePropagator>,
-    /// RK4's state (q, q̇, the load models' continuous states) and stages.
+    /// RK4's and the contact exponential's state (q, q̇, the load models'
+    /// continuous states; within a step that integrates the joint, then its
+    /// entries, at most [`JOINT_UNKNOWNS`], in capacity reserved) and RK4's stages.
     y: Vec<f64>,
     rk: [Vec<f64>; 5],
     /// The load models' slots at an RK4 stage (models with continuous states).
@@ -160,7 +165,8 @@ pub struct Stepper {
     /// the first step, for its h's levels), the key of what a step holds,
     /// and what the last step did.
     contact: Option<ContactExponential>,
-    contact_levels: Option<usize>,
+    /// The levels and unknowns `contact` is made for.
+    contact_levels: Option<(usize, usize)>,
     contact_key: Vec<u64>,
     last_contact: ContactReport,
 }
@@ -183,8 +189,12 @@ impl Stepper {
             held_loads: None,
             views: Views::new(n),
             propagators: vec![ModePropagator::UNSET; n],
-            y: vec![0.0; 2 * n + scene.load_models.continuous_states()],
-            rk: std::array::from_fn(|_| vec![0.0; 2 * n + scene.load_models.continuous_states()]),
+            y: {
+                let mut y = Vec::with_capacity(scene.first_order_unknowns() + JOINT_UNKNOWNS);
+                y.resize(scene.first_order_unknowns(), 0.0);
+                y
+            },
+            rk: std::array::from_fn(|_| vec![0.0; scene.first_order_unknowns() + JOINT_UNKNOWNS]),
             stage_slots: scene.load_models.initial_state(),
             backup: State::new(n, Coordinates::Ale, 0.0, 0.0),
             undo: LoadModelUndo::new(&scene.load_models),
@@ -354,10 +364,19 @@ impl Stepper {
         let joint = SubstepMotion::new(h, state.chi, state.speed, d.acceleration);
 
         let stiff_models = models.stage_dependent();
+        let in_step = integrated_in_step(&scene.joint, stiff_models, &self.model_wrenches.friction);
+        let stage_drive = in_step.then_some(StageDrive {
+            joint: &scene.joint,
+            polar_inertia: scene.polar_inertia,
+            command: inputs.speed_command,
+            h,
+        });
+        let mut joint_end = None;
         match settings.integrator {
             IntegratorKind::ContactExponential if stiff_models => {
                 let tolerance = settings.contact_tolerance;
-                self.contact_exponential(scene, state, inputs, &joint, tolerance)
+                joint_end =
+                    self.contact_exponential(scene, state, inputs, &joint, tolerance, stage_drive);
             }
             IntegratorKind::Exponential | IntegratorKind::ContactExponential => {
                 add_reference_motion(scene, joint.speed_mean, &mut self.loads.ale_frame);
@@ -370,14 +389,22 @@ impl Stepper {
                 self.last_inner_substeps = self.last_inner_substeps.max(inner);
                 self.implicit_midpoint(scene, state, inner, &joint);
             }
-            IntegratorKind::Rk4 => self.rk4(scene, settings, state, inputs, &joint)?,
+            IntegratorKind::Rk4 => {
+                joint_end = self.rk4(scene, settings, state, inputs, &joint, stage_drive)?;
+            }
         }
         models.save_changes(&state.load_models, &mut self.undo);
         models.commit_substep(&mut state.load_models, &inputs.commands, h);
-        state.chi = joint.chi1;
-        state.speed = joint.speed1;
-        state.acceleration = joint.alpha;
-        state.effort = d.effort;
+        let end = joint_end.unwrap_or(JointEnd {
+            chi1: joint.chi1,
+            speed1: joint.speed1,
+            acceleration: joint.alpha,
+            effort: d.effort,
+        });
+        state.chi = end.chi1;
+        state.speed = end.speed1;
+        state.acceleration = end.acceleration;
+        state.effort = end.effort;
         state.time += h;
         let exact_both = match settings.integrator {
             IntegratorKind::Exponential => true,
@@ -640,7 +667,10 @@ impl Stepper {
     }
 
     /// RK4 over the substep, sub-stepped below its step limit, the load
-    /// models and node loads evaluated at every stage.
+    /// models and node loads evaluated at every stage. With `stage_drive` the
+    /// joint (χ − χ0, Ω, ∫τ_drive dt) is integrated with the elastic state,
+    /// the drive's law at every stage, and its end returned; otherwise the
+    /// joint moves under the held α.
     fn rk4(
         &mut self,
         scene: &Scene,
@@ -648,7 +678,8 @@ impl Stepper {
         state: &mut State,
         inputs: &Inputs,
         joint: &SubstepMotion,
-    ) -> Result<(), StepError> {
+        stage_drive: Option<StageDrive>,
+    ) -> Result<Option<JointEnd>, StepError> {
         let SubstepMotion {
             h,
             chi0,
@@ -659,7 +690,11 @@ impl Stepper {
         let inner = self.checked_inner_substeps(scene, settings, h, speed0, alpha)?;
         self.last_inner_substeps = self.last_inner_substeps.max(inner);
         let n = scene.n_modes();
+        let m = scene.first_order_unknowns();
         let coords = state.coordinates;
+        if stage_drive.is_some() {
+            self.y.extend_from_slice(&[0.0, speed0, 0.0]);
+        }
         self.y[..n].copy_from_slice(&state.q);
         self.y[n..2 * n].copy_from_slice(&state.q_dot);
         let continuous = scene.load_models.continuous_states() > 0;
@@ -688,6 +723,7 @@ impl Stepper {
             consts,
             coords,
             alpha,
+            drive: stage_drive,
             base_ale_frame,
             harm,
             views,
@@ -698,9 +734,18 @@ impl Stepper {
         };
         let dt = h / inner as f64;
         let mut rhs = |t: f64, yy: &[f64], dy: &mut [f64]| {
+            let (yy, joint_y) = yy.split_at(m);
+            let (dy, joint_dy) = dy.split_at_mut(m);
             let mut chi = chi0;
-            chi.advance(speed0 * t + 0.5 * alpha * t * t);
-            stage.eval(chi, speed0 + alpha * t, yy, dy);
+            if stage_drive.is_some() {
+                // y's joint entries: χ − χ0, Ω, ∫τ_drive dt.
+                chi.advance(joint_y[0]);
+                let d = stage.eval(chi, joint_y[1], yy, dy).expect("a stage drive");
+                joint_dy.copy_from_slice(&[joint_y[1], d.acceleration, d.effort]);
+            } else {
+                chi.advance(speed0 * t + 0.5 * alpha * t * t);
+                stage.eval(chi, speed0 + alpha * t, yy, dy);
+            }
         };
         for j in 0..inner {
             rk4::step(j as f64 * dt, dt, y, rk, &mut rhs);
@@ -710,10 +755,35 @@ impl Stepper {
         if continuous {
             scene
                 .load_models
-                .scatter_continuous(&y[2 * n..], &mut state.load_models);
+                .scatter_continuous(&y[2 * n..m], &mut state.load_models);
         }
-        Ok(())
+        let end = stage_drive.map(|_| {
+            let mut chi1 = chi0;
+            chi1.advance(y[m]);
+            JointEnd {
+                chi1,
+                speed1: y[m + 1],
+                acceleration: (y[m + 1] - speed0) / h,
+                effort: y[m + 2] / h,
+            }
+        });
+        y.truncate(m);
+        Ok(end)
     }
+}
+
+/// The joint's entries RK4 carries after the elastic ones when the joint is
+/// integrated in the step: χ − χ0, Ω and ∫τ_drive dt.
+const JOINT_UNKNOWNS: usize = 3;
+
+/// The joint at a substep's end when it was integrated in the step: the
+/// acceleration and drive torque are the substep's means.
+#[derive(Debug, Clone, Copy)]
+pub(super) struct JointEnd {
+    chi1: JointAngle,
+    speed1: f64,
+    acceleration: f64,
+    effort: f64,
 }
 
 /// The joint over one substep of h: from angle χ0 and speed Ω0 under the

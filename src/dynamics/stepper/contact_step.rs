@@ -2,14 +2,16 @@
 //! contacts"): the elastic state in the ALE description — where space-fixed
 //! pads make the equations autonomous at a held joint speed — stepped by
 //! [`ContactExponential`] with the right-hand side frozen at the substep's
-//! mid-instant (χ at h/2, the mean speed Ω̄, the acceleration α).
+//! mid-instant (χ at h/2, the mean speed Ω̄, the acceleration α) — or, where
+//! the joint is integrated in the step, Ω from y and the drive's law.
 
 use super::stage_rhs::StageRhs;
-use super::{Stepper, SubstepMotion};
+use super::{JointEnd, Stepper, SubstepMotion};
 use crate::config::Coordinates;
 use crate::dynamics::ale::{ale_to_lagrange, harmonics};
 use crate::dynamics::commands::Inputs;
 use crate::dynamics::integrators::contact_exponential::ContactExponential;
+use crate::dynamics::joint::StageDrive;
 use crate::dynamics::scene::Scene;
 use crate::dynamics::state::{JointAngle, State};
 
@@ -18,6 +20,9 @@ pub const SWITCH_RESOLUTION: f64 = 2.5e-7;
 
 impl Stepper {
     /// One substep of h from (χ0, Ω0) under α by the contact exponential.
+    /// With `stage_drive` the joint's Ω and ∫τ_drive dt ride in y (the
+    /// drive's law in f, so J couples the joint with the contacts) and the
+    /// joint's end is returned; χ moves at the mean of Ω0 and Ω1.
     pub(super) fn contact_exponential(
         &mut self,
         scene: &Scene,
@@ -25,7 +30,8 @@ impl Stepper {
         inputs: &Inputs,
         joint: &SubstepMotion,
         tolerance: f64,
-    ) {
+        stage_drive: Option<StageDrive>,
+    ) -> Option<JointEnd> {
         let SubstepMotion {
             h,
             chi0,
@@ -36,7 +42,8 @@ impl Stepper {
         let speed_mean = speed0 + 0.5 * alpha * h;
         let mut chi_mid = chi0;
         chi_mid.advance(0.5 * speed0 * h + 0.125 * alpha * h * h);
-        self.contact_prepare(scene, state, h);
+        let m = scene.first_order_unknowns();
+        self.contact_prepare(scene, state, h, stage_drive);
         self.held_key(scene, inputs, speed_mean, alpha, chi_mid);
         let continuous = scene.load_models.continuous_states() > 0;
         if continuous {
@@ -61,6 +68,7 @@ impl Stepper {
             consts,
             coords: Coordinates::Ale,
             alpha,
+            drive: stage_drive,
             base_ale_frame,
             harm,
             views,
@@ -70,32 +78,70 @@ impl Stepper {
             slots: &state.load_models,
         };
         let mut eval = |yy: &[f64], dy: &mut [f64], s: &mut [f64]| {
-            stage.eval(chi_mid, speed_mean, yy, dy);
+            let (yy, joint_y) = yy.split_at(m);
+            let (dy, joint_dy) = dy.split_at_mut(m);
+            // y's joint entries, when it rides in y: Ω, ∫τ_drive dt.
+            let speed = joint_y.first().copied().unwrap_or(speed_mean);
+            if let Some(d) = stage.eval(chi_mid, speed, yy, dy) {
+                joint_dy.copy_from_slice(&[d.acceleration, d.effort]);
+            }
             s.copy_from_slice(&stage.model_wrenches.switching);
         };
         let integrator = contact.as_mut().expect("prepared above");
         self.last_contact = integrator.step(h, y, contact_key, tolerance, &mut eval);
-        self.contact_finish(scene, state, chi0, speed0, alpha, h);
+        let end = stage_drive.map(|_| {
+            let speed1 = self.y[m];
+            let mut chi1 = chi0;
+            chi1.advance(0.5 * (speed0 + speed1) * h);
+            JointEnd {
+                chi1,
+                speed1,
+                acceleration: (speed1 - speed0) / h,
+                effort: self.y[m + 1] / h,
+            }
+        });
+        let (chi1, speed1) = end.map_or((joint.chi1, joint.speed1), |e| (e.chi1, e.speed1));
+        self.contact_finish(scene, state, chi1, speed1);
+        end
     }
 
-    /// y ← the ALE state and the models' continuous states; the integrator
-    /// (re)made for this h.
-    fn contact_prepare(&mut self, scene: &Scene, state: &State, h: f64) {
+    /// y ← the ALE state and the models' continuous states, then with a
+    /// stage drive Ω0 and 0 (∫τ_drive dt); the integrator (re)made for this
+    /// h and that many unknowns.
+    fn contact_prepare(
+        &mut self,
+        scene: &Scene,
+        state: &State,
+        h: f64,
+        stage_drive: Option<StageDrive>,
+    ) {
         let n = scene.n_modes();
         let models = &scene.load_models;
-        let size = scene.first_order_unknowns();
+        let m = scene.first_order_unknowns();
+        let size = m + stage_drive.map_or(0, |_| CONTACT_JOINT_UNKNOWNS);
         let levels = ContactExponential::levels_for(h, SWITCH_RESOLUTION);
-        if self.contact_levels != Some(levels) {
+        if self.contact_levels != Some((levels, size)) {
             let mut c = ContactExponential::new(size, models.switching_functions(), levels);
-            let (scale, blocks) = difference_scale(scene, n, size, h);
+            let (mut scale, mut blocks) = difference_scale(scene, n, m, h);
+            if let Some(d) = stage_drive {
+                // Ω, ∫τ_drive dt: each its own block.
+                scale.extend([
+                    1.0e-6 * d.command.abs().max(1.0),
+                    1.0e-6 * d.joint.max_torque.unwrap_or(1.0) * h,
+                ]);
+                blocks.extend([m + 1, m + 2]);
+            }
             c.set_scale(&scale, &blocks);
             self.contact = Some(c);
-            self.contact_levels = Some(levels);
+            self.contact_levels = Some((levels, size));
         }
         let (q, v) = state.ale();
         self.y[..n].copy_from_slice(q);
         self.y[n..2 * n].copy_from_slice(v);
         models.gather_continuous(&state.load_models, &mut self.y[2 * n..]);
+        if stage_drive.is_some() {
+            self.y.extend_from_slice(&[state.speed, 0.0]);
+        }
     }
 
     /// The cache key of what the step holds: Ω̄, α, the commands, and with
@@ -124,36 +170,32 @@ impl Stepper {
     }
 
     /// Write y back: the ALE state (and the Lagrangian one as primary where
-    /// the scene integrates in it), the models' continuous states.
-    fn contact_finish(
-        &mut self,
-        scene: &Scene,
-        state: &mut State,
-        chi0: JointAngle,
-        speed0: f64,
-        alpha: f64,
-        h: f64,
-    ) {
+    /// the scene integrates in it, at the substep's end χ1, Ω1), the models'
+    /// continuous states; y keeps the elastic unknowns only.
+    fn contact_finish(&mut self, scene: &Scene, state: &mut State, chi1: JointAngle, speed1: f64) {
         let n = scene.n_modes();
+        let m = scene.first_order_unknowns();
         state.q.copy_from_slice(&self.y[..n]);
         state.q_dot.copy_from_slice(&self.y[n..2 * n]);
         if state.coordinates == Coordinates::Lagrangian {
-            let mut chi1 = chi0;
-            chi1.advance((speed0 + 0.5 * alpha * h) * h);
             harmonics(&chi1, scene.layout.k_max, &mut self.harm);
             ale_to_lagrange(
                 &scene.layout,
                 &self.harm,
-                speed0 + alpha * h,
+                speed1,
                 &mut state.q,
                 &mut state.q_dot,
             );
         }
         scene
             .load_models
-            .scatter_continuous(&self.y[2 * n..], &mut state.load_models);
+            .scatter_continuous(&self.y[2 * n..m], &mut state.load_models);
+        self.y.truncate(m);
     }
 }
+
+/// The joint's unknowns after the elastic ones when it rides in y: Ω, ∫τ_drive dt.
+const CONTACT_JOINT_UNKNOWNS: usize = 2;
 
 /// The scale of each unknown where it is 0 — 1e-6 of the plate's thickness
 /// for amplitudes and the models' continuous states (positions then rates),

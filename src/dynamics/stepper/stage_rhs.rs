@@ -1,7 +1,8 @@
 //! The right-hand side of the elastic ODE at one instant — RK4's stages and
 //! the frozen instant of `contact_exponential`: the load models evaluated
 //! at the instant's kinematics, the node loads, the reference motion and the
-//! modal accelerations (eq. 12 with eq. 11's reference-motion terms).
+//! modal accelerations (eq. 12 with eq. 11's reference-motion terms), and
+//! where the joint is integrated in the step, the drive's law at the instant.
 
 use super::{StateView, Views};
 use crate::config::Coordinates;
@@ -10,6 +11,7 @@ use crate::dynamics::commands::Inputs;
 use crate::dynamics::integrators::equations::{
     accelerations, ModalEquations, ModeConstants, ReferenceMotion,
 };
+use crate::dynamics::joint::{DriveStep, StageDrive};
 use crate::dynamics::load_models::{LoadContext, LoadModelState, ModelWrenches};
 use crate::dynamics::loads::{add_reference_motion, compute as node_loads, StepLoads};
 use crate::dynamics::scene::Scene;
@@ -22,8 +24,11 @@ pub(super) struct StageRhs<'a> {
     pub consts: &'a [ModeConstants],
     /// The description y is in.
     pub coords: Coordinates,
-    /// Joint acceleration α (the kΩ̇ term of the ALE equations).
+    /// Joint acceleration α (the kΩ̇ term of the ALE equations) when held.
     pub alpha: f64,
+    /// The drive's law at each instant instead of `alpha`: the joint
+    /// integrated in the step ([`crate::dynamics::joint::integrated_in_step`]).
+    pub drive: Option<StageDrive<'a>>,
     /// The node loads at the substep start (used when nothing in them depends on y).
     pub base_ale_frame: &'a [f64],
     pub harm: &'a mut Vec<(f64, f64)>,
@@ -36,8 +41,15 @@ pub(super) struct StageRhs<'a> {
 }
 
 impl StageRhs<'_> {
-    /// ẏ at joint angle χ and speed Ω into `dy`.
-    pub fn eval(&mut self, chi: JointAngle, speed: f64, y: &[f64], dy: &mut [f64]) {
+    /// ẏ at joint angle χ and speed Ω into `dy`; with a drive, its law at
+    /// the instant's axial torque (dΩ/dt and the drive torque).
+    pub fn eval(
+        &mut self,
+        chi: JointAngle,
+        speed: f64,
+        y: &[f64],
+        dy: &mut [f64],
+    ) -> Option<DriveStep> {
         let scene = self.scene;
         let n = scene.n_modes();
         harmonics(&chi, scene.layout.k_max, self.harm);
@@ -84,6 +96,7 @@ impl StageRhs<'_> {
         } else {
             self.loads.ale_frame.copy_from_slice(self.base_ale_frame);
         }
+        let drive = self.drive.map(|d| d.at(speed, self.loads.axial_torque));
         add_reference_motion(scene, speed, &mut self.loads.ale_frame);
         let (dq, rest) = dy.split_at_mut(n);
         let (dv, ds) = rest.split_at_mut(n);
@@ -96,9 +109,10 @@ impl StageRhs<'_> {
         let motion = ReferenceMotion {
             harmonics: self.harm,
             speed,
-            accel: self.alpha,
+            accel: drive.map_or(self.alpha, |d| d.acceleration),
         };
         accelerations(equations, motion, self.loads, q, v, dv);
         ds.copy_from_slice(&self.model_wrenches.rates);
+        drive
     }
 }
