@@ -16,6 +16,7 @@
 //! [`PlateModel::new`] refuses them for the dynamics, which do not carry
 //! them yet (docs/in_plane.md).
 
+mod annulus;
 pub(crate) mod body;
 pub(crate) mod bspline;
 mod build;

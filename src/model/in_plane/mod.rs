@@ -159,24 +159,13 @@ impl InPlanePlate {
             ("thickness", self.thickness),
             ("inner_radius", self.inner_radius),
         ];
-        for (name, value) in positive {
-            if !(value.is_finite() && value > 0.0) {
-                return Err(InPlaneError::invalid(name, value, "finite and > 0"));
-            }
-        }
-        let nu = self.poisson_ratio;
-        if !(nu.is_finite() && nu > -1.0 && nu < 0.5) {
-            return Err(InPlaneError::invalid("poisson_ratio", nu, "in (-1, 0.5)"));
-        }
-        let ra = self.outer_radius;
-        if !(ra.is_finite() && ra > self.inner_radius) {
-            return Err(InPlaneError::invalid(
-                "outer_radius",
-                ra,
-                "finite and > inner_radius",
-            ));
-        }
-        Ok(())
+        super::annulus::check_annulus(
+            &positive,
+            self.poisson_ratio,
+            self.inner_radius,
+            self.outer_radius,
+        )
+        .map_err(|(name, value, rule)| InPlaneError::invalid(name, value, rule))
     }
 
     /// Ē = E / (1 − ν²), Pa.
