@@ -6,6 +6,7 @@
 mod support;
 
 use annular_plate::config::{Config, IntegratorKind, NodePosition, WrenchConfig};
+use annular_plate::dynamics::load_models::pad_config::PadsConfig;
 use annular_plate::dynamics::load_models::point_spring::SpringsConfig;
 use annular_plate::dynamics::{Simulation, Stepper};
 use support::scene_files;
@@ -148,4 +149,45 @@ fn a_point_spring_raises_the_frequency_to_the_closed_form() {
         expected > 1.001 * bare,
         "the spring stiffens the mode: {expected} vs {bare}"
     );
+}
+
+#[test]
+fn a_saved_state_on_contact_exponential_carries_its_span_length_and_replays_bit_for_bit() {
+    // brake_squeal with a rigid lining: the friction direction's remainder
+    // makes the spans third-order and shorter than a step. The step starts
+    // from the span length in the State, so a fresh stepper continues alike.
+    let config = || {
+        let mut c = scene_files::load("brake_squeal.yaml");
+        c.section_mut::<PadsConfig>().unwrap().shear = None;
+        c.simulation.integrator = IntegratorKind::ContactExponential;
+        c.simulation.contact_tolerance = 1.0e-6;
+        c
+    };
+    let (at, steps) = (400, 600);
+    let mut sim = Simulation::new(config()).unwrap();
+    let (mut replay, end) = run(&mut sim, at, steps);
+    assert!(
+        replay.contact_spans.level > 0 && replay.contact_spans.third_order,
+        "the saved state carries shortened third-order spans: {:?}",
+        replay.contact_spans
+    );
+    let mut stepper = Stepper::new(sim.scene());
+    for _ in at..steps {
+        stepper
+            .step(sim.scene(), sim.settings(), &mut replay, sim.inputs())
+            .unwrap();
+    }
+    assert_eq!(replay, end, "the replayed state differs");
+    // Started from whole-step spans instead, the run differs: the carried
+    // length is part of what the state replays.
+    let mut from_whole = Simulation::new(config()).unwrap();
+    let (mut forgotten, _) = run(&mut from_whole, at, at + 1);
+    forgotten.contact_spans = Default::default();
+    let mut stepper = Stepper::new(sim.scene());
+    for _ in at..steps {
+        stepper
+            .step(sim.scene(), sim.settings(), &mut forgotten, sim.inputs())
+            .unwrap();
+    }
+    assert_ne!(forgotten.q, end.q, "the span length has no effect");
 }

@@ -74,7 +74,14 @@ impl Stepper {
             s.copy_from_slice(&stage.model_wrenches.switching);
         };
         let integrator = contact.as_mut().expect("prepared above");
-        self.last_contact = integrator.step(h, y, contact_key, tolerance, &mut eval);
+        self.last_contact = integrator.step(
+            h,
+            y,
+            contact_key,
+            tolerance,
+            &mut state.contact_spans,
+            &mut eval,
+        );
         self.contact_finish(scene, state, chi0, speed0, alpha, h);
     }
 
