@@ -30,6 +30,21 @@ fn run(
     (saved.unwrap(), sim.state().clone())
 }
 
+/// Step `state` `steps` times under `sim`'s scene, settings and inputs with
+/// a new stepper (no scratch or cache from the run that saved it).
+fn step_with_a_fresh_stepper(
+    sim: &Simulation,
+    state: &mut annular_plate::dynamics::State,
+    steps: usize,
+) {
+    let mut stepper = Stepper::new(sim.scene());
+    for _ in 0..steps {
+        stepper
+            .step(sim.scene(), sim.settings(), state, sim.inputs())
+            .unwrap();
+    }
+}
+
 #[test]
 fn a_saved_state_stepped_by_a_fresh_stepper_replays_the_run_bit_for_bit() {
     // The lathe (a tool with memory: its machined surface), the squeal scene
@@ -41,12 +56,7 @@ fn a_saved_state_stepped_by_a_fresh_stepper_replays_the_run_bit_for_bit() {
     ] {
         let mut sim = Simulation::new(scene_files::load(file)).unwrap();
         let (mut replay, end) = run(&mut sim, at, steps);
-        let mut stepper = Stepper::new(sim.scene());
-        for _ in at..steps {
-            stepper
-                .step(sim.scene(), sim.settings(), &mut replay, sim.inputs())
-                .unwrap();
-        }
+        step_with_a_fresh_stepper(&sim, &mut replay, steps - at);
         assert_eq!(replay, end, "{file}: the replayed state differs");
         // And restored into the facade, it continues like the original.
         let mut again = Simulation::new(scene_files::load(file)).unwrap();
@@ -171,23 +181,13 @@ fn a_saved_state_on_contact_exponential_carries_its_span_length_and_replays_bit_
         "the saved state carries shortened third-order spans: {:?}",
         replay.contact_spans
     );
-    let mut stepper = Stepper::new(sim.scene());
-    for _ in at..steps {
-        stepper
-            .step(sim.scene(), sim.settings(), &mut replay, sim.inputs())
-            .unwrap();
-    }
+    step_with_a_fresh_stepper(&sim, &mut replay, steps - at);
     assert_eq!(replay, end, "the replayed state differs");
     // Started from whole-step spans instead, the run differs: the carried
     // length is part of what the state replays.
     let mut from_whole = Simulation::new(config()).unwrap();
     let (mut forgotten, _) = run(&mut from_whole, at, at + 1);
     forgotten.contact_spans = Default::default();
-    let mut stepper = Stepper::new(sim.scene());
-    for _ in at..steps {
-        stepper
-            .step(sim.scene(), sim.settings(), &mut forgotten, sim.inputs())
-            .unwrap();
-    }
+    step_with_a_fresh_stepper(&sim, &mut forgotten, steps - at);
     assert_ne!(forgotten.q, end.q, "the span length has no effect");
 }
