@@ -245,7 +245,7 @@ fn rigid_lining(tolerance: &'static str) -> [(&'static str, &'static str); 3] {
 /// brake_squeal with a rigid lining: friction on the faces at 0.36 m/s
 /// sliding speed, whose direction is strongly nonlinear in the vibration.
 /// Its spans are taken at third order at `contact_tolerance` 1e-6:
-/// measured 2.03e-5 of the peak over 0.3 s of its growth (the
+/// measured 7.0e-6 of the peak over 0.3 s of its growth (the
 /// second-order correction alone: 1.72e-4).
 #[test]
 fn brake_squeal_face_friction_within_3e5_of_the_converged_reference() {
@@ -257,7 +257,7 @@ fn brake_squeal_face_friction_within_3e5_of_the_converged_reference() {
 }
 
 /// The rigid lining at `contact_tolerance` 1e-7: within 1e-6 of the peak
-/// (measured 5.4e-7 over 0.3 s).
+/// (measured 3.5e-7 over 0.3 s).
 #[test]
 fn brake_squeal_at_tolerance_1e7_within_1e6_of_the_converged_reference() {
     let edits = rigid_lining("    simulation:\n      contact_tolerance: 1.0e-7\n");

@@ -6,6 +6,7 @@
 mod support;
 
 use annular_plate::config::{Config, IntegratorKind, NodePosition, WrenchConfig};
+use annular_plate::dynamics::load_models::pad_config::PadsConfig;
 use annular_plate::dynamics::load_models::point_spring::SpringsConfig;
 use annular_plate::dynamics::{Simulation, Stepper};
 use support::scene_files;
@@ -29,6 +30,21 @@ fn run(
     (saved.unwrap(), sim.state().clone())
 }
 
+/// Step `state` `steps` times under `sim`'s scene, settings and inputs with
+/// a new stepper (no scratch or cache from the run that saved it).
+fn step_with_a_fresh_stepper(
+    sim: &Simulation,
+    state: &mut annular_plate::dynamics::State,
+    steps: usize,
+) {
+    let mut stepper = Stepper::new(sim.scene());
+    for _ in 0..steps {
+        stepper
+            .step(sim.scene(), sim.settings(), state, sim.inputs())
+            .unwrap();
+    }
+}
+
 #[test]
 fn a_saved_state_stepped_by_a_fresh_stepper_replays_the_run_bit_for_bit() {
     // The lathe (a tool with memory: its machined surface), the squeal scene
@@ -40,12 +56,7 @@ fn a_saved_state_stepped_by_a_fresh_stepper_replays_the_run_bit_for_bit() {
     ] {
         let mut sim = Simulation::new(scene_files::load(file)).unwrap();
         let (mut replay, end) = run(&mut sim, at, steps);
-        let mut stepper = Stepper::new(sim.scene());
-        for _ in at..steps {
-            stepper
-                .step(sim.scene(), sim.settings(), &mut replay, sim.inputs())
-                .unwrap();
-        }
+        step_with_a_fresh_stepper(&sim, &mut replay, steps - at);
         assert_eq!(replay, end, "{file}: the replayed state differs");
         // And restored into the facade, it continues like the original.
         let mut again = Simulation::new(scene_files::load(file)).unwrap();
@@ -148,4 +159,35 @@ fn a_point_spring_raises_the_frequency_to_the_closed_form() {
         expected > 1.001 * bare,
         "the spring stiffens the mode: {expected} vs {bare}"
     );
+}
+
+#[test]
+fn a_saved_state_on_contact_exponential_carries_its_span_length_and_replays_bit_for_bit() {
+    // brake_squeal with a rigid lining: the friction direction's remainder
+    // makes the spans third-order and shorter than a step. The step starts
+    // from the span length in the State, so a fresh stepper continues alike.
+    let config = || {
+        let mut c = scene_files::load("brake_squeal.yaml");
+        c.section_mut::<PadsConfig>().unwrap().shear = None;
+        c.simulation.integrator = IntegratorKind::ContactExponential;
+        c.simulation.contact_tolerance = 1.0e-6;
+        c
+    };
+    let (at, steps) = (400, 600);
+    let mut sim = Simulation::new(config()).unwrap();
+    let (mut replay, end) = run(&mut sim, at, steps);
+    assert!(
+        replay.contact_spans.level > 0 && replay.contact_spans.third_order,
+        "the saved state carries shortened third-order spans: {:?}",
+        replay.contact_spans
+    );
+    step_with_a_fresh_stepper(&sim, &mut replay, steps - at);
+    assert_eq!(replay, end, "the replayed state differs");
+    // Started from whole-step spans instead, the run differs: the carried
+    // length is part of what the state replays.
+    let mut from_whole = Simulation::new(config()).unwrap();
+    let (mut forgotten, _) = run(&mut from_whole, at, at + 1);
+    forgotten.contact_spans = Default::default();
+    step_with_a_fresh_stepper(&sim, &mut forgotten, steps - at);
+    assert_ne!(forgotten.q, end.q, "the span length has no effect");
 }

@@ -37,6 +37,6 @@ pub use load_models::{
 };
 pub use scene::Scene;
 pub use simulation::{JointOutput, NodeOutput, Pose, Simulation};
-pub use state::{JointAngle, State};
+pub use state::{ContactSpans, JointAngle, State};
 pub use stepper::{Stepper, StepperSettings};
 pub use wrench::{NodeKind, Wrench};

@@ -8,6 +8,7 @@ use super::scene::{ModeLayout, Scene};
 use crate::config::Coordinates;
 
 pub use super::angle::JointAngle;
+pub use super::integrators::contact_exponential::ContactSpans;
 
 /// Everything that evolves: time and step count, the joint, the elastic
 /// coordinates in both descriptions, the load models' states. The stepper
@@ -42,6 +43,9 @@ pub struct State {
     pub q_dot_other: Vec<f64>,
     /// State of the load models (one slot each; the tool's machined surface).
     pub load_models: LoadModelState,
+    /// `contact_exponential`'s span length and order at the last step's end,
+    /// where the next step starts (docs/dynamics.md, "Stiff contacts").
+    pub contact_spans: ContactSpans,
 }
 
 impl State {
@@ -60,6 +64,7 @@ impl State {
             q_other: vec![0.0; n_modes],
             q_dot_other: vec![0.0; n_modes],
             load_models: LoadModelState::default(),
+            contact_spans: ContactSpans::default(),
         }
     }
 
@@ -125,6 +130,7 @@ impl State {
         self.acceleration = other.acceleration;
         self.effort = other.effort;
         self.coordinates = other.coordinates;
+        self.contact_spans = other.contact_spans;
         for (a, b) in [
             (&mut self.q, &other.q),
             (&mut self.q_dot, &other.q_dot),

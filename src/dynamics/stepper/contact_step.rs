@@ -88,7 +88,14 @@ impl Stepper {
             s.copy_from_slice(&stage.model_wrenches.switching);
         };
         let integrator = contact.as_mut().expect("prepared above");
-        self.last_contact = integrator.step(h, y, contact_key, tolerance, &mut eval);
+        self.last_contact = integrator.step(
+            h,
+            y,
+            contact_key,
+            tolerance,
+            &mut state.contact_spans,
+            &mut eval,
+        );
         let end = stage_drive.map(|_| {
             let speed1 = self.y[m];
             let mut chi1 = chi0;
