@@ -9,8 +9,8 @@
 //! [`mindlin`] computes the thick-plate (Mindlin) modes per k by the same
 //! radial machinery; with `plate.theory: mindlin` the model's modes are
 //! those (docs/mindlin.md); the dynamics and `stability` take them (node
-//! frames turned by ψ, body data with the rotary inertia), `study` and
-//! `plot` refuse them ([`PlateModel::require_kirchhoff`]). [`in_plane`]
+//! frames turned by ψ, body data with the rotary inertia), `plot` draws
+//! their w, `study` refuses them ([`PlateModel::require_kirchhoff`]). [`in_plane`]
 //! computes the in-plane (plane-stress) modes by the same machinery; `modes`
 //! lists them ([`PlateModel::bending_and_in_plane`]), and
 //! [`PlateModel::new`] refuses them for the dynamics, which do not carry
