@@ -6,7 +6,7 @@
 #![cfg(feature = "cli")]
 
 use annular_plate::cli::plot::{animate, Animation, CsvData, Size};
-use annular_plate::config::Config;
+use annular_plate::config::{Config, PlateTheory};
 use annular_plate::model::PlateModel;
 use image::AnimationDecoder;
 use std::path::{Path, PathBuf};
@@ -26,13 +26,14 @@ fn scene() -> PathBuf {
 /// ends deflected (1.4 mm at the first link).
 /// A fresh CSV per call: the tests run in parallel, and one must not read
 /// the file while another rewrites it.
-fn simulated_csv() -> PathBuf {
+fn simulated_csv(overrides: &[&str]) -> PathBuf {
     static CALLS: std::sync::atomic::AtomicUsize = std::sync::atomic::AtomicUsize::new(0);
     let call = CALLS.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
     let csv = dir().join(format!("animate_swash_{call}.csv"));
     let ok = Command::new(env!("CARGO_BIN_EXE_annular_plate"))
         .args(["simulate", "--quiet", "--duration", "0.3", "--csv"])
         .arg(&csv)
+        .args(overrides)
         .arg(scene())
         .status()
         .unwrap()
@@ -67,10 +68,29 @@ fn documented_colour(t: f64) -> [f64; 3] {
 
 #[test]
 fn frames_follow_the_run_and_colour_the_deflection_of_the_model() {
-    let csv = simulated_csv();
+    frames_follow_the_run(PlateTheory::Kirchhoff);
+}
+
+/// The same under `plate.theory: mindlin`: the frames colour the Mindlin
+/// modes' deflection w (the links act on w in either theory).
+#[test]
+fn frames_of_a_mindlin_plate_colour_the_deflection_of_its_mindlin_modes() {
+    frames_follow_the_run(PlateTheory::Mindlin);
+}
+
+fn frames_follow_the_run(theory: PlateTheory) {
+    // Mindlin plates take no residual flexibility (a point force's deflection is infinite).
+    let residual = theory == PlateTheory::Kirchhoff;
+    let csv = simulated_csv(&[
+        "-p",
+        &format!("plate.theory:={}", theory.name()),
+        "-p",
+        &format!("plate.residual_flexibility:={residual}"),
+    ]);
     let data = CsvData::read(&csv).unwrap();
-    let config = Config::from_params_file(&scene(), "/annular_plate").unwrap();
-    let out = dir().join("animate_swash.gif");
+    let mut config = Config::from_params_file(&scene(), "/annular_plate").unwrap();
+    (config.plate.theory, config.plate.residual_flexibility) = (theory, residual);
+    let out = dir().join(format!("animate_swash_{}.gif", theory.name()));
     let anim = Animation {
         fps: 20,
         max_frames: 10_000,
@@ -99,7 +119,7 @@ fn frames_follow_the_run_and_colour_the_deflection_of_the_model() {
         decoded
             .last()
             .unwrap()
-            .save(dir().join("animate_last.png"))
+            .save(dir().join(format!("animate_last_{}.png", theory.name())))
             .unwrap();
     }
 
@@ -202,7 +222,7 @@ fn frames_follow_the_run_and_colour_the_deflection_of_the_model() {
 
 #[test]
 fn frame_count_is_duration_times_fps_and_mp4_without_ffmpeg_names_the_remedy() {
-    let csv = simulated_csv();
+    let csv = simulated_csv(&[]);
     let data = CsvData::read(&csv).unwrap();
     let config = Config::from_params_file(&scene(), "/annular_plate").unwrap();
     let small = Size {

@@ -527,3 +527,106 @@ fn single_mode_picture_shows_the_nodal_pattern_in_its_top_view() {
     assert_eq!((view.k, view.l), (2, 0));
     assert_eq!(svg_root_size(&out).1, (1000, 480));
 }
+
+/// The bench disc of config/brake_bench.yaml (steel, r_i = 0.07 m, r_a = 0.153 m,
+/// h = 18.1 mm: h/(r_a − r_i) = 0.22, supported inside, free outside) as a Mindlin plate.
+fn mindlin_bench_disc() -> (Config, support::mindlin_exact::MindlinAnnulus) {
+    let mut c = Config::default();
+    let p = &mut c.plate;
+    (p.youngs_modulus, p.poisson_ratio, p.density) = (2.1e11, 0.3, 7850.0);
+    (p.inner_radius, p.outer_radius, p.thickness) = (0.07, 0.153, 0.0181);
+    (p.inner_boundary, p.outer_boundary) = (Boundary::Supported, Boundary::Free);
+    p.theory = annular_plate::config::PlateTheory::Mindlin;
+    let exact = support::mindlin_exact::MindlinAnnulus::of_plate(p);
+    (c, exact)
+}
+
+/// The radius strictly inside (r_i, r_a) where the exact Mindlin W of ⟨k, l = 1⟩ changes sign.
+fn exact_nodal_radius(exact: &support::mindlin_exact::MindlinAnnulus, k: u32) -> f64 {
+    let omega = exact.roots(k, 2, 64)[1];
+    let mode = exact.mode(k, omega);
+    let (ri, ra) = (exact.inner_radius, exact.outer_radius);
+    let w = |r: f64| mode.fields(r).w;
+    let n = 2000;
+    let grid: Vec<f64> = (1..n)
+        .map(|i| ri + (ra - ri) * i as f64 / n as f64)
+        .collect();
+    let i = grid
+        .windows(2)
+        .position(|p| w(p[0]).signum() != w(p[1]).signum())
+        .expect("one nodal circle");
+    let (mut a, mut b) = (grid[i], grid[i + 1]);
+    for _ in 0..60 {
+        let c = 0.5 * (a + b);
+        if w(c).signum() == w(a).signum() {
+            a = c;
+        } else {
+            b = c;
+        }
+    }
+    0.5 * (a + b)
+}
+
+/// A Mindlin plate's mode picture draws the Mindlin mode's deflection w: its
+/// nodal circle is the exact Mindlin W's (`tests/support/mindlin_exact.rs`,
+/// the 6×6 edge matrix's null vector) — not Kirchhoff's, which for this thick
+/// disc lies hundreds of tolerances away — the raster shows 2k diameters and
+/// one circle, and the title names the theory.
+#[test]
+fn mindlin_mode_picture_draws_the_exact_mindlin_nodal_circle() {
+    let (config, exact) = mindlin_bench_disc();
+    let width = exact.outer_radius - exact.inner_radius;
+    let tolerance = 1e-7 * width;
+    for k in [0u32, 2, 4] {
+        let shape = if k == 0 {
+            AngularShape::Axisymmetric
+        } else {
+            AngularShape::Cos
+        };
+        let out = dir().join(format!("mindlin_mode_{k}_1.png"));
+        let size = Size {
+            width: 1200,
+            height: 560,
+        };
+        let view = plot::mode_picture(&config, ModeChoice::KL { k, l: 1, shape }, None, &out, size)
+            .unwrap();
+        let (d, c) = count_on_raster(&png(&out), &view);
+        assert_eq!((d, c), (2 * k as usize, 1), "Mindlin ⟨{k}, 1⟩");
+        let want = exact_nodal_radius(&exact, k);
+        let drawn = view.nodal_radii[0];
+        let mut kirchhoff = config.plate.clone();
+        kirchhoff.theory = annular_plate::config::PlateTheory::Kirchhoff;
+        (kirchhoff.nodal_diameters, kirchhoff.nodal_circles) = (vec![k], vec![1]);
+        let kirchhoff = annular_plate::model::PlateModel::new(&kirchhoff).unwrap();
+        let kirchhoff_radius = annular_plate::model::nodal_lines::nodal_radii(&kirchhoff, 0)[0];
+        println!(
+            "⟨{k}, 1⟩ nodal circle: drawn {drawn:.9} m, exact Mindlin {want:.9} m ({:.1e} of r_a − r_i), Kirchhoff {kirchhoff_radius:.6} m",
+            (drawn - want).abs() / width
+        );
+        assert!(
+            (drawn - want).abs() < tolerance,
+            "⟨{k}, 1⟩: drawn {drawn}, exact Mindlin {want}"
+        );
+        assert!(
+            (kirchhoff_radius - want).abs() > 100.0 * tolerance,
+            "⟨{k}, 1⟩: the test tells Kirchhoff's circle ({kirchhoff_radius}) from Mindlin's"
+        );
+    }
+    // The title (SVG text) and the grid name the theory.
+    let out = dir().join("mindlin_grid.svg");
+    let views = plot::mode_grid(
+        &config,
+        &[0, 2],
+        &[0, 1],
+        None,
+        &out,
+        Size {
+            width: 700,
+            height: 600,
+        },
+    )
+    .unwrap();
+    assert_eq!(views.len(), 4);
+    let (text, _) = svg_root_size(&out);
+    assert!(text.contains("Mindlin plate"), "the title names the theory");
+}

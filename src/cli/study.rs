@@ -206,10 +206,20 @@ pub fn table(r: &StudyReport) -> String {
     // Axis 1.
     let a = &r.radial_splines;
     let _ = writeln!(o, "\n1. Natural frequencies vs plate.radial_splines");
+    let reference = match a.reference.finer_check_radial_splines {
+        None => format!(
+            "{} splines; its difference from {} splines",
+            a.reference.radial_splines, a.reference.check_radial_splines
+        ),
+        Some(finer) => format!(
+            "{} splines per field (Mindlin); its larger difference from {} and {} (round-off)",
+            a.reference.radial_splines, a.reference.check_radial_splines, finer
+        ),
+    };
     let _ = writeln!(
         o,
-        "   error: {}\n   reference: {} splines; its difference from {} splines, {:.1e}, bounds its own error",
-        a.error_measure, a.reference.radial_splines, a.reference.check_radial_splines, a.reference.uncertainty
+        "   error: {}\n   reference: {reference}, {:.1e}, bounds its own error",
+        a.error_measure, a.reference.uncertainty
     );
     let _ = writeln!(
         o,
@@ -229,64 +239,13 @@ pub fn table(r: &StudyReport) -> String {
     }
 
     // Axis 2.
-    let b = &r.mode_count;
-    let lc = &b.load_case;
-    let _ = writeln!(
-        o,
-        "\n2. Steady deflection at the load point vs mode set k = 0..k_max, l = 0..l_max"
-    );
-    let _ = writeln!(
-        o,
-        "   load point: ALE node {} at ξ = ({}, {}), {} loaded node(s), Ω = {:.4} rad/s, ζ = {}",
-        lc.ale_node,
-        lc.point.radial,
-        lc.point.angular,
-        lc.loads.len(),
-        lc.speed_rad_s,
-        b.damping
-    );
-    let rf = &b.reference;
-    let _ = writeln!(
-        o,
-        "   reference: k ≤ {}, l ≤ {} ({} modes, {} radial splines): w = {:.9e} m; estimated own error {:.1e} ({})",
-        rf.k_max, rf.l_max, rf.modes, rf.radial_splines, rf.response_m, rf.uncertainty, rf.uncertainty_method
-    );
-    for n in &b.notes {
-        let _ = writeln!(o, "   note: {n}");
-    }
-    let mut ks: Vec<u32> = b.rows.iter().map(|x| x.k_max).collect();
-    ks.sort_unstable();
-    ks.dedup();
-    let mut ls: Vec<u32> = b.rows.iter().map(|x| x.l_max).collect();
-    ls.sort_unstable();
-    ls.dedup();
-    for (title, cell) in [
-        (
-            "relative error",
-            &(|x: &study::response::ResponseRow| format!("{:.2e}{}", x.relative_error, if x.pareto { "*" } else { " " }))
-                as &dyn Fn(&study::response::ResponseRow) -> String,
-        ),
-        (
-            "relative error with residual flexibility (docs/residual_flexibility.md; reference plus its own residual)",
-            &|x: &study::response::ResponseRow| format!("{:.2e}{}", x.relative_error_with_residual, if x.pareto_with_residual { "*" } else { " " }),
-        ),
-        ("wall time per step, modes only", &|x: &study::response::ResponseRow| x.step_time_s.map_or("refused".into(), fmt_time)),
-        ("wall time per step with residual flexibility", &|x: &study::response::ResponseRow| x.step_time_with_residual_s.map_or("refused".into(), fmt_time)),
-        ("modes", &|x: &study::response::ResponseRow| x.modes.to_string()),
-    ] {
-        let _ = writeln!(o, "   {title}:");
-        let mut line = format!("   {:>13}", "l_max \\ k_max");
-        for k in &ks {
-            let _ = write!(line, " {k:>10}");
-        }
-        let _ = writeln!(o, "{line}");
-        for l in &ls {
-            let mut line = format!("   {l:>13}");
-            for k in &ks {
-                let c = b.rows.iter().find(|x| x.k_max == *k && x.l_max == *l).map(cell).unwrap_or_default();
-                let _ = write!(line, " {c:>10}");
-            }
-            let _ = writeln!(o, "{line}");
+    match &r.mode_count {
+        Some(b) => mode_count_table(&mut o, b),
+        None => {
+            let _ = writeln!(
+                o,
+                "\n2. Steady deflection at the load point vs mode set: skipped (notes)"
+            );
         }
     }
 
@@ -355,14 +314,20 @@ pub fn table(r: &StudyReport) -> String {
         }
     }
 
+    theory_table(&mut o, &r.theory);
+    for n in &r.notes {
+        let _ = writeln!(o, "\nnote: {n}");
+    }
+
     // Recommendations.
     let _ = writeln!(
         o,
         "\nRecommended: the cheapest measured setting whose error plus the reference's uncertainty is within the target (≤ claimed error; cost); [default] = the scene's own setting"
     );
-    let default_set = match &r.mode_count.default_setting {
-        Some(d) => fmt_mode_set(d.k_max, d.l_max, d.residual_flexibility),
-        None => "not a rectangular set".into(),
+    let default_set = match r.mode_count.as_ref().map(|b| &b.default_setting) {
+        Some(Some(d)) => fmt_mode_set(d.k_max, d.l_max, d.residual_flexibility),
+        Some(None) => "not a rectangular set".into(),
+        None => "not studied".into(),
     };
     let _ = writeln!(
         o,
@@ -372,12 +337,14 @@ pub fn table(r: &StudyReport) -> String {
         r.integrator.default_setting.integrator,
         fmt_rate(r.integrator.default_setting.rate_hz)
     );
-    let _ = writeln!(
-        o,
-        "   mode set: each set competes with and without plate.residual_flexibility (residual reference uncertainty {:.1e}, modal {:.1e}); it decides the deflection under the load, not which vibrations are resolved",
-        r.mode_count.reference.uncertainty_with_residual,
-        r.mode_count.reference.uncertainty
-    );
+    if let Some(b) = &r.mode_count {
+        let _ = writeln!(
+            o,
+            "   mode set: each set competes with and without plate.residual_flexibility (residual reference uncertainty {:.1e}, modal {:.1e}); it decides the deflection under the load, not which vibrations are resolved",
+            b.reference.uncertainty_with_residual,
+            b.reference.uncertainty
+        );
+    }
     let _ = writeln!(
         o,
         "   {:>7}  {:<44} {:<64} integrator and rate",
@@ -389,17 +356,19 @@ pub fn table(r: &StudyReport) -> String {
             |s| s.radial_splines.to_string(),
             |c| format!("build {}", fmt_time(c)),
         );
-        let b = fmt_rec(
-            &r.mode_count.recommendations[i],
-            |s| {
-                format!(
-                    "{} ({} modes)",
-                    fmt_mode_set(s.k_max, s.l_max, s.residual_flexibility),
-                    s.modes
-                )
-            },
-            |c| format!("{}/step", fmt_time(c)),
-        );
+        let b = r.mode_count.as_ref().map_or("—".into(), |b| {
+            fmt_rec(
+                &b.recommendations[i],
+                |s| {
+                    format!(
+                        "{} ({} modes)",
+                        fmt_mode_set(s.k_max, s.l_max, s.residual_flexibility),
+                        s.modes
+                    )
+                },
+                |c| format!("{}/step", fmt_time(c)),
+            )
+        });
         let c = fmt_rec(
             &r.integrator.recommendations[i],
             |s| format!("{} {}", s.integrator, fmt_rate(s.rate_hz)),
@@ -413,4 +382,121 @@ pub fn table(r: &StudyReport) -> String {
     }
     let _ = writeln!(o, "\n(study wall time {:.1} s)", r.wall_time_s);
     o
+}
+
+/// Axis 2's tables.
+fn mode_count_table(o: &mut String, b: &study::ResponseAxis) {
+    let lc = &b.load_case;
+    let _ = writeln!(
+        o,
+        "\n2. Steady deflection at the load point vs mode set k = 0..k_max, l = 0..l_max"
+    );
+    let _ = writeln!(
+        o,
+        "   load point: ALE node {} at ξ = ({}, {}), {} loaded node(s), Ω = {:.4} rad/s, ζ = {}",
+        lc.ale_node,
+        lc.point.radial,
+        lc.point.angular,
+        lc.loads.len(),
+        lc.speed_rad_s,
+        b.damping
+    );
+    let rf = &b.reference;
+    let _ = writeln!(
+        o,
+        "   reference: k ≤ {}, l ≤ {} ({} modes, {} radial splines): w = {:.9e} m; estimated own error {:.1e} ({})",
+        rf.k_max, rf.l_max, rf.modes, rf.radial_splines, rf.response_m, rf.uncertainty, rf.uncertainty_method
+    );
+    for n in &b.notes {
+        let _ = writeln!(o, "   note: {n}");
+    }
+    let mut ks: Vec<u32> = b.rows.iter().map(|x| x.k_max).collect();
+    ks.sort_unstable();
+    ks.dedup();
+    let mut ls: Vec<u32> = b.rows.iter().map(|x| x.l_max).collect();
+    ls.sort_unstable();
+    ls.dedup();
+    for (title, cell) in [
+        (
+            "relative error",
+            &(|x: &study::response::ResponseRow| format!("{:.2e}{}", x.relative_error, if x.pareto { "*" } else { " " }))
+                as &dyn Fn(&study::response::ResponseRow) -> String,
+        ),
+        (
+            "relative error with residual flexibility (docs/residual_flexibility.md; reference plus its own residual)",
+            &|x: &study::response::ResponseRow| format!("{:.2e}{}", x.relative_error_with_residual, if x.pareto_with_residual { "*" } else { " " }),
+        ),
+        ("wall time per step, modes only", &|x: &study::response::ResponseRow| x.step_time_s.map_or("refused".into(), fmt_time)),
+        ("wall time per step with residual flexibility", &|x: &study::response::ResponseRow| x.step_time_with_residual_s.map_or("refused".into(), fmt_time)),
+        ("modes", &|x: &study::response::ResponseRow| x.modes.to_string()),
+    ] {
+        let _ = writeln!(o, "   {title}:");
+        let mut line = format!("   {:>13}", "l_max \\ k_max");
+        for k in &ks {
+            let _ = write!(line, " {k:>10}");
+        }
+        let _ = writeln!(o, "{line}");
+        for l in &ls {
+            let mut line = format!("   {l:>13}");
+            for k in &ks {
+                let c = b.rows.iter().find(|x| x.k_max == *k && x.l_max == *l).map(cell).unwrap_or_default();
+                let _ = write!(line, " {c:>10}");
+            }
+            let _ = writeln!(o, "{line}");
+        }
+    }
+}
+
+/// The theory lever: Kirchhoff against converged Mindlin frequencies, with each theory's build time.
+fn theory_table(o: &mut String, t: &study::TheoryComparison) {
+    let rf = &t.mindlin_reference;
+    let _ = writeln!(
+        o,
+        "\nPlate theory: Kirchhoff against Mindlin (κ = {:.4}), same edges; the scene is {}",
+        t.shear_correction, t.scene_theory
+    );
+    let _ = writeln!(
+        o,
+        "   error: {}\n   reference: Mindlin, {} splines per field; its difference from {} and {}, {:.1e}, bounds its own error",
+        t.error_measure, rf.radial_splines, rf.check_radial_splines[0], rf.check_radial_splines[1], rf.uncertainty
+    );
+    if let Some(n) = &t.note {
+        let _ = writeln!(o, "   note: {n}");
+    }
+    let _ = writeln!(
+        o,
+        "   {:>8} {:>14} {:>14} {:>16}",
+        "⟨k,l⟩", "Kirchhoff Hz", "Mindlin Hz", "Kirchhoff error"
+    );
+    for row in &t.rows {
+        let _ = writeln!(
+            o,
+            "   {:>8} {:>14} {:>14.3} {:>16}",
+            format!("⟨{},{}⟩", row.mode.k, row.mode.l),
+            row.kirchhoff_hz.map_or("—".into(), |f| format!("{f:.3}")),
+            row.mindlin_hz,
+            row.kirchhoff_error
+                .map_or("—".into(), |e| format!("{:+.3}%", 100.0 * e))
+        );
+    }
+    for c in t.kirchhoff.iter().chain(std::iter::once(&t.mindlin)) {
+        let _ = writeln!(
+            o,
+            "   {} ({} radial splines): build {}",
+            c.theory,
+            c.radial_splines,
+            fmt_time(c.build_time_s)
+        );
+    }
+    if let (Some(e), Some(m), Some(ratio)) =
+        (t.max_kirchhoff_error, t.worst_mode, t.mindlin_cost_ratio)
+    {
+        let _ = writeln!(
+            o,
+            "   Kirchhoff's largest error {:.3}% at ⟨{},{}⟩; Mindlin costs {ratio:.1}× its build time",
+            100.0 * e,
+            m.k,
+            m.l
+        );
+    }
 }

@@ -60,12 +60,6 @@ pub enum ModelError {
     /// The Mindlin modes could not be computed.
     #[error("plate.theory = mindlin: {0} (plate.radial_splines is the count per field)")]
     Mindlin(#[from] super::mindlin::MindlinError),
-    /// A consumer of the modes that does not take Mindlin modes yet.
-    #[error("plate.theory = mindlin is not supported by {what}: it would use Kirchhoff quantities with Mindlin modes (docs/mindlin.md). Set plate.theory: kirchhoff for {what}")]
-    MindlinNotWired {
-        /// The command or part that refuses (`study`, `plot`).
-        what: &'static str,
-    },
     /// A key switched on that the dynamics do not have for Mindlin modes.
     #[error("{key} is not supported with plate.theory = mindlin: {why} (docs/mindlin.md). Switch {key} off or set plate.theory: kirchhoff")]
     MindlinKeyNotWired {

@@ -9,8 +9,8 @@
 //! [`mindlin`] computes the thick-plate (Mindlin) modes per k by the same
 //! radial machinery; with `plate.theory: mindlin` the model's modes are
 //! those (docs/mindlin.md); the dynamics and `stability` take them (node
-//! frames turned by ψ, body data with the rotary inertia), `study` and
-//! `plot` refuse them ([`PlateModel::require_kirchhoff`]). [`in_plane`]
+//! frames turned by ψ, body data with the rotary inertia), `plot` draws
+//! their w, `study` measures them. [`in_plane`]
 //! computes the in-plane (plane-stress) modes by the same machinery; `modes`
 //! lists them ([`PlateModel::bending_and_in_plane`]), and
 //! [`PlateModel::new`] refuses them for the dynamics, which do not carry
@@ -143,16 +143,6 @@ impl PlateModel {
     /// `radial` ([`Mode::radial`]); `None` under Kirchhoff theory.
     pub fn mindlin_mode(&self, radial: usize) -> Option<&mindlin::MindlinMode> {
         self.mindlin.get(radial)
-    }
-
-    /// Refuse Mindlin modes for `what` (a command or part that would use
-    /// Kirchhoff quantities — the rotations −∇w, the body terms of eq. (11)
-    /// without rotary inertia — with them).
-    pub fn require_kirchhoff(&self, what: &'static str) -> Result<(), ModelError> {
-        match self.theory() {
-            PlateTheory::Kirchhoff => Ok(()),
-            PlateTheory::Mindlin => Err(ModelError::MindlinNotWired { what }),
-        }
     }
 
     /// Refuse `plate.centrifugal_stiffening: true` with Mindlin modes: the

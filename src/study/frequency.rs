@@ -2,18 +2,21 @@
 //! model build time.
 //!
 //! For each spline count, and for `auto` (per k the count whose estimated
-//! error reaches `plate.frequency_tolerance`, the default), the plate's requested ⟨k, l⟩ are computed and compared
+//! error reaches `plate.frequency_tolerance`, the default; under Mindlin
+//! theory 120 per field), the plate's requested ⟨k, l⟩ are computed and compared
 //! with a reference model of the same plate at `spline_reference_factor` × the
 //! largest count studied. The reference's own error is bounded by its
 //! difference from a model at half its spline count: the Ritz frequencies
 //! converge from above at O(n⁻⁴), so that difference is ≈ 15× the reference's
 //! discretisation error — as long as round-off does not dominate, which it
 //! does beyond ~128 splines (docs/study.md), hence the full plan's factor 2.
+//! Under Mindlin theory the counts are per field (w, ψ_r, ψ_θ) and the
+//! reference is chosen and checked as [`reference_splines`] says.
 
 use super::timing::min_time;
 use super::{mark_pareto, recommend, Candidate, Recommendation, StudyError, StudyPlan};
-use crate::config::{PlateConfig, RadialSplines};
-use crate::model::PlateModel;
+use crate::config::{PlateConfig, PlateTheory, RadialSplines};
+use crate::model::{mindlin, PlateModel};
 use serde::Serialize;
 use std::collections::BTreeMap;
 
@@ -44,11 +47,16 @@ pub struct FrequencyRow {
 /// The reference model.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct FrequencyReference {
-    /// Radial splines of the reference model.
+    /// Radial splines of the reference model (per field under Mindlin theory).
     pub radial_splines: usize,
     /// The half-resolution model used to bound the reference's own error.
     pub check_radial_splines: usize,
-    /// max relative |f_ref − f_check| / f_ref: an upper bound of the reference's error.
+    /// Under Mindlin theory, the double-resolution model that also bounds it
+    /// (its round-off; absent under Kirchhoff theory).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub finer_check_radial_splines: Option<usize>,
+    /// max relative |f_ref − f_check| / f_ref (under Mindlin theory the larger
+    /// of both checks'): an upper bound of the reference's error.
     pub uncertainty: f64,
     /// The reference frequencies, Hz, per ⟨k, l⟩ (each pair listed once).
     pub frequencies_hz: Vec<(ModeId, f64)>,
@@ -80,8 +88,11 @@ pub struct FrequencyAxis {
     pub default_setting: FrequencySetting,
 }
 
+/// Frequencies (rad/s) per ⟨k, l⟩.
+pub(crate) type Omegas = BTreeMap<(u32, u32), f64>;
+
 /// Frequencies (rad/s) per ⟨k, l⟩ of a model.
-fn omegas(model: &PlateModel) -> BTreeMap<(u32, u32), f64> {
+pub(crate) fn omegas(model: &PlateModel) -> Omegas {
     model
         .radial_shapes()
         .iter()
@@ -95,7 +106,7 @@ fn with_splines(plate: &PlateConfig, n: usize) -> PlateConfig {
     p
 }
 
-fn max_error(
+pub(crate) fn max_error(
     got: &BTreeMap<(u32, u32), f64>,
     reference: &BTreeMap<(u32, u32), f64>,
 ) -> (f64, ModeId) {
@@ -112,7 +123,10 @@ fn max_error(
 /// The spline counts studied for this plate: the plan's, less those below
 /// the plate's minimum (highest requested nodal circle and edge conditions).
 pub(crate) fn spline_grid(plate: &PlateConfig, plan: &StudyPlan) -> Vec<usize> {
-    let min = plate.min_radial_splines();
+    let min = match plate.theory {
+        PlateTheory::Kirchhoff => plate.min_radial_splines(),
+        PlateTheory::Mindlin => plate.min_radial_splines().max(mindlin::MIN_SPLINES),
+    };
     let mut grid: Vec<usize> = plan.splines.iter().copied().filter(|&n| n >= min).collect();
     if grid.is_empty() {
         grid = vec![min, 2 * min, 4 * min];
@@ -120,6 +134,52 @@ pub(crate) fn spline_grid(plate: &PlateConfig, plan: &StudyPlan) -> Vec<usize> {
     grid.sort_unstable();
     grid.dedup();
     grid
+}
+
+/// The reference's spline count and, under Mindlin theory, its finer check.
+///
+/// Kirchhoff: `spline_reference_factor` × the largest count (at most 400).
+/// Mindlin: 2 × the largest count, at most [`mindlin::DEFAULT_SPLINES`]
+/// (`auto`'s 120 per field) — beyond about 100 per field round-off outgrows
+/// the discretisation error (bench disc, k ≤ 4, l ≤ 1, against the exact
+/// roots: 64: 1.3e-8, 96: 5.9e-9, 120: 1.9e-8, 240: 1.4e-7; docs/study.md),
+/// so the reference is also checked against twice its count, which shows
+/// that round-off.
+fn reference_splines(
+    plate: &PlateConfig,
+    plan: &StudyPlan,
+    largest: usize,
+) -> (usize, Option<usize>) {
+    match plate.theory {
+        PlateTheory::Kirchhoff => (
+            (plan.spline_reference_factor * largest).min(crate::study::MAX_RADIAL_SPLINES),
+            None,
+        ),
+        PlateTheory::Mindlin => {
+            let n = (2 * largest).min(mindlin::DEFAULT_SPLINES);
+            (n, Some((2 * n).min(crate::study::MAX_RADIAL_SPLINES)))
+        }
+    }
+}
+
+/// The reference frequencies per ⟨k, l⟩ at `splines` and their uncertainty:
+/// the largest relative difference from the model at `check` (and at `finer`).
+pub(crate) fn reference(
+    plate: &PlateConfig,
+    splines: usize,
+    check: usize,
+    finer: Option<usize>,
+) -> Result<(Omegas, f64), StudyError> {
+    let w_ref = omegas(&PlateModel::new(&with_splines(plate, splines))?);
+    let (mut uncertainty, _) = max_error(
+        &omegas(&PlateModel::new(&with_splines(plate, check))?),
+        &w_ref,
+    );
+    if let Some(n) = finer {
+        let (e, _) = max_error(&omegas(&PlateModel::new(&with_splines(plate, n))?), &w_ref);
+        uncertainty = uncertainty.max(e);
+    }
+    Ok((w_ref, uncertainty))
 }
 
 pub(crate) fn run(
@@ -131,16 +191,12 @@ pub(crate) fn run(
     let largest = *grid.last().ok_or(StudyError::EmptyGrid {
         axis: "radial_splines",
     })?;
-    let reference_splines =
-        (plan.spline_reference_factor * largest).min(crate::study::MAX_RADIAL_SPLINES);
+    let (reference_splines, finer_check) = reference_splines(plate, plan, largest);
     let check_splines = reference_splines / 2;
     tick(&format!(
         "reference model, {reference_splines} radial splines"
     ));
-    let reference = PlateModel::new(&with_splines(plate, reference_splines))?;
-    let check = PlateModel::new(&with_splines(plate, check_splines))?;
-    let w_ref = omegas(&reference);
-    let (uncertainty, _) = max_error(&omegas(&check), &w_ref);
+    let (w_ref, uncertainty) = reference(plate, reference_splines, check_splines, finer_check)?;
 
     let mut rows = Vec::new();
     let settings = grid
@@ -191,6 +247,7 @@ pub(crate) fn run(
         reference: FrequencyReference {
             radial_splines: reference_splines,
             check_radial_splines: check_splines,
+            finer_check_radial_splines: finer_check,
             uncertainty,
             frequencies_hz: w_ref
                 .iter()

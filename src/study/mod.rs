@@ -8,7 +8,16 @@
 //! 2. [`response`]: steady deflection at the load point vs the mode set
 //!    (k ≤ k_max, l ≤ l_max), cost = wall time per step;
 //! 3. [`trajectory`]: trajectory error vs integrator and output rate, cost =
-//!    wall time per simulated second.
+//!    wall time per simulated second;
+//!
+//! and the plate theory as a lever ([`theory`]): Kirchhoff's frequency error
+//! against converged Mindlin frequencies, with each theory's build time.
+//!
+//! Under `plate.theory: mindlin` axes 1 and 3 run on the Mindlin modes and
+//! axis 2 is skipped (`mode_count` is null, the reason in `notes`): a point
+//! force's Mindlin deflection at the force is infinite (the shear deflection
+//! −F ln r / (2π κGh)), so the steady deflection at the load point does not
+//! converge with the mode set.
 //!
 //! Every reference carries an uncertainty (its own estimated error), and a
 //! setting is recommended for a target error only if its measured error plus
@@ -22,10 +31,11 @@
 
 pub(crate) mod frequency;
 pub mod response;
+pub mod theory;
 pub(crate) mod timing;
 pub mod trajectory;
 
-use crate::config::{Config, IntegratorKind, NodePosition, WrenchConfig};
+use crate::config::{Config, IntegratorKind, NodePosition, PlateTheory, WrenchConfig};
 use crate::dynamics::SimulationError;
 use crate::model::ModelError;
 use serde::Serialize;
@@ -34,6 +44,7 @@ use thiserror::Error;
 
 pub use frequency::FrequencyAxis;
 pub use response::ResponseAxis;
+pub use theory::TheoryComparison;
 pub use trajectory::TrajectoryAxis;
 
 /// Version of the JSON document (`study --json`); bumped on any incompatible change.
@@ -41,6 +52,9 @@ pub(crate) const SCHEMA: &str = "annular_plate.study/1";
 
 /// Largest `plate.radial_splines` the configuration accepts.
 pub(crate) const MAX_RADIAL_SPLINES: usize = 400;
+
+/// Why axis 2 is skipped under Mindlin theory (in the report's `notes`).
+pub const MINDLIN_MODE_COUNT_NOTE: &str = "mode_count (axis 2) is skipped under plate.theory mindlin: a point force's Mindlin deflection is infinite at the force (shear deflection −F ln r / (2π κGh)), so the steady deflection at the load point does not converge with the mode set";
 
 /// Why a study could not run.
 #[derive(Debug, Error)]
@@ -167,10 +181,15 @@ impl StudyPlan {
     pub fn units(&self, config: &Config) -> usize {
         let a = 2 + frequency::spline_grid(&config.plate, self).len();
         let (k_ref, l_ref) = self.response_reference;
-        let b = 1 + self.k_max.iter().filter(|&&k| k <= k_ref).count()
-            * self.l_max.iter().filter(|&&l| l <= l_ref).count();
+        let b = match config.plate.theory {
+            PlateTheory::Kirchhoff => {
+                1 + self.k_max.iter().filter(|&&k| k <= k_ref).count()
+                    * self.l_max.iter().filter(|&&l| l <= l_ref).count()
+            }
+            PlateTheory::Mindlin => 0,
+        };
         let c = 3 + trajectory::integrators(config, self).len() * self.rates_hz.len();
-        a + b + c
+        a + b + c + 1
     }
 }
 
@@ -304,10 +323,16 @@ pub struct StudyReport {
     pub plan: StudyPlan,
     /// Axis 1: natural-frequency error against radial splines.
     pub radial_splines: FrequencyAxis,
-    /// Axis 2: steady deflection error against the mode set.
-    pub mode_count: ResponseAxis,
+    /// Axis 2: steady deflection error against the mode set (None under
+    /// Mindlin theory: the deflection at a point force does not converge; `notes`).
+    pub mode_count: Option<ResponseAxis>,
     /// Axis 3: trajectory error against integrator and rate.
     pub integrator: TrajectoryAxis,
+    /// Kirchhoff against Mindlin theory: model error against cost.
+    pub theory: TheoryComparison,
+    /// What the study left out and why (absent when empty).
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub notes: Vec<String>,
     /// Wall time of the whole study, s.
     pub wall_time_s: f64,
 }
@@ -345,9 +370,6 @@ pub fn run(
             detail: format!("targets must be positive, got {:?}", plan.targets),
         });
     }
-    if config.plate.theory == crate::config::PlateTheory::Mindlin {
-        return Err(ModelError::MindlinNotWired { what: "`study`" }.into());
-    }
     if !config.plate.in_plane_nodal_diameters.is_empty() {
         return Err(ModelError::InPlaneNotWired {
             nodal_diameters: config.plate.in_plane_nodal_diameters.clone(),
@@ -363,8 +385,16 @@ pub fn run(
     };
     let model_modes = config.plate.mode_count();
     let radial_splines = frequency::run(&config.plate, plan, &mut tick)?;
-    let mode_count = response::run(config, plan, &mut tick)?;
+    let mut notes = Vec::new();
+    let mode_count = match config.plate.theory {
+        PlateTheory::Kirchhoff => Some(response::run(config, plan, &mut tick)?),
+        PlateTheory::Mindlin => {
+            notes.push(MINDLIN_MODE_COUNT_NOTE.to_string());
+            None
+        }
+    };
     let integrator = trajectory::run(config, plan, &mut tick)?;
+    let theory = theory::run(&config.plate, plan, &mut tick)?;
     progress(total, total, "done");
     let p = &config.plate;
     Ok(StudyReport {
@@ -388,6 +418,8 @@ pub fn run(
         radial_splines,
         mode_count,
         integrator,
+        theory,
+        notes,
         wall_time_s: started.elapsed().as_secs_f64(),
     })
 }

@@ -181,9 +181,6 @@ pub fn animate(
 ) -> CliResult<AnimationInfo> {
     let model = PlateModel::new(&config.plate)
         .map_err(|e| CliError::Usage(format!("the params file's plate: {e}")))?;
-    model
-        .require_kirchhoff("`plot`")
-        .map_err(|e| CliError::Usage(format!("{e}")))?;
     let times = data.column("time")?;
     let chi = data.column("joint_position")?;
     // The work is the frames' (bounded by --max-frames), not the rows'.
@@ -262,10 +259,14 @@ impl View<'_> {
             self.side_view(&root, w, chi)?;
             self.node_frames(&root, q, chi)?;
             let style = (FONT, 18).into_font().color(&BLACK);
-            let caption = format!(
+            let mut caption = format!(
                 "t = {t:.4} s   top: colour ±{:.3e} m   side: deflection ×{:.3e}",
                 self.w_ref, self.scale
             );
+            if let Some(theory) = super::modes::theory_text(self.config) {
+                caption.push_str("   ");
+                caption.push_str(&theory);
+            }
             root.draw(&Text::new(caption, (10, 6), style))
                 .map_err(super::render::de)?;
             root.present().map_err(super::render::de)?;

@@ -84,91 +84,9 @@ pub(super) fn panels(r: &StudyReport) -> [PanelData; 3] {
             .collect(),
         uncertainty: a.reference.uncertainty,
     };
-    let b = &r.mode_count;
-    let mut ls: Vec<u32> = b.rows.iter().map(|x| x.l_max).collect();
-    ls.sort_unstable();
-    ls.dedup();
-    let pb = PanelData {
-        title: "2. load-point response vs mode set".into(),
-        x_desc: "wall time per step (s)".into(),
-        series: ls
-            .iter()
-            .enumerate()
-            .map(|(i, &l)| Series {
-                name: format!("l ≤ {l}"),
-                color: PALETTE[i % PALETTE.len()],
-                points: b
-                    .rows
-                    .iter()
-                    .filter(|x| x.l_max == l)
-                    .filter_map(|x| {
-                        Some((
-                            x.step_time_s?,
-                            floor(x.relative_error),
-                            format!("k ≤ {}", x.k_max),
-                        ))
-                    })
-                    .collect(),
-            })
-            .chain(ls.iter().enumerate().map(|(i, &l)| {
-                Series {
-                    name: format!("l ≤ {l} + residual"),
-                    color: PALETTE[(i + ls.len()) % PALETTE.len()],
-                    points: b
-                        .rows
-                        .iter()
-                        .filter(|x| x.l_max == l)
-                        .filter_map(|x| {
-                            Some((
-                                x.step_time_with_residual_s?,
-                                floor(x.relative_error_with_residual),
-                                format!("k ≤ {}", x.k_max),
-                            ))
-                        })
-                        .collect(),
-                }
-            }))
-            .collect(),
-        // One front over both variants of every set.
-        front: b
-            .rows
-            .iter()
-            .filter(|x| x.pareto)
-            .filter_map(|x| Some((x.step_time_s?, floor(x.relative_error))))
-            .chain(
-                b.rows
-                    .iter()
-                    .filter(|x| x.pareto_with_residual)
-                    .filter_map(|x| {
-                        Some((
-                            x.step_time_with_residual_s?,
-                            floor(x.relative_error_with_residual),
-                        ))
-                    }),
-            )
-            .collect(),
-        picks: b
-            .recommendations
-            .iter()
-            .filter_map(|x| {
-                let s = x.setting.as_ref()?;
-                let residual = if s.residual_flexibility {
-                    " + res."
-                } else {
-                    ""
-                };
-                Some((
-                    x.target,
-                    x.cost?,
-                    floor(x.error?),
-                    format!("k≤{}, l≤{}{residual}", s.k_max, s.l_max),
-                ))
-            })
-            .collect(),
-        uncertainty: b
-            .reference
-            .uncertainty_with_residual
-            .min(b.reference.uncertainty),
+    let pb = match &r.mode_count {
+        Some(b) => response_panel(b),
+        None => theory_panel(&r.theory),
     };
     let c = &r.integrator;
     let mut names: Vec<&str> = c.rows.iter().map(|x| x.integrator).collect();
@@ -436,5 +354,130 @@ impl Painter for ParetoPicture<'_> {
                 .map_err(de)?;
         }
         Ok(())
+    }
+}
+
+/// Axis 2's panel: the load-point response against the mode set.
+fn response_panel(b: &crate::study::ResponseAxis) -> PanelData {
+    let floor = |e: f64| e.max(ERROR_FLOOR);
+    let mut ls: Vec<u32> = b.rows.iter().map(|x| x.l_max).collect();
+    ls.sort_unstable();
+    ls.dedup();
+    PanelData {
+        title: "2. load-point response vs mode set".into(),
+        x_desc: "wall time per step (s)".into(),
+        series: ls
+            .iter()
+            .enumerate()
+            .map(|(i, &l)| Series {
+                name: format!("l ≤ {l}"),
+                color: PALETTE[i % PALETTE.len()],
+                points: b
+                    .rows
+                    .iter()
+                    .filter(|x| x.l_max == l)
+                    .filter_map(|x| {
+                        Some((
+                            x.step_time_s?,
+                            floor(x.relative_error),
+                            format!("k ≤ {}", x.k_max),
+                        ))
+                    })
+                    .collect(),
+            })
+            .chain(ls.iter().enumerate().map(|(i, &l)| {
+                Series {
+                    name: format!("l ≤ {l} + residual"),
+                    color: PALETTE[(i + ls.len()) % PALETTE.len()],
+                    points: b
+                        .rows
+                        .iter()
+                        .filter(|x| x.l_max == l)
+                        .filter_map(|x| {
+                            Some((
+                                x.step_time_with_residual_s?,
+                                floor(x.relative_error_with_residual),
+                                format!("k ≤ {}", x.k_max),
+                            ))
+                        })
+                        .collect(),
+                }
+            }))
+            .collect(),
+        // One front over both variants of every set.
+        front: b
+            .rows
+            .iter()
+            .filter(|x| x.pareto)
+            .filter_map(|x| Some((x.step_time_s?, floor(x.relative_error))))
+            .chain(
+                b.rows
+                    .iter()
+                    .filter(|x| x.pareto_with_residual)
+                    .filter_map(|x| {
+                        Some((
+                            x.step_time_with_residual_s?,
+                            floor(x.relative_error_with_residual),
+                        ))
+                    }),
+            )
+            .collect(),
+        picks: b
+            .recommendations
+            .iter()
+            .filter_map(|x| {
+                let s = x.setting.as_ref()?;
+                let residual = if s.residual_flexibility {
+                    " + res."
+                } else {
+                    ""
+                };
+                Some((
+                    x.target,
+                    x.cost?,
+                    floor(x.error?),
+                    format!("k≤{}, l≤{}{residual}", s.k_max, s.l_max),
+                ))
+            })
+            .collect(),
+        uncertainty: b
+            .reference
+            .uncertainty_with_residual
+            .min(b.reference.uncertainty),
+    }
+}
+
+/// Under Mindlin theory (axis 2 skipped) the second panel is the theory
+/// lever: Kirchhoff's largest frequency error against its build time, and
+/// Mindlin's (its reference uncertainty) against its own.
+fn theory_panel(t: &crate::study::TheoryComparison) -> PanelData {
+    let floor = |e: f64| e.max(ERROR_FLOOR);
+    let mut points = vec![(
+        t.mindlin.build_time_s,
+        floor(t.mindlin_reference.uncertainty),
+        "mindlin".to_string(),
+    )];
+    if let (Some(k), Some(e)) = (&t.kirchhoff, t.max_kirchhoff_error) {
+        points.push((k.build_time_s, floor(e), "kirchhoff".to_string()));
+    }
+    PanelData {
+        title: "2. plate theory (mode set skipped under Mindlin)".into(),
+        x_desc: "model build time (s)".into(),
+        front: {
+            let xy: Vec<(f64, f64)> = points.iter().map(|p| (p.1, p.0)).collect();
+            crate::study::mark_pareto(&xy)
+                .into_iter()
+                .zip(&points)
+                .filter(|(on, _)| *on)
+                .map(|(_, p)| (p.0, p.1))
+                .collect()
+        },
+        series: vec![Series {
+            name: "max frequency error vs Mindlin".into(),
+            color: PALETTE[0],
+            points,
+        }],
+        picks: vec![],
+        uncertainty: t.mindlin_reference.uncertainty,
     }
 }
