@@ -9,7 +9,7 @@
 
 mod support;
 
-use annular_plate::config::{Config, IntegratorKind};
+use annular_plate::config::{Config, IntegratorKind, PlateTheory};
 use annular_plate::dynamics::load_models::face_friction::face_kinematics;
 use annular_plate::dynamics::load_models::pad_config::PadsConfig;
 use annular_plate::dynamics::load_models::pad_outputs::PadOutputs;
@@ -21,9 +21,13 @@ use support::scene_files as scenes;
 /// The shipped file with a rigid lining (the closed forms here are the rigid
 /// pads'; with the file's lining shear: tests/squeal_with_lining_shear_is_bounded.rs),
 /// on `contact_exponential` at `contact_tolerance` 1e-6 (docs/dynamics.md:
-/// 1.7e-4 of the peak over 0.3 s against RK4 converged).
+/// 1.7e-4 of the peak over 0.3 s against RK4 converged), under Kirchhoff
+/// theory: the ring closed form below is written with the Kirchhoff face
+/// kinematics (u = −z∇w, R and R′ of W); the file ships Mindlin theory,
+/// whose one-contact closed form is tests/mindlin_pads.rs.
 fn rigid_lining() -> Config {
     let mut c = scenes::load("brake_squeal.yaml");
+    c.plate.theory = PlateTheory::Kirchhoff;
     c.section_mut::<PadsConfig>().unwrap().shear = None;
     c.simulation.integrator = IntegratorKind::ContactExponential;
     c.simulation.contact_tolerance = 1.0e-6;
