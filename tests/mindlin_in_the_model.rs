@@ -264,7 +264,7 @@ fn modes_warns_of_the_bench_disc_and_not_of_a_thin_plate() {
         vec![kirchhoff[0], kirchhoff[1], "-p", "plate.thickness:=0.002"],
     ] {
         let mut args = vec!["modes", BENCH];
-        args.extend(overrides);
+        args.extend(&overrides);
         let (ok, _, stderr) = run(&args);
         assert!(ok, "{stderr}");
         assert!(!stderr.contains("warning"), "{overrides:?}: {stderr}");
