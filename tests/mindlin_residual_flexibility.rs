@@ -307,3 +307,35 @@ fn kirchhoff_patch(a: &support::static_plate::StaticAnnulus, patch: &Patch) -> f
     }
     total
 }
+
+/// `plate.residual_patch_radius`: a number only under Mindlin theory, > 0 and
+/// at most half the annulus' width; `auto` is the thickness.
+#[test]
+fn the_patch_radius_key_is_checked_and_named() {
+    use annular_plate::config::Config;
+    let yaml = |theory: &str, value: &str| {
+        format!(
+            "/**:\n  ros__parameters:\n    plate:\n      inner_radius: 0.07\n      outer_radius: 0.153\n      thickness: 0.0181\n      theory: {theory}\n      residual_patch_radius: {value}\n"
+        )
+    };
+    let read =
+        |theory: &str, value: &str| Config::from_yaml_str(&yaml(theory, value), "annular_plate");
+    let c = read("mindlin", "auto").expect("auto");
+    assert_eq!(c.plate.residual_patch_half_width(), 0.0181);
+    let c = read("mindlin", "0.01").expect("a number");
+    assert_eq!(c.plate.residual_patch_half_width(), 0.01);
+    for (theory, value) in [
+        ("kirchhoff", "0.01"),
+        ("mindlin", "0.05"),
+        ("mindlin", "0.0"),
+        ("mindlin", "-0.01"),
+        ("mindlin", "wide"),
+    ] {
+        let message = match read(theory, value) {
+            Ok(_) => panic!("{theory} {value} accepted"),
+            Err(e) => e.to_string(),
+        };
+        println!("{theory}, {value}: {message}");
+        assert!(message.contains("plate.residual_patch_radius"), "{message}");
+    }
+}
