@@ -317,7 +317,7 @@ fn band_solve(l: &[f64], bw: usize, x: &mut [f64]) {
 }
 
 /// The static Mindlin harmonics between all pairs of `patches`, summed to
-/// [`TOLERANCE`] (module doc).
+/// `TOLERANCE` (module doc).
 pub fn patch_harmonics(disc: &MindlinDiscretisation, patches: &[LoadPatch]) -> PatchHarmonics {
     let plate = disc.plate();
     let free_free = plate.inner_edge == super::MindlinEdge::Free
