@@ -117,6 +117,7 @@ fn modes_lists_the_exact_mindlin_frequencies_of_the_bench_disc() {
 fn the_mindlin_modal_mass_includes_the_rotary_inertia() {
     let text = std::fs::read_to_string(BENCH).unwrap();
     let mut config = Config::from_yaml_str(&text, NODE).expect("bench");
+    config.plate.theory = PlateTheory::Kirchhoff;
     let kirchhoff = PlateModel::new(&config.plate).expect("kirchhoff");
     config.plate.theory = PlateTheory::Mindlin;
     let mindlin = PlateModel::new(&config.plate).expect("mindlin");
@@ -160,10 +161,10 @@ fn the_mindlin_modal_mass_includes_the_rotary_inertia() {
 }
 
 /// `stability` takes Mindlin modes with the pads (their face kinematics of ψ,
-/// tests/mindlin_pads.rs); the bench scene's residual flexibility is refused
-/// naming its key, and without it the map is written.
+/// tests/mindlin_pads.rs), with the bench scene's residual flexibility (load
+/// patches, docs/residual_flexibility.md) and without it.
 #[test]
-fn stability_maps_a_mindlin_scene_and_refuses_its_residual_flexibility_by_name() {
+fn stability_maps_a_mindlin_scene_with_and_without_residual_flexibility() {
     let args = |extra: &'static str| {
         vec![
             "stability",
@@ -178,22 +179,23 @@ fn stability_maps_a_mindlin_scene_and_refuses_its_residual_flexibility_by_name()
             extra,
         ]
     };
-    let (ok, _, stderr) = run(&args("plate.residual_flexibility:=true"));
-    assert!(
-        !ok && stderr.contains("plate.residual_flexibility"),
-        "{stderr}"
-    );
-    assert!(!stderr.contains("panicked"), "{stderr}");
-    let (ok, stdout, stderr) = run(&args("plate.residual_flexibility:=false"));
-    assert!(ok, "{stderr}");
-    assert!(!stdout.is_empty(), "no map written");
+    for residual in [
+        "plate.residual_flexibility:=true",
+        "plate.residual_flexibility:=false",
+    ] {
+        let (ok, stdout, stderr) = run(&args(residual));
+        assert!(ok, "{residual}: {stderr}");
+        assert!(!stdout.is_empty(), "{residual}: no map written");
+    }
 }
 
 /// Kirchhoff's ⟨2, 0⟩ of the bench disc against the exact Mindlin root: the
-/// model error the warning reports.
+/// model error the warning reports. The file ships Mindlin theory, so the
+/// Kirchhoff model of its disc is asked for with `-p plate.theory:=kirchhoff`.
 #[test]
 fn modes_warns_of_the_bench_disc_and_not_of_a_thin_plate() {
-    let (ok, _, stderr) = run(&["modes", BENCH]);
+    let kirchhoff = ["-p", "plate.theory:=kirchhoff"];
+    let (ok, _, stderr) = run(&["modes", BENCH, kirchhoff[0], kirchhoff[1]]);
     assert!(ok, "{stderr}");
     let warning = stderr
         .lines()
@@ -204,7 +206,8 @@ fn modes_warns_of_the_bench_disc_and_not_of_a_thin_plate() {
 
     // The number it states: Kirchhoff / exact Mindlin − 1 for the worst of the lowest three ⟨k, l⟩.
     let text = std::fs::read_to_string(BENCH).unwrap();
-    let config = Config::from_yaml_str(&text, NODE).expect("bench");
+    let mut config = Config::from_yaml_str(&text, NODE).expect("bench");
+    config.plate.theory = PlateTheory::Kirchhoff;
     let model = PlateModel::new(&config.plate).expect("kirchhoff");
     let worst = model
         .thickness_warning()
@@ -220,13 +223,15 @@ fn modes_warns_of_the_bench_disc_and_not_of_a_thin_plate() {
         worst.relative_error()
     );
     assert!(e_exact > 0.01, "{e_exact}");
-    // Mindlin modes and a thin version of the disc (h = 2 mm, h/b = 0.024) do not warn.
+    // Mindlin modes (the file as shipped) and a thin Kirchhoff version of the
+    // disc (h = 2 mm, h/b = 0.024) do not warn.
     for overrides in [
-        ["-p", "plate.theory:=mindlin"],
-        ["-p", "plate.thickness:=0.002"],
+        vec!["-p", "plate.theory:=mindlin"],
+        vec![],
+        vec![kirchhoff[0], kirchhoff[1], "-p", "plate.thickness:=0.002"],
     ] {
         let mut args = vec!["modes", BENCH];
-        args.extend(overrides);
+        args.extend(&overrides);
         let (ok, _, stderr) = run(&args);
         assert!(ok, "{stderr}");
         assert!(!stderr.contains("warning"), "{overrides:?}: {stderr}");

@@ -5,7 +5,7 @@
 
 mod support;
 
-use annular_plate::config::{Config, IntegratorKind, NodePosition, WrenchConfig};
+use annular_plate::config::{Config, IntegratorKind, NodePosition, PlateTheory, WrenchConfig};
 use annular_plate::dynamics::load_models::pad_config::PadsConfig;
 use annular_plate::dynamics::load_models::point_spring::SpringsConfig;
 use annular_plate::dynamics::{Simulation, Stepper};
@@ -166,8 +166,12 @@ fn a_saved_state_on_contact_exponential_carries_its_span_length_and_replays_bit_
     // brake_squeal with a rigid lining: the friction direction's remainder
     // makes the spans third-order and shorter than a step. The step starts
     // from the span length in the State, so a fresh stepper continues alike.
+    // Kirchhoff theory: the Mindlin scene (as shipped) re-refines from whole
+    // steps at step 400 to the same state bit for bit, so the last check
+    // below could not fail there.
     let config = || {
         let mut c = scene_files::load("brake_squeal.yaml");
+        c.plate.theory = PlateTheory::Kirchhoff;
         c.section_mut::<PadsConfig>().unwrap().shear = None;
         c.simulation.integrator = IntegratorKind::ContactExponential;
         c.simulation.contact_tolerance = 1.0e-6;

@@ -192,6 +192,17 @@ pub enum ConfigError {
         key: &'static str,
     },
 
+    /// `plate.residual_patch_radius` set on a Kirchhoff plate.
+    #[error("plate.residual_patch_radius is the half-width of a node's load patch under Mindlin theory (a Kirchhoff node's force is a point force), but plate.theory = kirchhoff; set plate.theory: mindlin or leave the key at auto")]
+    PatchRadiusNeedsMindlin,
+
+    /// `plate.residual_patch_radius` neither `auto` nor a number.
+    #[error("plate.residual_patch_radius = {found} must be `auto` or a number of metres")]
+    PatchRadiusNotAutoOrNumber {
+        /// The value given, as text.
+        found: String,
+    },
+
     /// A string value outside its key's declared choices.
     #[error("{key} = {value} is not one of: {}", allowed.join(", "))]
     UnknownChoice {

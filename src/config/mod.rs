@@ -154,6 +154,10 @@ pub struct PlateConfig {
     /// Add the truncated modes' static deflection at the node frames
     /// (`plate.residual_flexibility`, docs/residual_flexibility.md).
     pub residual_flexibility: bool,
+    /// Half-width c of a node's load patch under Mindlin theory, m
+    /// (`plate.residual_patch_radius`; None: `auto`, see
+    /// [`PlateConfig::residual_patch_half_width`]).
+    pub residual_patch_radius: Option<f64>,
     /// Kirchhoff or Mindlin modes (`plate.theory`).
     pub theory: PlateTheory,
     /// Mindlin's shear correction κ (`plate.shear_correction`; no effect
@@ -197,12 +201,25 @@ impl PlateConfig {
             radial_splines: RadialSplines::from_declared_default(),
             frequency_tolerance: DEFAULT_FREQUENCY_TOLERANCE,
             residual_flexibility: const { default_bool("plate.residual_flexibility") },
+            residual_patch_radius: None,
             theory: PlateTheory::from_name(default_str("plate.theory"))
                 .expect("the declared default is a theory"),
             shear_correction: const { default_f64("plate.shear_correction") },
             in_plane_nodal_diameters: indices("plate.in_plane_nodal_diameters"),
             in_plane_orders: indices("plate.in_plane_orders"),
         }
+    }
+
+    /// The half-width c of a node's load patch under Mindlin theory
+    /// (docs/residual_flexibility.md): `plate.residual_patch_radius`, or for
+    /// `auto` the thickness h (Mindlin theory does not resolve a load finer
+    /// than h: a load spreads about 45° through the thickness), at most half
+    /// the annulus' width.
+    pub fn residual_patch_half_width(&self) -> f64 {
+        self.residual_patch_radius.unwrap_or_else(|| {
+            self.thickness
+                .min(0.5 * (self.outer_radius - self.inner_radius))
+        })
     }
 
     /// Smallest `radial_splines` that resolves the highest requested nodal

@@ -91,6 +91,7 @@ pub(super) fn read_plate(r: &Reader) -> Result<PlateConfig, ConfigError> {
         radial_splines,
         frequency_tolerance,
         residual_flexibility: r.bool("plate.residual_flexibility")?,
+        residual_patch_radius: read_patch_radius(r, theory, outer - inner)?,
         theory,
         shear_correction,
         in_plane_nodal_diameters,
@@ -135,6 +136,39 @@ pub(super) fn read_plate(r: &Reader) -> Result<PlateConfig, ConfigError> {
     }
     plate.damping = damping;
     Ok(plate)
+}
+
+/// `plate.residual_patch_radius`: `auto` (None) or a number of metres,
+/// > 0 and at most half the annulus' `width`; only with Mindlin theory.
+fn read_patch_radius(
+    r: &Reader,
+    theory: PlateTheory,
+    width: f64,
+) -> Result<Option<f64>, ConfigError> {
+    const KEY: &str = "plate.residual_patch_radius";
+    if !r.has(KEY) {
+        return Ok(None);
+    }
+    if let Ok(name) = r.string(KEY) {
+        return match name.trim() {
+            "auto" => Ok(None),
+            _ => Err(ConfigError::PatchRadiusNotAutoOrNumber {
+                found: format!("\"{name}\""),
+            }),
+        };
+    }
+    let c = r.positive(KEY)?;
+    if c > 0.5 * width {
+        return Err(ConfigError::AboveMaximum {
+            key: KEY.into(),
+            value: c,
+            max: 0.5 * width,
+        });
+    }
+    if theory != PlateTheory::Mindlin {
+        return Err(ConfigError::PatchRadiusNeedsMindlin);
+    }
+    Ok(Some(c))
 }
 
 /// `plate.radial_splines`: `auto` or an integer count in 0..=400 (the

@@ -58,8 +58,16 @@ pub struct NodeShape {
 impl NodeFrame {
     /// The frame at `p` on the surface at `z` (0: the mid-plane). Under
     /// Mindlin theory its tilt and [`NodeFrame::gradient_phi`] are of the
-    /// rotation ψ of the normal ([`mindlin_tilt`]), not of the slope ∇w.
-    pub(super) fn new(model: &PlateModel, kind: NodeKind, p: NodePosition, z: f64) -> NodeFrame {
+    /// rotation ψ of the normal ([`mindlin_tilt`]), not of the slope ∇w; with
+    /// a load patch of half-width `patch` (m; Mindlin with residual
+    /// flexibility) its w and ∂w/∂φ are the patch means ([`patch_means`]).
+    pub(super) fn new(
+        model: &PlateModel,
+        kind: NodeKind,
+        p: NodePosition,
+        z: f64,
+        patch: Option<f64>,
+    ) -> NodeFrame {
         let radius = model.radius_at(p.radial);
         let angle = p.angular * TAU;
         let values: Vec<ShapeValue> = (0..model.n_modes())
@@ -84,7 +92,27 @@ impl NodeFrame {
                 frame.shapes[i].tilt = mindlin_tilt(&mode.field(m.shape, radius, angle), angle);
             }
         }
+        if let Some(c) = patch {
+            frame.patch_means(model, c);
+        }
         frame
+    }
+
+    /// Replace each Mindlin mode's w and ∂w/∂φ at the node by its mean over
+    /// the node's load patch of half-width `c` (docs/residual_flexibility.md,
+    /// "Under Mindlin theory"): W̄ Θ(φ) sinc kβ and W̄ Θ′(φ) sinc kβ, W̄ the
+    /// radial patch mean of W. Tilts stay point values.
+    fn patch_means(&mut self, model: &PlateModel, c: f64) {
+        let patch = model.load_patch(self.radius, c);
+        for (i, m) in model.modes().iter().enumerate() {
+            if model.mindlin_mode(m.radial).is_none() {
+                continue;
+            }
+            let mean = model.patch_mean_w(m.radial, &patch) * patch.angular_factor(m.k);
+            let (t, dt) = m.shape.eval(m.k, self.angle);
+            self.shapes[i].w = mean * t;
+            self.w_phi[i] = mean * dt;
+        }
     }
 
     /// The frame at (r, φ) on the surface at `z` from the shapes' values

@@ -11,7 +11,8 @@
 //! interpolation: O(1) per pair and step.
 
 use super::node_frame::NodeFrame;
-use crate::model::{PlateModel, ResidualKernel};
+use crate::model::mindlin::PatchHarmonics;
+use crate::model::{PlateModel, ResidualKernel, StaticHarmonics};
 use std::f64::consts::PI;
 
 /// Intervals of the angle table on [0, π].
@@ -50,6 +51,33 @@ impl AngleTable {
     }
 }
 
+/// The static harmonics of the node radii: of points (Kirchhoff) or of load
+/// patches (Mindlin).
+enum Kernels {
+    Points(StaticHarmonics),
+    Patches(PatchHarmonics),
+}
+
+impl Kernels {
+    fn new(model: &PlateModel, radii: &[f64], patch: Option<f64>) -> Kernels {
+        match patch {
+            None => Kernels::Points(model.static_harmonics(radii)),
+            Some(c) => Kernels::Patches(
+                model
+                    .mindlin_patch_harmonics(radii, c)
+                    .expect("the model was built on this Mindlin discretisation"),
+            ),
+        }
+    }
+
+    fn between(&self, model: &PlateModel, a: usize, b: usize) -> ResidualKernel {
+        match self {
+            Kernels::Points(h) => model.residual_kernel(h, a, b),
+            Kernels::Patches(h) => model.mindlin_residual_kernel(h, a, b),
+        }
+    }
+}
+
 /// One pair's compliance.
 #[derive(Debug, Clone)]
 enum PairCompliance {
@@ -70,10 +98,14 @@ pub struct ResidualCompliance {
 }
 
 impl ResidualCompliance {
+    /// The compliances between the nodes `ale` and `lagrange`: between
+    /// points (Kirchhoff, `patch` None) or between load patches of half-width
+    /// `patch` (m; Mindlin, [`PlateModel::mindlin_residual_kernel`]).
     pub fn new(
         model: &PlateModel,
         ale: &[NodeFrame],
         lagrange: &[NodeFrame],
+        patch: Option<f64>,
     ) -> ResidualCompliance {
         let nodes: Vec<&NodeFrame> = ale.iter().chain(lagrange).collect();
         let n = nodes.len();
@@ -88,7 +120,7 @@ impl ResidualCompliance {
                 }
             })
             .collect();
-        let harmonics = model.static_harmonics(&radii);
+        let kernels = Kernels::new(model, &radii, patch);
         let mut pairs = Vec::with_capacity(n * n);
         let mut tables = Vec::new();
         // Tables are shared by pairs of the same radii (either order: C is symmetric in the radii).
@@ -99,15 +131,13 @@ impl ResidualCompliance {
                 let (ia, ib) = (index[a], index[b]);
                 let key = (ia.min(ib), ia.max(ib));
                 if na.kind == nb.kind {
-                    let kernel = model.residual_kernel(&harmonics, ia, ib);
+                    let kernel = kernels.between(model, ia, ib);
                     pairs.push(PairCompliance::Constant(kernel.at(na.angle - nb.angle)));
                 } else {
                     let table = match table_of.iter().find(|(k, _)| *k == key) {
                         Some(&(_, t)) => t,
                         None => {
-                            tables.push(AngleTable::new(
-                                &model.residual_kernel(&harmonics, key.0, key.1),
-                            ));
+                            tables.push(AngleTable::new(&kernels.between(model, key.0, key.1)));
                             table_of.push((key, tables.len() - 1));
                             tables.len() - 1
                         }

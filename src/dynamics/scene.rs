@@ -2,7 +2,7 @@
 //! node frames (with their mode shapes evaluated once), the joint drive, the
 //! reference-frame motion and the set of effects that motion needs.
 
-use crate::config::{Config, JointConfig, LimitsConfig};
+use crate::config::{Config, JointConfig, LimitsConfig, PlateTheory};
 use crate::model::PlateModel;
 
 use super::commands::InputRules;
@@ -71,13 +71,22 @@ impl Scene {
     pub fn new(config: &Config, model: PlateModel) -> Scene {
         let layout = ModeLayout::new(&model);
         let h = config.plate.thickness;
+        // Under Mindlin theory a node with residual flexibility is a load patch.
+        let patch = (config.plate.residual_flexibility && model.theory() == PlateTheory::Mindlin)
+            .then(|| config.plate.residual_patch_half_width());
         let ale_nodes: Vec<NodeFrame> = config
             .nodes
             .ale
             .iter()
             .enumerate()
             .map(|(j, &p)| {
-                NodeFrame::new(&model, NodeKind::Ale, p, config.nodes.ale_surface(j).z(h))
+                NodeFrame::new(
+                    &model,
+                    NodeKind::Ale,
+                    p,
+                    config.nodes.ale_surface(j).z(h),
+                    patch,
+                )
             })
             .collect();
         let lagrange_nodes: Vec<NodeFrame> = config
@@ -91,6 +100,7 @@ impl Scene {
                     NodeKind::Lagrange,
                     p,
                     config.nodes.lagrange_surface(j).z(h),
+                    patch,
                 )
             })
             .collect();
@@ -110,7 +120,7 @@ impl Scene {
         let polar_inertia = model.body().inertia[2][2];
         let residual = (config.plate.residual_flexibility
             && !(ale_nodes.is_empty() && lagrange_nodes.is_empty()))
-        .then(|| ResidualCompliance::new(&model, &ale_nodes, &lagrange_nodes));
+        .then(|| ResidualCompliance::new(&model, &ale_nodes, &lagrange_nodes, patch));
         let stiffening = config
             .centrifugal
             .stiffening

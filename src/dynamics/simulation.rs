@@ -571,8 +571,8 @@ pub fn tilt_rotation(tilt: [f64; 2]) -> UnitQuaternion<f64> {
     ))
 }
 
-/// Under Mindlin theory, refuse the keys whose terms are Kirchhoff's: the
-/// residual flexibility at the nodes, follower loads and the load models
+/// Under Mindlin theory, refuse the keys whose terms are Kirchhoff's:
+/// follower loads and the load models
 /// that do not take Mindlin modes ([`LoadModel::takes_mindlin_modes`],
 /// named by their section).
 ///
@@ -582,12 +582,6 @@ fn check_mindlin_scene(config: &Config, scene: &Scene) -> Result<(), ModelError>
         return Ok(());
     }
     let refuse = |key, why| Err(ModelError::MindlinKeyNotWired { key, why });
-    if scene.residual.is_some() {
-        return refuse(
-            "plate.residual_flexibility",
-            "Mindlin's static deflection under a point force is infinite at the force (the shear deflection −F ln r / (2π κGh)), so a node's residual compliance has no finite value",
-        );
-    }
     if config.loads.follower {
         return refuse(
             "loads.follower",

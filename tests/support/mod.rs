@@ -9,6 +9,7 @@ pub mod in_plane_exact;
 pub mod left_growth;
 pub mod library_plate;
 pub mod mindlin_exact;
+pub mod mindlin_static;
 pub mod one_contact;
 pub mod pair_quartic;
 pub mod quadrature;

@@ -102,7 +102,7 @@ impl Series {
 }
 
 /// `[f, f', f'', f''']` of `(r/c)^p`.
-fn power(p: f64, r: f64, c: f64) -> [f64; 4] {
+pub fn power(p: f64, r: f64, c: f64) -> [f64; 4] {
     let u = (r / c).powf(p);
     [
         u,
@@ -113,7 +113,7 @@ fn power(p: f64, r: f64, c: f64) -> [f64; 4] {
 }
 
 /// `[f, f', f'', f''']` of `(r/c)^p ((r/c)² − 1)` by Leibniz' rule.
-fn power_pair(p: f64, r: f64, c: f64) -> [f64; 4] {
+pub fn power_pair(p: f64, r: f64, c: f64) -> [f64; 4] {
     let g = power(p, r, c);
     let v = [
         (r - c) * (r + c) / (c * c),
@@ -624,7 +624,7 @@ fn lu_solve<const N: usize>(mut a: [[f64; N]; N], mut b: [f64; N]) -> [f64; N] {
 /// Row- and column-equilibrated solve with one step of iterative refinement;
 /// returns the solution (of the original system) and the normwise backward error
 /// `‖A y − b‖∞ / (‖A‖∞ ‖y‖∞ + ‖b‖∞)` of the equilibrated system.
-fn solve_refined<const N: usize>(a: &[[f64; N]; N], b: &[f64; N]) -> ([f64; N], f64) {
+pub fn solve_refined<const N: usize>(a: &[[f64; N]; N], b: &[f64; N]) -> ([f64; N], f64) {
     let mut s = *a;
     let mut rhs = *b;
     for (row, r) in s.iter_mut().zip(rhs.iter_mut()) {

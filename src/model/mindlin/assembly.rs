@@ -16,7 +16,7 @@ use faer::Mat;
 
 /// W's, Γ_r's and Γ_θ's coefficients.
 const FIELDS: usize = 3;
-const W: usize = 0;
+pub(super) const W: usize = 0;
 const GAMMA_R: usize = 1;
 const GAMMA_THETA: usize = 2;
 
@@ -30,7 +30,7 @@ pub struct MindlinDiscretisation {
 
 /// Per function at a point: the strains (e_r, e_θ, e_rθ, Γ_r, Γ_θ) and the
 /// inertia fields (W, Ψ_r, Ψ_θ).
-type Kinematics = ([f64; 5], [f64; 3]);
+pub(super) type Kinematics = ([f64; 5], [f64; 3]);
 
 impl MindlinDiscretisation {
     /// `splines` uniform cubic B-splines per field on [r_i, r_a].
@@ -57,12 +57,17 @@ impl MindlinDiscretisation {
         &self.plate
     }
 
+    /// The quadrature points of the basis (with the B-splines' derivatives).
+    pub(super) fn points(&self) -> &[QuadPoint] {
+        &self.points
+    }
+
     /// The B-spline basis shared by the three fields.
     pub fn basis(&self) -> &BSplineBasis {
         &self.basis
     }
 
-    fn fields(k: u32) -> usize {
+    pub(super) fn fields(k: u32) -> usize {
         if k == 0 {
             FIELDS - 1
         } else {
@@ -71,12 +76,12 @@ impl MindlinDiscretisation {
     }
 
     /// The coefficient index of B-spline j of `field` for k.
-    fn index(k: u32, field: usize, j: usize) -> usize {
+    pub(super) fn index(k: u32, field: usize, j: usize) -> usize {
         j * Self::fields(k) + field
     }
 
     /// The free coefficients of k: the columns of T as (coefficient, factor) lists.
-    fn free_columns(&self, k: u32) -> Vec<Vec<(usize, f64)>> {
+    pub(super) fn free_columns(&self, k: u32) -> Vec<Vec<(usize, f64)>> {
         let n = self.basis.len();
         let fields = Self::fields(k);
         let mut dropped = vec![false; fields * n];
@@ -132,7 +137,7 @@ impl MindlinDiscretisation {
     }
 
     /// Strains and inertia fields of B-spline `[v, v', v'']` of `field` at r.
-    fn kinematics(field: usize, k: f64, r: f64, [v, d1, d2]: [f64; 3]) -> Kinematics {
+    pub(super) fn kinematics(field: usize, k: f64, r: f64, [v, d1, d2]: [f64; 3]) -> Kinematics {
         match field {
             W => (
                 [

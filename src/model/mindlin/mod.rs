@@ -64,12 +64,14 @@
 mod assembly;
 mod error;
 mod model;
+mod residual;
 mod warning;
 
 pub use assembly::MindlinDiscretisation;
 pub use error::MindlinError;
 pub(crate) use model::build_model;
 pub use model::{mindlin_edge, mindlin_plate};
+pub use residual::{patch_harmonics, LoadPatch, PatchHarmonics};
 pub use warning::{ThicknessError, CHECKED_PAIRS, THICKNESS_WARNING_LEVEL};
 
 use super::bspline::BSplineBasis;

@@ -48,13 +48,20 @@ pub fn mindlin_plate(plate: &PlateConfig) -> MindlinPlate {
     }
 }
 
-/// Build the plate model of Mindlin modes (called by [`PlateModel::new`]).
-pub(crate) fn build_model(plate: &PlateConfig) -> Result<PlateModel, ModelError> {
+/// The discretisation of a configuration's Mindlin modes: `auto` is
+/// [`DEFAULT_SPLINES`] per field, a fixed `plate.radial_splines` the count.
+pub(crate) fn discretisation(plate: &PlateConfig) -> Result<MindlinDiscretisation, ModelError> {
     let splines = match plate.radial_splines {
         RadialSplines::Auto => DEFAULT_SPLINES,
         RadialSplines::Fixed(n) => n,
     };
-    let disc = MindlinDiscretisation::new(&mindlin_plate(plate), splines)?;
+    Ok(MindlinDiscretisation::new(&mindlin_plate(plate), splines)?)
+}
+
+/// Build the plate model of Mindlin modes (called by [`PlateModel::new`]).
+pub(crate) fn build_model(plate: &PlateConfig) -> Result<PlateModel, ModelError> {
+    let disc = discretisation(plate)?;
+    let splines = disc.basis().len();
     let mut ks = plate.nodal_diameters.clone();
     ks.sort_unstable();
     let mut ls = plate.nodal_circles.clone();
