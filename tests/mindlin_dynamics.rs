@@ -528,9 +528,6 @@ fn keys_whose_terms_are_kirchhoff_s_are_refused_naming_the_key() {
     );
     c.plate.residual_flexibility = false;
     assert!(Simulation::new(c.clone()).is_ok());
-    let mut thin = disc(0.0181, vec![2], vec![0]);
-    thin.centrifugal.stiffening = true;
-    assert!(refused(&thin).contains("plate.centrifugal_stiffening"));
     let mut follower = disc(0.0181, vec![2], vec![0]);
     follower.loads.follower = true;
     assert!(refused(&follower).contains("loads.follower"));
