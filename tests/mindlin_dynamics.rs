@@ -521,9 +521,6 @@ fn keys_whose_terms_are_kirchhoff_s_are_refused_naming_the_key() {
     // The bench scene's residual flexibility (its pads' contacts in series
     // with the load patches, tests/mindlin_residual_flexibility.rs) is taken.
     assert!(Simulation::new(c.clone()).is_ok());
-    let mut thin = disc(0.0181, vec![2], vec![0]);
-    thin.centrifugal.stiffening = true;
-    assert!(refused(&thin).contains("plate.centrifugal_stiffening"));
     let mut follower = disc(0.0181, vec![2], vec![0]);
     follower.loads.follower = true;
     assert!(refused(&follower).contains("loads.follower"));

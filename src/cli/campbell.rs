@@ -99,7 +99,6 @@ pub fn main(args: CampbellArgs) -> CliResult<()> {
         super::plot::check_output_path(p)?;
     }
     let model = PlateModel::new(&config.plate)?;
-    model.require_no_mindlin_stiffening(config.centrifugal.stiffening)?;
     let speeds = match &args.speeds {
         Some(text) => {
             let speeds = parse_range("--speeds", text)?;

@@ -113,7 +113,6 @@ impl Simulation {
     /// Build the model, the scene and the stepper of a validated configuration, at its initial state.
     pub fn new(config: Config) -> Result<Simulation, SimulationError> {
         let model = PlateModel::new(&config.plate)?;
-        model.require_no_mindlin_stiffening(config.centrifugal.stiffening)?;
         let scene = Scene::new(&config, model);
         check_mindlin_scene(&config, &scene)?;
         let settings = StepperSettings::from_config(&config);

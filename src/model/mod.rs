@@ -145,18 +145,6 @@ impl PlateModel {
         self.mindlin.get(radial)
     }
 
-    /// Refuse `plate.centrifugal_stiffening: true` with Mindlin modes: the
-    /// geometric stiffness of the prestress is derived for Kirchhoff modes only.
-    pub fn require_no_mindlin_stiffening(&self, stiffening: bool) -> Result<(), ModelError> {
-        if stiffening && self.theory() == PlateTheory::Mindlin {
-            return Err(ModelError::MindlinKeyNotWired {
-                key: "plate.centrifugal_stiffening",
-                why: "the geometric stiffness of the spinning prestress is derived for Kirchhoff modes only",
-            });
-        }
-        Ok(())
-    }
-
     /// Body data of eq. (11).
     pub fn body(&self) -> &BodyData {
         &self.body

@@ -15,12 +15,13 @@
 
 use super::build::eigen_shift;
 use super::eigen::lowest_modes;
+use super::mindlin::{self, MindlinDiscretisation};
 use super::prestress::LamePrestress;
 use super::quadrature::radial_points;
 use super::radial::{angular_norm, RadialDiscretisation};
-use super::resolution;
+use super::resolution::{self, lowest_pairs};
 use super::{ModelError, PlateModel};
-use crate::config::{CentrifugalConfig, PlateConfig};
+use crate::config::{CentrifugalConfig, PlateConfig, PlateTheory};
 use faer::Mat;
 
 /// Rotating-frame eigenvalues of one k over spin speed, in the full radial basis.
@@ -31,6 +32,8 @@ pub struct SpinningSpectrum {
     geometric: Mat<f64>,
     shift: f64,
     count: usize,
+    /// Mindlin's banded problem (shift-invert Lanczos where it is large).
+    mindlin: bool,
 }
 
 impl SpinningSpectrum {
@@ -41,12 +44,15 @@ impl SpinningSpectrum {
         k: u32,
         count: usize,
     ) -> SpinningSpectrum {
+        let prestress = LamePrestress::new(plate, centrifugal);
+        if plate.theory == PlateTheory::Mindlin {
+            return Self::mindlin(plate, &prestress, k, count);
+        }
         let rigidity =
             super::bending_rigidity(plate.youngs_modulus, plate.thickness, plate.poisson_ratio);
         let splines = spectrum_splines(plate, rigidity, k, count);
         let disc = RadialDiscretisation::new(plate, rigidity, splines);
         let (stiffness, mass) = disc.assemble(k);
-        let prestress = LamePrestress::new(plate, centrifugal);
         let geometric = disc.assemble_geometric(k, plate.thickness, |r| prestress.stresses(r));
         SpinningSpectrum {
             k,
@@ -55,6 +61,39 @@ impl SpinningSpectrum {
             geometric,
             shift: eigen_shift(plate, rigidity),
             count,
+            mindlin: false,
+        }
+    }
+
+    /// The same eigenproblem on the Mindlin discretisation of the model
+    /// (`plate.radial_splines` per field, `auto` = [`mindlin::DEFAULT_SPLINES`]):
+    /// K̄_g acts on w alone ([`MindlinDiscretisation::assemble_geometric`]).
+    /// The centrifugal force on the face displacement z ψ (a softening of
+    /// the rotary inertia, O((h/r)²)) is left out, as in the modal equations
+    /// the simulation steps (docs/mindlin.md).
+    fn mindlin(
+        plate: &PlateConfig,
+        prestress: &LamePrestress,
+        k: u32,
+        count: usize,
+    ) -> SpinningSpectrum {
+        let splines = plate
+            .radial_splines
+            .fixed()
+            .unwrap_or(mindlin::DEFAULT_SPLINES);
+        let mp = mindlin::mindlin_plate(plate);
+        let disc = MindlinDiscretisation::new(&mp, splines)
+            .expect("the model build has checked the Mindlin plate and its spline count");
+        let (stiffness, mass) = disc.assemble(k);
+        let geometric = disc.assemble_geometric(k, plate.thickness, |r| prestress.stresses(r));
+        SpinningSpectrum {
+            k,
+            stiffness,
+            mass,
+            geometric,
+            shift: mp.eigen_shift(),
+            count,
+            mindlin: true,
         }
     }
 
@@ -70,7 +109,12 @@ impl SpinningSpectrum {
         let k_total = Mat::<f64>::from_fn(n, n, |i, j| {
             self.stiffness[(i, j)] + s * self.geometric[(i, j)]
         });
-        let pairs = lowest_modes(&k_total, &self.mass, self.shift, self.count).map_err(|e| {
+        let solve = if self.mindlin {
+            lowest_pairs
+        } else {
+            lowest_modes
+        };
+        let pairs = solve(&k_total, &self.mass, self.shift, self.count).map_err(|e| {
             ModelError::Eigenproblem {
                 k: self.k,
                 reason: format!("spinning at {spin} rad/s: {e:?}"),

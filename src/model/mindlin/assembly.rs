@@ -210,6 +210,49 @@ impl MindlinDiscretisation {
         (kk, mm)
     }
 
+    /// K̄_g for nodal-diameter number k over the free coefficients: the
+    /// geometric stiffness of an in-plane prestress (σ_r, σ_θ) = `stresses(r)`
+    /// (per unit Ω² for the spinning disc), c_k h ∫ (σ_r w_r δw_r +
+    /// σ_θ k² w δw / r²) r dr. It works on the deflection w alone (the
+    /// membrane forces turn with the mid-surface's slope ∇w, not with ψ), so
+    /// only W's B-splines carry it; the Kirchhoff form of
+    /// `RadialDiscretisation::assemble_geometric` (src/model/radial.rs).
+    pub fn assemble_geometric(
+        &self,
+        k: u32,
+        thickness: f64,
+        stresses: impl Fn(f64) -> (f64, f64),
+    ) -> Mat<f64> {
+        let n = self.basis.len();
+        let cols = self.free_columns(k);
+        let mut carriers: Vec<Vec<(usize, f64)>> = vec![Vec::new(); Self::fields(k) * n];
+        for (a, col) in cols.iter().enumerate() {
+            for &(g, t) in col {
+                carriers[g].push((a, t));
+            }
+        }
+        let mut kg = Mat::<f64>::zeros(cols.len(), cols.len());
+        let (ck, k2) = (angular_norm(k), (k as f64).powi(2));
+        for q in &self.points {
+            let (sr, st) = stresses(q.r);
+            let w = q.weight * q.r * ck * thickness;
+            for i in 0..4 {
+                let gi = Self::index(k, W, q.span + i);
+                for j in 0..4 {
+                    let gj = Self::index(k, W, q.span + j);
+                    let form = sr * q.ders[1][i] * q.ders[1][j]
+                        + st * k2 * q.ders[0][i] * q.ders[0][j] / (q.r * q.r);
+                    for &(a, ta) in &carriers[gi] {
+                        for &(b, tb) in &carriers[gj] {
+                            kg[(a, b)] += ta * tb * w * form;
+                        }
+                    }
+                }
+            }
+        }
+        kg
+    }
+
     /// B-spline coefficients of W, Γ_r, Γ_θ (zeros for k = 0) from the free ones.
     pub fn expand(&self, k: u32, free: impl Iterator<Item = f64>) -> [Vec<f64>; 3] {
         let n = self.basis.len();

@@ -165,6 +165,14 @@ impl MindlinPlate {
         .map_err(|(name, value, rule)| MindlinError::invalid(name, value, rule))
     }
 
+    /// The shift σ of the shift-invert eigensolves, D / (ρh b² r_a²) with
+    /// b = r_a − r_i (rad²/s²).
+    pub fn eigen_shift(&self) -> f64 {
+        let width = self.outer_radius - self.inner_radius;
+        self.rigidity()
+            / (self.density * self.thickness * width * width * self.outer_radius.powi(2))
+    }
+
     /// D = E h³ / (12 (1 − ν²)), eq. (2).
     pub fn rigidity(&self) -> f64 {
         super::bending_rigidity(self.youngs_modulus, self.thickness, self.poisson_ratio)
@@ -305,12 +313,11 @@ impl MindlinDiscretisation {
         }
         let plate = self.plate();
         let (kk, mm) = self.assemble(k);
-        let width = plate.outer_radius - plate.inner_radius;
-        let sigma = plate.rigidity()
-            / (plate.density * plate.thickness * width * width * plate.outer_radius.powi(2));
-        let pairs = lowest_pairs(&kk, &mm, sigma, orders).map_err(|e| MindlinError::Eigen {
-            k,
-            reason: e.to_string(),
+        let pairs = lowest_pairs(&kk, &mm, plate.eigen_shift(), orders).map_err(|e| {
+            MindlinError::Eigen {
+                k,
+                reason: e.to_string(),
+            }
         })?;
         let mut out = Vec::with_capacity(orders);
         for l in 0..orders as u32 {
