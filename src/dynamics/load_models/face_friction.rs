@@ -46,8 +46,8 @@ pub struct FaceKinematics {
 }
 
 /// [`SurfaceKinematics`] and [`FaceKinematics`] at an ALE node in one pass
-/// over the modes: each sum in the same order as [`surface_kinematics`]
-/// and [`face_kinematics`] (the same numbers), the amplitudes read once.
+/// over the modes, each sum in the same order as [`surface_kinematics`]
+/// (the same numbers), the amplitudes read once.
 ///
 /// [`surface_kinematics`]: super::model::surface_kinematics
 #[inline]
@@ -76,17 +76,7 @@ pub fn surface_and_face_kinematics(
 /// [`FaceKinematics`] at an ALE node for ALE amplitudes and rates at speed Ω.
 #[inline]
 pub fn face_kinematics(node: &NodeFrame, q: &[f64], q_dot: &[f64], speed: f64) -> FaceKinematics {
-    let mut k = FaceKinematics::default();
-    let mut w_theta = 0.0;
-    for (i, (&qi, &vi)) in q.iter().zip(q_dot).enumerate() {
-        let g = node.gradient(i);
-        let gp = node.gradient_phi[i];
-        k.grad_material_rate[0] += vi * g[0] + speed * qi * gp[0];
-        k.grad_material_rate[1] += vi * g[1] + speed * qi * gp[1];
-        w_theta += qi * node.w_phi[i];
-    }
-    k.normal_rate = speed * w_theta;
-    k
+    surface_and_face_kinematics(node, q, q_dot, speed).1
 }
 
 /// ∂w/∂θ under an ALE node for ALE amplitudes `q`, m/rad: the deformed
