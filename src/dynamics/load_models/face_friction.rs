@@ -32,6 +32,7 @@
 //! normal part Ω ∂w/∂θ stays of w: the pad slides along the deformed
 //! mid-surface, whose slope is ∇w in either theory ([`angular_slope`]).
 
+use super::model::SurfaceKinematics;
 use crate::dynamics::node_frame::NodeFrame;
 
 /// The vibration's velocity terms under a contact point (ALE amplitudes).
@@ -44,12 +45,24 @@ pub struct FaceKinematics {
     pub normal_rate: f64,
 }
 
-/// [`FaceKinematics`] at an ALE node for ALE amplitudes and rates at speed Ω.
+/// [`SurfaceKinematics`] and [`FaceKinematics`] at an ALE node in one pass
+/// over the modes, each sum in the same order as [`surface_kinematics`]
+/// (the same numbers), the amplitudes read once.
+///
+/// [`surface_kinematics`]: super::model::surface_kinematics
 #[inline]
-pub fn face_kinematics(node: &NodeFrame, q: &[f64], q_dot: &[f64], speed: f64) -> FaceKinematics {
+pub fn surface_and_face_kinematics(
+    node: &NodeFrame,
+    q: &[f64],
+    q_dot: &[f64],
+    speed: f64,
+) -> (SurfaceKinematics, FaceKinematics) {
+    let mut s = SurfaceKinematics::default();
     let mut k = FaceKinematics::default();
     let mut w_theta = 0.0;
-    for (i, (&qi, &vi)) in q.iter().zip(q_dot).enumerate() {
+    for (i, ((shape, &qi), &vi)) in node.shapes.iter().zip(q).zip(q_dot).enumerate() {
+        s.w += shape.w * qi;
+        s.w_dot += shape.w * vi;
         let g = node.gradient(i);
         let gp = node.gradient_phi[i];
         k.grad_material_rate[0] += vi * g[0] + speed * qi * gp[0];
@@ -57,7 +70,13 @@ pub fn face_kinematics(node: &NodeFrame, q: &[f64], q_dot: &[f64], speed: f64) -
         w_theta += qi * node.w_phi[i];
     }
     k.normal_rate = speed * w_theta;
-    k
+    (s, k)
+}
+
+/// [`FaceKinematics`] at an ALE node for ALE amplitudes and rates at speed Ω.
+#[inline]
+pub fn face_kinematics(node: &NodeFrame, q: &[f64], q_dot: &[f64], speed: f64) -> FaceKinematics {
+    surface_and_face_kinematics(node, q, q_dot, speed).1
 }
 
 /// ∂w/∂θ under an ALE node for ALE amplitudes `q`, m/rad: the deformed

@@ -63,7 +63,7 @@
 //! extremes of the wave, where the surface slope and so the follower force
 //! vanish, and the growth saturates — the limit cycles of the paper's Fig. 17.
 
-use super::face_friction::{angular_slope, face_kinematics, FaceKinematics};
+use super::face_friction::{angular_slope, surface_and_face_kinematics, FaceKinematics};
 use super::linear::{LinearContext, LinearOut, LinearStates, OperatingPoint};
 use super::model::{
     contact_rate, surface_kinematics, CommandRule, CommandSpec, Coupling, LoadContext, LoadModel,
@@ -413,8 +413,14 @@ impl LoadModel for Pads {
             .scratch
             .downcast_mut::<PadScratch>()
             .expect("the pads' scratch");
-        for (k, c) in s.kinematics.iter_mut().zip(&self.contacts) {
-            *k = surface_kinematics(&ctx.ale_nodes[c.node], ctx.q_ale, ctx.q_dot_ale);
+        let faces = self.contact_surface == ContactSurface::Faces;
+        for ((k, f), c) in s.kinematics.iter_mut().zip(&mut s.faces).zip(&self.contacts) {
+            let node = &ctx.ale_nodes[c.node];
+            if faces {
+                (*k, *f) = surface_and_face_kinematics(node, ctx.q_ale, ctx.q_dot_ale, ctx.speed);
+            } else {
+                *k = surface_kinematics(node, ctx.q_ale, ctx.q_dot_ale);
+            }
         }
         match &self.series {
             Some(g) => self.series_forces(g, ctx, clamp_force, slot, s),
@@ -443,17 +449,16 @@ impl LoadModel for Pads {
         if self.shear.is_none() {
             self.friction_torque_terms(&s.forces, out.friction);
         }
-        if self.contact_surface == ContactSurface::Faces {
+        if faces {
             let patches = self.pad_states()..self.pad_states() + self.patch_states();
             let (mut x, mut rates) = (slot[patches.clone()].chunks_exact(4), out.rates[patches].chunks_exact_mut(4));
             for (ci, ((c, f), k)) in self
                 .contacts
                 .iter()
                 .zip(s.forces.iter_mut())
-                .zip(s.faces.iter_mut())
+                .zip(s.faces.iter())
                 .enumerate()
             {
-                *k = face_kinematics(&ctx.ale_nodes[c.node], ctx.q_ale, ctx.q_dot_ale, ctx.speed);
                 let w = match (&self.shear, x.next(), rates.next()) {
                     (Some(law), Some(x), Some(r)) => {
                         let slot = PatchSlot {
@@ -642,7 +647,7 @@ mod tests {
                     contact.angle,
                     4e-3,
                 );
-                let k = face_kinematics(&node, &[1.0], &[0.0], speed);
+                let k = super::super::face_friction::face_kinematics(&node, &[1.0], &[0.0], speed);
                 let mut f = ContactForces {
                     top: n,
                     bottom: n,
