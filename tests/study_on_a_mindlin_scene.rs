@@ -151,7 +151,16 @@ fn modes_of(file: &str, overrides: &[&str]) -> Vec<(u64, u64, f64)> {
 
 #[test]
 fn theory_comparison_measures_kirchhoffs_error_against_converged_mindlin() {
-    let v = json(&["study", BENCH, "--quick", "--quiet", "--json"]);
+    // The bench scene ships Mindlin; its Kirchhoff model is the one compared.
+    let v = json(&[
+        "study",
+        BENCH,
+        "--quick",
+        "--quiet",
+        "--json",
+        "-p",
+        "plate.theory:=kirchhoff",
+    ]);
     let t = &v["theory"];
     let keys: std::collections::BTreeSet<&str> =
         t.as_object().unwrap().keys().map(String::as_str).collect();
@@ -199,7 +208,7 @@ fn theory_comparison_measures_kirchhoffs_error_against_converged_mindlin() {
     assert!(uncertainty < 1e-6, "{uncertainty:e}");
 
     // Kirchhoff's error: `modes` of the scene as it is against `modes` under Mindlin theory.
-    let kirchhoff = modes_of(BENCH, &[]);
+    let kirchhoff = modes_of(BENCH, &["-p", "plate.theory:=kirchhoff"]);
     let mindlin_modes = modes_of(BENCH, &MINDLIN);
     assert_eq!(kirchhoff.len(), rows.len());
     let mut largest: f64 = 0.0;
