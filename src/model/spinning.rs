@@ -45,55 +45,39 @@ impl SpinningSpectrum {
         count: usize,
     ) -> SpinningSpectrum {
         let prestress = LamePrestress::new(plate, centrifugal);
-        if plate.theory == PlateTheory::Mindlin {
-            return Self::mindlin(plate, &prestress, k, count);
-        }
-        let rigidity =
-            super::bending_rigidity(plate.youngs_modulus, plate.thickness, plate.poisson_ratio);
-        let splines = spectrum_splines(plate, rigidity, k, count);
-        let disc = RadialDiscretisation::new(plate, rigidity, splines);
-        let (stiffness, mass) = disc.assemble(k);
-        let geometric = disc.assemble_geometric(k, plate.thickness, |r| prestress.stresses(r));
+        let stresses = |r: f64| prestress.stresses(r);
+        let mindlin = plate.theory == PlateTheory::Mindlin;
+        let ((stiffness, mass), geometric, shift) = if mindlin {
+            // `plate.radial_splines` per field, `auto` = `mindlin::DEFAULT_SPLINES`;
+            // K̄_g acts on w alone (`MindlinDiscretisation::assemble_geometric`).
+            // The centrifugal force on the face displacement z ψ (a softening of
+            // the rotary inertia, O((h/r)²)) is left out, as in the modal
+            // equations the simulation steps (docs/mindlin.md).
+            let splines = plate
+                .radial_splines
+                .fixed()
+                .unwrap_or(mindlin::DEFAULT_SPLINES);
+            let mp = mindlin::mindlin_plate(plate);
+            let disc = MindlinDiscretisation::new(&mp, splines)
+                .expect("the model build has checked the Mindlin plate and its spline count");
+            let geometric = disc.assemble_geometric(k, plate.thickness, stresses);
+            (disc.assemble(k), geometric, mp.eigen_shift())
+        } else {
+            let rigidity =
+                super::bending_rigidity(plate.youngs_modulus, plate.thickness, plate.poisson_ratio);
+            let splines = spectrum_splines(plate, rigidity, k, count);
+            let disc = RadialDiscretisation::new(plate, rigidity, splines);
+            let geometric = disc.assemble_geometric(k, plate.thickness, stresses);
+            (disc.assemble(k), geometric, eigen_shift(plate, rigidity))
+        };
         SpinningSpectrum {
             k,
             stiffness,
             mass,
             geometric,
-            shift: eigen_shift(plate, rigidity),
+            shift,
             count,
-            mindlin: false,
-        }
-    }
-
-    /// The same eigenproblem on the Mindlin discretisation of the model
-    /// (`plate.radial_splines` per field, `auto` = [`mindlin::DEFAULT_SPLINES`]):
-    /// K̄_g acts on w alone ([`MindlinDiscretisation::assemble_geometric`]).
-    /// The centrifugal force on the face displacement z ψ (a softening of
-    /// the rotary inertia, O((h/r)²)) is left out, as in the modal equations
-    /// the simulation steps (docs/mindlin.md).
-    fn mindlin(
-        plate: &PlateConfig,
-        prestress: &LamePrestress,
-        k: u32,
-        count: usize,
-    ) -> SpinningSpectrum {
-        let splines = plate
-            .radial_splines
-            .fixed()
-            .unwrap_or(mindlin::DEFAULT_SPLINES);
-        let mp = mindlin::mindlin_plate(plate);
-        let disc = MindlinDiscretisation::new(&mp, splines)
-            .expect("the model build has checked the Mindlin plate and its spline count");
-        let (stiffness, mass) = disc.assemble(k);
-        let geometric = disc.assemble_geometric(k, plate.thickness, |r| prestress.stresses(r));
-        SpinningSpectrum {
-            k,
-            stiffness,
-            mass,
-            geometric,
-            shift: mp.eigen_shift(),
-            count,
-            mindlin: true,
+            mindlin,
         }
     }
 
