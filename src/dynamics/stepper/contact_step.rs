@@ -2,8 +2,21 @@
 //! contacts"): the elastic state in the ALE description — where space-fixed
 //! pads make the equations autonomous at a held joint speed — stepped by
 //! [`ContactExponential`] with the right-hand side frozen at the substep's
-//! mid-instant (χ at h/2, the mean speed Ω̄, the acceleration α) — or, where
-//! the joint is integrated in the step, Ω from y and the drive's law.
+//! mid-instant — or, where the joint is integrated in the step, Ω from y and
+//! the drive's law.
+//!
+//! Under a held acceleration α the step is taken in the frame turning at the
+//! mean speed Ω̄ = Ω0 + αh/2 (angle χ̄ = χ0 + Ω̄t), which meets the ALE frame
+//! at both ends of the step (χ̄ − χ = −αt(h − t)/2 vanishes at 0 and h): its
+//! equations are the ALE ones at Ω̄ with no kΩ̇ term, autonomous for the
+//! plate, and the pads sit in it within αh²/8 of their place. The two frames'
+//! velocities differ by k(Ω̄ − Ω) J q̄ per pair (q̄̇ = R q̇ + kΩ J q̄), kΩ̇h/2 J q̄
+//! at either end: the step adds it on entry and again on exit
+//! ([`frame_kick`]). Holding Ω̄ and α in the ALE equations instead spreads
+//! the kΩ̇ J q̄ term over the step, which where ωh ≫ 1 does not act as the
+//! two kicks do: on the brake bench its difference from the converged
+//! reference stopped falling with h (docs/dynamics.md, "Stiff contacts").
+//! The load models are evaluated at Ω̄ (their sliding speed).
 
 use super::stage_rhs::StageRhs;
 use super::{JointEnd, Stepper, SubstepMotion};
@@ -41,10 +54,22 @@ impl Stepper {
         } = *joint;
         let speed_mean = speed0 + 0.5 * alpha * h;
         let mut chi_mid = chi0;
-        chi_mid.advance(0.5 * speed0 * h + 0.125 * alpha * h * h);
+        // Held joint: the frame turning at Ω̄ (its angle at h/2) and the
+        // velocities' kick into it; a joint in y: the ALE frame, χ at h/2.
+        let kick = match stage_drive {
+            None => {
+                chi_mid.advance(0.5 * speed_mean * h);
+                0.5 * alpha * h
+            }
+            Some(_) => {
+                chi_mid.advance(0.5 * speed0 * h + 0.125 * alpha * h * h);
+                0.0
+            }
+        };
         let m = scene.first_order_unknowns();
         self.contact_prepare(scene, state, h, stage_drive);
-        self.held_key(scene, inputs, speed_mean, alpha, chi_mid);
+        frame_kick(scene, kick, &mut self.y);
+        self.held_key(scene, inputs, speed_mean, chi_mid);
         let continuous = scene.load_models.continuous_states() > 0;
         if continuous {
             self.stage_slots.copy_from(&state.load_models);
@@ -67,7 +92,7 @@ impl Stepper {
             inputs,
             consts,
             coords: Coordinates::Ale,
-            alpha,
+            alpha: 0.0,
             drive: stage_drive,
             base_ale_frame,
             harm,
@@ -107,6 +132,7 @@ impl Stepper {
                 effort: self.y[m + 1] / h,
             }
         });
+        frame_kick(scene, kick, &mut self.y);
         let (chi1, speed1) = end.map_or((joint.chi1, joint.speed1), |e| (e.chi1, e.speed1));
         self.contact_finish(scene, state, chi1, speed1);
         end
@@ -151,20 +177,12 @@ impl Stepper {
         }
     }
 
-    /// The cache key of what the step holds: Ω̄, α, the commands, and with
+    /// The cache key of what the step holds: Ω̄, the commands, and with
     /// follower loads the held wrenches and χ (they then enter J).
-    fn held_key(
-        &mut self,
-        scene: &Scene,
-        inputs: &Inputs,
-        speed: f64,
-        alpha: f64,
-        chi: JointAngle,
-    ) {
+    fn held_key(&mut self, scene: &Scene, inputs: &Inputs, speed: f64, chi: JointAngle) {
         let k = &mut self.contact_key;
         k.clear();
         k.push(speed.to_bits());
-        k.push(alpha.to_bits());
         for v in inputs.commands.values.iter().flatten() {
             k.push(v.to_bits());
         }
@@ -198,6 +216,22 @@ impl Stepper {
             .load_models
             .scatter_continuous(&self.y[2 * n..m], &mut state.load_models);
         self.y.truncate(m);
+    }
+}
+
+/// q̄̇ += k·`kick`·J q̄ per pair of y's amplitudes (J q̄ = (−q̄_s, q̄_c)): the
+/// velocities from the ALE frame into the frame turning at Ω̄ at the step's
+/// start, and back at its end, with `kick` = Ω̄ − Ω0 = Ω1 − Ω̄ = αh/2.
+fn frame_kick(scene: &Scene, kick: f64, y: &mut [f64]) {
+    if kick == 0.0 {
+        return;
+    }
+    let n = scene.n_modes();
+    let (q, v) = y.split_at_mut(n);
+    for p in &scene.layout.pairs {
+        let w = p.k as f64 * kick;
+        v[p.cos] -= w * q[p.sin];
+        v[p.sin] += w * q[p.cos];
     }
 }
 
