@@ -29,6 +29,7 @@ pub(crate) mod lanczos;
 pub mod mindlin;
 pub(crate) mod modes;
 pub mod nodal_lines;
+pub(crate) mod patch;
 pub mod prestress;
 pub(crate) mod quadrature;
 pub(crate) mod radial;

@@ -64,7 +64,7 @@ impl Patch {
             beta: (c / r0).min(PI),
         }
     }
-    fn area_factor(&self) -> f64 {
+    pub fn area_factor(&self) -> f64 {
         0.5 * (self.hi * self.hi - self.lo * self.lo)
     }
     pub fn sinc(&self, k: u32) -> f64 {
@@ -332,7 +332,7 @@ fn power_log(n: f64, r: f64, c: f64) -> [f64; 4] {
 
 /// Quadrature points (x, w) on [lo, hi]: Gauss–Legendre pieces split at the
 /// targets inside and graded geometrically towards each, down to `scale`/4.
-fn pieces(lo: f64, hi: f64, targets: &[f64], scale: f64) -> Vec<(f64, f64)> {
+pub fn pieces(lo: f64, hi: f64, targets: &[f64], scale: f64) -> Vec<(f64, f64)> {
     let mut cuts = vec![lo, hi];
     for &t in targets {
         if t < lo || t > hi {

@@ -156,3 +156,24 @@ impl InPlaneDiscretisation {
         [field(0), field(1)]
     }
 }
+
+impl InPlaneDiscretisation {
+    /// The load vector over the free coefficients of `family` of a force
+    /// on field f (0: U, radial; 1: V, tangential) with B-spline weights
+    /// `means` (a patch's [`crate::model::patch::LoadPatch::spline_means`]);
+    /// zeros when the family lacks the field.
+    pub(crate) fn field_load(&self, family: InPlaneFamily, f: usize, means: &[f64]) -> Vec<f64> {
+        let fields = family.fields();
+        self.free(family)
+            .iter()
+            .map(|&i| {
+                let (j, g) = (i / fields.len(), fields[i % fields.len()]);
+                if g == f {
+                    means[j]
+                } else {
+                    0.0
+                }
+            })
+            .collect()
+    }
+}

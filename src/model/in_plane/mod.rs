@@ -51,10 +51,15 @@
 mod assembly;
 mod error;
 mod model;
+mod residual;
 
 pub use assembly::InPlaneDiscretisation;
 pub use error::InPlaneError;
 pub use model::{in_plane_plate, InPlaneEntry, InPlaneShape, InPlaneTable};
+pub use residual::{
+    modal_kernel, patch_means, residual_kernel, InPlaneKernel, InPlanePatchHarmonics, LoadPatch,
+    MAX_HARMONICS, TOLERANCE,
+};
 
 use super::bspline::BSplineBasis;
 use super::modes::RadialShape;

@@ -35,7 +35,8 @@
 
 use super::assembly::{Kinematics, W};
 use super::MindlinDiscretisation;
-use crate::model::quadrature::radial_points;
+pub use crate::model::patch::LoadPatch;
+use crate::model::patch::{band_cholesky, band_solve, breakpoints, remainder_below};
 use crate::model::radial::angular_norm;
 use crate::model::{AngularShape, ModelError, PlateModel, ResidualKernel};
 
@@ -46,50 +47,6 @@ pub const MAX_HARMONICS: u32 = 8192;
 /// harmonics; tests/mindlin_residual_flexibility.rs measures the sum within
 /// 4e-7 of the exact series).
 pub const TOLERANCE: f64 = 1e-8;
-
-/// A node's load patch (module doc).
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct LoadPatch {
-    /// r₀, m.
-    pub centre: f64,
-    /// The radial interval [r₀ − c, r₀ + c] ∩ [r_i, r_a], m.
-    pub radial: (f64, f64),
-    /// β = min(c/r₀, π), rad.
-    pub half_angle: f64,
-}
-
-impl LoadPatch {
-    /// The patch of half-width `c` (m) at radius `centre` of the annulus [`ri`, `ra`].
-    pub fn new(ri: f64, ra: f64, centre: f64, c: f64) -> LoadPatch {
-        let centre = centre.clamp(ri, ra);
-        LoadPatch {
-            centre,
-            radial: ((centre - c).max(ri), (centre + c).min(ra)),
-            half_angle: (c / centre).min(std::f64::consts::PI),
-        }
-    }
-
-    /// sinc kβ = sin kβ / (kβ): the angular mean of cos k(θ − θ₀) over the patch.
-    pub fn angular_factor(&self, k: u32) -> f64 {
-        let x = k as f64 * self.half_angle;
-        if x == 0.0 {
-            1.0
-        } else {
-            x.sin() / x
-        }
-    }
-
-    /// ∫ f r dr / ∫ r dr over the radial interval, by Gauss–Legendre on
-    /// `breaks` (the B-spline breakpoints: exact for the spline pieces).
-    pub fn radial_mean(&self, breaks: &[f64], f: impl Fn(f64) -> f64) -> f64 {
-        let (lo, hi) = self.radial;
-        let sum: f64 = patch_points(breaks, self)
-            .iter()
-            .map(|&(r, w)| w * r * f(r))
-            .sum();
-        sum / (0.5 * (hi * hi - lo * lo))
-    }
-}
 
 /// Symmetric band matrix: a[i][d] = A(i, i + d), d = 0..=bw.
 type Band = Vec<Vec<f64>>;
@@ -222,14 +179,8 @@ impl PowerBands {
         let k_struct = u32::from(harmonic);
         let basis = disc.basis();
         let mut global = vec![0.0; MindlinDiscretisation::fields(k_struct) * basis.len()];
-        let (lo, hi) = patch.radial;
-        let area = 0.5 * (hi * hi - lo * lo);
-        for (r, w) in patch_points(&breakpoints(basis), patch) {
-            let s = basis.span_of(r);
-            let d = basis.eval_span(s, r);
-            for (j, v) in d[0].iter().enumerate() {
-                global[MindlinDiscretisation::index(k_struct, W, s + j)] += w * r * v / area;
-            }
+        for (j, m) in patch.spline_means(basis).into_iter().enumerate() {
+            global[MindlinDiscretisation::index(k_struct, W, j)] = m;
         }
         self.columns
             .iter()
@@ -237,82 +188,22 @@ impl PowerBands {
             .collect()
     }
 
-    /// Cholesky factor of c_k Σ k^p K_p: l[i (bw + 1) + d] = L(i, i − d);
-    /// None if not positive definite.
+    /// Cholesky factor of c_k Σ k^p K_p ([`band_cholesky`]); None if not
+    /// positive definite.
     fn factor(&self, k: u32, l: &mut Vec<f64>) -> Option<()> {
-        let (n, w) = (self.columns.len(), self.bw + 1);
         let ck = angular_norm(k);
         let kf = k as f64;
         let powers: Vec<f64> = (0..self.parts.len())
             .map(|p| ck * kf.powi(p as i32))
             .collect();
-        l.clear();
-        l.resize(n * w, 0.0);
-        for i in 0..n {
-            for j in i.saturating_sub(self.bw)..=i {
-                let mut s: f64 = self
-                    .parts
-                    .iter()
-                    .zip(&powers)
-                    .map(|(part, c)| c * part[j][i - j])
-                    .sum();
-                for m in i.saturating_sub(self.bw)..j {
-                    s -= l[i * w + i - m] * l[j * w + j - m];
-                }
-                if j == i {
-                    if !(s > 0.0 && s < f64::INFINITY) {
-                        return None;
-                    }
-                    l[i * w] = s.sqrt();
-                } else {
-                    l[i * w + i - j] = s / l[j * w];
-                }
-            }
-        }
-        Some(())
-    }
-}
-
-/// Quadrature points (r, weight) of the patch's radial interval, split at `breaks`.
-fn patch_points(breaks: &[f64], patch: &LoadPatch) -> Vec<(f64, f64)> {
-    let (lo, hi) = patch.radial;
-    let mut cuts: Vec<f64> = breaks
-        .iter()
-        .copied()
-        .filter(|&x| x > lo && x < hi)
-        .collect();
-    cuts.insert(0, lo);
-    cuts.push(hi);
-    let mut pts = Vec::new();
-    for pair in cuts.windows(2) {
-        radial_points(pair[0], pair[1], &mut pts);
-    }
-    pts
-}
-
-/// The breakpoints of a basis.
-fn breakpoints(basis: &crate::model::bspline::BSplineBasis) -> Vec<f64> {
-    let mut out: Vec<f64> = (0..basis.spans()).map(|s| basis.span_bounds(s).0).collect();
-    out.push(basis.interval().1);
-    out
-}
-
-/// Solve L Lᵀ x = b in place (L from [`PowerBands::factor`], half-bandwidth `bw`).
-fn band_solve(l: &[f64], bw: usize, x: &mut [f64]) {
-    let (n, w) = (x.len(), bw + 1);
-    for i in 0..n {
-        let mut s = x[i];
-        for m in i.saturating_sub(bw)..i {
-            s -= l[i * w + i - m] * x[m];
-        }
-        x[i] = s / l[i * w];
-    }
-    for i in (0..n).rev() {
-        let mut s = x[i];
-        for m in i + 1..(i + w).min(n) {
-            s -= l[m * w + m - i] * x[m];
-        }
-        x[i] = s / l[i * w];
+        let entry = |j: usize, d: usize| -> f64 {
+            self.parts
+                .iter()
+                .zip(&powers)
+                .map(|(part, c)| c * part[j][d])
+                .sum()
+        };
+        band_cholesky(self.columns.len(), self.bw, entry, l)
     }
 }
 
@@ -365,7 +256,12 @@ pub fn patch_harmonics(disc: &MindlinDiscretisation, patches: &[LoadPatch]) -> P
                     totals[a] += gk[a * np + a];
                 }
                 g.push(gk);
-                if harmonic && converged(k, &raw, patches, &totals) {
+                let diagonals = raw
+                    .iter()
+                    .zip(patches)
+                    .zip(&totals)
+                    .map(|((&g, p), &t)| (g, p.half_angle, t));
+                if harmonic && remainder_below(k, TOLERANCE, diagonals) {
                     break;
                 }
             }
@@ -380,20 +276,6 @@ pub fn patch_harmonics(disc: &MindlinDiscretisation, patches: &[LoadPatch]) -> P
         g,
         skipped,
     }
-}
-
-/// Whether the remainder beyond k is below [`TOLERANCE`] of every patch's
-/// compliance: its terms are at most g_k(a, a) (kβ)⁻² and fall like k⁻⁴
-/// (so the remainder is below k/3 times that), for every pair by Cauchy–Schwarz.
-fn converged(k: u32, raw: &[f64], patches: &[LoadPatch], totals: &[f64]) -> bool {
-    let kf = k as f64;
-    raw.iter()
-        .zip(patches)
-        .zip(totals)
-        .all(|((&gk, p), &total)| {
-            let envelope = (1.0 / (kf * p.half_angle).powi(2)).min(1.0);
-            kf >= 8.0 && kf / 3.0 * gk.abs() * envelope < TOLERANCE * total.abs()
-        })
 }
 
 impl PlateModel {
