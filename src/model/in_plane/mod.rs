@@ -51,10 +51,12 @@
 mod assembly;
 mod error;
 mod model;
+mod spin;
 
 pub use assembly::InPlaneDiscretisation;
 pub use error::InPlaneError;
 pub use model::{in_plane_plate, InPlaneEntry, InPlaneShape, InPlaneTable};
+pub use spin::{spin_blocks, InPlaneSpin};
 
 use super::bspline::BSplineBasis;
 use super::modes::RadialShape;
