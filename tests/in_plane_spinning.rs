@@ -12,6 +12,12 @@ use annular_plate::model::in_plane::{
 use annular_plate::model::prestress::LamePrestress;
 use faer::Mat;
 
+mod support;
+
+use support::in_plane_exact::{Annulus, Edge, Family};
+use support::in_plane_spinning_exact::{roots, SpinningAnnulus};
+use support::lame::Lame;
+
 /// The bench disc's steel and radii with the in-plane edges given.
 fn disc(inner: InPlaneInner, outer: InPlaneOuter) -> (PlateConfig, CentrifugalConfig) {
     let mut plate = PlateConfig::lathe_disc();
@@ -232,4 +238,135 @@ fn the_modal_spin_terms_are_the_full_ones_on_the_modes() {
         println!("k = {k}: modal against full projection {worst:.1e}");
         assert!(worst < 1e-12, "k = {k}: {worst:e}");
     }
+}
+
+const SPEEDS: [f64; 3] = [1000.0, 3000.0, 15000.0];
+const ORDERS: usize = 2;
+const TOLERANCE: f64 = 1e-6;
+const EDGES: [(InPlaneInner, InPlaneOuter, bool); 2] = [
+    (InPlaneInner::Fixed, InPlaneOuter::Free, true),
+    (InPlaneInner::Free, InPlaneOuter::Free, false),
+];
+
+/// The collocation's (forward, backward) lowest `ORDERS` waves, rigid roots
+/// (ω = 0 for k = 0, ω = Ω for k = 1 of a free–free disc) left out.
+fn reference_waves(
+    plate: &PlateConfig,
+    inner_fixed: bool,
+    k: u32,
+    spin: f64,
+    n: usize,
+) -> (Vec<f64>, Vec<f64>) {
+    let a = SpinningAnnulus {
+        youngs_modulus: plate.youngs_modulus,
+        poisson_ratio: plate.poisson_ratio,
+        density: plate.density,
+        inner_radius: plate.inner_radius,
+        outer_radius: plate.outer_radius,
+        inner_fixed,
+        outer_fixed: false,
+    };
+    let mut z = roots(&a, &Lame::new(plate, inner_fixed), k, spin, n);
+    if !inner_fixed && k <= 1 {
+        // The double rigid root, possibly split into a complex pair by round-off.
+        let rigid = if k == 0 { 0.0 } else { spin };
+        z.sort_by(|x, y| {
+            (x.0 - rigid)
+                .hypot(x.1)
+                .total_cmp(&(y.0 - rigid).hypot(y.1))
+        });
+        z.drain(..2);
+    }
+    let mut r: Vec<f64> = z
+        .into_iter()
+        .filter(|&(re, im)| im.abs() < 1e-6 * re.abs().max(1.0))
+        .map(|(re, _)| re)
+        .collect();
+    r.sort_by(f64::total_cmp);
+    let backward: Vec<f64> = r
+        .iter()
+        .copied()
+        .filter(|&w| w > 0.0)
+        .take(ORDERS)
+        .collect();
+    let mut forward: Vec<f64> = r.iter().filter(|&&w| w < 0.0).map(|w| -w).collect();
+    forward.sort_by(f64::total_cmp);
+    forward.truncate(ORDERS);
+    (forward, backward)
+}
+
+fn relative(a: &[f64], b: &[f64]) -> f64 {
+    assert_eq!(a.len(), b.len());
+    a.iter()
+        .zip(b)
+        .map(|(x, y)| (x - y).abs() / y.abs())
+        .fold(0.0, f64::max)
+}
+
+#[test]
+fn spinning_waves_match_an_independent_collocation_solution() {
+    let mut overall: f64 = 0.0;
+    for (inner, outer, inner_fixed) in EDGES {
+        let (plate, c) = disc(inner, outer);
+        let d = discretisation(&plate, &c);
+        let prestress = LamePrestress::new(&plate, &c);
+        for k in 0..=4 {
+            let spectrum = d.spectrum(k, &prestress);
+            for spin in SPEEDS {
+                let got = spectrum.waves(spin, ORDERS).unwrap();
+                let (fwd, bwd) = reference_waves(&plate, inner_fixed, k, spin, 48);
+                let (fwd64, bwd64) = reference_waves(&plate, inner_fixed, k, spin, 64);
+                let own = relative(&fwd, &fwd64).max(relative(&bwd, &bwd64));
+                let e = relative(&got.forward, &fwd).max(relative(&got.backward, &bwd));
+                println!(
+                    "{}–free k = {k} Ω = {spin:>5}: forward {:.1} {:.1}, backward {:.1} {:.1} rad/s; \
+                     library {e:.1e}, collocation 48 vs 64 points {own:.1e}",
+                    if inner_fixed { "fixed" } else { "free" },
+                    fwd[0],
+                    fwd[1],
+                    bwd[0],
+                    bwd[1]
+                );
+                assert!(own < 1e-9, "the reference is converged");
+                assert!(e < TOLERANCE, "k = {k} at {spin} rad/s: {e:e}");
+                overall = overall.max(e);
+            }
+        }
+    }
+    println!("worst over all: {overall:.2e}");
+}
+
+#[test]
+fn at_rest_both_waves_are_the_exact_plane_stress_modes() {
+    let mut overall: f64 = 0.0;
+    for (inner, outer, inner_fixed) in EDGES {
+        let (plate, c) = disc(inner, outer);
+        let d = discretisation(&plate, &c);
+        let prestress = LamePrestress::new(&plate, &c);
+        let exact = Annulus {
+            youngs_modulus: plate.youngs_modulus,
+            poisson_ratio: plate.poisson_ratio,
+            density: plate.density,
+            inner_radius: plate.inner_radius,
+            outer_radius: plate.outer_radius,
+            inner: if inner_fixed { Edge::Fixed } else { Edge::Free },
+            outer: Edge::Free,
+        };
+        for k in 0..=4 {
+            let mut want = if k == 0 {
+                let mut both = exact.roots(0, Family::Torsional, ORDERS, 40);
+                both.extend(exact.roots(0, Family::Radial, ORDERS, 40));
+                both
+            } else {
+                exact.roots(k, Family::Coupled, ORDERS, 40)
+            };
+            want.sort_by(f64::total_cmp);
+            want.truncate(ORDERS);
+            let got = d.spectrum(k, &prestress).waves(0.0, ORDERS).unwrap();
+            let e = relative(&got.forward, &want).max(relative(&got.backward, &want));
+            overall = overall.max(e);
+            assert!(e < TOLERANCE, "k = {k}: {e:e}");
+        }
+    }
+    println!("at rest, worst against the exact solution: {overall:.2e}");
 }

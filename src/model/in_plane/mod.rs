@@ -51,11 +51,13 @@
 mod assembly;
 mod error;
 mod model;
+mod spectrum;
 mod spin;
 
 pub use assembly::InPlaneDiscretisation;
 pub use error::InPlaneError;
 pub use model::{in_plane_plate, InPlaneEntry, InPlaneShape, InPlaneTable};
+pub use spectrum::{InPlaneSpectrum, InPlaneWaves};
 pub use spin::{spin_blocks, InPlaneSpin};
 
 use super::bspline::BSplineBasis;
