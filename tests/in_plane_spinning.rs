@@ -364,6 +364,12 @@ fn at_rest_both_waves_are_the_exact_plane_stress_modes() {
             want.truncate(ORDERS);
             let got = d.spectrum(k, &prestress).waves(0.0, ORDERS).unwrap();
             let e = relative(&got.forward, &want).max(relative(&got.backward, &want));
+            println!(
+                "at rest, {}–free k = {k}: {:.1} {:.1} rad/s, {e:.1e}",
+                if inner_fixed { "fixed" } else { "free" },
+                got.forward[0],
+                got.forward[1]
+            );
             overall = overall.max(e);
             assert!(e < TOLERANCE, "k = {k}: {e:e}");
         }

@@ -3,7 +3,10 @@
 //! modes, by the same radial B-spline Ritz machinery (docs/in_plane.md).
 //! `modes` lists them; the dynamics do not carry them yet, so every other
 //! consumer of the model refuses `plate.in_plane_nodal_diameters`
-//! ([`crate::model::PlateModel::new`]).
+//! ([`crate::model::PlateModel::new`]). For the spinning disc, `spin` gives
+//! the turning-frame equations' Coriolis and spin stiffness terms per k
+//! ([`InPlaneDiscretisation::assemble_spin`]) and `spectrum` their forward
+//! and backward waves ([`InPlaneDiscretisation::spectrum`]).
 //!
 //! # Fields and energies
 //!
