@@ -7,6 +7,7 @@ pub mod fit;
 pub mod fourth_order;
 pub mod in_plane_exact;
 pub mod in_plane_static;
+pub mod in_plane_spinning_exact;
 pub mod lame;
 pub mod left_growth;
 pub mod library_plate;

@@ -54,6 +54,26 @@ impl InPlaneDiscretisation {
         &self.basis
     }
 
+    /// The quadrature points with the B-splines' values and derivatives.
+    pub(super) fn points(&self) -> &[QuadPoint] {
+        &self.points
+    }
+
+    /// The position of B-spline j among the free B-splines (those not
+    /// dropped by a fixed edge), or `None` when it is dropped. A family's
+    /// free coefficient of field slot s (0 or 1 within
+    /// [`InPlaneFamily::fields`]) of that B-spline is position · fields + s.
+    pub(super) fn free_spline(&self, j: usize) -> Option<usize> {
+        let n = self.basis.len();
+        let inner = usize::from(self.plate.inner_edge == InPlaneEdge::Fixed);
+        let outer_fixed = self.plate.outer_edge == InPlaneEdge::Fixed;
+        if (j == 0 && inner == 1) || (j == n - 1 && outer_fixed) {
+            None
+        } else {
+            Some(j - inner)
+        }
+    }
+
     /// The coefficient index of B-spline j of field f (0: U, 1: V) within
     /// `fields`, or `None` when the family has no such field.
     fn index(fields: &[usize], f: usize, j: usize) -> Option<usize> {

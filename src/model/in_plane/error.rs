@@ -41,6 +41,16 @@ pub enum InPlaneError {
         /// The solver's failure.
         reason: String,
     },
+    /// The spinning spectrum's eigenproblem failed or has a root that is not real.
+    #[error("the in-plane spinning spectrum of k = {k} at {spin} rad/s failed: {reason}")]
+    SpinEigen {
+        /// Nodal diameters.
+        k: u32,
+        /// Spin speed, rad/s.
+        spin: f64,
+        /// What went wrong.
+        reason: String,
+    },
     /// A mode came out non-finite, with ω² ≤ 0 or without displacement.
     #[error("in-plane mode ⟨k = {k}, l = {l}⟩ came out non-finite, with ω² = {omega_squared:e} ≤ 0 or without displacement")]
     NonFiniteMode {

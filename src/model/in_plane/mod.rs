@@ -3,7 +3,10 @@
 //! modes, by the same radial B-spline Ritz machinery (docs/in_plane.md).
 //! `modes` lists them; the dynamics do not carry them yet, so every other
 //! consumer of the model refuses `plate.in_plane_nodal_diameters`
-//! ([`crate::model::PlateModel::new`]).
+//! ([`crate::model::PlateModel::new`]). For the spinning disc, `spin` gives
+//! the turning-frame equations' Coriolis and spin stiffness terms per k
+//! ([`InPlaneDiscretisation::assemble_spin`]) and `spectrum` their forward
+//! and backward waves ([`InPlaneDiscretisation::spectrum`]).
 //!
 //! # Fields and energies
 //!
@@ -52,6 +55,8 @@ mod assembly;
 mod error;
 mod model;
 mod residual;
+mod spectrum;
+mod spin;
 
 pub use assembly::InPlaneDiscretisation;
 pub use error::InPlaneError;
@@ -60,6 +65,8 @@ pub use residual::{
     modal_kernel, patch_means, residual_kernel, InPlaneKernel, InPlanePatchHarmonics, LoadPatch,
     MAX_HARMONICS, TOLERANCE,
 };
+pub use spectrum::{InPlaneSpectrum, InPlaneWaves};
+pub use spin::{spin_blocks, InPlaneSpin};
 
 use super::bspline::BSplineBasis;
 use super::modes::RadialShape;
