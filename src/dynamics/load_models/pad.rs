@@ -72,6 +72,7 @@ use super::model::{
 use super::outputs::OutputContext;
 use super::pad_config::{Caliper, ContactSurface, PadsConfig, PARAMETERS};
 use super::pad_patch::{PatchLaw, PatchSlot};
+use super::pad_series::held_normal_forces;
 use crate::config::{Config, PlateTheory};
 use crate::dynamics::contact_compliance::{ContactCompliance, SeriesScratch};
 use crate::dynamics::joint::FrictionTorque;
@@ -370,6 +371,10 @@ impl LoadModel for Pads {
     }
     fn stage_dependent(&self) -> bool {
         true
+    }
+    /// Only the residual deflection of held normal forces is read at χ.
+    fn reads_joint_angle(&self, ctx: &LoadContext) -> bool {
+        self.series.is_some() && held_normal_forces(ctx).is_some()
     }
     fn coupling(&self) -> Coupling {
         self.coupling

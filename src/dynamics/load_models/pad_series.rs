@@ -9,7 +9,7 @@
 use super::model::{Coupling, LoadContext, SurfaceKinematics};
 use super::pad::{PadScratch, Pads};
 use super::pad_config::Caliper;
-use crate::dynamics::contact_compliance::{stiffness_rate, ContactCompliance};
+use crate::dynamics::contact_compliance::{stiffness_rate, ContactCompliance, HeldDeflection};
 use crate::dynamics::node_frame::{NodeFrame, NodeShape};
 
 impl Pads {
@@ -76,9 +76,7 @@ impl Pads {
             tried,
             ..
         } = s;
-        let held = ctx
-            .held
-            .filter(|h| h.ale.iter().chain(h.lagrange).any(|w| w.force[2] != 0.0));
+        let held = held_normal_forces(ctx);
         for ((w, c), k) in w_free.iter_mut().zip(&self.contacts).zip(kinematics.iter()) {
             *w = k.w + held.map_or(0.0, |h| h.at(c.node, ctx.chi));
         }
@@ -180,6 +178,13 @@ impl Pads {
         }
         LinearSeriesForces { q, q_dot, pad }
     }
+}
+
+/// The residual deflection of the held wrenches when one of them has a
+/// normal force (the only part the contacts read; then at the joint angle).
+pub(super) fn held_normal_forces<'a>(ctx: &LoadContext<'a>) -> Option<HeldDeflection<'a>> {
+    ctx.held
+        .filter(|h| h.ale.iter().chain(h.lagrange).any(|w| w.force[2] != 0.0))
 }
 
 /// [`Pads::linear_series_forces`]: each contact's net axial force per unit
