@@ -7,9 +7,9 @@
 //! solved with it (active set); the dampers act on the modal rate.
 
 use super::model::{Coupling, LoadContext, SurfaceKinematics};
-use super::pad::{PadScratch, Pads};
+use super::pad::{held_normal_forces, PadScratch, Pads};
 use super::pad_config::Caliper;
-use crate::dynamics::contact_compliance::{stiffness_rate, ContactCompliance, HeldDeflection};
+use crate::dynamics::contact_compliance::{stiffness_rate, ContactCompliance};
 use crate::dynamics::node_frame::{NodeFrame, NodeShape};
 
 impl Pads {
@@ -178,13 +178,6 @@ impl Pads {
         }
         LinearSeriesForces { q, q_dot, pad }
     }
-}
-
-/// The residual deflection of the held wrenches when one of them has a
-/// normal force (the only part the contacts read; then at the joint angle).
-pub(super) fn held_normal_forces<'a>(ctx: &LoadContext<'a>) -> Option<HeldDeflection<'a>> {
-    ctx.held
-        .filter(|h| h.ale.iter().chain(h.lagrange).any(|w| w.force[2] != 0.0))
 }
 
 /// [`Pads::linear_series_forces`]: each contact's net axial force per unit
