@@ -11,7 +11,7 @@ use super::commands::{check, check_batch, Checked, CheckedBatch, Command};
 use super::error::{BatchError, InputError, SimulationError, StepError};
 use super::integrators::contact_exponential::MAX_UNKNOWNS;
 use super::integrators::MAX_INNER_SUBSTEPS;
-use super::load_models::{LoadContext, ModelWrenches};
+use super::load_models::ModelWrenches;
 use super::scene::{NodeFrame, Scene};
 use super::state::State;
 use super::stepper::{Stepper, StepperSettings};
@@ -103,8 +103,6 @@ pub struct Simulation {
     stepper: Stepper,
     /// The held inputs.
     inputs: Inputs,
-    /// The load models' wrenches at the current state (derived, for the outputs).
-    model_outputs: ModelWrenches,
     /// Each load model's declared output channels at the current state (derived).
     output_values: Vec<Vec<f64>>,
 }
@@ -130,7 +128,6 @@ impl Simulation {
             initial,
             stepper,
             inputs,
-            model_outputs: scene.model_wrenches(),
             output_values: scene.load_models.new_output_values(),
             scene,
             settings,
@@ -202,32 +199,20 @@ impl Simulation {
     }
 
     /// Evaluate the load models at the current state for the outputs (a
-    /// model with memory reports the force it held over the last substep).
+    /// model with memory reports the force it held over the last substep);
+    /// the stepper's wrenches then are of the current state.
     fn refresh_model_outputs(&mut self) {
         let lm = &self.scene.load_models;
         if lm.is_empty() {
             return;
         }
-        let (q_ale, q_dot_ale) = self.state.ale();
-        let ctx = LoadContext {
-            ale_nodes: &self.scene.ale_nodes,
-            lagrange_nodes: &self.scene.lagrange_nodes,
-            q_ale,
-            q_dot_ale,
-            chi: self.state.chi.angle,
-            speed: self.state.speed,
-            held: self.scene.held_deflection(&self.inputs),
-        };
-        lm.evaluate(
-            &ctx,
-            &self.state.load_models,
-            &self.inputs.commands,
-            &mut self.model_outputs,
-        );
+        let wrenches = self
+            .stepper
+            .model_wrenches_at(&self.scene, &self.state, &self.inputs);
         lm.write_outputs(
             &self.state.load_models,
             &self.inputs.commands,
-            &self.model_outputs,
+            wrenches,
             self.state.chi.angle,
             &mut self.output_values,
         );
@@ -244,10 +229,12 @@ impl Simulation {
 
     /// Advance one output step (1/rate_hz). On error the state is unchanged.
     pub fn step(&mut self) -> Result<(), StepError> {
-        self.stepper
-            .step(&self.scene, &self.settings, &mut self.state, &self.inputs)?;
+        let stepped = self
+            .stepper
+            .step(&self.scene, &self.settings, &mut self.state, &self.inputs);
+        // Also after a refused step: the stepper's wrenches are of its trials.
         self.refresh_model_outputs();
-        Ok(())
+        stepped
     }
 
     // ---- inputs: one contract (dynamics::commands) ---------------------------
@@ -339,18 +326,22 @@ impl Simulation {
 
     /// The load models' wrenches and scratch at the current state.
     pub fn model_wrenches(&self) -> &ModelWrenches {
-        &self.model_outputs
+        self.stepper.model_wrenches()
     }
 
     /// The wrench the load models apply at ALE node `j` (0-based) at the current
     /// state, in its node frame (on top of the held user wrench).
     pub fn ale_model_wrench(&self, j: usize) -> Wrench {
-        self.model_outputs.ale.get(j).copied().unwrap_or_default()
+        self.model_wrenches()
+            .ale
+            .get(j)
+            .copied()
+            .unwrap_or_default()
     }
 
     /// The wrench the load models apply at Lagrangian node `j` (0-based), in its node frame.
     pub fn lagrange_model_wrench(&self, j: usize) -> Wrench {
-        self.model_outputs
+        self.model_wrenches()
             .lagrange
             .get(j)
             .copied()

@@ -29,10 +29,12 @@ use super::scene::Scene;
 use super::state::{JointAngle, State};
 use super::wrench::Wrench;
 use crate::config::{Config, Coordinates, IntegratorKind};
+use model_evaluation::ModelEvaluation;
 use nalgebra::Complex;
 use stage_rhs::StageRhs;
 
 mod contact_step;
+mod model_evaluation;
 mod stage_rhs;
 
 pub use super::integrators::contact_exponential::StepReport as ContactReport;
@@ -154,8 +156,9 @@ pub struct Stepper {
     undo: LoadModelUndo,
     /// Inner substeps used in the last step (1 for the exponential integrator).
     last_inner_substeps: usize,
-    /// Wrenches of the load models at the last evaluation.
+    /// Wrenches of the load models at the last evaluation, and what it was of.
     model_wrenches: ModelWrenches,
+    evaluation: ModelEvaluation,
     /// Centrifugal stiffening: one exact propagator per family of each
     /// k-block (cos, sin) and the implicit midpoint's block scratch; empty
     /// when off.
@@ -200,6 +203,7 @@ impl Stepper {
             undo: LoadModelUndo::new(&scene.load_models),
             last_inner_substeps: 1,
             model_wrenches: scene.model_wrenches(),
+            evaluation: ModelEvaluation::with_capacity(model_evaluation::key_len(scene)),
             stiffened: scene
                 .stiffening
                 .iter()
@@ -348,7 +352,13 @@ impl Stepper {
             models.begin_substep(&ctx, &mut slots, h);
             // Prescribed forces at the substep's mid-angle (held by the non-RK4 integrators).
             ctx.chi = state.chi.angle + 0.5 * state.speed * h;
-            models.evaluate(&ctx, &slots, &inputs.commands, &mut self.model_wrenches);
+            self.evaluation.evaluate(
+                models,
+                &ctx,
+                &slots,
+                &inputs.commands,
+                &mut self.model_wrenches,
+            );
             state.load_models = slots;
         }
         self.node_loads(scene, state, inputs);
@@ -714,6 +724,7 @@ impl Stepper {
             y,
             rk,
             model_wrenches,
+            evaluation,
             stage_slots,
             ..
         } = self;
@@ -729,6 +740,7 @@ impl Stepper {
             views,
             loads,
             model_wrenches,
+            evaluation,
             stage_slots: continuous.then_some(stage_slots),
             slots: &state.load_models,
         };

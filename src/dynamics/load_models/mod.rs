@@ -322,6 +322,11 @@ impl LoadModels {
         self.models.iter().any(|m| m.stage_dependent())
     }
 
+    /// Whether any model's evaluation at `ctx` reads the joint angle χ.
+    pub fn reads_joint_angle(&self, ctx: &LoadContext) -> bool {
+        self.models.iter().any(|m| m.reads_joint_angle(ctx))
+    }
+
     /// The summed coupling rates of all models.
     pub fn coupling(&self) -> Coupling {
         self.coupling

@@ -249,6 +249,13 @@ pub trait LoadModel: Debug + Send + Sync {
         ""
     }
 
+    /// Whether [`LoadModel::evaluate`] at `ctx` reads the joint angle χ
+    /// (`ctx.chi`); an evaluation that does not is the same at any χ.
+    /// Default: it does.
+    fn reads_joint_angle(&self, _ctx: &LoadContext) -> bool {
+        true
+    }
+
     /// Before the substep of length `h` (models with memory hold a force over it).
     fn begin_substep(&self, _ctx: &LoadContext, _slot: &mut [f64], _h: f64) {}
 

@@ -73,7 +73,7 @@ use super::outputs::OutputContext;
 use super::pad_config::{Caliper, ContactSurface, PadsConfig, PARAMETERS};
 use super::pad_patch::{PatchLaw, PatchSlot};
 use crate::config::{Config, PlateTheory};
-use crate::dynamics::contact_compliance::{ContactCompliance, SeriesScratch};
+use crate::dynamics::contact_compliance::{ContactCompliance, HeldDeflection, SeriesScratch};
 use crate::dynamics::joint::FrictionTorque;
 use std::any::Any;
 
@@ -371,6 +371,10 @@ impl LoadModel for Pads {
     fn stage_dependent(&self) -> bool {
         true
     }
+    /// Only the residual deflection of held normal forces is read at χ.
+    fn reads_joint_angle(&self, ctx: &LoadContext) -> bool {
+        self.series.is_some() && held_normal_forces(ctx).is_some()
+    }
     fn coupling(&self) -> Coupling {
         self.coupling
     }
@@ -494,6 +498,13 @@ impl LoadModel for Pads {
             out.ale_follower[c.node] = self.follower_friction && !slope_from_w;
         }
     }
+}
+
+/// The residual deflection of the held wrenches when one of them has a
+/// normal force (the only part the contacts read; then at the joint angle).
+pub(super) fn held_normal_forces<'a>(ctx: &LoadContext<'a>) -> Option<HeldDeflection<'a>> {
+    ctx.held
+        .filter(|h| h.ale.iter().chain(h.lagrange).any(|w| w.force[2] != 0.0))
 }
 
 #[cfg(test)]

@@ -7,7 +7,7 @@
 //! solved with it (active set); the dampers act on the modal rate.
 
 use super::model::{Coupling, LoadContext, SurfaceKinematics};
-use super::pad::{PadScratch, Pads};
+use super::pad::{held_normal_forces, PadScratch, Pads};
 use super::pad_config::Caliper;
 use crate::dynamics::contact_compliance::{stiffness_rate, ContactCompliance};
 use crate::dynamics::node_frame::{NodeFrame, NodeShape};
@@ -76,9 +76,7 @@ impl Pads {
             tried,
             ..
         } = s;
-        let held = ctx
-            .held
-            .filter(|h| h.ale.iter().chain(h.lagrange).any(|w| w.force[2] != 0.0));
+        let held = held_normal_forces(ctx);
         for ((w, c), k) in w_free.iter_mut().zip(&self.contacts).zip(kinematics.iter()) {
             *w = k.w + held.map_or(0.0, |h| h.at(c.node, ctx.chi));
         }

@@ -25,6 +25,7 @@ use crate::dynamics::ale::{ale_to_lagrange, harmonics};
 use crate::dynamics::commands::Inputs;
 use crate::dynamics::integrators::contact_exponential::ContactExponential;
 use crate::dynamics::joint::StageDrive;
+use crate::dynamics::load_models::LoadContext;
 use crate::dynamics::scene::Scene;
 use crate::dynamics::state::{JointAngle, State};
 
@@ -69,7 +70,17 @@ impl Stepper {
         let m = scene.first_order_unknowns();
         self.contact_prepare(scene, state, h, stage_drive);
         frame_kick(scene, kick, &mut self.y);
-        self.held_key(scene, inputs, speed_mean, chi_mid);
+        let (q_ale, q_dot_ale) = state.ale();
+        let reads_chi = scene.load_models.reads_joint_angle(&LoadContext {
+            ale_nodes: &scene.ale_nodes,
+            lagrange_nodes: &scene.lagrange_nodes,
+            q_ale,
+            q_dot_ale,
+            chi: chi_mid.angle,
+            speed: speed_mean,
+            held: scene.held_deflection(inputs),
+        });
+        self.held_key(scene, inputs, speed_mean, chi_mid, reads_chi);
         let continuous = scene.load_models.continuous_states() > 0;
         if continuous {
             self.stage_slots.copy_from(&state.load_models);
@@ -82,6 +93,7 @@ impl Stepper {
             views,
             y,
             model_wrenches,
+            evaluation,
             stage_slots,
             contact,
             contact_key,
@@ -99,6 +111,7 @@ impl Stepper {
             views,
             loads,
             model_wrenches,
+            evaluation,
             stage_slots: continuous.then_some(stage_slots),
             slots: &state.load_models,
         };
@@ -177,17 +190,29 @@ impl Stepper {
         }
     }
 
-    /// The cache key of what the step holds: Ω̄, the commands, and with
-    /// follower loads the held wrenches and χ (they then enter J).
-    fn held_key(&mut self, scene: &Scene, inputs: &Inputs, speed: f64, chi: JointAngle) {
+    /// The cache key of what the step holds: Ω̄, the commands, with
+    /// follower loads the held wrenches and χ (they then enter J), with
+    /// residual flexibility the held wrenches (their residual deflection
+    /// moves the contacts' pieces), and χ where the models read it
+    /// (`models_chi`: the residual deflection of held normal forces).
+    fn held_key(
+        &mut self,
+        scene: &Scene,
+        inputs: &Inputs,
+        speed: f64,
+        chi: JointAngle,
+        models_chi: bool,
+    ) {
         let k = &mut self.contact_key;
         k.clear();
         k.push(speed.to_bits());
         for v in inputs.commands.values.iter().flatten() {
             k.push(v.to_bits());
         }
-        if scene.effects.follower_loads {
+        if scene.effects.follower_loads || models_chi {
             k.push(chi.angle.to_bits());
+        }
+        if scene.effects.follower_loads || scene.residual.is_some() {
             for w in inputs.ale.iter().chain(&inputs.lagrange) {
                 k.extend(w.force.iter().chain(&w.moment).map(|v| v.to_bits()));
             }

@@ -4,6 +4,7 @@
 //! modal accelerations (eq. 12 with eq. 11's reference-motion terms), and
 //! where the joint is integrated in the step, the drive's law at the instant.
 
+use super::model_evaluation::ModelEvaluation;
 use super::{StateView, Views};
 use crate::config::Coordinates;
 use crate::dynamics::ale::harmonics;
@@ -35,6 +36,8 @@ pub(super) struct StageRhs<'a> {
     pub views: &'a mut Views,
     pub loads: &'a mut StepLoads,
     pub model_wrenches: &'a mut ModelWrenches,
+    /// What `model_wrenches` holds the evaluation of.
+    pub evaluation: &'a mut ModelEvaluation,
     /// The models' slots with y's continuous states scattered in (None: the models have none).
     pub stage_slots: Option<&'a mut LoadModelState>,
     pub slots: &'a LoadModelState,
@@ -81,9 +84,13 @@ impl StageRhs<'_> {
                     }
                     None => self.slots,
                 };
-                scene
-                    .load_models
-                    .evaluate(&ctx, slots, &self.inputs.commands, self.model_wrenches);
+                self.evaluation.evaluate(
+                    &scene.load_models,
+                    &ctx,
+                    slots,
+                    &self.inputs.commands,
+                    self.model_wrenches,
+                );
             }
             node_loads(
                 scene,
