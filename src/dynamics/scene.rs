@@ -166,7 +166,7 @@ impl Scene {
 
     /// Add the in-plane modes `config` selects after the bending ones (the
     /// layout and the node frames' in-plane shapes), refusing what they do
-    /// not carry yet ([`InPlaneDynamics::check`]).
+    /// not carry yet (docs/in_plane.md, "In the dynamics").
     pub fn add_in_plane(&mut self, config: &Config) -> Result<(), SimulationError> {
         let Some(ip) = InPlaneDynamics::new(
             config,
