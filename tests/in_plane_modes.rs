@@ -365,8 +365,10 @@ fn modes_leaves_out_the_rigid_in_plane_motions_of_a_free_annulus() {
     assert!((f - exact).abs() / exact < TOLERANCE, "{f} against {exact}");
 }
 
-/// simulate, campbell, stability, study, plot and the node refuse a scene
-/// with in-plane modes, naming the key, before any work and writing nothing.
+/// campbell, stability, study and plot refuse a scene with in-plane modes,
+/// and simulate and the node refuse the bench scene's pads with them (their
+/// forces do not act on the in-plane modes yet), naming the key, before any
+/// work and writing nothing.
 #[test]
 fn the_commands_that_would_simulate_refuse_in_plane_modes() {
     let dir = support::cli::scratch_dir("in_plane_refusals");
@@ -447,9 +449,9 @@ fn the_commands_that_would_simulate_refuse_in_plane_modes() {
     let _ = std::fs::remove_dir_all(&dir);
 }
 
-/// The node refuses to start with in-plane modes, naming the key.
+/// The node refuses the bench scene's pads with in-plane modes, naming the key.
 #[test]
-fn the_node_refuses_in_plane_modes() {
+fn the_node_refuses_pads_with_in_plane_modes() {
     let mut child = std::process::Command::new(support::cli::BIN)
         .args([
             "run",

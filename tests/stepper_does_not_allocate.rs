@@ -107,6 +107,64 @@ fn stepping_with_changing_inputs_allocates_nothing() {
     }
 }
 
+/// In-plane modes (k = 0, 1, 2) on every integrator, both descriptions, with
+/// the torsional modes against a speed-following drive and one torsional mode
+/// against a torque-limited one (its free-joint propagator is built once).
+#[test]
+fn stepping_with_in_plane_modes_allocates_nothing() {
+    for integrator in [
+        IntegratorKind::Exponential,
+        IntegratorKind::ImplicitMidpoint,
+        IntegratorKind::Rk4,
+    ] {
+        for coords in [Coordinates::Ale, Coordinates::Lagrangian] {
+            for torque_limited in [false, true] {
+                if torque_limited && integrator != IntegratorKind::Exponential {
+                    continue;
+                }
+                let mut c = Config::default();
+                c.plate.damping = vec![0.02];
+                c.plate.in_plane_nodal_diameters = vec![0, 1, 2];
+                c.plate.in_plane_orders = if torque_limited { vec![0] } else { vec![0, 1] };
+                c.joint.max_torque = torque_limited.then_some(5.0);
+                c.joint.speed = 2.0;
+                c.simulation.integrator = integrator;
+                c.simulation.coordinates = coords;
+                c.simulation.rate_hz = 20_000.0;
+                c.nodes.ale.push(NodePosition {
+                    radial: 1.0,
+                    angular: 0.0,
+                });
+                c.nodes.lagrange.push(NodePosition {
+                    radial: 0.5,
+                    angular: 0.5,
+                });
+                let mut sim = Simulation::new(c).unwrap();
+                sim.step().unwrap();
+                let before = allocations();
+                for s in 0..200 {
+                    let wrench = Wrench {
+                        force: [10.0, -50.0 - s as f64, -100.0],
+                        moment: [0.0; 3],
+                    };
+                    sim.set_ale_wrench(0, wrench).unwrap();
+                    sim.set_lagrange_wrench(0, wrench).unwrap();
+                    sim.set_speed_command(2.0 + 0.01 * s as f64).unwrap();
+                    sim.step().unwrap();
+                    std::hint::black_box((sim.q_ale()[0], sim.joint()));
+                }
+                let after = allocations();
+                assert_eq!(
+                    after - before,
+                    0,
+                    "{integrator:?}/{coords:?}, torque-limited {torque_limited}: allocated {} times",
+                    after - before
+                );
+            }
+        }
+    }
+}
+
 /// Massive pads (`pads.mass`), on the modal deflection and in series with the
 /// residual flexibility: their states ride in RK4's state vector and the
 /// stage slots are scratch, so stepping still allocates nothing.

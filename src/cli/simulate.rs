@@ -20,7 +20,8 @@ use std::sync::atomic::{AtomicBool, Ordering};
 
 /// The CSV header for a simulation.
 pub fn header(sim: &Simulation) -> String {
-    let n = sim.model().n_modes();
+    // Bending modes, then the in-plane ones (docs/in_plane.md).
+    let n = sim.scene().n_modes();
     let mut cols = vec![
         "time".to_string(),
         "joint_position".into(),

@@ -242,6 +242,8 @@ pub fn main(args: StabilityArgs) -> CliResult<()> {
     let params = super::params_with_overrides(&file, &args.overrides)?;
     let digest = params_digest(&params);
     let config = super::load_config_with(&file, &args.overrides)?;
+    crate::model::refuse_in_plane(&config.plate)
+        .map_err(|e| CliError::Usage(format!("{}: {e}", file.display())))?;
     if let Some(p) = &args.plot {
         super::plot::check_output_path(p)?;
     }

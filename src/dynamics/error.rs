@@ -65,6 +65,14 @@ pub enum StepError {
         /// The step, s.
         step: f64,
     },
+    /// The joint turned faster than the in-plane modes' bound without their spin terms.
+    #[error("the joint speed {speed} rad/s is beyond {limit:.3} rad/s, the bound for in-plane modes (plate.in_plane_nodal_diameters) without their spin terms (Coriolis coupling 2Ω/ω_min up to 1e-3); the step was undone")]
+    InPlaneSpin {
+        /// Ω at the step's end, rad/s.
+        speed: f64,
+        /// The bound, rad/s.
+        limit: f64,
+    },
 }
 
 /// A scene the chosen integrator cannot run.
@@ -120,6 +128,22 @@ pub enum SimulationError {
         unknowns: usize,
         /// The largest number of unknowns tabulated.
         limit: usize,
+    },
+    /// A key the in-plane modes do not carry yet.
+    #[error("{key} with in-plane modes (plate.in_plane_nodal_diameters) is refused: {why} (docs/in_plane.md)")]
+    InPlaneKeyNotWired {
+        /// The key refused.
+        key: &'static str,
+        /// Why.
+        why: &'static str,
+    },
+    /// A start faster than the in-plane modes' bound without their spin terms.
+    #[error("joint.speed = {speed} rad/s is beyond {limit:.3} rad/s, the bound for in-plane modes (plate.in_plane_nodal_diameters) without their spin terms (Coriolis coupling 2Ω/ω_min up to 1e-3)")]
+    InPlaneSpin {
+        /// joint.speed, rad/s.
+        speed: f64,
+        /// The bound, rad/s.
+        limit: f64,
     },
     /// A load model with state of its own that evolves with the modes (massive pads).
     #[error("the {model} have state of their own ({keys}) that only simulation.integrator: rk4 integrates with the modes; simulation.integrator = {integrator} is refused")]

@@ -13,6 +13,9 @@
 //! eq. (18), constant in frame A; Lagrangian ones act on the modes of (13).
 //! About the axis every wrench gives τ_z = x F_y − y F_x + M_z.
 //!
+//! In-plane modes (`plate.in_plane_nodal_diameters`) take the in-plane
+//! components: f_i = u_x,i F_x + u_y,i F_y ([`super::in_plane`]).
+//!
 //! A frame on a face (z = ±h/2, `nodes.*_surface`) moves in-plane by −z∇w
 //! (Kirchhoff), so its in-plane force F_t does the virtual work −z F_t·∇w_i:
 //! the moment z e_z × F about the mid-plane point, added to M. Under Mindlin
@@ -90,6 +93,14 @@ pub fn compute(
             torque += add_node(node, w, q_lagrange, follower, &mut out.plate_frame);
         }
     }
+    if let Some(ip) = &scene.in_plane {
+        for (shapes, w) in ip.ale_nodes.iter().zip(&inputs.ale) {
+            ip.add_node_force(shapes, &w.force, &mut out.ale_frame);
+        }
+        for (shapes, w) in ip.lagrange_nodes.iter().zip(&inputs.lagrange) {
+            ip.add_node_force(shapes, &w.force, &mut out.plate_frame);
+        }
+    }
     if !scene.load_models.is_empty() {
         for ((node, w), &f) in scene
             .ale_nodes
@@ -133,8 +144,11 @@ pub fn add_reference_motion(scene: &Scene, speed: f64, ale_frame: &mut [f64]) {
     let body = scene.model.body();
     if scene.effects.axial_body_force {
         let fz = scene.reference.specific_force[2];
+        // The in-plane modes (after the bending ones) have no axial moment.
         for &i in &scene.layout.axisymmetric {
-            ale_frame[i] -= body.first_moments[i][2] * fz;
+            if let Some(c) = body.first_moments.get(i) {
+                ale_frame[i] -= c[2] * fz;
+            }
         }
     }
     if scene.effects.off_axis_rotation {

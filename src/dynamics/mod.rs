@@ -14,6 +14,7 @@ pub(crate) mod commands;
 pub(crate) mod contact_compliance;
 pub(crate) mod dense;
 pub(crate) mod error;
+pub(crate) mod in_plane;
 pub(crate) mod integrators;
 pub(crate) mod joint;
 pub(crate) mod layout;

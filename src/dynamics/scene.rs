@@ -6,6 +6,8 @@ use crate::config::{Config, JointConfig, LimitsConfig, PlateTheory};
 use crate::model::PlateModel;
 
 use super::commands::InputRules;
+use super::error::SimulationError;
+pub use super::in_plane::InPlaneDynamics;
 pub use super::layout::{ModeLayout, ModePair};
 use super::load_models::{LoadModels, ModelWrenches, SceneNodes};
 pub use super::node_frame::{NodeFrame, NodeKind};
@@ -64,6 +66,9 @@ pub struct Scene {
     /// The geometric stiffness Ω²G_k of the spinning prestress
     /// (`plate.centrifugal_stiffening`; None when off: no cost).
     pub stiffening: Option<Stiffening>,
+    /// The in-plane modes after the bending ones (`plate.in_plane_nodal_diameters`;
+    /// None without: no cost, [`Scene::add_in_plane`]).
+    pub in_plane: Option<InPlaneDynamics>,
 }
 
 impl Scene {
@@ -155,7 +160,27 @@ impl Scene {
             load_models,
             residual,
             stiffening,
+            in_plane: None,
         }
+    }
+
+    /// Add the in-plane modes `config` selects after the bending ones (the
+    /// layout and the node frames' in-plane shapes), refusing what they do
+    /// not carry yet (docs/in_plane.md, "In the dynamics").
+    pub fn add_in_plane(&mut self, config: &Config) -> Result<(), SimulationError> {
+        let Some(ip) = InPlaneDynamics::new(
+            config,
+            self.model.n_modes(),
+            &self.ale_nodes,
+            &self.lagrange_nodes,
+        )?
+        else {
+            return Ok(());
+        };
+        ip.check(config, !self.load_models.is_empty())?;
+        ip.extend_layout(&mut self.layout);
+        self.in_plane = Some(ip);
+        Ok(())
     }
 
     /// The residual deflection of the held wrenches `inputs`, for the load
@@ -182,9 +207,24 @@ impl Scene {
         )
     }
 
-    /// The number of elastic modes.
+    /// The number of elastic coordinates: the bending modes, then the in-plane ones.
     pub fn n_modes(&self) -> usize {
-        self.model.n_modes()
+        self.model.n_modes() + self.in_plane.as_ref().map_or(0, |ip| ip.len())
+    }
+
+    /// Per elastic coordinate (bending, then in-plane): k, modal mass, ζ, ω.
+    pub fn elastic_modes(&self) -> impl Iterator<Item = (u32, f64, f64, f64)> + '_ {
+        let bending = self
+            .model
+            .modes()
+            .iter()
+            .map(|m| (m.k, m.modal_mass, m.damping, m.omega));
+        let in_plane = self
+            .in_plane
+            .iter()
+            .flat_map(|ip| &ip.modes)
+            .map(|m| (m.k, m.modal_mass, m.damping, m.omega));
+        bending.chain(in_plane)
     }
 
     /// Unknowns of the first-order system `contact_exponential` advances: the

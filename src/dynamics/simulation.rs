@@ -110,8 +110,9 @@ pub struct Simulation {
 impl Simulation {
     /// Build the model, the scene and the stepper of a validated configuration, at its initial state.
     pub fn new(config: Config) -> Result<Simulation, SimulationError> {
-        let model = PlateModel::new(&config.plate)?;
-        let scene = Scene::new(&config, model);
+        let model = PlateModel::bending(&config.plate)?;
+        let mut scene = Scene::new(&config, model);
+        scene.add_in_plane(&config)?;
         check_mindlin_scene(&config, &scene)?;
         let settings = StepperSettings::from_config(&config);
         let stepper = Stepper::new(&scene);
@@ -453,15 +454,31 @@ impl Simulation {
     pub fn q_dot_ale(&self) -> &[f64] {
         self.state.ale().1
     }
-    /// Elastic energy ½ Σ m_i (q̇_i² + ω_i² q_i²) (Lagrangian description), J.
+    /// Elastic energy ½ Σ m_i (q̇_i² + ω_i² q_i²) (Lagrangian description, bending and in-plane modes), J.
     pub fn modal_energy(&self) -> f64 {
         let b = self.scene.model.body();
         let (q, q_dot) = self.state.lagrange();
-        (0..self.scene.n_modes())
+        let bending: f64 = (0..self.scene.model.n_modes())
             .map(|i| {
                 0.5 * (b.modal_mass[i] * q_dot[i].powi(2) + b.modal_stiffness[i] * q[i].powi(2))
             })
-            .sum()
+            .sum();
+        let in_plane: f64 = self
+            .scene
+            .in_plane
+            .iter()
+            .map(|ip| {
+                ip.modes
+                    .iter()
+                    .enumerate()
+                    .map(|(j, m)| {
+                        let i = ip.offset + j;
+                        0.5 * m.modal_mass * (q_dot[i].powi(2) + m.omega.powi(2) * q[i].powi(2))
+                    })
+                    .sum::<f64>()
+            })
+            .sum();
+        bending + in_plane
     }
 }
 

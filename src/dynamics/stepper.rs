@@ -29,11 +29,13 @@ use super::scene::Scene;
 use super::state::{JointAngle, State};
 use super::wrench::Wrench;
 use crate::config::{Config, Coordinates, IntegratorKind};
+use in_plane_joint::InPlaneJoint;
 use model_evaluation::ModelEvaluation;
 use nalgebra::Complex;
 use stage_rhs::StageRhs;
 
 mod contact_step;
+mod in_plane_joint;
 mod model_evaluation;
 mod stage_rhs;
 
@@ -172,6 +174,8 @@ pub struct Stepper {
     contact_levels: Option<(usize, usize)>,
     contact_key: Vec<u64>,
     last_contact: ContactReport,
+    /// The torsional in-plane modes' coupling with the joint over a substep.
+    in_plane_joint: InPlaneJoint,
 }
 
 impl Stepper {
@@ -218,6 +222,7 @@ impl Stepper {
             contact_levels: None,
             contact_key: Vec::with_capacity(64),
             last_contact: ContactReport::default(),
+            in_plane_joint: InPlaneJoint::new(),
         }
     }
 
@@ -257,15 +262,13 @@ impl Stepper {
             .as_ref()
             .map_or(0.0, |s| s.rate_bound * speed * speed);
         scene
-            .model
-            .modes()
-            .iter()
+            .elastic_modes()
             .zip(&self.consts)
-            .map(|(m, mc)| {
+            .map(|((k, ..), mc)| {
                 (mc.omega_eff_sq.abs() + stiffening + c.stiffness_rate_sq).sqrt()
                     + mc.damping_rate
                     + c.damping_rate
-                    + m.k as f64 * speed.abs()
+                    + k as f64 * speed.abs()
             })
             .fold(0.0, f64::max)
     }
@@ -362,16 +365,27 @@ impl Stepper {
             state.load_models = slots;
         }
         self.node_loads(scene, state, inputs);
+        let (inertia, load_torque) = match &scene.in_plane {
+            Some(ip) => {
+                let (q, q_dot) = state.lagrange();
+                let f = &self.loads.ale_frame;
+                ip.reduced_joint(scene.polar_inertia, self.loads.axial_torque, f, q, q_dot)
+            }
+            None => (scene.polar_inertia, self.loads.axial_torque),
+        };
         let d = drive(
             &scene.joint,
-            scene.polar_inertia,
+            inertia,
             state.speed,
             inputs.speed_command,
-            self.loads.axial_torque,
+            load_torque,
             &self.model_wrenches.friction,
             h,
         );
-        let joint = SubstepMotion::new(h, state.chi, state.speed, d.acceleration);
+        let twist = self
+            .in_plane_joint
+            .begin(scene, state, &mut self.loads, &d, h);
+        let joint = SubstepMotion::new(h, state.chi, state.speed, twist.acceleration);
 
         let stiff_models = models.stage_dependent();
         let in_step = integrated_in_step(&scene.joint, stiff_models, &self.model_wrenches.friction);
@@ -409,7 +423,7 @@ impl Stepper {
             chi1: joint.chi1,
             speed1: joint.speed1,
             acceleration: joint.alpha,
-            effort: d.effort,
+            effort: self.in_plane_joint.end(scene, state, twist, h),
         });
         state.chi = end.chi1;
         state.speed = end.speed1;
@@ -516,11 +530,11 @@ impl Stepper {
         }
         if self.propagators_for != Some((h, speed_mean)) {
             let soft = scene.off_axis_rate_squared();
-            for (i, m) in scene.model.modes().iter().enumerate() {
-                let nu = m.k as f64 * speed_mean;
+            for (i, (k, mass, damping, omega)) in scene.elastic_modes().enumerate() {
+                let nu = k as f64 * speed_mean;
                 let p = &mut self.propagators[i];
                 if p.h != h || p.nu != nu {
-                    *p = ModePropagator::new(m.modal_mass, m.damping, m.omega, soft, h, nu);
+                    *p = ModePropagator::new(mass, damping, omega, soft, h, nu);
                 }
             }
             self.propagators_for = Some((h, speed_mean));
@@ -918,7 +932,8 @@ fn check(scene: &Scene, state: &State) -> Result<(), StepError> {
     let limit = scene.limits.max_deflection_thicknesses * scene.model.plate().thickness;
     // One vectorizable pass; the search for the culprit only when some amplitude is beyond the limit.
     if largest_magnitude(&state.q) > limit {
-        if let Some((i, &q)) = state.q.iter().enumerate().find(|(_, q)| q.abs() > limit) {
+        let bending = &state.q[..scene.model.n_modes()];
+        if let Some((i, &q)) = bending.iter().enumerate().find(|(_, q)| q.abs() > limit) {
             let m = &scene.model.modes()[i];
             return diverged(Divergence::ModeBeyondLimit {
                 mode: i,
@@ -927,6 +942,14 @@ fn check(scene: &Scene, state: &State) -> Result<(), StepError> {
                 shape: m.shape,
                 value: q,
                 limit,
+            });
+        }
+    }
+    if let Some(ip) = &scene.in_plane {
+        if state.speed.abs() > ip.speed_bound {
+            return Err(StepError::InPlaneSpin {
+                speed: state.speed,
+                limit: ip.speed_bound,
             });
         }
     }

@@ -169,7 +169,9 @@ impl MarkerInput {
     /// Copy the current state into the buffers (no allocation).
     pub fn capture(&mut self, sim: &Simulation, stamp: Time) {
         self.stamp = stamp;
-        self.q_lagrange.copy_from_slice(sim.q_lagrange());
+        // The bending modes' amplitudes (the marker draws w).
+        let n = self.q_lagrange.len();
+        self.q_lagrange.copy_from_slice(&sim.q_lagrange()[..n]);
         let inputs = sim.inputs();
         for (j, f) in self.ale_forces.iter_mut().enumerate() {
             *f = add(inputs.ale[j].force, sim.ale_model_wrench(j).force);

@@ -238,10 +238,12 @@ impl OutputMessages {
         m.header.stamp = stamp;
         m.step = sim.step_count();
         m.sim_time = sim.time();
-        m.q_lagrange.copy_from_slice(sim.q_lagrange());
-        m.q_dot_lagrange.copy_from_slice(sim.q_dot_lagrange());
-        m.q_ale.copy_from_slice(sim.q_ale());
-        m.q_dot_ale.copy_from_slice(sim.q_dot_ale());
+        // The bending modes' entries (the in-plane ones follow them in the state).
+        let n = m.q_lagrange.len();
+        m.q_lagrange.copy_from_slice(&sim.q_lagrange()[..n]);
+        m.q_dot_lagrange.copy_from_slice(&sim.q_dot_lagrange()[..n]);
+        m.q_ale.copy_from_slice(&sim.q_ale()[..n]);
+        m.q_dot_ale.copy_from_slice(&sim.q_dot_ale()[..n]);
 
         for (i, msg) in &mut self.models {
             let (_, layout) = sim.scene().load_models.outputs(*i);

@@ -71,8 +71,8 @@ pub enum ModelError {
     /// The in-plane modes could not be computed.
     #[error("plate.in_plane_nodal_diameters: {0} (plate.radial_splines is the count per field, plate.in_plane_orders the orders)")]
     InPlane(super::in_plane::InPlaneError),
-    /// In-plane modes selected for a consumer of the model other than `modes`.
-    #[error("plate.in_plane_nodal_diameters = {nodal_diameters:?} selects in-plane modes, which only `modes` lists so far: the dynamics (the floating frame terms, the joint, node frames, loads) and the analyses built on them (simulate, run, campbell, stability, study, plot) do not carry in-plane modes yet (docs/in_plane.md). Set plate.in_plane_nodal_diameters: [] here")]
+    /// In-plane modes selected for an analysis that does not carry them.
+    #[error("plate.in_plane_nodal_diameters = {nodal_diameters:?} selects in-plane modes, which `modes`, `simulate` and `run` carry: the analyses campbell, stability, study and plot do not carry in-plane modes yet (docs/in_plane.md). Set plate.in_plane_nodal_diameters: [] here")]
     InPlaneNotWired {
         /// The requested in-plane k.
         nodal_diameters: Vec<u32>,

@@ -12,9 +12,9 @@
 //! frames turned by ψ, body data with the rotary inertia), `plot` draws
 //! their w, `study` measures them. [`in_plane`]
 //! computes the in-plane (plane-stress) modes by the same machinery; `modes`
-//! lists them ([`PlateModel::bending_and_in_plane`]), and
-//! [`PlateModel::new`] refuses them for the dynamics, which do not carry
-//! them yet (docs/in_plane.md).
+//! lists them ([`PlateModel::bending_and_in_plane`]), the dynamics carry them
+//! ([`PlateModel::bending`]), and [`PlateModel::new`] refuses them for the
+//! analyses that do not (docs/in_plane.md).
 
 mod annulus;
 pub(crate) mod body;
@@ -48,6 +48,17 @@ pub use spinning::{ModalGeometricStiffness, SpinningSpectrum};
 
 use crate::config::{PlateConfig, PlateTheory};
 
+/// Refuse a non-empty `plate.in_plane_nodal_diameters` for the analyses
+/// that do not carry in-plane modes (campbell, stability, study, plot).
+pub fn refuse_in_plane(plate: &PlateConfig) -> Result<(), ModelError> {
+    if plate.in_plane_nodal_diameters.is_empty() {
+        return Ok(());
+    }
+    Err(ModelError::InPlaneNotWired {
+        nodal_diameters: plate.in_plane_nodal_diameters.clone(),
+    })
+}
+
 /// Bending rigidity D = E h³ / (12 (1 − ν²)), eq. (2) (defined with the
 /// configuration, whose validation checks its range).
 pub use crate::config::bending_rigidity;
@@ -68,15 +79,18 @@ pub struct PlateModel {
 
 impl PlateModel {
     /// Build the model for a validated plate configuration. Refuses a
-    /// non-empty `plate.in_plane_nodal_diameters` before any work: the
-    /// dynamics and analyses built on the model do not carry in-plane modes
-    /// yet.
+    /// non-empty `plate.in_plane_nodal_diameters` before any work
+    /// ([`refuse_in_plane`]): the analyses built on this model do not carry
+    /// in-plane modes.
     pub fn new(plate: &PlateConfig) -> Result<PlateModel, ModelError> {
-        if !plate.in_plane_nodal_diameters.is_empty() {
-            return Err(ModelError::InPlaneNotWired {
-                nodal_diameters: plate.in_plane_nodal_diameters.clone(),
-            });
-        }
+        refuse_in_plane(plate)?;
+        build::build(plate)
+    }
+
+    /// The bending model of `plate` whatever its in-plane keys: the
+    /// dynamics (`simulate`, `run`) add the in-plane modes themselves
+    /// (`dynamics::in_plane`).
+    pub fn bending(plate: &PlateConfig) -> Result<PlateModel, ModelError> {
         build::build(plate)
     }
 

@@ -44,13 +44,11 @@ pub struct ModeConstants {
 pub fn mode_constants(scene: &Scene) -> Vec<ModeConstants> {
     let soft = scene.off_axis_rate_squared();
     scene
-        .model
-        .modes()
-        .iter()
-        .map(|m| ModeConstants {
-            mass: m.modal_mass,
-            damping_rate: 2.0 * m.damping * m.omega,
-            omega_eff_sq: m.omega * m.omega - soft,
+        .elastic_modes()
+        .map(|(_, mass, damping, omega)| ModeConstants {
+            mass,
+            damping_rate: 2.0 * damping * omega,
+            omega_eff_sq: omega * omega - soft,
         })
         .collect()
 }
