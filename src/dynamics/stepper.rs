@@ -342,16 +342,7 @@ impl Stepper {
         let models = &scene.load_models;
         if !models.is_empty() {
             let mut slots = std::mem::take(&mut state.load_models);
-            let (q_ale, q_dot_ale) = state.ale();
-            let mut ctx = LoadContext {
-                ale_nodes: &scene.ale_nodes,
-                lagrange_nodes: &scene.lagrange_nodes,
-                q_ale,
-                q_dot_ale,
-                chi: state.chi.angle,
-                speed: state.speed,
-                held: scene.held_deflection(inputs),
-            };
+            let mut ctx = load_context(scene, state, inputs);
             models.begin_substep(&ctx, &mut slots, h);
             // Prescribed forces at the substep's mid-angle (held by the non-RK4 integrators).
             ctx.chi = state.chi.angle + 0.5 * state.speed * h;
@@ -902,6 +893,21 @@ impl StateView<'_> {
 }
 
 /// max |v| over finite values, in four independent lanes (no early exit).
+/// What the load models see at `state`: its ALE amplitudes and rates, χ, Ω
+/// and the held wrenches' residual deflection.
+fn load_context<'a>(scene: &'a Scene, state: &'a State, inputs: &'a Inputs) -> LoadContext<'a> {
+    let (q_ale, q_dot_ale) = state.ale();
+    LoadContext {
+        ale_nodes: &scene.ale_nodes,
+        lagrange_nodes: &scene.lagrange_nodes,
+        q_ale,
+        q_dot_ale,
+        chi: state.chi.angle,
+        speed: state.speed,
+        held: scene.held_deflection(inputs),
+    }
+}
+
 fn largest_magnitude(values: &[f64]) -> f64 {
     let mut m = [0.0f64; 4];
     let chunks = values.chunks_exact(4);

@@ -19,7 +19,7 @@
 //! The load models are evaluated at Ω̄ (their sliding speed).
 
 use super::stage_rhs::StageRhs;
-use super::{JointEnd, Stepper, SubstepMotion};
+use super::{load_context, JointEnd, Stepper, SubstepMotion};
 use crate::config::Coordinates;
 use crate::dynamics::ale::{ale_to_lagrange, harmonics};
 use crate::dynamics::commands::Inputs;
@@ -70,15 +70,10 @@ impl Stepper {
         let m = scene.first_order_unknowns();
         self.contact_prepare(scene, state, h, stage_drive);
         frame_kick(scene, kick, &mut self.y);
-        let (q_ale, q_dot_ale) = state.ale();
         let reads_chi = scene.load_models.reads_joint_angle(&LoadContext {
-            ale_nodes: &scene.ale_nodes,
-            lagrange_nodes: &scene.lagrange_nodes,
-            q_ale,
-            q_dot_ale,
             chi: chi_mid.angle,
             speed: speed_mean,
-            held: scene.held_deflection(inputs),
+            ..load_context(scene, state, inputs)
         });
         self.held_key(scene, inputs, speed_mean, chi_mid, reads_chi);
         let continuous = scene.load_models.continuous_states() > 0;

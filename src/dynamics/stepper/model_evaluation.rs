@@ -10,7 +10,7 @@
 //! re-evaluates at every stage (pads, springs, links: short keys). Nothing of it is state: a fresh [`Stepper`](super::Stepper)
 //! makes the same evaluation and gets the same bits.
 
-use super::Stepper;
+use super::{load_context, Stepper};
 use crate::dynamics::commands::Inputs;
 use crate::dynamics::load_models::{
     LoadCommands, LoadContext, LoadModelState, LoadModels, ModelWrenches,
@@ -70,16 +70,7 @@ impl Stepper {
         state: &State,
         inputs: &Inputs,
     ) -> &ModelWrenches {
-        let (q_ale, q_dot_ale) = state.ale();
-        let ctx = LoadContext {
-            ale_nodes: &scene.ale_nodes,
-            lagrange_nodes: &scene.lagrange_nodes,
-            q_ale,
-            q_dot_ale,
-            chi: state.chi.angle,
-            speed: state.speed,
-            held: scene.held_deflection(inputs),
-        };
+        let ctx = load_context(scene, state, inputs);
         self.evaluation.evaluate(
             &scene.load_models,
             &ctx,
