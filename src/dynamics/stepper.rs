@@ -892,7 +892,6 @@ impl StateView<'_> {
     }
 }
 
-/// max |v| over finite values, in four independent lanes (no early exit).
 /// What the load models see at `state`: its ALE amplitudes and rates, χ, Ω
 /// and the held wrenches' residual deflection.
 fn load_context<'a>(scene: &'a Scene, state: &'a State, inputs: &'a Inputs) -> LoadContext<'a> {
@@ -908,6 +907,7 @@ fn load_context<'a>(scene: &'a Scene, state: &'a State, inputs: &'a Inputs) -> L
     }
 }
 
+/// max |v| over finite values, in four independent lanes (no early exit).
 fn largest_magnitude(values: &[f64]) -> f64 {
     let mut m = [0.0f64; 4];
     let chunks = values.chunks_exact(4);
