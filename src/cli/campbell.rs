@@ -3,6 +3,7 @@
 //! docs/rotor_dynamics.md).
 
 use super::error::{CliError, CliResult};
+use crate::config::{PlateConfig, RadialSplines};
 use crate::model::campbell::{campbell, critical_speeds, CampbellDiagram};
 use crate::model::PlateModel;
 use std::io::Write;
@@ -20,7 +21,7 @@ pub struct CampbellArgs {
     /// N speeds from FROM to TO rad/s, inclusive (default: 0 to 1.2 × the highest critical speed, 121 speeds).
     #[arg(long, value_name = "FROM:TO:N", allow_hyphen_values = true)]
     pub speeds: Option<String>,
-    /// Machine-readable output: {"speeds_rad_s", "modes": [{"k", "l", "rotating_hz", "forward_hz", "backward_hz"}], "critical_speeds": [{"k", "l", "rad_s"}]}.
+    /// Machine-readable output: {"speeds_rad_s", "modes": [{"k", "l", "rotating_hz", "forward_hz", "backward_hz"}], "critical_speeds": [{"k", "l", "rad_s"}]}, with in-plane modes also "in_plane": [{"k", "order", "rotating_forward_hz", "rotating_backward_hz", "forward_hz", "backward_hz"}] and "in_plane_critical_speeds": [{"k", "order", "rad_s"}].
     #[arg(long)]
     pub json: bool,
     /// Also draw the diagram to this file (.png or .svg).
@@ -96,9 +97,12 @@ pub(crate) fn linspace(from: f64, to: f64, n: usize) -> Vec<f64> {
 pub fn main(args: CampbellArgs) -> CliResult<()> {
     let config = super::load_config_with(&args.file, &args.overrides)?;
     if let Some(p) = &args.plot {
+        // The picture draws the bending modes only.
+        crate::model::refuse_in_plane(&config.plate)?;
         super::plot::check_output_path(p)?;
     }
-    let model = PlateModel::new(&config.plate)?;
+    // The in-plane waves come from the plate's in-plane keys (`campbell`).
+    let model = PlateModel::bending(&config.plate)?;
     let speeds = match &args.speeds {
         Some(text) => {
             let speeds = parse_range("--speeds", text)?;
@@ -131,6 +135,7 @@ pub fn main(args: CampbellArgs) -> CliResult<()> {
             linspace(0.0, 1.2 * top, DEFAULT_SPEED_COUNT)
         }
     };
+    bound_in_plane_work(&config.plate, &speeds)?;
     let diagram = campbell(&model, &config.centrifugal, &speeds)?;
     if let Some(p) = &args.plot {
         super::plot::campbell(
@@ -150,6 +155,33 @@ pub fn main(args: CampbellArgs) -> CliResult<()> {
         args.json,
         &mut stdout.lock(),
     )?;
+    Ok(())
+}
+
+/// The most in-plane eigensolutions (speeds × in-plane k) at 60 B-splines
+/// per field, scaled by (splines/60)³ for other counts: one took ~17 ms for
+/// the brake bench disc (a dense eigenproblem of 4 × 59 unknowns), so this
+/// many ~35 s.
+pub(crate) const MAX_IN_PLANE_SOLVES: f64 = 2000.0;
+
+/// Refuse an in-plane diagram whose eigensolutions would take more than
+/// [`MAX_IN_PLANE_SOLVES`], before any work.
+fn bound_in_plane_work(plate: &PlateConfig, speeds: &[f64]) -> CliResult<()> {
+    let ks = plate.in_plane_nodal_diameters.len();
+    let splines = match plate.radial_splines {
+        RadialSplines::Auto => crate::model::in_plane::DEFAULT_SPLINES,
+        RadialSplines::Fixed(n) => n,
+    };
+    let work = (speeds.len() * ks) as f64 * (splines as f64 / 60.0).powi(3);
+    if work > MAX_IN_PLANE_SOLVES {
+        return Err(CliError::Usage(format!(
+            "{} speeds × {ks} k of plate.in_plane_nodal_diameters at plate.radial_splines = {splines} is {work:.0} \
+             in-plane eigensolutions of 60 B-splines' cost (~17 ms each, ~{:.0} s here), more than {MAX_IN_PLANE_SOLVES}; \
+             give fewer --speeds or fewer k",
+            speeds.len(),
+            work * 0.017
+        )));
+    }
     Ok(())
 }
 
@@ -191,6 +223,48 @@ pub fn write(
             out,
             "{:>4} {:>4} {:>16.4} {:>16.4} {:>18}",
             m.k, m.l, first, last, critical
+        )?;
+    }
+    write_in_plane(diagram, out)
+}
+
+/// The in-plane waves' table: turning-frame frequencies at the first and
+/// last speed, the critical speed where the backward wave stands still.
+fn write_in_plane(diagram: &CampbellDiagram, out: &mut impl Write) -> std::io::Result<()> {
+    if diagram.in_plane.is_empty() {
+        return Ok(());
+    }
+    writeln!(
+        out,
+        "In-plane waves, turning frame (forward / backward), Hz"
+    )?;
+    writeln!(
+        out,
+        "{:>4} {:>5} {:>25} {:>25} {:>18}",
+        "k", "order", "f(Ω=first) Hz", "f(Ω=last) Hz", "critical rad/s"
+    )?;
+    let pair = |w: &[f64], b: &[f64], last: bool| {
+        let at = |v: &[f64]| {
+            if last { v.last() } else { v.first() }
+                .copied()
+                .unwrap_or(f64::NAN)
+        };
+        format!("{:.4} / {:.4}", at(w), at(b))
+    };
+    for w in &diagram.in_plane {
+        let critical = diagram
+            .in_plane_critical_speeds
+            .iter()
+            .find(|c| c.k == w.k && c.order == w.order)
+            .map_or("—".to_string(), |c| format!("{:.3}", c.rad_s));
+        writeln!(
+            out,
+            "{:>4} {:>5} {:>25} {:>25} {:>18}",
+            w.k,
+            w.order,
+            pair(&w.rotating_forward_hz, &w.rotating_backward_hz, false),
+            pair(&w.rotating_forward_hz, &w.rotating_backward_hz, true),
+            critical
         )?;
     }
     Ok(())

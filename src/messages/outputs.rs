@@ -18,6 +18,7 @@ use super::types::{
     TransformStamped, Vector3,
 };
 use crate::dynamics::{Pose, Simulation};
+use crate::model::in_plane::InPlaneShape;
 use crate::model::AngularShape;
 use serde::{Deserialize, Deserializer, Serialize, Serializer};
 use std::sync::Arc;
@@ -102,6 +103,39 @@ fn shape_code(s: AngularShape) -> u8 {
     }
 }
 
+fn in_plane_shape_code(s: InPlaneShape) -> u8 {
+    match s {
+        InPlaneShape::Torsional => ModalAmplitudes::SHAPE_TORSIONAL,
+        InPlaneShape::Radial => ModalAmplitudes::SHAPE_RADIAL,
+        InPlaneShape::Cos => ModalAmplitudes::SHAPE_IN_PLANE_COS,
+        InPlaneShape::Sin => ModalAmplitudes::SHAPE_IN_PLANE_SIN,
+    }
+}
+
+/// The modal message's per-mode description, state order: the bending modes,
+/// then the in-plane modes (docs/in_plane.md, "In the dynamics").
+fn modal_entries(sim: &Simulation) -> ModalAmplitudes {
+    let mut m = ModalAmplitudes::default();
+    for b in sim.model().modes() {
+        m.k.push(b.k);
+        m.l.push(b.l);
+        m.shape.push(shape_code(b.shape));
+        m.frequency_hz.push(b.frequency_hz);
+    }
+    for ip in sim.scene().in_plane.iter().flat_map(|ip| &ip.modes) {
+        m.k.push(ip.k);
+        m.l.push(ip.l);
+        m.shape.push(in_plane_shape_code(ip.shape));
+        m.frequency_hz.push(ip.omega / std::f64::consts::TAU);
+    }
+    let n = m.k.len();
+    m.q_lagrange = vec![0.0; n];
+    m.q_dot_lagrange = vec![0.0; n];
+    m.q_ale = vec![0.0; n];
+    m.q_dot_ale = vec![0.0; n];
+    m
+}
+
 fn transform(p: &Pose) -> Transform {
     Transform {
         translation: Vector3::from_array(p.translation),
@@ -172,21 +206,9 @@ impl OutputMessages {
         for lag in &names.lagrange {
             transforms.push(ts(&names.rotor, lag));
         }
-        let modes = sim.model().modes();
-        let n = modes.len();
         let modal = ModalAmplitudes {
             header: header(&names.base),
-            step: 0,
-            sim_time: 0.0,
-            input_stamp: Time::default(),
-            k: modes.iter().map(|m| m.k).collect(),
-            l: modes.iter().map(|m| m.l).collect(),
-            shape: modes.iter().map(|m| shape_code(m.shape)).collect(),
-            frequency_hz: modes.iter().map(|m| m.frequency_hz).collect(),
-            q_lagrange: vec![0.0; n],
-            q_dot_lagrange: vec![0.0; n],
-            q_ale: vec![0.0; n],
-            q_dot_ale: vec![0.0; n],
+            ..modal_entries(sim)
         };
         let models = model_topics(sim)
             .into_iter()
@@ -238,12 +260,10 @@ impl OutputMessages {
         m.header.stamp = stamp;
         m.step = sim.step_count();
         m.sim_time = sim.time();
-        // The bending modes' entries (the in-plane ones follow them in the state).
-        let n = m.q_lagrange.len();
-        m.q_lagrange.copy_from_slice(&sim.q_lagrange()[..n]);
-        m.q_dot_lagrange.copy_from_slice(&sim.q_dot_lagrange()[..n]);
-        m.q_ale.copy_from_slice(&sim.q_ale()[..n]);
-        m.q_dot_ale.copy_from_slice(&sim.q_dot_ale()[..n]);
+        m.q_lagrange.copy_from_slice(sim.q_lagrange());
+        m.q_dot_lagrange.copy_from_slice(sim.q_dot_lagrange());
+        m.q_ale.copy_from_slice(sim.q_ale());
+        m.q_dot_ale.copy_from_slice(sim.q_dot_ale());
 
         for (i, msg) in &mut self.models {
             let (_, layout) = sim.scene().load_models.outputs(*i);

@@ -331,7 +331,8 @@ pub struct ModalAmplitudes {
     pub sim_time: f64,
     /// `header.stamp` of the newest stamped input applied before this step (zero: none yet).
     pub input_stamp: Time,
-    /// Nodal diameters k, one per elastic mode (modes sorted by frequency).
+    /// Nodal diameters k, one per elastic mode: the bending modes, then the
+    /// in-plane modes (each sorted by frequency).
     pub k: Vec<u32>,
     /// Nodal circles l, per mode.
     pub l: Vec<u32>,
@@ -339,7 +340,8 @@ pub struct ModalAmplitudes {
     pub shape: Vec<u8>,
     /// Natural frequency of the non-rotating plate per mode, Hz.
     pub frequency_hz: Vec<f64>,
-    /// Amplitudes in the rotating plate frame (plate_rotor), m (1 = 1 m peak transverse displacement).
+    /// Amplitudes in the rotating plate frame (plate_rotor), m (1 = 1 m peak
+    /// transverse displacement for a bending mode, in-plane for an in-plane one).
     pub q_lagrange: Vec<f64>,
     /// Their rates, m/s.
     pub q_dot_lagrange: Vec<f64>,
@@ -351,12 +353,20 @@ pub struct ModalAmplitudes {
 ros_message!(ModalAmplitudes, "annular_plate", "ModalAmplitudes");
 
 impl ModalAmplitudes {
-    /// k = 0: w ~ R(r).
+    /// Bending, k = 0: w ~ R(r).
     pub const SHAPE_AXISYMMETRIC: u8 = 0;
-    /// w ~ R(r) cos(k φ).
+    /// Bending: w ~ R(r) cos(k φ).
     pub const SHAPE_COS: u8 = 1;
-    /// w ~ R(r) sin(k φ).
+    /// Bending: w ~ R(r) sin(k φ).
     pub const SHAPE_SIN: u8 = 2;
+    /// In-plane, k = 0: u_φ ~ V(r).
+    pub const SHAPE_TORSIONAL: u8 = 3;
+    /// In-plane, k = 0: u_r ~ U(r).
+    pub const SHAPE_RADIAL: u8 = 4;
+    /// In-plane: u_r ~ U(r) cos(k φ), u_φ ~ V(r) sin(k φ).
+    pub const SHAPE_IN_PLANE_COS: u8 = 5;
+    /// In-plane: u_r ~ U(r) sin(k φ), u_φ ~ −V(r) cos(k φ).
+    pub const SHAPE_IN_PLANE_SIN: u8 = 6;
 }
 
 /// annular_plate/msg/CriticalSpeeds (`msg/CriticalSpeeds.msg`).

@@ -6,7 +6,11 @@
 //! Without `plate.centrifugal_stiffening` f is the plate's own frequency at
 //! every speed and the critical speed is ω/k; with it, f(Ω) comes from the
 //! full radial spectrum with the prestress ([`SpinningSpectrum`]).
+//!
+//! With `plate.in_plane_nodal_diameters` the diagram also has the in-plane
+//! waves and their critical speeds ([`in_plane_campbell`]).
 
+use super::in_plane::{in_plane_campbell, InPlaneCampbellWave, InPlaneCriticalSpeed};
 use super::modes::is_rigid_body;
 use super::spinning::SpinningSpectrum;
 use super::{ModelError, PlateModel};
@@ -43,7 +47,8 @@ pub struct CriticalSpeed {
 }
 
 /// The diagram: `modes` one per retained ⟨k, l⟩ (ascending k, then l),
-/// `critical_speeds` one per ⟨k ≥ 1, l⟩ that has one.
+/// `critical_speeds` one per ⟨k ≥ 1, l⟩ that has one; the in-plane waves
+/// and critical speeds (left out of the JSON when there are none).
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct CampbellDiagram {
     /// The speeds of the diagram, rad/s.
@@ -52,6 +57,12 @@ pub struct CampbellDiagram {
     pub modes: Vec<CampbellMode>,
     /// The critical speeds.
     pub critical_speeds: Vec<CriticalSpeed>,
+    /// The in-plane waves per k and order (empty without in-plane modes).
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub in_plane: Vec<InPlaneCampbellWave>,
+    /// The in-plane critical speeds inside the speed range (ascending k, then order).
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub in_plane_critical_speeds: Vec<InPlaneCriticalSpeed>,
 }
 
 /// The retained ⟨k, l⟩ of `model`, ascending k then l, rigid-body motions left out.
@@ -106,7 +117,7 @@ pub fn critical_speeds(
     Ok(out)
 }
 
-/// The diagram over `speeds` (rad/s).
+/// The diagram over ascending `speeds` (rad/s).
 pub fn campbell(
     model: &PlateModel,
     centrifugal: &CentrifugalConfig,
@@ -157,9 +168,12 @@ pub fn campbell(
             rotating_hz: rotating,
         });
     }
+    let in_plane = in_plane_campbell(plate, centrifugal, speeds)?;
     Ok(CampbellDiagram {
         speeds_rad_s: speeds.to_vec(),
         modes,
         critical_speeds: critical_speeds(model, centrifugal)?,
+        in_plane: in_plane.waves,
+        in_plane_critical_speeds: in_plane.critical_speeds,
     })
 }

@@ -52,6 +52,7 @@
 //! c_k ∫ ρh (U² + V²) r dr.
 
 mod assembly;
+mod campbell;
 mod error;
 mod model;
 mod residual;
@@ -59,6 +60,7 @@ mod spectrum;
 mod spin;
 
 pub use assembly::InPlaneDiscretisation;
+pub use campbell::{in_plane_campbell, InPlaneCampbell, InPlaneCampbellWave, InPlaneCriticalSpeed};
 pub use error::InPlaneError;
 pub use model::{in_plane_plate, InPlaneEntry, InPlaneShape, InPlaneTable};
 pub use residual::{
