@@ -24,6 +24,9 @@ const NU: f64 = 0.3;
 
 /// The brake bench disc (clamped hub: in-plane fixed at r_i, free rim) with
 /// one bending mode and the in-plane modes `k` × `orders`, undamped, at rest.
+/// Without residual flexibility a node force acts at its point (the modes'
+/// values there, as the closed forms here take them; with it a node is a
+/// load patch, tests/in_plane_node_frames.rs).
 fn disc(k: &[u32], orders: &[u32], rate_hz: f64) -> Config {
     let mut c = Config::default();
     let p = &mut c.plate;
@@ -33,6 +36,7 @@ fn disc(k: &[u32], orders: &[u32], rate_hz: f64) -> Config {
     p.nodal_diameters = vec![0];
     p.nodal_circles = vec![0];
     p.damping = vec![0.0];
+    p.residual_flexibility = false;
     p.in_plane_nodal_diameters = k.to_vec();
     p.in_plane_orders = orders.to_vec();
     c.gravity = [0.0; 3];

@@ -34,17 +34,30 @@
 //! A node's in-plane force (F_x, F_y), in its frame's axes, does the virtual
 //! work u_x,i F_x + u_y,i F_y on in-plane mode i, with (u_x, u_y) the mode's
 //! displacement at the node (the same at a face: u does not vary through the
-//! thickness). The drilling moment M_z acts on the joint only. Residual
-//! flexibility (`plate.residual_flexibility`) stays the bending modes':
-//! in-plane loads have none.
+//! thickness). The drilling moment M_z acts on the joint only.
+//!
+//! # Node frames
+//!
+//! A node frame moves with u: its in-plane displacement is Σ (u_x, u_y)_i q_i
+//! and its rate Σ (u_x, u_y)_i q̇_i in its own description's amplitudes
+//! ([`InPlaneDynamics::node_motion`]). Under an ALE node the material's
+//! displacement, in the plate's turning polar axes, changes at
+//! ∂u/∂t + Ω ∂(u_r, u_θ)/∂θ (the transport term; [`InPlaneDynamics::ale_turn`]).
+//! With `plate.residual_flexibility` a node stands for a load patch of
+//! half-width [`crate::config::PlateConfig::residual_patch_half_width`]: the
+//! modes' (u_r, u_θ) there are the patch means (work-conjugate with the
+//! force spread over the patch), and the held in-plane forces add the
+//! residual displacement of the modes left out ([`InPlaneResidual`]).
 
 use super::error::SimulationError;
+use super::in_plane_residual::InPlaneResidual;
 use super::integrators::exponential::ModePropagator;
 use super::layout::{ModeLayout, ModePair};
 use super::node_frame::NodeFrame;
 use crate::config::{Config, IntegratorKind};
 use crate::model::in_plane::{
-    in_plane_plate, InPlaneDiscretisation, InPlaneFamily, InPlaneMode, InPlaneShape, InPlaneTable,
+    in_plane_plate, patch_means, InPlaneDiscretisation, InPlaneFamily, InPlaneMode, InPlaneShape,
+    InPlaneTable, LoadPatch,
 };
 use crate::model::ModelError;
 
@@ -81,10 +94,29 @@ pub struct InPlaneDynamics {
     pub ale_nodes: Vec<Vec<[f64; 2]>>,
     /// Per Lagrangian node, per in-plane mode: (u_x, u_y) in the plate frame's axes.
     pub lagrange_nodes: Vec<Vec<[f64; 2]>>,
+    /// Per ALE node, per in-plane mode: ∂(u_r, u_θ)/∂θ in the ALE frame's
+    /// axes (the transport term of the material's rate, module docs).
+    pub ale_turn: Vec<Vec<[f64; 2]>>,
+    /// The residual compliance between the node frames
+    /// (`plate.residual_flexibility`; None when off or without nodes).
+    pub residual: Option<InPlaneResidual>,
     /// The largest |Ω| the step accepts without the spin terms of the
     /// in-plane modes (Coriolis 2Ω between u_r and u_θ, the centrifugal
     /// softening and the prestress): 10⁻³ ω_min / 2, rad/s.
     pub speed_bound: f64,
+}
+
+/// A node frame's in-plane motion, in its parent frame's axes.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct InPlaneNodeMotion {
+    /// Displacement (u_x, u_y) of the mid-plane point, m.
+    pub u: [f64; 2],
+    /// Its rate: the frame's in-plane velocity, m/s.
+    pub u_dot: [f64; 2],
+    /// Rate of the displacement of the material under the node, in the
+    /// plate's turning axes (ALE: with the transport term Ω ∂u/∂θ; a
+    /// Lagrangian node's [`InPlaneNodeMotion::u_dot`]), m/s.
+    pub material_u_dot: [f64; 2],
 }
 
 /// Relative size 2|Ω|/ω_min of the neglected Coriolis coupling accepted.
@@ -144,26 +176,56 @@ impl InPlaneDynamics {
             });
             radial.push(m);
         }
-        let at_nodes = |nodes: &[NodeFrame]| -> Vec<Vec<[f64; 2]>> {
+        let patch = plate
+            .residual_flexibility
+            .then(|| plate.residual_patch_half_width());
+        let (ri, ra) = (plate.inner_radius, plate.outer_radius);
+        let at_nodes = |nodes: &[NodeFrame]| -> Vec<Vec<([f64; 2], [f64; 2])>> {
             nodes
                 .iter()
                 .map(|n| {
+                    let patch = patch.map(|c| LoadPatch::new(ri, ra, n.radius, c));
                     modes
                         .iter()
                         .zip(&radial)
-                        .map(|(m, r)| displacement(m, r, n.radius, n.angle))
+                        .map(|(m, r)| node_shape(m, r, n.radius, patch.as_ref(), n.angle))
                         .collect()
                 })
                 .collect()
         };
+        let (ale_shapes, lagrange_shapes) = (at_nodes(ale), at_nodes(lagrange));
+        let firsts = |shapes: &[Vec<([f64; 2], [f64; 2])>]| -> Vec<Vec<[f64; 2]>> {
+            shapes
+                .iter()
+                .map(|n| n.iter().map(|s| s.0).collect())
+                .collect()
+        };
+        let residual = patch
+            .filter(|_| !(ale.is_empty() && lagrange.is_empty()))
+            .map(|c| {
+                let nodes: Vec<&NodeFrame> = ale.iter().chain(lagrange).collect();
+                // One entry per ⟨k, l⟩ and family: the cos partner stands for the pair.
+                let retained: Vec<InPlaneMode> = modes
+                    .iter()
+                    .zip(&radial)
+                    .filter(|(m, _)| m.shape != InPlaneShape::Sin)
+                    .map(|(_, r)| r.clone())
+                    .collect();
+                InPlaneResidual::new(&disc, &retained, &nodes, c)
+            });
         let omega_min = modes.iter().map(|m| m.omega).fold(f64::INFINITY, f64::min);
         Ok(Some(InPlaneDynamics {
             offset,
             torsional: (0..modes.len())
                 .filter(|&j| modes[j].shape == InPlaneShape::Torsional)
                 .collect(),
-            ale_nodes: at_nodes(ale),
-            lagrange_nodes: at_nodes(lagrange),
+            ale_nodes: firsts(&ale_shapes),
+            lagrange_nodes: firsts(&lagrange_shapes),
+            ale_turn: ale_shapes
+                .iter()
+                .map(|n| n.iter().map(|s| s.1).collect())
+                .collect(),
+            residual,
             speed_bound: 0.5 * SPIN_TOLERANCE * omega_min,
             modes,
         }))
@@ -210,6 +272,41 @@ impl InPlaneDynamics {
     pub fn add_node_force(&self, shapes: &[[f64; 2]], force: &[f64; 3], out: &mut [f64]) {
         for (o, u) in out[self.offset..].iter_mut().zip(shapes) {
             *o += u[0] * force[0] + u[1] * force[1];
+        }
+    }
+
+    /// The in-plane motion of a node frame with mode displacements `shapes`
+    /// for amplitudes and rates in its own description (module docs,
+    /// "Node frames"); `turn` ([`InPlaneDynamics::ale_turn`]) for an ALE node
+    /// turning at `speed` under the material. Without the residual.
+    pub fn node_motion(
+        &self,
+        shapes: &[[f64; 2]],
+        turn: Option<&[[f64; 2]]>,
+        q: &[f64],
+        q_dot: &[f64],
+        speed: f64,
+    ) -> InPlaneNodeMotion {
+        let sum = |shapes: &[[f64; 2]], x: &[f64]| {
+            shapes
+                .iter()
+                .zip(&x[self.offset..])
+                .fold([0.0; 2], |acc, (u, xi)| {
+                    [acc[0] + u[0] * xi, acc[1] + u[1] * xi]
+                })
+        };
+        let u_dot = sum(shapes, q_dot);
+        let material_u_dot = match turn {
+            None => u_dot,
+            Some(t) => {
+                let d = sum(t, q);
+                [u_dot[0] + speed * d[0], u_dot[1] + speed * d[1]]
+            }
+        };
+        InPlaneNodeMotion {
+            u: sum(shapes, q),
+            u_dot,
+            material_u_dot,
         }
     }
 
@@ -346,11 +443,37 @@ fn torsional_coupling(mode: &InPlaneMode, areal_density: f64) -> f64 {
     std::f64::consts::TAU * areal_density * sum
 }
 
-/// (u_x, u_y) of mode `m` (radial functions `r`) at radius ρ and angle a.
-fn displacement(m: &InPlaneModeDyn, r: &InPlaneMode, rho: f64, a: f64) -> [f64; 2] {
-    let value = r.eval(rho);
+/// (u_x, u_y) of mode `m` (radial functions `r`) at radius ρ and angle a,
+/// and ∂(u_r, u_θ)/∂θ there in the same axes: point values, or with a
+/// `patch` its means Ū sinc kβ, V̄ sinc kβ (docs/in_plane.md, "Node frames").
+fn node_shape(
+    m: &InPlaneModeDyn,
+    r: &InPlaneMode,
+    rho: f64,
+    patch: Option<&LoadPatch>,
+    a: f64,
+) -> ([f64; 2], [f64; 2]) {
+    let [u, v] = match patch {
+        None => {
+            let value = r.eval(rho);
+            [value.u, value.v]
+        }
+        Some(p) => patch_means(r, p).map(|x| x * p.angular_factor(m.k)),
+    };
     let (fu, fv) = m.shape.angular(m.k, a);
-    let (ur, ut) = (value.u * fu, value.v * fv);
+    let (dfu, dfv) = angular_slope(m.shape, m.k, a);
     let (s, c) = a.sin_cos();
-    [ur * c - ut * s, ur * s + ut * c]
+    let cartesian = |ur: f64, ut: f64| [ur * c - ut * s, ur * s + ut * c];
+    (cartesian(u * fu, v * fv), cartesian(u * dfu, v * dfv))
+}
+
+/// d/dθ of [`InPlaneShape::angular`].
+fn angular_slope(shape: InPlaneShape, k: u32, theta: f64) -> (f64, f64) {
+    let kf = k as f64;
+    let (s, c) = (kf * theta).sin_cos();
+    match shape {
+        InPlaneShape::Torsional | InPlaneShape::Radial => (0.0, 0.0),
+        InPlaneShape::Cos => (-kf * s, kf * c),
+        InPlaneShape::Sin => (kf * c, kf * s),
+    }
 }

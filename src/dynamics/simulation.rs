@@ -3,16 +3,17 @@
 
 use crate::config::{Config, Coordinates, IntegratorKind, PlateTheory};
 use crate::model::{ModelError, PlateModel};
-use nalgebra::{Isometry3, Quaternion, Translation3, UnitQuaternion, Vector3};
 
 use super::ale::{harmonics, lagrange_to_ale};
 use super::commands::Inputs;
 use super::commands::{check, check_batch, Checked, CheckedBatch, Command};
 use super::error::{BatchError, InputError, SimulationError, StepError};
+use super::in_plane::InPlaneNodeMotion;
 use super::integrators::contact_exponential::MAX_UNKNOWNS;
 use super::integrators::MAX_INNER_SUBSTEPS;
 use super::load_models::ModelWrenches;
-use super::scene::{NodeFrame, Scene};
+pub use super::node_output::{NodeOutput, Pose};
+use super::scene::Scene;
 use super::state::State;
 use super::stepper::{Stepper, StepperSettings};
 use super::wrench::{NodeKind, Wrench};
@@ -26,66 +27,6 @@ pub struct JointOutput {
     pub velocity: f64,
     /// Drive torque, N m.
     pub effort: f64,
-}
-
-/// A rigid transform as the messages carry it: translation (m) and unit
-/// quaternion (x, y, z, w). The maths is nalgebra's ([`Pose::isometry`],
-/// `From<Isometry3>`).
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Pose {
-    /// Translation, m.
-    pub translation: [f64; 3],
-    /// Unit quaternion (x, y, z, w).
-    pub rotation: [f64; 4],
-}
-
-impl Pose {
-    /// No translation, no rotation.
-    pub const IDENTITY: Pose = Pose {
-        translation: [0.0; 3],
-        rotation: [0.0, 0.0, 0.0, 1.0],
-    };
-
-    /// A rotation about z by `angle`.
-    pub fn about_z(angle: f64) -> Pose {
-        Isometry3::from_parts(
-            Translation3::identity(),
-            UnitQuaternion::from_axis_angle(&Vector3::z_axis(), angle),
-        )
-        .into()
-    }
-
-    /// As a nalgebra isometry.
-    pub fn isometry(&self) -> Isometry3<f64> {
-        let [x, y, z, w] = self.rotation;
-        let q = UnitQuaternion::new_unchecked(Quaternion::new(w, x, y, z));
-        Isometry3::from_parts(Translation3::from(self.translation), q)
-    }
-}
-
-impl From<Isometry3<f64>> for Pose {
-    fn from(iso: Isometry3<f64>) -> Pose {
-        let q = iso.rotation.coords;
-        Pose {
-            translation: iso.translation.vector.into(),
-            rotation: [q[0], q[1], q[2], q[3]],
-        }
-    }
-}
-
-/// Kinematics of one node frame.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct NodeOutput {
-    /// In the parent frame: plate_base for ALE nodes, plate_rotor for Lagrangian ones.
-    pub pose: Pose,
-    /// Transverse elastic displacement w, m.
-    pub uz: f64,
-    /// dw/dt of the frame (for an ALE node: of the space-fixed point), m/s.
-    pub uz_dot: f64,
-    /// Surface tilt (θ_x, θ_y), rad.
-    pub tilt: [f64; 2],
-    /// Transverse velocity of the material under the node, m/s (ALE: ∂w/∂t + Ω ∂w/∂θ).
-    pub material_uz_dot: f64,
 }
 
 /// A running simulation: the configuration, the immutable scene, the state,
@@ -374,19 +315,60 @@ impl Simulation {
             q_dot,
             self.state.speed,
             self.residual_deflection(j),
+            self.in_plane_motion(j),
         )
     }
 
     /// Lagrangian node `j` (0-based), in plate_rotor.
     pub fn lagrange_node(&self, j: usize) -> NodeOutput {
         let (q, q_dot) = self.state.lagrange();
+        let a = self.scene.ale_nodes.len() + j;
         NodeOutput::of(
             &self.scene.lagrange_nodes[j],
             q,
             q_dot,
             self.state.speed,
-            self.residual_deflection(self.scene.ale_nodes.len() + j),
+            self.residual_deflection(a),
+            self.in_plane_motion(a),
         )
+    }
+
+    /// The in-plane motion of node `a` (ALE first, then Lagrangian), with
+    /// the in-plane residual under the held in-plane forces (None without
+    /// in-plane modes; docs/in_plane.md, "Node frames").
+    fn in_plane_motion(&self, a: usize) -> Option<InPlaneNodeMotion> {
+        let ip = self.scene.in_plane.as_ref()?;
+        let n_ale = self.scene.ale_nodes.len();
+        let speed = self.state.speed;
+        let mut motion = if a < n_ale {
+            let (q, q_dot) = self.state.ale();
+            ip.node_motion(&ip.ale_nodes[a], Some(&ip.ale_turn[a]), q, q_dot, speed)
+        } else {
+            let (q, q_dot) = self.state.lagrange();
+            ip.node_motion(&ip.lagrange_nodes[a - n_ale], None, q, q_dot, speed)
+        };
+        if let Some(r) = &ip.residual {
+            let u = r.displacement(a, self.state.chi.wrapped(), |b| self.in_plane_node_force(b));
+            motion.u = [motion.u[0] + u[0], motion.u[1] + u[1]];
+        }
+        Some(motion)
+    }
+
+    /// In-plane force (F_x, F_y) (N) at node `b` (ALE first, then
+    /// Lagrangian), in its parent frame's axes: the held wrench plus the load
+    /// models'.
+    fn in_plane_node_force(&self, b: usize) -> [f64; 2] {
+        let n_ale = self.scene.ale_nodes.len();
+        let (held, model) = if b < n_ale {
+            (self.inputs.ale.get(b), self.ale_model_wrench(b))
+        } else {
+            (
+                self.inputs.lagrange.get(b - n_ale),
+                self.lagrange_model_wrench(b - n_ale),
+            )
+        };
+        let f = held.map_or([0.0; 3], |w| w.force);
+        [f[0] + model.force[0], f[1] + model.force[1]]
     }
 
     /// The `uz` of [`Simulation::ale_node`] alone (m; the same sums, bit for
@@ -532,50 +514,6 @@ fn reset_inputs(config: &Config, scene: &Scene, inputs: &mut Inputs) {
         })
         .collect();
     scene.load_models.reset_commands(&mut inputs.commands);
-}
-
-impl NodeOutput {
-    /// The kinematics of `node` for amplitudes in its own description.
-    /// `residual` (m) is the truncated modes' static deflection added to w
-    /// (the tilt and the rates stay modal).
-    fn of(node: &NodeFrame, q: &[f64], q_dot: &[f64], speed: f64, residual: f64) -> NodeOutput {
-        let mut d = node.deflection(q);
-        d.w += residual;
-        let uz_dot: f64 = node.shapes.iter().zip(q_dot).map(|(s, v)| s.w * v).sum();
-        let material_uz_dot = match node.kind {
-            NodeKind::Lagrange => uz_dot,
-            NodeKind::Ale => {
-                uz_dot + speed * node.w_phi.iter().zip(q).map(|(w, qi)| w * qi).sum::<f64>()
-            }
-        };
-        let p = node.surface_position(&d);
-        NodeOutput {
-            pose: Isometry3::from_parts(Translation3::new(p[0], p[1], p[2]), tilt_rotation(d.tilt))
-                .into(),
-            uz: d.w,
-            uz_dot,
-            tilt: d.tilt,
-            material_uz_dot,
-        }
-    }
-}
-
-/// The rotation of the small-slope rotation vector (θ_x, θ_y, 0): about the
-/// axis (θ_x, θ_y, 0)/θ by θ = |(θ_x, θ_y)|. Written out (rather than
-/// `UnitQuaternion::from_scaled_axis`, which rounds differently in the last
-/// digit) so the published quaternions stay what they were.
-pub fn tilt_rotation(tilt: [f64; 2]) -> UnitQuaternion<f64> {
-    let angle = (tilt[0] * tilt[0] + tilt[1] * tilt[1]).sqrt();
-    if angle < 1e-300 {
-        return UnitQuaternion::identity();
-    }
-    let (s, c) = (0.5 * angle).sin_cos();
-    UnitQuaternion::new_unchecked(Quaternion::new(
-        c,
-        tilt[0] / angle * s,
-        tilt[1] / angle * s,
-        0.0,
-    ))
 }
 
 /// Under Mindlin theory, refuse the keys whose terms are Kirchhoff's:

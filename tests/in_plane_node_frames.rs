@@ -1,0 +1,219 @@
+//! Node frames moving with the in-plane displacement u (docs/in_plane.md,
+//! "Node frames"): a held in-plane force at a rim node of the bench disc,
+//! settled, against the exact plane-stress patch compliance
+//! (`tests/support/in_plane_static.rs`, no B-splines, no modes) with the
+//! in-plane residual flexibility, where the modes alone are far off; a
+//! Lagrangian and an ALE frame at the same point at one instant; the frames'
+//! velocities against central differences of their positions.
+//!
+//! Run with `-- --nocapture` for the figures.
+
+mod support;
+
+use annular_plate::config::{Boundary, Config, IntegratorKind, NodePosition, WrenchConfig};
+use annular_plate::dynamics::{NodeOutput, Simulation};
+use std::f64::consts::PI;
+use support::in_plane_exact::Edge;
+use support::in_plane_static::InPlaneStatic;
+use support::mindlin_static::Patch;
+
+const RI: f64 = 0.07;
+const RA: f64 = 0.153;
+const H: f64 = 0.0181;
+const RHO: f64 = 7850.0;
+const E: f64 = 2.1e11;
+const NU: f64 = 0.3;
+
+/// The brake bench disc (clamped hub: in-plane fixed at r_i, free rim), one
+/// bending mode and the in-plane modes k = 0, 1, 2, l = 0, one damping ratio
+/// for all, at rest.
+fn disc(zeta: f64, rate_hz: f64) -> Config {
+    let mut c = Config::default();
+    let p = &mut c.plate;
+    (p.inner_radius, p.outer_radius, p.thickness) = (RI, RA, H);
+    (p.density, p.youngs_modulus, p.poisson_ratio) = (RHO, E, NU);
+    (p.inner_boundary, p.outer_boundary) = (Boundary::Clamped, Boundary::Free);
+    p.nodal_diameters = vec![0];
+    p.nodal_circles = vec![0];
+    p.damping = vec![zeta];
+    p.in_plane_nodal_diameters = vec![0, 1, 2];
+    p.in_plane_orders = vec![0];
+    c.gravity = [0.0; 3];
+    c.joint.speed = 0.0;
+    c.joint.max_acceleration = 1e9;
+    c.simulation.rate_hz = rate_hz;
+    c.simulation.substeps = 1;
+    c.simulation.integrator = IntegratorKind::Exponential;
+    c
+}
+
+fn node(radial: f64, angular: f64) -> NodePosition {
+    NodePosition { radial, angular }
+}
+
+fn wrench(fx: f64, fy: f64) -> WrenchConfig {
+    WrenchConfig {
+        force: [fx, fy, 0.0],
+        moment: [0.0; 3],
+    }
+}
+
+/// The exact patch compliance at the rim patch under the rim patch
+/// (rows ū_r, ū_θ; columns F_r, F_θ), m/N.
+fn exact_rim_compliance() -> [[f64; 2]; 2] {
+    let plate = InPlaneStatic::new(E, NU, H, RI, RA, Edge::Fixed, Edge::Free);
+    let patch = Patch::new(RI, RA, RA, H);
+    let (c, k_used, backward) = plate.series(&patch, &[(patch, 0.0)], 1e-7, 3000);
+    assert!(k_used < 3000, "exact series not converged");
+    assert!(backward < 1e-12, "backward error {backward:e}");
+    c[0]
+}
+
+#[test]
+fn a_held_in_plane_force_at_the_rim_settles_at_the_exact_patch_displacement() {
+    let exact = exact_rim_compliance();
+    let force = 1000.0;
+    // Node at φ = 0: x is radial, y tangential.
+    for (name, f, column) in [("radial", [force, 0.0], 0), ("tangential", [0.0, force], 1)] {
+        let mut c = disc(0.7, 20_000.0);
+        c.nodes.lagrange.push(node(1.0, 0.0));
+        c.loads.lagrange.push(wrench(f[0], f[1]));
+        let mut sim = Simulation::new(c).unwrap();
+        for _ in 0..400 {
+            sim.step().unwrap();
+        }
+        let out = sim.lagrange_node(0);
+        let ip = sim.scene().in_plane.as_ref().unwrap();
+        let modes = ip
+            .node_motion(
+                &ip.lagrange_nodes[0],
+                None,
+                sim.q_lagrange(),
+                sim.q_dot_lagrange(),
+                0.0,
+            )
+            .u;
+        let want = [exact[0][column] * force, exact[1][column] * force];
+        let scale = want[column].abs();
+        let err = |u: [f64; 2]| (u[0] - want[0]).abs().max((u[1] - want[1]).abs()) / scale;
+        let (total, modal) = (err(out.in_plane.u), err(modes));
+        let pose = out.pose.translation;
+        let moved = [pose[0] - RA, pose[1]];
+        println!(
+            "{name} {force} N at the rim: exact (u_r, u_θ) = ({:.6e}, {:.6e}) m; node frame ({:.6e}, {:.6e}) m: {total:.2e}; modes alone ({:.6e}, {:.6e}): {modal:.2e}; rate {:.1e} m/s",
+            want[0], want[1], out.in_plane.u[0], out.in_plane.u[1], modes[0], modes[1],
+            out.in_plane.u_dot[0].abs().max(out.in_plane.u_dot[1].abs()),
+        );
+        assert!(total < 1e-3, "{name}: {total:e}");
+        assert!(modal > 0.05, "{name}: the modes alone are {modal:e} off");
+        // The pose's translation is the undeformed point moved by u.
+        for (m, u) in moved.iter().zip(out.in_plane.u) {
+            assert!(
+                (m - u).abs() < 1e-8 * scale,
+                "{moved:?} vs {:?}",
+                out.in_plane.u
+            );
+        }
+    }
+}
+
+/// (x, y) of `p` turned about z by `a`.
+fn turned(p: [f64; 2], a: f64) -> [f64; 2] {
+    let (s, c) = a.sin_cos();
+    [c * p[0] - s * p[1], s * p[0] + c * p[1]]
+}
+
+/// A disc turning at 10 rad/s with an ALE node at θ = 0.2π and a Lagrangian
+/// node at φ = 0 (both at the rim), loaded in-plane at both and at a second
+/// Lagrangian node at mid-radius, the joint angle set so that the Lagrangian
+/// node passes under the ALE node after `steps` steps of 1/`rate` s.
+fn passing(residual: bool, rate: f64, steps: usize) -> Simulation {
+    let (speed, theta) = (10.0, 0.2 * PI);
+    let mut c = disc(0.05, rate);
+    c.plate.residual_flexibility = residual;
+    c.joint.speed = speed;
+    c.joint.initial_position = theta - speed * steps as f64 / rate;
+    c.nodes.ale.push(node(1.0, 0.1));
+    c.loads.ale.push(wrench(300.0, -800.0));
+    c.nodes.lagrange.push(node(1.0, 0.0));
+    c.loads.lagrange.push(wrench(-500.0, 400.0));
+    c.nodes.lagrange.push(node(0.5, 0.3));
+    c.loads.lagrange.push(wrench(700.0, 200.0));
+    Simulation::new(c).unwrap()
+}
+
+#[test]
+fn a_lagrangian_and_an_ale_frame_at_the_same_point_agree() {
+    let (rate, steps) = (1e6, 300);
+    let mut sim = passing(true, rate, steps);
+    for _ in 0..steps {
+        sim.step().unwrap();
+    }
+    let chi = sim.joint().position;
+    let (ale, lag) = (sim.ale_node(0), sim.lagrange_node(0));
+    let u_lag = turned(lag.in_plane.u, chi);
+    let v_lag = turned(lag.in_plane.u_dot, chi);
+    let p_lag = turned([lag.pose.translation[0], lag.pose.translation[1]], chi);
+    let (u_ale, v_ale) = (ale.in_plane.u, ale.in_plane.material_u_dot);
+    let p_ale = ale.pose.translation;
+    let (su, sv) = (
+        u_ale[0].abs().max(u_ale[1].abs()),
+        v_ale[0].abs().max(v_ale[1].abs()),
+    );
+    let (mut du, mut dp, mut dv) = (0.0f64, 0.0f64, 0.0f64);
+    for a in 0..2 {
+        du = du.max((u_ale[a] - u_lag[a]).abs() / su);
+        dp = dp.max((p_ale[a] - p_lag[a]).abs() / su);
+        dv = dv.max((v_ale[a] - v_lag[a]).abs() / sv);
+    }
+    println!(
+        "χ = {chi:.6} rad: u ALE ({:.6e}, {:.6e}) m, Lagrangian turned ({:.6e}, {:.6e}) m: {du:.1e}; positions {dp:.1e}; material rate ALE ({:.6e}, {:.6e}) m/s, Lagrangian turned ({:.6e}, {:.6e}): {dv:.1e}; ALE frame's own rate ({:.3e}, {:.3e}) m/s",
+        u_ale[0], u_ale[1], u_lag[0], u_lag[1], v_ale[0], v_ale[1], v_lag[0], v_lag[1],
+        ale.in_plane.u_dot[0], ale.in_plane.u_dot[1],
+    );
+    assert!((chi - 0.2 * PI).abs() < 1e-12, "χ = {chi}");
+    assert!(
+        su > 1e-8 && sv > 1e-5,
+        "nothing moved: {su:e} m, {sv:e} m/s"
+    );
+    assert!(du < 1e-6, "{du:e}");
+    assert!(dp < 1e-6, "{dp:e}");
+    assert!(dv < 1e-6, "{dv:e}");
+    assert!((ale.pose.translation[2] - lag.pose.translation[2]).abs() <= 1e-6 * su);
+}
+
+/// Central difference of the frames' in-plane positions over two steps.
+fn central(before: &NodeOutput, after: &NodeOutput, h: f64) -> [f64; 2] {
+    let (a, b) = (after.pose.translation, before.pose.translation);
+    [(a[0] - b[0]) / (2.0 * h), (a[1] - b[1]) / (2.0 * h)]
+}
+
+#[test]
+fn node_frame_velocities_are_the_rates_of_their_positions() {
+    let (rate, steps) = (4e6, 1200);
+    let h = 1.0 / rate;
+    let mut sim = passing(false, rate, steps);
+    for _ in 0..steps - 1 {
+        sim.step().unwrap();
+    }
+    let before = [sim.ale_node(0), sim.lagrange_node(0), sim.lagrange_node(1)];
+    sim.step().unwrap();
+    let now = [sim.ale_node(0), sim.lagrange_node(0), sim.lagrange_node(1)];
+    sim.step().unwrap();
+    let after = [sim.ale_node(0), sim.lagrange_node(0), sim.lagrange_node(1)];
+    for (j, name) in ["ALE", "Lagrangian rim", "Lagrangian mid-radius"]
+        .iter()
+        .enumerate()
+    {
+        let fd = central(&before[j], &after[j], h);
+        let v = now[j].in_plane.u_dot;
+        let scale = v[0].abs().max(v[1].abs());
+        let err = (fd[0] - v[0]).abs().max((fd[1] - v[1]).abs()) / scale;
+        println!(
+            "{name}: velocity ({:.6e}, {:.6e}) m/s, central difference ({:.6e}, {:.6e}): {err:.1e}",
+            v[0], v[1], fd[0], fd[1]
+        );
+        assert!(scale > 1e-5, "{name}: nothing moved");
+        assert!(err < 1e-3, "{name}: {err:e}");
+    }
+}
