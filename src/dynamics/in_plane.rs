@@ -81,6 +81,10 @@ pub struct InPlaneDynamics {
     pub ale_nodes: Vec<Vec<[f64; 2]>>,
     /// Per Lagrangian node, per in-plane mode: (u_x, u_y) in the plate frame's axes.
     pub lagrange_nodes: Vec<Vec<[f64; 2]>>,
+    /// Per ALE node, per in-plane mode: ∂(u_x, u_y)/∂θ at the node's r in
+    /// the ALE frame's axes, m per m and rad (the transport Ω ∂u/∂θ of the
+    /// material under a space-fixed point, `pads.contact_surface: faces`).
+    pub ale_nodes_turn: Vec<Vec<[f64; 2]>>,
     /// The largest |Ω| the step accepts without the spin terms of the
     /// in-plane modes (Coriolis 2Ω between u_r and u_θ, the centrifugal
     /// softening and the prestress): 10⁻³ ω_min / 2, rad/s.
@@ -144,14 +148,16 @@ impl InPlaneDynamics {
             });
             radial.push(m);
         }
-        let at_nodes = |nodes: &[NodeFrame]| -> Vec<Vec<[f64; 2]>> {
+        let at_nodes = |nodes: &[NodeFrame],
+                        field: fn(&InPlaneModeDyn, &InPlaneMode, f64, f64) -> [f64; 2]|
+         -> Vec<Vec<[f64; 2]>> {
             nodes
                 .iter()
                 .map(|n| {
                     modes
                         .iter()
                         .zip(&radial)
-                        .map(|(m, r)| displacement(m, r, n.radius, n.angle))
+                        .map(|(m, r)| field(m, r, n.radius, n.angle))
                         .collect()
                 })
                 .collect()
@@ -162,8 +168,9 @@ impl InPlaneDynamics {
             torsional: (0..modes.len())
                 .filter(|&j| modes[j].shape == InPlaneShape::Torsional)
                 .collect(),
-            ale_nodes: at_nodes(ale),
-            lagrange_nodes: at_nodes(lagrange),
+            ale_nodes: at_nodes(ale, displacement),
+            lagrange_nodes: at_nodes(lagrange, displacement),
+            ale_nodes_turn: at_nodes(ale, displacement_turn),
             speed_bound: 0.5 * SPIN_TOLERANCE * omega_min,
             modes,
         }))
@@ -271,21 +278,16 @@ impl InPlaneDynamics {
         ModePropagator::new(reduced, c / (2.0 * reduced * omega), omega, 0.0, h, 0.0)
     }
 
-    /// Refuse what the in-plane modes do not carry yet, naming the key: load
-    /// models, follower loads, centrifugal stiffening, an off-axis reference
+    /// Refuse what the in-plane modes do not carry yet, naming the key
+    /// (the load models refuse for themselves,
+    /// `LoadModel::attach_in_plane`): follower loads, centrifugal stiffening, an off-axis reference
     /// rotation, a start above the spin
     /// bound, and a torque-limited drive unless it is one torsional mode on
     /// the exponential integrator.
-    pub fn check(&self, config: &Config, has_load_models: bool) -> Result<(), SimulationError> {
+    pub fn check(&self, config: &Config) -> Result<(), SimulationError> {
         let refuse = |key: &'static str, why: &'static str| {
             Err(SimulationError::InPlaneKeyNotWired { key, why })
         };
-        if has_load_models {
-            return refuse(
-                "pads / tool / links",
-                "their forces do not carry in-plane modes yet",
-            );
-        }
         if config.loads.follower {
             return refuse(
                 "loads.follower",
@@ -353,4 +355,20 @@ fn displacement(m: &InPlaneModeDyn, r: &InPlaneMode, rho: f64, a: f64) -> [f64; 
     let (ur, ut) = (value.u * fu, value.v * fv);
     let (s, c) = a.sin_cos();
     [ur * c - ut * s, ur * s + ut * c]
+}
+
+/// ∂(u_x, u_y)/∂θ of mode `m` at radius ρ and angle a (r fixed): the polar
+/// components' angular derivatives k(−U f_v, V f_u) turned to Cartesian
+/// axes, plus e_z × u, the turn of the polar basis.
+fn displacement_turn(m: &InPlaneModeDyn, r: &InPlaneMode, rho: f64, a: f64) -> [f64; 2] {
+    let value = r.eval(rho);
+    let (fu, fv) = m.shape.angular(m.k, a);
+    let k = f64::from(m.k);
+    let (ur, ut) = (value.u * fu, value.v * fv);
+    let (dur, dut) = (-k * value.u * fv, k * value.v * fu);
+    let (s, c) = a.sin_cos();
+    [
+        dur * c - dut * s - ur * s - ut * c,
+        dur * s + dut * c + ur * c - ut * s,
+    ]
 }
