@@ -25,6 +25,7 @@ const FAMILIES: &[(&str, &[&str])] = &[
             "pad_config.rs",
             "pad_calipers.rs",
             "pad_contact_law.rs",
+            "pad_in_plane.rs",
             "pad_linear.rs",
             "pad_linear_mass.rs",
             "pad_linear_shear.rs",

@@ -14,7 +14,8 @@
 //! About the axis every wrench gives τ_z = x F_y − y F_x + M_z.
 //!
 //! In-plane modes (`plate.in_plane_nodal_diameters`) take the in-plane
-//! components: f_i = u_x,i F_x + u_y,i F_y ([`super::in_plane`]).
+//! components of the held wrenches and of the load models' (the pads'
+//! friction on the faces): f_i = u_x,i F_x + u_y,i F_y ([`super::in_plane`]).
 //!
 //! A frame on a face (z = ±h/2, `nodes.*_surface`) moves in-plane by −z∇w
 //! (Kirchhoff), so its in-plane force F_t does the virtual work −z F_t·∇w_i:
@@ -120,6 +121,14 @@ pub fn compute(
         {
             if *w != Wrench::default() {
                 torque += add_node(node, w, q_lagrange, f, &mut out.plate_frame);
+            }
+        }
+        if let Some(ip) = &scene.in_plane {
+            for (shapes, w) in ip.ale_nodes.iter().zip(&models.ale) {
+                ip.add_node_force(shapes, &w.force, &mut out.ale_frame);
+            }
+            for (shapes, w) in ip.lagrange_nodes.iter().zip(&models.lagrange) {
+                ip.add_node_force(shapes, &w.force, &mut out.plate_frame);
             }
         }
     }

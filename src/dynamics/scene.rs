@@ -177,7 +177,8 @@ impl Scene {
         else {
             return Ok(());
         };
-        ip.check(config, !self.load_models.is_empty())?;
+        ip.check(config)?;
+        self.load_models.attach_in_plane(&ip)?;
         ip.extend_layout(&mut self.layout);
         self.in_plane = Some(ip);
         Ok(())

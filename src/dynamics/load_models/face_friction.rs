@@ -25,6 +25,12 @@
 //! and acts at the face, so its in-plane part does the virtual work
 //! −z F·∇w_i: the moment z e_z × F about the mid-plane point.
 //!
+//! With in-plane modes (`plate.in_plane_nodal_diameters`) the face point
+//! moves by their u as well, the same at both faces; its material rate
+//! D u/Dt = Σ_i (q̄̇_i u_i + Ω q̄_i ∂u_i/∂θ), in Cartesian components, adds to
+//! v (`pad_in_plane.rs`), and F's in-plane part does the work u_i·F on in-plane
+//! mode i (the node loads, `dynamics::loads`).
+//!
 //! Under Mindlin theory the face point moves in-plane by u = z ψ (ψ the
 //! rotation of the normal, docs/mindlin.md): the node frames' gradient is
 //! then −ψ and their `gradient_phi` the turn of −ψ (`NodeFrame::new`), so
@@ -43,6 +49,9 @@ pub struct FaceKinematics {
     pub grad_material_rate: [f64; 2],
     /// Ω ∂w/∂θ: the normal part of the sliding velocity, m/s.
     pub normal_rate: f64,
+    /// D u/Dt of the in-plane modes in frame A's Cartesian axes, m/s (the
+    /// same at both faces; 0 without in-plane modes, `pad_in_plane.rs`).
+    pub in_plane_rate: [f64; 2],
 }
 
 /// [`SurfaceKinematics`] and [`FaceKinematics`] at an ALE node in one pass
@@ -101,8 +110,8 @@ pub fn sliding_velocity(
     let (s, c) = sin_cos;
     let v = speed * radius;
     [
-        -s * v - z * k.grad_material_rate[0],
-        c * v - z * k.grad_material_rate[1],
+        -s * v - z * k.grad_material_rate[0] + k.in_plane_rate[0],
+        c * v - z * k.grad_material_rate[1] + k.in_plane_rate[1],
         if follower { k.normal_rate } else { 0.0 },
     ]
 }

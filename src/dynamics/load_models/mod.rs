@@ -35,6 +35,7 @@ pub mod outputs;
 pub mod pad_calipers;
 pub mod pad_config;
 pub mod pad_contact_law;
+pub mod pad_in_plane;
 mod pad_linear;
 mod pad_linear_mass;
 mod pad_linear_shear;
@@ -252,6 +253,17 @@ impl LoadModels {
     /// The models, in evaluation order.
     pub fn models(&self) -> &[Box<dyn LoadModel>] {
         &self.models
+    }
+
+    /// Give every model the scene's in-plane modes; the first that refuses
+    /// them names its key ([`LoadModel::attach_in_plane`]).
+    pub fn attach_in_plane(
+        &mut self,
+        ip: &crate::dynamics::in_plane::InPlaneDynamics,
+    ) -> Result<(), SimulationError> {
+        self.models
+            .iter_mut()
+            .try_for_each(|m| m.attach_in_plane(ip))
     }
 
     /// Model `model`'s declared outputs and the layout of its values.

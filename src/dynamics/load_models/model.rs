@@ -7,7 +7,8 @@ use super::outputs::{OutputContext, Outputs};
 use super::undo::SlotUndo;
 use crate::config::{Config, LimitsConfig, ModelParameters};
 use crate::dynamics::contact_compliance::HeldDeflection;
-use crate::dynamics::error::InputError;
+use crate::dynamics::error::{InputError, SimulationError};
+use crate::dynamics::in_plane::InPlaneDynamics;
 use crate::dynamics::joint::FrictionTorque;
 use crate::dynamics::node_frame::{NodeFrame, NodeShape};
 use crate::dynamics::residual::ResidualCompliance;
@@ -184,6 +185,18 @@ pub trait LoadModel: Debug + Send + Sync {
     /// default), and the scene is refused naming its section.
     fn takes_mindlin_modes(&self) -> bool {
         false
+    }
+
+    /// Take the scene's in-plane modes (`plate.in_plane_nodal_diameters`): a
+    /// model whose in-plane forces do their work on them keeps what it reads
+    /// of `ip` (its wrenches' F_x, F_y act on them through the node loads).
+    /// The default refuses, naming the model's section: its forces do not
+    /// act on the in-plane modes.
+    fn attach_in_plane(&mut self, _ip: &InPlaneDynamics) -> Result<(), SimulationError> {
+        Err(SimulationError::InPlaneKeyNotWired {
+            key: self.name(),
+            why: "its forces do not act on the in-plane modes yet",
+        })
     }
 
     /// Its commands (held in `LoadCommands`, one value per instance and command).

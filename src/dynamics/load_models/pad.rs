@@ -71,6 +71,7 @@ use super::model::{
 };
 use super::outputs::OutputContext;
 use super::pad_config::{Caliper, ContactSurface, PadsConfig, PARAMETERS};
+use super::pad_in_plane::PadInPlane;
 use super::pad_patch::{PatchLaw, PatchSlot};
 use crate::config::{Config, PlateTheory};
 use crate::dynamics::contact_compliance::{ContactCompliance, HeldDeflection, SeriesScratch};
@@ -143,6 +144,8 @@ pub struct Pads {
     /// friction's normal part, (F_θ / r) ∂w/∂θ along the deformed surface,
     /// is taken from w ([`angular_slope`]), not from the tilt.
     pub theory: PlateTheory,
+    /// The in-plane modes under the contacts (`pad_in_plane.rs`; None without).
+    pub in_plane: Option<PadInPlane>,
 }
 
 /// Forces at one contact point.
@@ -284,6 +287,7 @@ pub fn build(config: &Config, nodes: &SceneNodes) -> Option<Box<dyn LoadModel>> 
                 initial_speed: config.joint.speed,
             }),
             theory: config.plate.theory,
+            in_plane: None,
         }
         .with_coupling(nodes)
         .with_patch_coupling(),
@@ -386,6 +390,13 @@ impl LoadModel for Pads {
     fn takes_mindlin_modes(&self) -> bool {
         true
     }
+    /// Friction on the faces does work on the in-plane modes (`pad_in_plane.rs`).
+    fn attach_in_plane(
+        &mut self,
+        ip: &crate::dynamics::in_plane::InPlaneDynamics,
+    ) -> Result<(), crate::dynamics::error::SimulationError> {
+        self.take_in_plane(ip)
+    }
     fn channel_len(&self, channel: usize) -> usize {
         self.output_len(channel)
     }
@@ -418,10 +429,13 @@ impl LoadModel for Pads {
             .downcast_mut::<PadScratch>()
             .expect("the pads' scratch");
         let faces = self.contact_surface == ContactSurface::Faces;
-        for ((k, f), c) in s.kinematics.iter_mut().zip(&mut s.faces).zip(&self.contacts) {
+        for (ci, ((k, f), c)) in s.kinematics.iter_mut().zip(&mut s.faces).zip(&self.contacts).enumerate() {
             let node = &ctx.ale_nodes[c.node];
             if faces {
                 (*k, *f) = surface_and_face_kinematics(node, ctx.q_ale, ctx.q_dot_ale, ctx.speed);
+                if let Some(ip) = &self.in_plane {
+                    f.in_plane_rate = ip.rate(ci, ctx.q_ale, ctx.q_dot_ale, ctx.speed);
+                }
             } else {
                 *k = surface_kinematics(node, ctx.q_ale, ctx.q_dot_ale);
             }
@@ -548,6 +562,7 @@ mod tests {
             backing_stiffness: 0.0,
             shear: None,
             theory: PlateTheory::Kirchhoff,
+            in_plane: None,
         }
     }
 

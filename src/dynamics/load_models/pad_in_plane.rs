@@ -1,0 +1,87 @@
+//! The pads' friction on the in-plane modes (`plate.in_plane_nodal_diameters`
+//! with `pads.contact_surface: faces`; docs/in_plane.md, "Pads").
+//!
+//! An in-plane mode moves the face point under a contact by its u, the same
+//! at both faces (u does not vary through the thickness). Under a
+//! space-fixed contact at (r, θ) the material slides with its rate
+//!
+//!   D u/Dt = Σ_i (q̄̇_i u_i + Ω q̄_i ∂u_i/∂θ),
+//!
+//! D/Dt = ∂/∂t + Ω ∂/∂θ acting on the Cartesian components: ∂u_i/∂θ is the
+//! node frames' transport term ∂(u_r, u_θ)/∂θ ([`InPlaneDynamics::ale_turn`])
+//! plus the turn e_z × u_i of the polar basis. It adds to the sliding velocity of
+//! both faces ([`super::face_friction`]); the faces' friction F then does the
+//! work u_i·F on in-plane mode i through the node loads. The normal forces
+//! do no work on the in-plane modes: bending and in-plane motion couple
+//! through the friction only.
+
+use super::pad::Pads;
+use super::pad_config::ContactSurface;
+use crate::dynamics::error::SimulationError;
+use crate::dynamics::in_plane::InPlaneDynamics;
+
+/// The in-plane modes under the contact points.
+#[derive(Debug, Clone, PartialEq)]
+pub struct PadInPlane {
+    /// State index of the first in-plane mode.
+    offset: usize,
+    /// The number of in-plane modes.
+    modes: usize,
+    /// Per contact point, per in-plane mode: u and ∂u/∂θ in frame A's axes.
+    shapes: Vec<[[f64; 2]; 2]>,
+}
+
+impl PadInPlane {
+    /// D u/Dt under contact `contact` for ALE amplitudes `q`, rates `q_dot`
+    /// (all modes) at speed Ω, m/s.
+    #[inline]
+    pub fn rate(&self, contact: usize, q: &[f64], q_dot: &[f64], speed: f64) -> [f64; 2] {
+        let shapes = &self.shapes[contact * self.modes..(contact + 1) * self.modes];
+        let range = self.offset..self.offset + self.modes;
+        let mut v = [0.0; 2];
+        for ([u, turn], (&qi, &vi)) in shapes
+            .iter()
+            .zip(q[range.clone()].iter().zip(&q_dot[range]))
+        {
+            v[0] += vi * u[0] + speed * qi * turn[0];
+            v[1] += vi * u[1] + speed * qi * turn[1];
+        }
+        v
+    }
+}
+
+impl Pads {
+    /// Keep the in-plane modes under the contacts, or refuse what does not
+    /// carry them yet: friction at the mid-plane and the lining's patches.
+    pub(super) fn take_in_plane(&mut self, ip: &InPlaneDynamics) -> Result<(), SimulationError> {
+        let refuse = |key, why| Err(SimulationError::InPlaneKeyNotWired { key, why });
+        if self.contact_surface != ContactSurface::Faces {
+            return refuse(
+                "pads.contact_surface",
+                "the friction on the in-plane modes is built for the faces (pads.contact_surface: faces)",
+            );
+        }
+        if self.shear.is_some() {
+            return refuse(
+                "pads.shear_stiffness",
+                "the lining's patches do not slide with the in-plane modes yet",
+            );
+        }
+        let shapes = self
+            .contacts
+            .iter()
+            .flat_map(|c| {
+                ip.ale_nodes[c.node]
+                    .iter()
+                    .zip(&ip.ale_turn[c.node])
+                    .map(|(&u, &t)| [u, [t[0] - u[1], t[1] + u[0]]])
+            })
+            .collect();
+        self.in_plane = Some(PadInPlane {
+            offset: ip.offset,
+            modes: ip.len(),
+            shapes,
+        });
+        Ok(())
+    }
+}
