@@ -368,21 +368,16 @@ impl InPlaneDynamics {
         ModePropagator::new(reduced, c / (2.0 * reduced * omega), omega, 0.0, h, 0.0)
     }
 
-    /// Refuse what the in-plane modes do not carry yet, naming the key: load
-    /// models, follower loads, centrifugal stiffening, an off-axis reference
+    /// Refuse what the in-plane modes do not carry yet, naming the key
+    /// (the load models refuse for themselves,
+    /// `LoadModel::attach_in_plane`): follower loads, centrifugal stiffening, an off-axis reference
     /// rotation, a start above the spin
     /// bound, and a torque-limited drive unless it is one torsional mode on
     /// the exponential integrator.
-    pub fn check(&self, config: &Config, has_load_models: bool) -> Result<(), SimulationError> {
+    pub fn check(&self, config: &Config) -> Result<(), SimulationError> {
         let refuse = |key: &'static str, why: &'static str| {
             Err(SimulationError::InPlaneKeyNotWired { key, why })
         };
-        if has_load_models {
-            return refuse(
-                "pads / tool / links",
-                "their forces do not carry in-plane modes yet",
-            );
-        }
         if config.loads.follower {
             return refuse(
                 "loads.follower",
