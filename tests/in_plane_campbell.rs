@@ -181,3 +181,19 @@ fn the_cli_lists_the_in_plane_waves_and_leaves_them_out_without_the_key() {
     assert!(ok, "{err}");
     assert!(!text.contains("In-plane"), "{text}");
 }
+
+#[test]
+fn too_many_in_plane_eigensolutions_are_refused_before_any_work() {
+    // 121 speeds × 17 k = 2057 eigensolutions, above the bound of 2000.
+    let ks = "plate.in_plane_nodal_diameters:=[0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16]";
+    let started = std::time::Instant::now();
+    let (ok, out, err) =
+        support::cli::run(&["campbell", BENCH, "--speeds", "0:1000:121", "-p", ks]);
+    let seconds = started.elapsed().as_secs_f64();
+    assert!(!ok && out.is_empty(), "{out}");
+    assert!(
+        err.contains("--speeds") && err.contains("plate.in_plane_nodal_diameters"),
+        "{err}"
+    );
+    println!("refused in {seconds:.2} s: {err}");
+}

@@ -1,9 +1,11 @@
 //! In-plane (plane-stress) modes of the annular plate: the mid-plane's own
 //! vibration u = u_r e_r + u_θ e_θ, a second mode family beside the bending
 //! modes, by the same radial B-spline Ritz machinery (docs/in_plane.md).
-//! `modes` lists them; the dynamics do not carry them yet, so every other
-//! consumer of the model refuses `plate.in_plane_nodal_diameters`
-//! ([`crate::model::PlateModel::new`]). For the spinning disc, `spin` gives
+//! `modes` lists them, `simulate` and `run` carry them
+//! (`crate::dynamics::in_plane`), `campbell` adds their spinning waves
+//! ([`in_plane_campbell`]); the analyses that do not carry them refuse
+//! `plate.in_plane_nodal_diameters` ([`crate::model::PlateModel::new`]).
+//! For the spinning disc, `spin` gives
 //! the turning-frame equations' Coriolis and spin stiffness terms per k
 //! ([`InPlaneDiscretisation::assemble_spin`]) and `spectrum` their forward
 //! and backward waves ([`InPlaneDiscretisation::spectrum`]).
