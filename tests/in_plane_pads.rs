@@ -148,6 +148,9 @@ fn exact_torsion(l: usize) -> Torsion {
     }
 }
 
+/// (u_r, u_θ, ∂_θ u_r, ∂_θ u_θ) at (r, θ).
+type Polar = Box<dyn Fn(f64, f64) -> [f64; 4]>;
+
 /// One in-plane mode as the test sees it: its state index, k, m, ω and its
 /// polar displacement (u_r, u_θ) and their θ-derivatives at (r, θ).
 struct TestMode {
@@ -155,7 +158,7 @@ struct TestMode {
     k: u32,
     mass: f64,
     omega: f64,
-    polar: Box<dyn Fn(f64, f64) -> [f64; 4]>,
+    polar: Polar,
 }
 
 /// The in-plane modes of `config` for the test: the torsional ones from the
@@ -180,7 +183,7 @@ fn test_modes(config: &Config, sim: &Simulation) -> Vec<TestMode> {
                 .find(|x| x.l == m.l)
                 .unwrap()
         };
-        let (mass, omega, polar): (f64, f64, Box<dyn Fn(f64, f64) -> [f64; 4]>) = match m.shape {
+        let (mass, omega, polar): (f64, f64, Polar) = match m.shape {
             InPlaneShape::Torsional => {
                 let t = exact_torsion(m.l as usize);
                 let v = t.v;
