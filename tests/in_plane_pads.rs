@@ -491,3 +491,30 @@ fn the_in_plane_brake_scene_twists_the_disc_to_the_exact_static_sum() {
     assert!(error < 1e-6, "{error:e}");
     assert!((effort / torque - 1.0).abs() < 1e-6, "{effort}");
 }
+
+/// `simulate --output-rate` of config/brake_in_plane.yaml: the aliasing
+/// check against the squeal frequency is not made with in-plane modes (the
+/// stability analysis does not take them), so the run writes its rows.
+#[test]
+fn simulate_with_an_output_rate_runs_the_in_plane_brake_scene() {
+    let dir = support::cli::scratch_dir("in_plane_pads_output_rate");
+    let csv = dir.join("out.csv");
+    let scene = concat!(env!("CARGO_MANIFEST_DIR"), "/config/brake_in_plane.yaml");
+    let (ok, _, stderr) = support::cli::run(&[
+        "simulate",
+        scene,
+        "--duration",
+        "0.1",
+        "--output-rate",
+        "100",
+        "--csv",
+        csv.to_str().unwrap(),
+        "--quiet",
+    ]);
+    assert!(ok, "{stderr}");
+    assert!(!stderr.contains("panicked"), "{stderr}");
+    let rows = std::fs::read_to_string(&csv).unwrap().lines().count();
+    println!("{rows} lines");
+    assert_eq!(rows, 1 + 11, "header and t = 0, 0.01, …, 0.1");
+    let _ = std::fs::remove_dir_all(&dir);
+}
