@@ -148,6 +148,9 @@ fn exact_torsion(l: usize) -> Torsion {
     }
 }
 
+/// (u_r, u_θ, ∂_θ u_r, ∂_θ u_θ) at (r, θ).
+type Polar = Box<dyn Fn(f64, f64) -> [f64; 4]>;
+
 /// One in-plane mode as the test sees it: its state index, k, m, ω and its
 /// polar displacement (u_r, u_θ) and their θ-derivatives at (r, θ).
 struct TestMode {
@@ -155,7 +158,7 @@ struct TestMode {
     k: u32,
     mass: f64,
     omega: f64,
-    polar: Box<dyn Fn(f64, f64) -> [f64; 4]>,
+    polar: Polar,
 }
 
 /// The in-plane modes of `config` for the test: the torsional ones from the
@@ -180,7 +183,7 @@ fn test_modes(config: &Config, sim: &Simulation) -> Vec<TestMode> {
                 .find(|x| x.l == m.l)
                 .unwrap()
         };
-        let (mass, omega, polar): (f64, f64, Box<dyn Fn(f64, f64) -> [f64; 4]>) = match m.shape {
+        let (mass, omega, polar): (f64, f64, Polar) = match m.shape {
             InPlaneShape::Torsional => {
                 let t = exact_torsion(m.l as usize);
                 let v = t.v;
@@ -446,4 +449,72 @@ fn mid_plane_pads_and_lining_patches_with_in_plane_modes_are_refused_by_key() {
     let error = Simulation::new(shear).err().unwrap().to_string();
     println!("{error}");
     assert!(error.contains("pads.shear_stiffness"), "{error}");
+}
+
+/// config/brake_in_plane.yaml (the bench with in-plane k = 0, 1, 2, l = 0,
+/// clamped at 5 kN per face from the start, 15 rad/s): after 0.3 s the first
+/// torsional mode holds the exact modal static twist under the three
+/// contacts' friction −2μN e_θ (N = 5 kN/3 per face and contact, the
+/// floating caliper's share on the undeformed disc; the bending stays at
+/// rest under equal faces), and the drive's effort is the friction torque
+/// 2μN₀ r.
+#[test]
+fn the_in_plane_brake_scene_twists_the_disc_to_the_exact_static_sum() {
+    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/config/brake_in_plane.yaml");
+    let config = Config::from_params_file(std::path::Path::new(path), "annular_plate").unwrap();
+    let mut sim = Simulation::new(config.clone()).unwrap();
+    let steps = (0.3 * config.simulation.rate_hz) as usize;
+    for _ in 0..steps {
+        sim.step().unwrap();
+    }
+    let ip = sim.scene().in_plane.as_ref().unwrap();
+    let index = ip.offset + ip.torsional[0];
+    let t = exact_torsion(0);
+    let clamp = config.section::<PadsConfig>().unwrap().clamp_force[0];
+    let mu = config.section::<PadsConfig>().unwrap().friction_coefficient;
+    let per_face = clamp / sim.scene().ale_nodes.len() as f64;
+    let force: f64 = sim
+        .scene()
+        .ale_nodes
+        .iter()
+        .map(|n| -2.0 * mu * per_face * (t.v)(n.radius))
+        .sum();
+    let expected = force / (t.mass * t.omega * t.omega);
+    let got = sim.q_ale()[index];
+    let error = (got / expected - 1.0).abs();
+    let radius = sim.scene().ale_nodes[0].radius;
+    let torque = 2.0 * mu * clamp * radius;
+    let effort = sim.joint().effort;
+    println!(
+        "torsional q = {got:.9e} m, exact {expected:.9e} m: {error:.2e}; effort {effort:.4} N·m, 2μN₀r = {torque:.4} N·m"
+    );
+    assert!(error < 1e-6, "{error:e}");
+    assert!((effort / torque - 1.0).abs() < 1e-6, "{effort}");
+}
+
+/// `simulate --output-rate` of config/brake_in_plane.yaml: the aliasing
+/// check against the squeal frequency is not made with in-plane modes (the
+/// stability analysis does not take them), so the run writes its rows.
+#[test]
+fn simulate_with_an_output_rate_runs_the_in_plane_brake_scene() {
+    let dir = support::cli::scratch_dir("in_plane_pads_output_rate");
+    let csv = dir.join("out.csv");
+    let scene = concat!(env!("CARGO_MANIFEST_DIR"), "/config/brake_in_plane.yaml");
+    let (ok, _, stderr) = support::cli::run(&[
+        "simulate",
+        scene,
+        "--duration",
+        "0.1",
+        "--output-rate",
+        "100",
+        "--csv",
+        csv.to_str().unwrap(),
+        "--quiet",
+    ]);
+    assert!(ok, "{stderr}");
+    assert!(!stderr.contains("panicked"), "{stderr}");
+    let rows = std::fs::read_to_string(&csv).unwrap().lines().count();
+    println!("{rows} lines");
+    assert_eq!(rows, 1 + 11, "header and t = 0, 0.01, …, 0.1");
+    let _ = std::fs::remove_dir_all(&dir);
 }

@@ -165,6 +165,68 @@ fn stepping_with_in_plane_modes_allocates_nothing() {
     }
 }
 
+/// Pads with friction on the faces acting on in-plane modes (k = 0, 1, 2),
+/// on every integrator that takes them, both descriptions: the in-plane
+/// rate under each contact is summed in place, so stepping allocates nothing.
+#[test]
+fn stepping_with_pads_on_in_plane_modes_allocates_nothing() {
+    for integrator in [
+        IntegratorKind::Exponential,
+        IntegratorKind::ContactExponential,
+        IntegratorKind::Rk4,
+    ] {
+        for coords in [Coordinates::Ale, Coordinates::Lagrangian] {
+            let mut c = Config::default();
+            c.plate.damping = vec![0.02];
+            c.plate.in_plane_nodal_diameters = vec![0, 1, 2];
+            c.plate.in_plane_orders = vec![0];
+            c.joint.speed = 10.0;
+            c.simulation.integrator = integrator;
+            c.simulation.coordinates = coords;
+            c.simulation.rate_hz = 100_000.0;
+            for angular in [0.0, 0.2] {
+                c.nodes.ale.push(NodePosition {
+                    radial: 0.6,
+                    angular,
+                });
+            }
+            c.set_section(PadsConfig {
+                contacts: vec![
+                    PadContact { node: 0, pad: 0 },
+                    PadContact { node: 1, pad: 0 },
+                ],
+                clamp_force: vec![1000.0],
+                contact_stiffness: 1.0e6,
+                contact_damping: 5.0,
+                friction_coefficient: 0.4,
+                lift_off: true,
+                follower_friction: true,
+                caliper: Caliper::Floating,
+                contact_surface: ContactSurface::Faces,
+                static_friction_coefficient: None,
+                stribeck_speed: 1.0,
+                mass: 0.0,
+                backing_stiffness: None,
+                shear: None,
+            });
+            let mut sim = Simulation::new(c).unwrap();
+            sim.step().unwrap();
+            let before = allocations();
+            for _ in 0..200 {
+                sim.step().unwrap();
+                std::hint::black_box((sim.q_ale()[0], sim.joint()));
+            }
+            let after = allocations();
+            assert_eq!(
+                after - before,
+                0,
+                "{integrator:?}/{coords:?}: allocated {} times in 200 steps",
+                after - before
+            );
+        }
+    }
+}
+
 /// Massive pads (`pads.mass`), on the modal deflection and in series with the
 /// residual flexibility: their states ride in RK4's state vector and the
 /// stage slots are scratch, so stepping still allocates nothing.

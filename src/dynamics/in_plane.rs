@@ -34,7 +34,10 @@
 //! A node's in-plane force (F_x, F_y), in its frame's axes, does the virtual
 //! work u_x,i F_x + u_y,i F_y on in-plane mode i, with (u_x, u_y) the mode's
 //! displacement at the node (the same at a face: u does not vary through the
-//! thickness). The drilling moment M_z acts on the joint only.
+//! thickness). The load models' wrenches act the same way: the pads' friction
+//! on the faces, whose sliding velocity includes the in-plane rate
+//! (`load_models/pad_in_plane.rs`, with [`InPlaneDynamics::ale_turn`]).
+//! The drilling moment M_z acts on the joint only.
 //!
 //! # Node frames
 //!

@@ -395,7 +395,10 @@ impl LoadModel for Pads {
         &mut self,
         ip: &crate::dynamics::in_plane::InPlaneDynamics,
     ) -> Result<(), crate::dynamics::error::SimulationError> {
-        self.take_in_plane(ip)
+        let nodes = self.contacts.iter().map(|c| c.node);
+        let shear = self.shear.is_some();
+        self.in_plane = Some(PadInPlane::attach(ip, self.contact_surface, shear, nodes)?);
+        Ok(())
     }
     fn channel_len(&self, channel: usize) -> usize {
         self.output_len(channel)

@@ -15,7 +15,6 @@
 //! do no work on the in-plane modes: bending and in-plane motion couple
 //! through the friction only.
 
-use super::pad::Pads;
 use super::pad_config::ContactSurface;
 use crate::dynamics::error::SimulationError;
 use crate::dynamics::in_plane::InPlaneDynamics;
@@ -32,6 +31,43 @@ pub struct PadInPlane {
 }
 
 impl PadInPlane {
+    /// The in-plane modes under the contacts at ALE nodes `nodes`, or the
+    /// refusal of what does not carry them yet: friction at the mid-plane
+    /// (`surface`) and the lining's patches (`shear`).
+    pub fn attach(
+        ip: &InPlaneDynamics,
+        surface: ContactSurface,
+        shear: bool,
+        nodes: impl Iterator<Item = usize>,
+    ) -> Result<PadInPlane, SimulationError> {
+        let refuse = |key, why| Err(SimulationError::InPlaneKeyNotWired { key, why });
+        if surface != ContactSurface::Faces {
+            return refuse(
+                "pads.contact_surface",
+                "the friction on the in-plane modes is built for the faces (pads.contact_surface: faces)",
+            );
+        }
+        if shear {
+            return refuse(
+                "pads.shear_stiffness",
+                "the lining's patches do not slide with the in-plane modes yet",
+            );
+        }
+        let shapes = nodes
+            .flat_map(|n| {
+                ip.ale_nodes[n]
+                    .iter()
+                    .zip(&ip.ale_turn[n])
+                    .map(|(&u, &t)| [u, [t[0] - u[1], t[1] + u[0]]])
+            })
+            .collect();
+        Ok(PadInPlane {
+            offset: ip.offset,
+            modes: ip.len(),
+            shapes,
+        })
+    }
+
     /// D u/Dt under contact `contact` for ALE amplitudes `q`, rates `q_dot`
     /// (all modes) at speed Ω, m/s.
     #[inline]
@@ -47,41 +83,5 @@ impl PadInPlane {
             v[1] += vi * u[1] + speed * qi * turn[1];
         }
         v
-    }
-}
-
-impl Pads {
-    /// Keep the in-plane modes under the contacts, or refuse what does not
-    /// carry them yet: friction at the mid-plane and the lining's patches.
-    pub(super) fn take_in_plane(&mut self, ip: &InPlaneDynamics) -> Result<(), SimulationError> {
-        let refuse = |key, why| Err(SimulationError::InPlaneKeyNotWired { key, why });
-        if self.contact_surface != ContactSurface::Faces {
-            return refuse(
-                "pads.contact_surface",
-                "the friction on the in-plane modes is built for the faces (pads.contact_surface: faces)",
-            );
-        }
-        if self.shear.is_some() {
-            return refuse(
-                "pads.shear_stiffness",
-                "the lining's patches do not slide with the in-plane modes yet",
-            );
-        }
-        let shapes = self
-            .contacts
-            .iter()
-            .flat_map(|c| {
-                ip.ale_nodes[c.node]
-                    .iter()
-                    .zip(&ip.ale_turn[c.node])
-                    .map(|(&u, &t)| [u, [t[0] - u[1], t[1] + u[0]]])
-            })
-            .collect();
-        self.in_plane = Some(PadInPlane {
-            offset: ip.offset,
-            modes: ip.len(),
-            shapes,
-        });
-        Ok(())
     }
 }
