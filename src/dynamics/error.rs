@@ -65,8 +65,8 @@ pub enum StepError {
         /// The step, s.
         step: f64,
     },
-    /// The joint turned faster than the in-plane modes' bound without their spin terms.
-    #[error("the joint speed {speed} rad/s is beyond {limit:.3} rad/s, the bound for in-plane modes (plate.in_plane_nodal_diameters) without their spin terms (Coriolis coupling 2Ω/ω_min up to 1e-3); the step was undone")]
+    /// The joint turned faster than the in-plane modes' bound where their spin terms are not built.
+    #[error("the joint speed {speed} rad/s is beyond {limit:.3} rad/s, the bound for in-plane modes (plate.in_plane_nodal_diameters) where their spin terms are not built (simulation.integrator: implicit_midpoint, or joint.max_torque with torsional modes; Coriolis coupling 2Ω/ω_min up to 1e-3); the step was undone")]
     InPlaneSpin {
         /// Ω at the step's end, rad/s.
         speed: f64,
@@ -137,8 +137,8 @@ pub enum SimulationError {
         /// Why.
         why: &'static str,
     },
-    /// A start faster than the in-plane modes' bound without their spin terms.
-    #[error("joint.speed = {speed} rad/s is beyond {limit:.3} rad/s, the bound for in-plane modes (plate.in_plane_nodal_diameters) without their spin terms (Coriolis coupling 2Ω/ω_min up to 1e-3)")]
+    /// A start faster than the in-plane modes' bound where their spin terms are not built.
+    #[error("joint.speed = {speed} rad/s is beyond {limit:.3} rad/s, the bound for in-plane modes (plate.in_plane_nodal_diameters) where their spin terms are not built (simulation.integrator: implicit_midpoint, or joint.max_torque with torsional modes; Coriolis coupling 2Ω/ω_min up to 1e-3)")]
     InPlaneSpin {
         /// joint.speed, rad/s.
         speed: f64,
