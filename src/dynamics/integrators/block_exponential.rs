@@ -142,7 +142,10 @@ impl BlockPropagator {
             a_hat[x * d + u] = sigma * h;
             for b in 0..n {
                 a_hat[u * d + b] = -stiffness(a, b) / sigma * h;
-                a_hat[u * d + n + b] = -rates(a, b) * h;
+                let rate = rates(a, b);
+                if rate != 0.0 {
+                    a_hat[u * d + n + b] = -rate * h;
+                }
             }
             a_hat[u * d + u] -= consts[modes[a]].damping_rate * h;
             a_hat[u * d + f] = h;
