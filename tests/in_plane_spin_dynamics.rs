@@ -4,7 +4,8 @@
 //! form (`support::in_plane_spinning_exact`), the two descriptions agreeing
 //! at speed, RK4 converging to the exponential step at fourth order, and the
 //! implicit midpoint rule (which does not carry the spin terms) refused at
-//! speed with the key named.
+//! speed with the key named; an in-plane amplitude beyond the deflection
+//! limit stops the run.
 
 mod support;
 
@@ -280,4 +281,27 @@ fn the_implicit_midpoint_rule_is_refused_at_speed_naming_the_key() {
     let message = Simulation::new(c).err().expect("refused").to_string();
     assert!(message.contains("simulation.integrator"), "{message}");
     assert!(message.contains("joint.speed"), "{message}");
+}
+
+#[test]
+fn an_in_plane_amplitude_beyond_the_deflection_limit_is_a_divergence() {
+    let mut c = disc(&[1], &[0], 3000.0, 1e6);
+    c.limits.max_deflection_thicknesses = 1.0;
+    c.nodes.lagrange.push(NodePosition {
+        radial: 1.0,
+        angular: 0.0,
+    });
+    c.loads.lagrange.push(WrenchConfig {
+        force: [1e11, 0.0, 0.0],
+        moment: [0.0; 3],
+    });
+    let mut sim = Simulation::new(c).unwrap();
+    let message = (0..200)
+        .find_map(|_| sim.step().err())
+        .expect("diverged")
+        .to_string();
+    assert!(
+        message.contains("in-plane mode ⟨k = 1, l = 0⟩"),
+        "{message}"
+    );
 }

@@ -32,6 +32,24 @@ pub enum Divergence {
         /// The limit, m.
         limit: f64,
     },
+    /// An in-plane modal amplitude (peak displacement) beyond
+    /// `limits.max_deflection_thicknesses` × thickness.
+    #[error(
+        "in-plane mode ⟨k = {k}, l = {l}⟩ (state index {}) reached {value:e} m, beyond limits.max_deflection_thicknesses × thickness = {limit:e} m",
+        mode + 1
+    )]
+    InPlaneModeBeyondLimit {
+        /// The mode's state index (from 0).
+        mode: usize,
+        /// Its nodal diameters k.
+        k: u32,
+        /// Its order l.
+        l: u32,
+        /// The amplitude reached, m.
+        value: f64,
+        /// The limit, m.
+        limit: f64,
+    },
     /// The joint speed beyond `limits.max_speed` in magnitude.
     #[error("joint speed {speed} rad/s beyond limits.max_speed")]
     SpeedBeyondLimit {

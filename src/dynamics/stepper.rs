@@ -988,6 +988,19 @@ fn check(scene: &Scene, state: &State) -> Result<(), StepError> {
                 limit,
             });
         }
+        if let Some(ip) = &scene.in_plane {
+            let in_plane = &state.q[ip.offset..];
+            if let Some((j, &q)) = in_plane.iter().enumerate().find(|(_, q)| q.abs() > limit) {
+                let m = &ip.modes[j];
+                return diverged(Divergence::InPlaneModeBeyondLimit {
+                    mode: ip.offset + j,
+                    k: m.k,
+                    l: m.l,
+                    value: q,
+                    limit,
+                });
+            }
+        }
     }
     if let Some(ip) = &scene.in_plane {
         if state.speed.abs() > ip.speed_bound {
