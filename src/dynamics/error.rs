@@ -32,6 +32,24 @@ pub enum Divergence {
         /// The limit, m.
         limit: f64,
     },
+    /// An in-plane modal amplitude (peak displacement) beyond
+    /// `limits.max_deflection_thicknesses` × thickness.
+    #[error(
+        "in-plane mode ⟨k = {k}, l = {l}⟩ (state index {}) reached {value:e} m, beyond limits.max_deflection_thicknesses × thickness = {limit:e} m",
+        mode + 1
+    )]
+    InPlaneModeBeyondLimit {
+        /// The mode's state index (from 0).
+        mode: usize,
+        /// Its nodal diameters k.
+        k: u32,
+        /// Its order l.
+        l: u32,
+        /// The amplitude reached, m.
+        value: f64,
+        /// The limit, m.
+        limit: f64,
+    },
     /// The joint speed beyond `limits.max_speed` in magnitude.
     #[error("joint speed {speed} rad/s beyond limits.max_speed")]
     SpeedBeyondLimit {
@@ -65,8 +83,8 @@ pub enum StepError {
         /// The step, s.
         step: f64,
     },
-    /// The joint turned faster than the in-plane modes' bound without their spin terms.
-    #[error("the joint speed {speed} rad/s is beyond {limit:.3} rad/s, the bound for in-plane modes (plate.in_plane_nodal_diameters) without their spin terms (Coriolis coupling 2Ω/ω_min up to 1e-3); the step was undone")]
+    /// The joint turned faster than the in-plane modes' bound where their spin terms are not built.
+    #[error("the joint speed {speed} rad/s is beyond {limit:.3} rad/s, the bound for in-plane modes (plate.in_plane_nodal_diameters) where their spin terms are not built (simulation.integrator: implicit_midpoint, or joint.max_torque with torsional modes; Coriolis coupling 2Ω/ω_min up to 1e-3); the step was undone")]
     InPlaneSpin {
         /// Ω at the step's end, rad/s.
         speed: f64,
@@ -137,8 +155,8 @@ pub enum SimulationError {
         /// Why.
         why: &'static str,
     },
-    /// A start faster than the in-plane modes' bound without their spin terms.
-    #[error("joint.speed = {speed} rad/s is beyond {limit:.3} rad/s, the bound for in-plane modes (plate.in_plane_nodal_diameters) without their spin terms (Coriolis coupling 2Ω/ω_min up to 1e-3)")]
+    /// A start faster than the in-plane modes' bound where their spin terms are not built.
+    #[error("joint.speed = {speed} rad/s is beyond {limit:.3} rad/s, the bound for in-plane modes (plate.in_plane_nodal_diameters) where their spin terms are not built (simulation.integrator: implicit_midpoint, or joint.max_torque with torsional modes; Coriolis coupling 2Ω/ω_min up to 1e-3)")]
     InPlaneSpin {
         /// joint.speed, rad/s.
         speed: f64,

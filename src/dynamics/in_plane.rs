@@ -54,6 +54,7 @@
 
 use super::error::SimulationError;
 use super::in_plane_residual::InPlaneResidual;
+use super::in_plane_spin::{InPlaneSpinBlock, InPlaneSpinTerms};
 use super::integrators::exponential::ModePropagator;
 use super::layout::{ModeLayout, ModePair};
 use super::node_frame::NodeFrame;
@@ -62,6 +63,7 @@ use crate::model::in_plane::{
     in_plane_plate, patch_means, InPlaneDiscretisation, InPlaneFamily, InPlaneMode, InPlaneShape,
     InPlaneTable, LoadPatch,
 };
+use crate::model::prestress::LamePrestress;
 use crate::model::ModelError;
 
 /// One in-plane mode as the dynamics carry it.
@@ -103,9 +105,11 @@ pub struct InPlaneDynamics {
     /// The residual compliance between the node frames
     /// (`plate.residual_flexibility`; None when off or without nodes).
     pub residual: Option<InPlaneResidual>,
-    /// The largest |Ω| the step accepts without the spin terms of the
-    /// in-plane modes (Coriolis 2Ω between u_r and u_θ, the centrifugal
-    /// softening and the prestress): 10⁻³ ω_min / 2, rad/s.
+    /// The spin terms (Coriolis, centrifugal softening, prestress) per k.
+    pub spin: InPlaneSpinTerms,
+    /// The largest |Ω| the step accepts: 10⁻³ ω_min / 2 rad/s where the spin
+    /// terms are not built (the implicit midpoint rule; a torque-limited
+    /// drive with torsional modes), otherwise unbounded.
     pub speed_bound: f64,
 }
 
@@ -217,6 +221,16 @@ impl InPlaneDynamics {
                 InPlaneResidual::new(&disc, &retained, &nodes, c)
             });
         let omega_min = modes.iter().map(|m| m.omega).fold(f64::INFINITY, f64::min);
+        let spin = spin_terms(
+            &disc,
+            &LamePrestress::new(plate, &config.centrifugal),
+            offset,
+            &modes,
+            &radial,
+        );
+        let spin_built = config.simulation.integrator != IntegratorKind::ImplicitMidpoint
+            && !(config.joint.max_torque.is_some()
+                && modes.iter().any(|m| m.shape == InPlaneShape::Torsional));
         Ok(Some(InPlaneDynamics {
             offset,
             torsional: (0..modes.len())
@@ -229,7 +243,12 @@ impl InPlaneDynamics {
                 .map(|n| n.iter().map(|s| s.1).collect())
                 .collect(),
             residual,
-            speed_bound: 0.5 * SPIN_TOLERANCE * omega_min,
+            spin,
+            speed_bound: if spin_built {
+                f64::INFINITY
+            } else {
+                0.5 * SPIN_TOLERANCE * omega_min
+            },
             modes,
         }))
     }
@@ -315,11 +334,13 @@ impl InPlaneDynamics {
 
     /// The joint's reduced inertia J* and load torque τ* at the substep's
     /// start (module docs) from the torsional modes' forces `f` (state
-    /// indices, the k = 0 force in one place) and their amplitudes and rates.
+    /// indices, the k = 0 force in one place), their amplitudes and rates and
+    /// their spin terms at the joint speed (Lagrangian amplitudes).
     pub fn reduced_joint(
         &self,
         polar_inertia: f64,
         load_torque: f64,
+        speed: f64,
         f: &[f64],
         q: &[f64],
         q_dot: &[f64],
@@ -330,8 +351,9 @@ impl InPlaneDynamics {
             let i = self.offset + j;
             let (c, k) = self.damping_stiffness(j);
             let ratio = m.coupling / m.modal_mass;
+            let spin = m.modal_mass * self.spin.acceleration_of(i, speed, q, q_dot);
             inertia -= ratio * m.coupling;
-            torque -= ratio * (f[i] - c * q_dot[i] - k * q[i]);
+            torque -= ratio * (f[i] - c * q_dot[i] - k * q[i] - spin);
         }
         (inertia, torque)
     }
@@ -374,8 +396,8 @@ impl InPlaneDynamics {
     /// Refuse what the in-plane modes do not carry yet, naming the key
     /// (the load models refuse for themselves,
     /// `LoadModel::attach_in_plane`): follower loads, centrifugal stiffening, an off-axis reference
-    /// rotation, a start above the spin
-    /// bound, and a torque-limited drive unless it is one torsional mode on
+    /// rotation, a start above the speed bound (where the spin terms are not
+    /// built), and a torque-limited drive unless it is one torsional mode on
     /// the exponential integrator.
     pub fn check(&self, config: &Config) -> Result<(), SimulationError> {
         let refuse = |key: &'static str, why: &'static str| {
@@ -390,7 +412,7 @@ impl InPlaneDynamics {
         if config.centrifugal.stiffening {
             return refuse(
                 "plate.centrifugal_stiffening",
-                "the spin terms of the in-plane modes are not built yet",
+                "the bending modes' stiffening is not stepped together with the in-plane modes yet",
             );
         }
         let w = config.reference.angular_velocity;
@@ -421,6 +443,33 @@ impl InPlaneDynamics {
         }
         Ok(())
     }
+}
+
+/// The spin blocks of every k among `modes` (state index = `offset` + table index).
+fn spin_terms(
+    disc: &InPlaneDiscretisation,
+    prestress: &LamePrestress,
+    offset: usize,
+    modes: &[InPlaneModeDyn],
+    radial: &[InPlaneMode],
+) -> InPlaneSpinTerms {
+    let mut ks: Vec<u32> = modes.iter().map(|m| m.k).collect();
+    ks.sort_unstable();
+    ks.dedup();
+    let blocks = ks
+        .into_iter()
+        .filter_map(|k| {
+            let entries: Vec<_> = modes
+                .iter()
+                .zip(radial)
+                .enumerate()
+                .filter(|(_, (m, _))| m.k == k)
+                .map(|(j, (m, r))| (offset + j, m.shape, r, m.modal_mass))
+                .collect();
+            InPlaneSpinBlock::new(disc, prestress, k, &entries)
+        })
+        .collect();
+    InPlaneSpinTerms { blocks }
 }
 
 /// s = 2π ∫ ρh V r² dr over the mode's B-spline spans (3-point Gauss per

@@ -16,6 +16,7 @@ pub(crate) mod dense;
 pub(crate) mod error;
 pub(crate) mod in_plane;
 pub(crate) mod in_plane_residual;
+pub(crate) mod in_plane_spin;
 pub(crate) mod integrators;
 pub(crate) mod joint;
 pub(crate) mod layout;

@@ -35,6 +35,7 @@ use nalgebra::Complex;
 use stage_rhs::StageRhs;
 
 mod contact_step;
+mod in_plane_exponential;
 mod in_plane_joint;
 mod model_evaluation;
 mod stage_rhs;
@@ -176,6 +177,8 @@ pub struct Stepper {
     last_contact: ContactReport,
     /// The torsional in-plane modes' coupling with the joint over a substep.
     in_plane_joint: InPlaneJoint,
+    /// The in-plane modes' exact propagators with their spin terms, one per k.
+    in_plane_spin: Vec<block_exponential::BlockPropagator>,
 }
 
 impl Stepper {
@@ -223,6 +226,7 @@ impl Stepper {
             contact_key: Vec::with_capacity(64),
             last_contact: ContactReport::default(),
             in_plane_joint: InPlaneJoint::new(),
+            in_plane_spin: in_plane_exponential::propagators(scene.in_plane.as_ref()),
         }
     }
 
@@ -360,7 +364,14 @@ impl Stepper {
             Some(ip) => {
                 let (q, q_dot) = state.lagrange();
                 let f = &self.loads.ale_frame;
-                ip.reduced_joint(scene.polar_inertia, self.loads.axial_torque, f, q, q_dot)
+                ip.reduced_joint(
+                    scene.polar_inertia,
+                    self.loads.axial_torque,
+                    state.speed,
+                    f,
+                    q,
+                    q_dot,
+                )
             }
             None => (scene.polar_inertia, self.loads.axial_torque),
         };
@@ -557,7 +568,13 @@ impl Stepper {
         );
         let harmonics_len = self.exp_harm.len();
         let (harm0, harm1) = (&self.exp_harm[..], &self.exp_harm_next[..harmonics_len]);
-        for &i in &scene.layout.axisymmetric {
+        // The in-plane modes (after the bending ones in the layout) step by their spin blocks.
+        let bending_end = scene.in_plane.as_ref().map_or(n, |ip| ip.offset);
+        let lay = &scene.layout;
+        let axisymmetric =
+            &lay.axisymmetric[..lay.axisymmetric.partition_point(|&i| i < bending_end)];
+        let pairs = &lay.pairs[..lay.pairs.partition_point(|p| p.cos < bending_end)];
+        for &i in axisymmetric {
             let (q, qd) = propagators[i].advance(
                 lagrange_q[i],
                 lagrange_v[i],
@@ -569,7 +586,7 @@ impl Stepper {
             ale_q[i] = q;
             ale_v[i] = qd;
         }
-        for p in &scene.layout.pairs {
+        for p in pairs {
             let (co, si) = harm0[p.k as usize];
             let e0 = Complex::new(co, si);
             let (fc, fs) = (ale_frame[p.cos], ale_frame[p.sin]);
@@ -597,6 +614,27 @@ impl Stepper {
             ale_q[p.sin] = bar_s;
             ale_v[p.cos] = dot_c;
             ale_v[p.sin] = dot_s;
+        }
+        if let Some(ip) = &scene.in_plane {
+            in_plane_exponential::advance(
+                ip,
+                &mut self.in_plane_spin,
+                &self.consts,
+                block_exponential::JointSubstep {
+                    h,
+                    harmonics_start: harm0,
+                    speed_mean,
+                    speed_end: speed1,
+                },
+                harm1,
+                &self.loads,
+                in_plane_exponential::Amplitudes {
+                    lagrange_q,
+                    lagrange_v,
+                    ale_q,
+                    ale_v,
+                },
+            );
         }
         // Every mode is axisymmetric or in a pair (model::build), so both descriptions are whole.
         std::mem::swap(&mut self.exp_harm, &mut self.exp_harm_next);
@@ -949,6 +987,19 @@ fn check(scene: &Scene, state: &State) -> Result<(), StepError> {
                 value: q,
                 limit,
             });
+        }
+        if let Some(ip) = &scene.in_plane {
+            let in_plane = &state.q[ip.offset..];
+            if let Some((j, &q)) = in_plane.iter().enumerate().find(|(_, q)| q.abs() > limit) {
+                let m = &ip.modes[j];
+                return diverged(Divergence::InPlaneModeBeyondLimit {
+                    mode: ip.offset + j,
+                    k: m.k,
+                    l: m.l,
+                    value: q,
+                    limit,
+                });
+            }
         }
     }
     if let Some(ip) = &scene.in_plane {

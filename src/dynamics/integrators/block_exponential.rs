@@ -26,6 +26,7 @@
 //! frequency (q, q̇/σ), allocation-free on scratch sized once.
 
 use super::equations::ModeConstants;
+use crate::dynamics::in_plane_spin::InPlaneSpinBlock;
 use crate::dynamics::loads::StepLoads;
 use crate::dynamics::stiffening::{Stiffening, StiffeningBlock};
 use nalgebra::Complex;
@@ -39,7 +40,8 @@ const SCALED_NORM: f64 = 0.5;
 #[derive(Debug, Clone)]
 pub struct BlockPropagator {
     pub h: f64,
-    pub speed_sq: f64,
+    /// The speed the exponential is of: Ω̄² (stiffening) or Ω (in-plane spin).
+    pub speed_key: f64,
     pub nu: f64,
     n: usize,
     sigma: f64,
@@ -55,7 +57,7 @@ impl BlockPropagator {
         let d = 5 * n;
         BlockPropagator {
             h: f64::NAN,
-            speed_sq: f64::NAN,
+            speed_key: f64::NAN,
             nu: f64::NAN,
             n,
             sigma: 1.0,
@@ -76,9 +78,48 @@ impl BlockPropagator {
         speed_sq: f64,
         nu: f64,
     ) {
-        if self.h == h && self.speed_sq == speed_sq && self.nu == nu {
+        if self.h == h && self.speed_key == speed_sq && self.nu == nu {
             return;
         }
+        let n = self.n;
+        let stiffness = |a: usize, b: usize| speed_sq * block.g_over_m[a * n + b];
+        self.fill(modes, consts, h, nu, stiffness, |_, _| 0.0);
+        self.speed_key = speed_sq;
+    }
+
+    /// Recompute e^{Âh} for an in-plane spin block at the speed Ω (the
+    /// coupling Ω G/m of the rates and Ω² K_Ω/m of the amplitudes,
+    /// [`InPlaneSpinBlock`]) if (h, Ω, ν) changed.
+    pub fn update_spin(
+        &mut self,
+        block: &InPlaneSpinBlock,
+        consts: &[ModeConstants],
+        h: f64,
+        speed: f64,
+        nu: f64,
+    ) {
+        if self.h == h && self.speed_key == speed && self.nu == nu {
+            return;
+        }
+        let n = self.n;
+        let stiffness = |a: usize, b: usize| speed * speed * block.k_over_m[a * n + b];
+        let rates = |a: usize, b: usize| speed * block.g_over_m[a * n + b];
+        self.fill(&block.modes, consts, h, nu, stiffness, rates);
+        self.speed_key = speed;
+    }
+
+    /// e^{Âh} of the family `modes` with the modes' own constants plus the
+    /// couplings `stiffness(a, b)` of the amplitudes and `rates(a, b)` of
+    /// the rates (accelerations per unit amplitude and rate).
+    fn fill(
+        &mut self,
+        modes: &[usize],
+        consts: &[ModeConstants],
+        h: f64,
+        nu: f64,
+        stiffness: impl Fn(usize, usize) -> f64,
+        rates: impl Fn(usize, usize) -> f64,
+    ) {
         let n = self.n;
         let d = 5 * n;
         let stiffness = |a: usize, b: usize| {
@@ -87,7 +128,7 @@ impl BlockPropagator {
             } else {
                 0.0
             };
-            own + speed_sq * block.g_over_m[a * n + b]
+            own + stiffness(a, b)
         };
         let top = (0..n)
             .map(|a| stiffness(a, a).abs())
@@ -101,8 +142,12 @@ impl BlockPropagator {
             a_hat[x * d + u] = sigma * h;
             for b in 0..n {
                 a_hat[u * d + b] = -stiffness(a, b) / sigma * h;
+                let rate = rates(a, b);
+                if rate != 0.0 {
+                    a_hat[u * d + n + b] = -rate * h;
+                }
             }
-            a_hat[u * d + u] = -consts[modes[a]].damping_rate * h;
+            a_hat[u * d + u] -= consts[modes[a]].damping_rate * h;
             a_hat[u * d + f] = h;
             a_hat[u * d + c] = h;
             a_hat[c * d + s] = -nu * h;
@@ -111,15 +156,14 @@ impl BlockPropagator {
         expm(d, &mut self.work, &mut self.exp);
         self.sigma = sigma;
         self.h = h;
-        self.speed_sq = speed_sq;
         self.nu = nu;
     }
 
     /// Take over `other`'s exponential (same constants): no allocation.
     pub fn copy_from(&mut self, other: &BlockPropagator) {
         self.exp.copy_from_slice(&other.exp);
-        (self.sigma, self.h, self.speed_sq, self.nu) =
-            (other.sigma, other.h, other.speed_sq, other.nu);
+        (self.sigma, self.h, self.speed_key, self.nu) =
+            (other.sigma, other.h, other.speed_key, other.nu);
     }
 
     /// Advance the family `modes` (mode indices over l) in place under the
@@ -221,7 +265,7 @@ pub fn advance(
             .zip(&b.sin)
             .all(|(&c, &s)| consts[c] == consts[s])
         {
-            if (p_sin.h, p_sin.speed_sq, p_sin.nu) != (h, speed_sq, nu) {
+            if (p_sin.h, p_sin.speed_key, p_sin.nu) != (h, speed_sq, nu) {
                 p_sin.copy_from(p);
             }
         } else {

@@ -130,4 +130,8 @@ pub fn accelerations(
     if let Some(s) = &scene.stiffening {
         s.subtract_accelerations(speed * speed, q, acc);
     }
+    // In-plane modes: −M⁻¹ (Ω G q̇ + Ω² K_Ω q), q̇ the Lagrangian velocity in `coords`' axes.
+    if let Some(ip) = &scene.in_plane {
+        ip.spin.subtract_accelerations(coords, speed, q, v, acc);
+    }
 }

@@ -129,9 +129,15 @@ impl InPlaneSpectrum {
             let rigid = if self.k == 0 { 0.0 } else { spin };
             let distance = |z: &faer::c64| (z - faer::c64::new(rigid, 0.0)).norm();
             for _ in 0..2 {
-                let nearest = (0..roots.len())
+                let Some(nearest) = (0..roots.len())
                     .min_by(|&a, &b| distance(&roots[a]).total_cmp(&distance(&roots[b])))
-                    .expect("the roots of a non-empty problem");
+                else {
+                    return Err(InPlaneError::SpinEigen {
+                        k: self.k,
+                        spin,
+                        reason: "fewer than the two rigid-body roots".to_string(),
+                    });
+                };
                 roots.swap_remove(nearest);
             }
         }
