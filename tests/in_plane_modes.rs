@@ -432,7 +432,9 @@ fn the_commands_that_would_simulate_refuse_in_plane_modes() {
             "{name}: {stderr}"
         );
         let why = if name == "simulate" {
-            "without their spin terms"
+            // The bench's torque-limited drive with a torsional mode: the
+            // spin terms are not built there.
+            "spin terms are not built"
         } else {
             "do not carry in-plane modes yet"
         };
@@ -451,8 +453,9 @@ fn the_commands_that_would_simulate_refuse_in_plane_modes() {
     let _ = std::fs::remove_dir_all(&dir);
 }
 
-/// The node refuses the bench scene with in-plane modes (its speed is beyond
-/// their bound without the spin terms), naming the key.
+/// The node refuses the bench scene with in-plane modes (its torque-limited
+/// drive with a torsional mode has no spin terms, and its speed is beyond
+/// their bound), naming the key.
 #[test]
 fn the_node_refuses_the_bench_scene_with_in_plane_modes() {
     let mut child = std::process::Command::new(support::cli::BIN)

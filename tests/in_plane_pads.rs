@@ -241,18 +241,18 @@ fn test_modes(config: &Config, sim: &Simulation) -> Vec<TestMode> {
 /// force u_i·F; k = 0 modes q = f/(mω²), k ≥ 1 pairs the ALE static
 /// (K₀ I − s J) q̄ = f̄/m, K₀ = ω² − k²Ω², s = 2ζωkΩ (the pair seen from
 /// space, docs/dynamics.md). Returns q̄ by state index.
-fn steady_braking(modes: &[TestMode], zeta: f64, n: usize) -> Vec<f64> {
+fn steady_braking(modes: &[TestMode], zeta: f64, n: usize, speed: f64) -> Vec<f64> {
     let friction = 2.0 * MU * normal_per_face();
     let mut q = vec![0.0; n];
     for _ in 0..6 {
         let mut f = vec![0.0; n];
         for j in 0..CONTACTS.len() {
             let (r, theta) = contact_point(j);
-            let (mut vr, mut vt) = (0.0, SPEED * r);
+            let (mut vr, mut vt) = (0.0, speed * r);
             for m in modes {
                 let [ur, ut, dur, dut] = (m.polar)(r, theta);
-                vr += SPEED * q[m.index] * (dur - ut);
-                vt += SPEED * q[m.index] * (dut + ur);
+                vr += speed * q[m.index] * (dur - ut);
+                vt += speed * q[m.index] * (dut + ur);
             }
             let speed = vr.hypot(vt);
             let (fr, ft) = (-friction * vr / speed, -friction * vt / speed);
@@ -275,8 +275,8 @@ fn steady_braking(modes: &[TestMode], zeta: f64, n: usize) -> Vec<f64> {
                 continue;
             };
             let kk = f64::from(m.k);
-            let k0 = m.omega * m.omega - kk * kk * SPEED * SPEED;
-            let s = 2.0 * zeta * m.omega * kk * SPEED;
+            let k0 = m.omega * m.omega - kk * kk * speed * speed;
+            let s = 2.0 * zeta * m.omega * kk * speed;
             let det = (k0 * k0 + s * s) * m.mass;
             let (fc, fs) = (f[m.index], f[partner.index]);
             next[m.index] = (k0 * fc - s * fs) / det;
@@ -296,14 +296,20 @@ fn steady_braking(modes: &[TestMode], zeta: f64, n: usize) -> Vec<f64> {
 #[test]
 fn steady_braking_deflects_the_in_plane_modes_to_their_static_response_to_the_friction() {
     let zeta = 0.4;
-    let config = disc(&[0, 1, 2], &[0, 1, 2], zeta);
+    let mut config = disc(&[0, 1, 2], &[0, 1, 2], zeta);
+    // The static here leaves out the in-plane spin terms (Coriolis, spin
+    // stiffness; tests/in_plane_spin_dynamics.rs): they move the steady
+    // state by 8.0e-8 of the largest amplitude at 10 rad/s, as (Ω/ω)², so
+    // at 0.5 rad/s by 2e-10. The sliding direction's turn by the twisted
+    // material, Ω q ∂u/∂θ against Ω r, does not depend on the speed.
+    config.joint.speed = 0.5;
     let mut sim = Simulation::new(config.clone()).unwrap();
     for _ in 0..2000 {
         sim.step().unwrap();
     }
     let q = sim.q_ale().to_vec();
     let modes = test_modes(&config, &sim);
-    let expected = steady_braking(&modes, zeta, q.len());
+    let expected = steady_braking(&modes, zeta, q.len(), config.joint.speed);
     let scale = q.iter().fold(0.0f64, |a, v| a.max(v.abs()));
     let ip = sim.scene().in_plane.as_ref().unwrap();
     let mut worst = 0.0f64;

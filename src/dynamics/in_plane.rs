@@ -36,7 +36,7 @@
 //! displacement at the node (the same at a face: u does not vary through the
 //! thickness). The load models' wrenches act the same way: the pads' friction
 //! on the faces, whose sliding velocity includes the in-plane rate
-//! (`load_models/pad_in_plane.rs`, with [`InPlaneDynamics::ale_turn`]).
+//! (`load_models/pad_in_plane.rs`, with [`InPlaneDynamics::ale_contacts`]).
 //! The drilling moment M_z acts on the joint only.
 //!
 //! # Node frames
@@ -102,6 +102,12 @@ pub struct InPlaneDynamics {
     /// Per ALE node, per in-plane mode: ∂(u_r, u_θ)/∂θ in the ALE frame's
     /// axes (the transport term of the material's rate, module docs).
     pub ale_turn: Vec<Vec<[f64; 2]>>,
+    /// Per ALE node, per in-plane mode: the point values of (u_x, u_y) and of
+    /// ∂(u_x, u_y)/∂θ (the transport term [`InPlaneDynamics::ale_turn`] plus
+    /// e_z × u, the turn of the polar basis), for contacts at the node: the
+    /// pads' contact forces act at points, and their in-plane residual
+    /// flexibility is not built, so they take no patch means.
+    pub ale_contacts: Vec<Vec<[[f64; 2]; 2]>>,
     /// The residual compliance between the node frames
     /// (`plate.residual_flexibility`; None when off or without nodes).
     pub residual: Option<InPlaneResidual>,
@@ -187,20 +193,26 @@ impl InPlaneDynamics {
             .residual_flexibility
             .then(|| plate.residual_patch_half_width());
         let (ri, ra) = (plate.inner_radius, plate.outer_radius);
-        let at_nodes = |nodes: &[NodeFrame]| -> Vec<Vec<([f64; 2], [f64; 2])>> {
-            nodes
-                .iter()
-                .map(|n| {
-                    let patch = patch.map(|c| LoadPatch::new(ri, ra, n.radius, c));
-                    modes
-                        .iter()
-                        .zip(&radial)
-                        .map(|(m, r)| node_shape(m, r, n.radius, patch.as_ref(), n.angle))
-                        .collect()
-                })
-                .collect()
+        let at_nodes =
+            |nodes: &[NodeFrame], patch: Option<f64>| -> Vec<Vec<([f64; 2], [f64; 2])>> {
+                nodes
+                    .iter()
+                    .map(|n| {
+                        let patch = patch.map(|c| LoadPatch::new(ri, ra, n.radius, c));
+                        modes
+                            .iter()
+                            .zip(&radial)
+                            .map(|(m, r)| node_shape(m, r, n.radius, patch.as_ref(), n.angle))
+                            .collect()
+                    })
+                    .collect()
+            };
+        let (ale_shapes, lagrange_shapes) = (at_nodes(ale, patch), at_nodes(lagrange, patch));
+        let ale_points = if patch.is_some() {
+            at_nodes(ale, None)
+        } else {
+            ale_shapes.clone()
         };
-        let (ale_shapes, lagrange_shapes) = (at_nodes(ale), at_nodes(lagrange));
         let firsts = |shapes: &[Vec<([f64; 2], [f64; 2])>]| -> Vec<Vec<[f64; 2]>> {
             shapes
                 .iter()
@@ -241,6 +253,14 @@ impl InPlaneDynamics {
             ale_turn: ale_shapes
                 .iter()
                 .map(|n| n.iter().map(|s| s.1).collect())
+                .collect(),
+            ale_contacts: ale_points
+                .iter()
+                .map(|n| {
+                    n.iter()
+                        .map(|&(u, t)| [u, [t[0] - u[1], t[1] + u[0]]])
+                        .collect()
+                })
                 .collect(),
             residual,
             spin,
@@ -293,6 +313,14 @@ impl InPlaneDynamics {
     /// axes) at a node whose in-plane mode displacements are `shapes`.
     pub fn add_node_force(&self, shapes: &[[f64; 2]], force: &[f64; 3], out: &mut [f64]) {
         for (o, u) in out[self.offset..].iter_mut().zip(shapes) {
+            *o += u[0] * force[0] + u[1] * force[1];
+        }
+    }
+
+    /// The same for a load model's force at an ALE node: its point values
+    /// ([`InPlaneDynamics::ale_contacts`]).
+    pub fn add_contact_force(&self, shapes: &[[[f64; 2]; 2]], force: &[f64; 3], out: &mut [f64]) {
+        for (o, [u, _]) in out[self.offset..].iter_mut().zip(shapes) {
             *o += u[0] * force[0] + u[1] * force[1];
         }
     }

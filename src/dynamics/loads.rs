@@ -124,8 +124,8 @@ pub fn compute(
             }
         }
         if let Some(ip) = &scene.in_plane {
-            for (shapes, w) in ip.ale_nodes.iter().zip(&models.ale) {
-                ip.add_node_force(shapes, &w.force, &mut out.ale_frame);
+            for (shapes, w) in ip.ale_contacts.iter().zip(&models.ale) {
+                ip.add_contact_force(shapes, &w.force, &mut out.ale_frame);
             }
             for (shapes, w) in ip.lagrange_nodes.iter().zip(&models.lagrange) {
                 ip.add_node_force(shapes, &w.force, &mut out.plate_frame);

@@ -8,8 +8,9 @@
 //!   D u/Dt = Σ_i (q̄̇_i u_i + Ω q̄_i ∂u_i/∂θ),
 //!
 //! D/Dt = ∂/∂t + Ω ∂/∂θ acting on the Cartesian components: ∂u_i/∂θ is the
-//! node frames' transport term ∂(u_r, u_θ)/∂θ ([`InPlaneDynamics::ale_turn`])
-//! plus the turn e_z × u_i of the polar basis. It adds to the sliding velocity of
+//! node frames' transport term ∂(u_r, u_θ)/∂θ plus the turn e_z × u_i of the
+//! polar basis ([`InPlaneDynamics::ale_contacts`]: point values, not the
+//! node frames' patch means under residual flexibility). It adds to the sliding velocity of
 //! both faces ([`super::face_friction`]); the faces' friction F then does the
 //! work u_i·F on in-plane mode i through the node loads. The normal forces
 //! do no work on the in-plane modes: bending and in-plane motion couple
@@ -54,12 +55,7 @@ impl PadInPlane {
             );
         }
         let shapes = nodes
-            .flat_map(|n| {
-                ip.ale_nodes[n]
-                    .iter()
-                    .zip(&ip.ale_turn[n])
-                    .map(|(&u, &t)| [u, [t[0] - u[1], t[1] + u[0]]])
-            })
+            .flat_map(|n| ip.ale_contacts[n].iter().copied())
             .collect();
         Ok(PadInPlane {
             offset: ip.offset,
