@@ -19,7 +19,8 @@
 //! has left the −z face. Per substep the tool sweeps the material arc Ω h: the
 //! chip is the mean over the bins whose centres it passes, the force is held
 //! over the substep (so the bins are cut once per revolution, independent of
-//! the step), and then those bins are cut. In steady cutting at speed Ω the
+//! the step), and then those bins are cut. On `contact_exponential` the cut
+//! is instead a function of the state within the substep (`tool_in_step.rs`). In steady cutting at speed Ω the
 //! chip is the feed per revolution, h = 2π v_f / Ω.
 //!
 //! **Tool compliance.** The tip hangs on the holder by a spring k_t and a
@@ -96,16 +97,18 @@ pub struct Tool {
 pub const DEFLECTION: usize = 0;
 /// The holder's advance since the substep's start (0 between substeps), m.
 pub const ADVANCE: usize = 1;
+/// Time since the substep's start (0 between substeps), s.
+pub const CLOCK: usize = 2;
 /// z of the tool holder at the substep's start, m.
-pub const HOLDER: usize = 2;
+pub const HOLDER: usize = 3;
 /// Chip thickness of the last substep, m.
-pub const CHIP: usize = 3;
+pub const CHIP: usize = 4;
 /// Feed force of the last substep, N.
-pub const FORCE: usize = 4;
+pub const FORCE: usize = 5;
 /// The [`ToolStep`] held over the current substep (force, chip, level, first bin, bins, direction, h).
-pub(super) const HELD: usize = 5;
+pub(super) const HELD: usize = 6;
 /// Shoulder height S of bin b at `SURFACE + b`, m.
-pub const SURFACE: usize = 12;
+pub const SURFACE: usize = 13;
 
 /// The surface bins one substep sweeps: the first, how many, and the direction.
 #[derive(Debug, Clone, Copy)]
@@ -275,15 +278,15 @@ impl LoadModel for Tool {
     fn stage_dependent(&self) -> bool {
         self.within_step
     }
-    /// The tip deflection and the holder's advance, within the substep.
+    /// The tip deflection, the holder's advance and the clock, within the substep.
     fn continuous_states(&self) -> usize {
         if self.within_step {
-            2
+            3
         } else {
             0
         }
     }
-    /// Both are positions.
+    /// None is a rate.
     fn continuous_rates(&self) -> usize {
         0
     }

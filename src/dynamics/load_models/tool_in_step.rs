@@ -9,7 +9,12 @@
 //! the elastic state and of two continuous states of the step: the tip
 //! deflection e, which relaxes as c_t ė = f_f − k_t e (with c_t = 0 it is
 //! held at its start), and the holder's advance since the substep's start,
-//! at the rate −v_f (so the law stays autonomous while the tool feeds).
+//! at the rate −v_f (so the law stays autonomous while the tool feeds), and
+//! the time τ since the substep's start: the bins are passed one after the
+//! other, so the chip at τ is the mean over the bins plus the least-squares
+//! slope σ of their heights in the time they are passed, σ (τ − h/2) — exact
+//! for the helix a steady cut leaves (the mean alone would read the chip of
+//! the substep's middle at its ends, h/2 of a revolution off).
 //! Two switching functions bound the law's pieces: max S − ζ over the bins
 //! (> 0: the tip is in the material) and ζ + h/2 (> 0: the level follows
 //! the tip, not the −z face). The bins are cut at the step's end, at the
@@ -19,22 +24,50 @@
 //! the last substep ended with.
 
 use super::model::{surface_kinematics, LoadContext, ModelOut};
-use super::tool::{Sweep, Tool, ToolStep, ADVANCE, CHIP, DEFLECTION, FORCE, HOLDER};
+use super::tool::{Tool, ToolStep, ADVANCE, CHIP, CLOCK, DEFLECTION, FORCE, HOLDER};
 
 impl Tool {
-    /// The cut at the instant `ctx` (w) with the tip at z = `tip`: the
-    /// cut, and the unclipped cut level ζ = tip − w (in series with the
-    /// residual compliance g: w = w_free − g f_f).
-    fn cut_now(&self, ctx: &LoadContext, slot: &[f64], sweep: &Sweep, tip: f64) -> (ToolStep, f64) {
+    /// The cut at the instant `ctx` (w), `from_middle` (τ − h/2) into the
+    /// substep, with the tip at z = `tip`: the cut, and the unclipped cut
+    /// level ζ = tip − w (in series with the residual compliance g:
+    /// w = w_free − g f_f). The bins' slope in time enters as a lower tip.
+    fn cut_now(
+        &self,
+        ctx: &LoadContext,
+        slot: &[f64],
+        held: &ToolStep,
+        tip: f64,
+        from_middle: f64,
+    ) -> (ToolStep, f64) {
+        let sweep = held.sweep();
+        let tip = tip - Self::surface_slope(slot, held) * from_middle;
         let w = surface_kinematics(&ctx.ale_nodes[self.node], ctx.q_ale, ctx.q_dot_ale).w;
         match self.series {
-            None => (self.cut(slot, sweep, tip, w), tip - w),
+            None => (self.cut(slot, &sweep, tip, w), tip - w),
             Some(g) => {
                 let w_free = w + ctx.held.map_or(0.0, |d| d.at(self.node, ctx.chi));
-                let step = self.cut_in_series(slot, sweep, tip, w_free, g);
+                let step = self.cut_in_series(slot, &sweep, tip, w_free, g);
                 (step, tip - (w_free - g * step.force))
             }
         }
+    }
+
+    /// σ: the least-squares slope of the swept bins' heights in the time
+    /// each is passed, (j + ½) h / bins for the j-th, m/s (0 for one bin).
+    fn surface_slope(slot: &[f64], held: &ToolStep) -> f64 {
+        let bins = held.bins;
+        if bins < 2 {
+            return 0.0;
+        }
+        let n = bins as f64;
+        let mid = 0.5 * (n - 1.0);
+        let (mut num, mut den) = (0.0, 0.0);
+        for (j, i) in held.swept_entries().enumerate() {
+            let x = j as f64 - mid;
+            num += x * slot[i];
+            den += x * x;
+        }
+        num / den * n / held.h
     }
 
     /// The feed force at the instant, the tip's relaxation rate and the
@@ -55,7 +88,8 @@ impl Tool {
             return;
         }
         let sweep = held.sweep();
-        let (cut, zeta) = self.cut_now(ctx, slot, &sweep, Self::tip(slot));
+        let from_middle = slot[CLOCK] - 0.5 * held.h;
+        let (cut, zeta) = self.cut_now(ctx, slot, &held, Self::tip(slot), from_middle);
         out.ale[self.node].force[2] -= cut.force;
         out.rates[0] = if self.damping > 0.0 {
             (cut.force - self.stiffness * slot[DEFLECTION]) / self.damping
@@ -63,6 +97,7 @@ impl Tool {
             0.0
         };
         out.rates[1] = -commands[0];
+        out.rates[2] = 1.0;
         let top = Self::read_entries(&sweep)
             .map(|i| slot[i])
             .fold(f64::NEG_INFINITY, f64::max);
@@ -84,11 +119,15 @@ impl Tool {
     ) {
         slot[HOLDER] -= feed_rate * start.h;
         slot[ADVANCE] = 0.0;
-        let (end, _) = self.cut_now(ctx, slot, &start.sweep(), Self::tip(slot));
+        slot[CLOCK] = 0.0;
+        let (end, zeta) = self.cut_now(ctx, slot, start, Self::tip(slot), 0.5 * start.h);
+        // The level the tip cuts at the end, without the bins' slope.
+        let end_level =
+            (zeta + 0.5 * start.h * Self::surface_slope(slot, start)).max(-0.5 * self.thickness);
         let bins = start.bins.max(1) as f64;
         for (j, i) in start.swept_entries().enumerate() {
             let passed = (j as f64 + 0.5) / bins;
-            slot[i] = slot[i].min(start.level + passed * (end.level - start.level));
+            slot[i] = slot[i].min(start.level + passed * (end_level - start.level));
         }
         if self.damping <= 0.0 {
             slot[DEFLECTION] = end.force / self.stiffness;
