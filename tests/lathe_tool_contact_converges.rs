@@ -38,30 +38,33 @@ fn lathe(edits: &[(&str, &str)], integrator: &str, substeps: u32) -> Config {
 }
 
 /// Deflection under the tool and feed force at every step.
-fn run(config: Config) -> Vec<(f64, f64)> {
+fn run(config: Config) -> Vec<[f64; 2]> {
     let mut sim = Simulation::new(config).unwrap();
     let mut out = Vec::new();
     while sim.time() < DURATION - 0.5 * sim.dt() {
         sim.step().unwrap();
         let force = sim.tool_output().unwrap().feed_force;
-        out.push((sim.ale_node(0).uz, force));
+        out.push([sim.ale_node(0).uz, force]);
     }
     out
 }
 
-/// The largest errors of `run` against `reference`, each over the
-/// reference's peak: (deflection, feed force).
-fn errors(run: &[(f64, f64)], reference: &[(f64, f64)]) -> (f64, f64) {
-    let peak = |f: fn(&(f64, f64)) -> f64| reference.iter().map(|r| f(r).abs()).fold(0.0, f64::max);
-    let worst = |f: fn(&(f64, f64)) -> f64| {
-        run.iter()
-            .zip(reference)
-            .map(|(a, b)| (f(a) - f(b)).abs())
-            .fold(0.0, f64::max)
-    };
-    let (w, force): (fn(&(f64, f64)) -> f64, fn(&(f64, f64)) -> f64) = (|r| r.0, |r| r.1);
-    assert!(peak(force) > 0.0, "the tool never cut");
-    (worst(w) / peak(w), worst(force) / peak(force))
+/// The largest error of column `c` of `run` against `reference`, over the
+/// reference's peak in it.
+fn error(run: &[[f64; 2]], reference: &[[f64; 2]], c: usize) -> f64 {
+    let peak = reference.iter().map(|r| r[c].abs()).fold(0.0, f64::max);
+    assert!(peak > 0.0, "the tool never cut");
+    let worst = run
+        .iter()
+        .zip(reference)
+        .map(|(a, b)| (a[c] - b[c]).abs())
+        .fold(0.0, f64::max);
+    worst / peak
+}
+
+/// (deflection, feed force) errors of `run` against `reference`.
+fn errors(run: &[[f64; 2]], reference: &[[f64; 2]]) -> (f64, f64) {
+    (error(run, reference, 0), error(run, reference, 1))
 }
 
 /// One cut: `contact_exponential` at 1 kHz within `bound` of the converged
