@@ -290,7 +290,7 @@ impl LoadModel for Tool {
     fn continuous_rates(&self) -> usize {
         0
     }
-    /// In the cut, and the cut's level above the −z face ([`Tool::evaluate_in_step`]).
+    /// In the cut, and the cut's level above the −z face (`tool_in_step.rs`).
     fn switching_functions(&self) -> usize {
         if self.within_step {
             2
@@ -324,7 +324,7 @@ impl LoadModel for Tool {
     }
 
     /// The held feed force, along −z at the tool's node; on
-    /// `contact_exponential` the cut at the instant ([`Tool::evaluate_in_step`]).
+    /// `contact_exponential` the cut at the instant (`tool_in_step.rs`).
     fn evaluate(&self, ctx: &LoadContext, slot: &[f64], commands: &[f64], out: ModelOut) {
         if self.within_step {
             return self.evaluate_in_step(ctx, slot, commands, out);
