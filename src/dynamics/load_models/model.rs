@@ -233,9 +233,10 @@ pub trait LoadModel: Debug + Send + Sync {
 
     /// The last of its continuous states that are rates (the differences'
     /// and the error's scale is then the thickness over h): by default the
-    /// second half, after their positions.
+    /// second half after their positions, the middle one of an odd count too.
     fn continuous_rates(&self) -> usize {
-        self.continuous_states() / 2
+        let n = self.continuous_states();
+        n - n / 2
     }
 
     /// Switching functions of a piecewise law: values whose signs select the
