@@ -419,8 +419,6 @@ impl Stepper {
                 joint_end = self.rk4(scene, settings, state, inputs, &joint, stage_drive)?;
             }
         }
-        models.save_changes(&state.load_models, &mut self.undo);
-        models.commit_substep(&mut state.load_models, &inputs.commands, h);
         let end = joint_end.unwrap_or(JointEnd {
             chi1: joint.chi1,
             speed1: joint.speed1,
@@ -439,6 +437,17 @@ impl Stepper {
         };
         if !exact_both {
             state.rederive_with(&scene.layout, &mut self.harm);
+        }
+        if !models.is_empty() {
+            models.save_changes(&state.load_models, &mut self.undo);
+            let mut slots = std::mem::take(&mut state.load_models);
+            models.commit_substep(
+                &load_context(scene, state, inputs),
+                &mut slots,
+                &inputs.commands,
+                h,
+            );
+            state.load_models = slots;
         }
         Ok(())
     }

@@ -134,6 +134,9 @@ pub struct ContactExponential {
     /// L: switching instants are located to h / 2^L.
     levels: usize,
     entries: Vec<Entry>,
+    /// Every piece linearised at the step's own state (the law reads memory
+    /// the key does not hold: [`ContactExponential::linearise_at_state`]).
+    at_state_only: bool,
     clock: u64,
     build: BuildScratch,
     key: Vec<u64>,
@@ -183,6 +186,7 @@ impl ContactExponential {
                     tables: PieceTables::new(n, ns, levels + 1),
                 })
                 .collect(),
+            at_state_only: false,
             clock: 0,
             build: BuildScratch::new(n, ns),
             key: Vec::with_capacity(64),
@@ -214,6 +218,14 @@ impl ContactExponential {
     /// `resolution` (s): h / 2^L ≤ resolution, at least 4.
     pub fn levels_for(h: f64, resolution: f64) -> usize {
         ((h / resolution).log2().ceil().max(4.0) as usize).min(40)
+    }
+
+    /// Linearise every piece at the step's own state, never at the origin:
+    /// for a law that reads memory besides y and the held key (the tool's
+    /// machined surface), whose tables at the origin would depend on when
+    /// they were built.
+    pub fn linearise_at_state(&mut self, at_state_only: bool) {
+        self.at_state_only = at_state_only;
     }
 
     /// The per-component floor of the differences' size and of the error's
@@ -571,9 +583,11 @@ impl ContactExponential {
         // piece, else at y_r: a piece's tables are then a function of its key
         // alone, or kept for this step only — so a saved state replays bit for
         // bit with a fresh cache.
-        self.y_b.iter_mut().for_each(|v| *v = 0.0);
-        eval(&self.y_b, &mut self.f_end, &mut self.s_end);
-        let at_origin = same_piece(&self.s_r, &self.s_end);
+        let at_origin = !self.at_state_only && {
+            self.y_b.iter_mut().for_each(|v| *v = 0.0);
+            eval(&self.y_b, &mut self.f_end, &mut self.s_end);
+            same_piece(&self.s_r, &self.s_end)
+        };
         if at_origin {
             std::mem::swap(&mut self.y_r, &mut self.y_b);
             std::mem::swap(&mut self.f_r, &mut self.f_end);

@@ -46,6 +46,8 @@ pub mod pad_series;
 pub mod pad_shear;
 pub mod parameters;
 pub mod tool_config;
+mod tool_in_step;
+mod tool_step;
 pub mod undo;
 
 pub use linear::{
@@ -334,6 +336,11 @@ impl LoadModels {
         self.models.iter().any(|m| m.stage_dependent())
     }
 
+    /// Whether any model's law within a substep reads its memory ([`LoadModel::law_reads_memory`]).
+    pub fn law_reads_memory(&self) -> bool {
+        self.models.iter().any(|m| m.law_reads_memory())
+    }
+
     /// Whether any model's evaluation at `ctx` reads the joint angle χ.
     pub fn reads_joint_angle(&self, ctx: &LoadContext) -> bool {
         self.models.iter().any(|m| m.reads_joint_angle(ctx))
@@ -450,15 +457,21 @@ impl LoadModels {
         }
     }
 
-    /// After a substep of length `h`.
-    pub fn commit_substep(&self, state: &mut LoadModelState, commands: &LoadCommands, h: f64) {
+    /// After a substep of length `h`, at the kinematics `ctx` of its end.
+    pub fn commit_substep(
+        &self,
+        ctx: &LoadContext,
+        state: &mut LoadModelState,
+        commands: &LoadCommands,
+        h: f64,
+    ) {
         for ((m, slot), c) in self
             .models
             .iter()
             .zip(state.slots.iter_mut())
             .zip(&commands.values)
         {
-            m.commit_substep(slot, c, h);
+            m.commit_substep(ctx, slot, c, h);
         }
     }
 

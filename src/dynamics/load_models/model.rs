@@ -229,7 +229,9 @@ pub trait LoadModel: Debug + Send + Sync {
         0
     }
 
-    /// Memoryless and dependent on the elastic state: RK4 re-evaluates it at every stage.
+    /// Its force within a substep is a function of the elastic state: RK4
+    /// re-evaluates it at every stage and `contact_exponential` takes it
+    /// into its step (memoryless models, and the tool on `contact_exponential`).
     fn stage_dependent(&self) -> bool {
         false
     }
@@ -240,6 +242,14 @@ pub trait LoadModel: Debug + Send + Sync {
     /// integrators refuse such a model). Default: none.
     fn continuous_states(&self) -> usize {
         0
+    }
+
+    /// The last of its continuous states that are rates (the differences'
+    /// and the error's scale is then the thickness over h): by default the
+    /// second half after their positions, the middle one of an odd count too.
+    fn continuous_rates(&self) -> usize {
+        let n = self.continuous_states();
+        n - n / 2
     }
 
     /// Switching functions of a piecewise law: values whose signs select the
@@ -275,8 +285,16 @@ pub trait LoadModel: Debug + Send + Sync {
     /// Its wrenches at one instant, added into `out`.
     fn evaluate(&self, ctx: &LoadContext, slot: &[f64], commands: &[f64], out: ModelOut);
 
-    /// After the substep of length `h`: advance its state.
-    fn commit_substep(&self, _slot: &mut [f64], _commands: &[f64], _h: f64) {}
+    /// After the substep of length `h`, at the kinematics of its end: advance its state.
+    fn commit_substep(&self, _ctx: &LoadContext, _slot: &mut [f64], _commands: &[f64], _h: f64) {}
+
+    /// Whether its law within a substep reads memory that only
+    /// [`LoadModel::commit_substep`] changes (the tool's machined surface and
+    /// holder): `contact_exponential` then linearises every step's piece at
+    /// that step's own state, never at the origin. Default: no.
+    fn law_reads_memory(&self) -> bool {
+        false
+    }
 
     /// The part of its slot (`..n` of `slot_len` entries) the stepper copies
     /// before a step so that it can undo it (see [`super::undo`]); the entries

@@ -19,7 +19,8 @@
 //! has left the −z face. Per substep the tool sweeps the material arc Ω h: the
 //! chip is the mean over the bins whose centres it passes, the force is held
 //! over the substep (so the bins are cut once per revolution, independent of
-//! the step), and then those bins are cut. In steady cutting at speed Ω the
+//! the step), and then those bins are cut. On `contact_exponential` the cut
+//! is instead a function of the state within the substep (`tool_in_step.rs`). In steady cutting at speed Ω the
 //! chip is the feed per revolution, h = 2π v_f / Ω.
 //!
 //! **Tool compliance.** The tip hangs on the holder by a spring k_t and a
@@ -41,15 +42,15 @@ use super::model::{
 };
 use super::outputs::{CsvColumn, OutputChannel, OutputContext, Outputs, StateTopic};
 use super::tool_config::{ToolConfig, MAX_TOOL_FEED_RATE, PARAMETERS};
+use super::tool_step::{bin_entries, Sweep};
+pub use super::tool_step::{ToolStep, SURFACE, SURFACE_BINS};
 use super::undo::SlotUndo;
-use crate::config::Config;
+use crate::config::{Config, IntegratorKind};
 use crate::dynamics::contact_compliance::solve_monotone;
 use crate::dynamics::error::LoadCommandError;
 use crate::dynamics::{Command, Simulation};
 use std::any::Any;
 
-/// Bins of the machined-shoulder height S(φ) over one revolution.
-pub const SURFACE_BINS: usize = 4096;
 
 /// Eq. (21)'s reference chip size, m (k_f1.1 is the force per mm² at h = b = 1 mm).
 const REFERENCE_CHIP: f64 = 1.0e-3;
@@ -80,96 +81,30 @@ pub struct Tool {
     /// g, the residual compliance at the tool's node (m/N): the cut in series
     /// with it (`plate.residual_flexibility`; None: on the modal deflection).
     pub series: Option<f64>,
+    /// The cut as a function of the state within the substep (on
+    /// `contact_exponential`, `tool_in_step.rs`) instead of held over it.
+    pub within_step: bool,
     /// (1 mm)^m_f of eq. (21), computed once ([`Tool::reference_factor`]).
     pub reference_factor: f64,
 }
 
 /// The tool's slot in the [`State`](crate::dynamics::State) (so reset and
-/// replay are copies): the holder, the tip deflection, the last substep's
-/// chip and force, the cut held over the current substep, and the shoulder
-/// height S per material-angle bin from index [`SURFACE`] on.
-pub const HOLDER: usize = 0;
-/// Tip deflection e (pushed back, +z), m.
-pub const DEFLECTION: usize = 1;
+/// replay are copies): the tip deflection and the holder's advance within
+/// the substep (first: the continuous states on `contact_exponential`), the
+/// holder, the last substep's chip and force, the cut held over the current
+/// substep, and the shoulder height S per material-angle bin from index
+/// [`SURFACE`] on.
+pub const DEFLECTION: usize = 0;
+/// The holder's advance since the substep's start (0 between substeps), m.
+pub const ADVANCE: usize = 1;
+/// Time since the substep's start (0 between substeps), s.
+pub const CLOCK: usize = 2;
+/// z of the tool holder at the substep's start, m.
+pub const HOLDER: usize = 3;
 /// Chip thickness of the last substep, m.
-pub const CHIP: usize = 2;
+pub const CHIP: usize = 4;
 /// Feed force of the last substep, N.
-pub const FORCE: usize = 3;
-/// The [`ToolStep`] held over the current substep (force, chip, level, first bin, bins, direction).
-const HELD: usize = 4;
-/// Shoulder height S of bin b at `SURFACE + b`, m.
-pub const SURFACE: usize = 10;
-
-/// The surface bins one substep sweeps: the first, how many, and the direction.
-#[derive(Debug, Clone, Copy)]
-struct Sweep {
-    first_bin: i64,
-    bins: i64,
-    downwards: bool,
-}
-
-/// Slot indices of `count` surface bins from `first_bin` on, downwards or
-/// upwards in φ (wrapping round the revolution), in the order swept.
-fn bin_entries(first_bin: i64, downwards: bool, count: i64) -> impl Iterator<Item = usize> {
-    let n = SURFACE_BINS as i64;
-    (0..count).map(move |j| {
-        SURFACE
-            + if downwards {
-                first_bin - j
-            } else {
-                first_bin + j
-            }
-            .rem_euclid(n) as usize
-    })
-}
-
-/// What one substep cuts, computed at its start.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct ToolStep {
-    /// Feed force held over the substep, N.
-    pub force: f64,
-    /// Chip thickness, m.
-    pub chip: f64,
-    /// Material height of the cut, max(ζ, −h/2), m.
-    pub level: f64,
-    /// First bin swept and number of bins swept (bins are visited downwards in φ for Ω > 0).
-    pub first_bin: i64,
-    /// Number of bins swept.
-    pub bins: i64,
-    /// Whether the bins are visited downwards in φ (Ω > 0).
-    pub downwards: bool,
-}
-
-impl ToolStep {
-    /// Slot indices of the surface bins the substep sweeps, in the order swept.
-    fn swept_entries(&self) -> impl Iterator<Item = usize> {
-        bin_entries(self.first_bin, self.downwards, self.bins)
-    }
-
-    fn store(&self, slot: &mut [f64]) {
-        let held = [
-            self.force,
-            self.chip,
-            self.level,
-            self.first_bin as f64,
-            self.bins as f64,
-            if self.downwards { 1.0 } else { 0.0 },
-        ];
-        slot[HELD..HELD + 6].copy_from_slice(&held);
-    }
-
-    fn load(slot: &[f64]) -> ToolStep {
-        let h = &slot[HELD..HELD + 6];
-        ToolStep {
-            force: h[0],
-            chip: h[1],
-            level: h[2],
-            first_bin: h[3] as i64,
-            bins: h[4] as i64,
-            downwards: h[5] != 0.0,
-        }
-    }
-}
+pub const FORCE: usize = 5;
 
 /// The tool's one command: the feed rate.
 pub const FEED_RATE: CommandSpec = CommandSpec {
@@ -227,6 +162,7 @@ pub fn build(config: &Config, nodes: &SceneNodes) -> Option<Box<dyn LoadModel>> 
         start_height: 0.5 * config.plate.thickness + t.start_clearance,
         initial_feed_rate: t.feed_rate,
         series: nodes.residual.map(|r| r.between(t.node, t.node, 0.0)),
+        within_step: config.simulation.integrator == IntegratorKind::ContactExponential,
         reference_factor: Tool::reference_factor(t.force_exponent),
     }))
 }
@@ -250,6 +186,33 @@ impl LoadModel for Tool {
     fn initial_commands(&self) -> Vec<f64> {
         vec![self.initial_feed_rate]
     }
+    /// On `contact_exponential` the cut follows the state within the substep.
+    fn stage_dependent(&self) -> bool {
+        self.within_step
+    }
+    /// The tip deflection, the holder's advance and the clock, within the substep.
+    fn continuous_states(&self) -> usize {
+        if self.within_step {
+            3
+        } else {
+            0
+        }
+    }
+    /// None is a rate.
+    fn continuous_rates(&self) -> usize {
+        0
+    }
+    /// In the cut, and the cut's level above the −z face (`tool_in_step.rs`).
+    fn switching_functions(&self) -> usize {
+        if self.within_step {
+            2
+        } else {
+            0
+        }
+    }
+    fn law_reads_memory(&self) -> bool {
+        self.within_step
+    }
     fn initial_state(&self) -> Vec<f64> {
         let mut slot = vec![0.0; SURFACE + SURFACE_BINS];
         slot[HOLDER] = self.start_height;
@@ -265,19 +228,27 @@ impl LoadModel for Tool {
             Some(g) => {
                 // w_free: without the tool's own force; its force pushes −z.
                 let w_free = w + ctx.held.map_or(0.0, |d| d.at(self.node, ctx.chi));
-                self.cut_in_series(slot, &self.sweep(ctx.chi, ctx.speed, h), w_free, g)
+                let sweep = self.sweep(ctx.chi, ctx.speed, h);
+                self.cut_in_series(slot, &sweep, Self::tip(slot), w_free, g)
             }
         };
-        step.store(slot);
+        ToolStep { h, ..step }.store(slot);
     }
 
-    /// The held feed force, along −z at the tool's node.
-    fn evaluate(&self, _ctx: &LoadContext, slot: &[f64], _commands: &[f64], out: ModelOut) {
+    /// The held feed force, along −z at the tool's node; on
+    /// `contact_exponential` the cut at the instant (`tool_in_step.rs`).
+    fn evaluate(&self, ctx: &LoadContext, slot: &[f64], commands: &[f64], out: ModelOut) {
+        if self.within_step {
+            return self.evaluate_in_step(ctx, slot, commands, out);
+        }
         out.ale[self.node].force[2] -= ToolStep::load(slot).force;
     }
 
-    fn commit_substep(&self, slot: &mut [f64], commands: &[f64], h: f64) {
+    fn commit_substep(&self, ctx: &LoadContext, slot: &mut [f64], commands: &[f64], h: f64) {
         let step = ToolStep::load(slot);
+        if self.within_step {
+            return self.commit_in_step(ctx, slot, &step, commands[0]);
+        }
         self.commit(slot, &step, commands[0], h);
     }
 
@@ -286,10 +257,14 @@ impl LoadModel for Tool {
         SURFACE
     }
 
-    /// The surface bins the held cut will lower.
+    /// The surface bins the held cut will lower (within the substep: every bin swept).
     fn save_changes(&self, slot: &[f64], undo: &mut SlotUndo) {
         let step = ToolStep::load(slot);
         for i in step.swept_entries() {
+            if self.within_step {
+                undo.save(slot, i);
+                continue;
+            }
             // Above the level, or NaN: saved.
             if !matches!(
                 slot[i].partial_cmp(&step.level),
@@ -391,18 +366,18 @@ impl Tool {
 
     /// z of the tool tip, m.
     pub fn tip(slot: &[f64]) -> f64 {
-        slot[HOLDER] + slot[DEFLECTION]
+        slot[HOLDER] + slot[ADVANCE] + slot[DEFLECTION]
     }
 
     /// The cut of a substep of length h starting at joint angle χ (wrapped, rad)
     /// and speed Ω, with deflection w under the tool.
     pub fn begin(&self, slot: &[f64], w: f64, chi: f64, speed: f64, h: f64) -> ToolStep {
-        self.cut(slot, &self.sweep(chi, speed, h), w)
+        self.cut(slot, &self.sweep(chi, speed, h), Self::tip(slot), w)
     }
 
     /// The bins a substep of length h starting at χ with speed Ω sweeps
     /// (whatever the deflection).
-    fn sweep(&self, chi: f64, speed: f64, h: f64) -> Sweep {
+    pub(super) fn sweep(&self, chi: f64, speed: f64, h: f64) -> Sweep {
         let n = SURFACE_BINS as i64;
         let width = std::f64::consts::TAU / SURFACE_BINS as f64;
         let phi0 = (self.angle - chi).rem_euclid(std::f64::consts::TAU);
@@ -426,13 +401,13 @@ impl Tool {
 
     /// Slot indices of the bins the chip is read from: those swept, or the
     /// bin ahead when no centre is passed (a step shorter than a bin).
-    fn read_entries(sweep: &Sweep) -> impl Iterator<Item = usize> {
+    pub(super) fn read_entries(sweep: &Sweep) -> impl Iterator<Item = usize> {
         bin_entries(sweep.first_bin, sweep.downwards, sweep.bins.max(1))
     }
 
-    /// The cut of `sweep` with deflection w under the tool.
-    fn cut(&self, slot: &[f64], sweep: &Sweep, w: f64) -> ToolStep {
-        let level = (Self::tip(slot) - w).max(-0.5 * self.thickness);
+    /// The cut of `sweep` with the tip at z = `tip` and deflection w under the tool.
+    pub(super) fn cut(&self, slot: &[f64], sweep: &Sweep, tip: f64, w: f64) -> ToolStep {
+        let level = (tip - w).max(-0.5 * self.thickness);
         let read = sweep.bins.max(1);
         let chip = Self::read_entries(sweep)
             .map(|i| (slot[i] - level).max(0.0))
@@ -450,6 +425,7 @@ impl Tool {
             first_bin,
             bins: bins.max(0),
             downwards,
+            h: 0.0,
         }
     }
 
@@ -457,15 +433,22 @@ impl Tool {
     /// f = 𝓕(chip(w_free − g f)) ([`solve_monotone`]). The root itself is
     /// the force held: 𝓕 re-evaluated there can differ by far more than the
     /// tolerance where the chip vanishes (𝓕 ∝ h^(1−m_f) is vertical at h = 0).
-    fn cut_in_series(&self, slot: &[f64], sweep: &Sweep, w_free: f64, g: f64) -> ToolStep {
-        let free = self.cut(slot, sweep, w_free).force;
+    pub(super) fn cut_in_series(
+        &self,
+        slot: &[f64],
+        sweep: &Sweep,
+        tip: f64,
+        w_free: f64,
+        g: f64,
+    ) -> ToolStep {
+        let free = self.cut(slot, sweep, tip, w_free).force;
         let f = solve_monotone(free, |f| {
-            let step = self.cut(slot, sweep, w_free - g * f);
+            let step = self.cut(slot, sweep, tip, w_free - g * f);
             (step.force, -g * self.force_slope(slot, sweep, &step))
         });
         ToolStep {
             force: f,
-            ..self.cut(slot, sweep, w_free - g * f)
+            ..self.cut(slot, sweep, tip, w_free - g * f)
         }
     }
 
@@ -519,6 +502,7 @@ mod tests {
             start_height: 0.005,
             initial_feed_rate: 0.0,
             series: None,
+            within_step: false,
             reference_factor: Tool::reference_factor(0.7013),
         }
     }
@@ -540,7 +524,7 @@ mod tests {
         slot[HOLDER] = 0.005 - 2e-5;
         let sweep = t.sweep(0.0, 10.0, 1e-3);
         let g = 1e-9;
-        let step = t.cut_in_series(&slot, &sweep, 0.0, g);
+        let step = t.cut_in_series(&slot, &sweep, Tool::tip(&slot), 0.0, g);
         // The root by bisection, written out here.
         let (mut lo, mut hi) = (0.0, t.feed_force(2e-5));
         for _ in 0..200 {
@@ -560,7 +544,7 @@ mod tests {
         // The chip a hair above the surface (the cut's first touch): the
         // force cannot exceed the one that closes the chip, 1e-19/g.
         slot[HOLDER] = 0.005 - 1e-19;
-        let touch = t.cut_in_series(&slot, &sweep, 0.0, g);
+        let touch = t.cut_in_series(&slot, &sweep, Tool::tip(&slot), 0.0, g);
         assert!(
             touch.force <= 1e-19 / g * (1.0 + 1e-9) && touch.force >= 0.0,
             "{}",

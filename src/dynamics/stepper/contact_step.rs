@@ -173,6 +173,7 @@ impl Stepper {
                 blocks.extend([m + 1, m + 2]);
             }
             c.set_scale(&scale, &blocks);
+            c.linearise_at_state(models.law_reads_memory());
             self.contact = Some(c);
             self.contact_levels = Some((levels, size));
         }
@@ -259,23 +260,24 @@ fn frame_kick(scene: &Scene, kick: f64, y: &mut [f64]) {
 const CONTACT_JOINT_UNKNOWNS: usize = 2;
 
 /// The scale of each unknown where it is 0 — 1e-6 of the plate's thickness
-/// for amplitudes and the models' continuous states (positions then rates),
-/// that over h for rates — and the blocks of like quantities.
+/// for amplitudes and the models' continuous positions, that over h for
+/// rates (the modal rates, each model's last [`crate::dynamics::load_models::LoadModel::continuous_rates`]
+/// states) — and the blocks of like quantities: amplitudes, rates, then per
+/// model its positions and its rates.
 fn difference_scale(scene: &Scene, n: usize, size: usize, h: f64) -> (Vec<f64>, Vec<usize>) {
     let q = 1.0e-6 * scene.model.plate().thickness;
-    let half = (size - 2 * n) / 2;
-    let blocks = vec![0, n, 2 * n, 2 * n + half, size];
-    let scale = (0..size)
-        .map(|i| {
-            let rate = (n..2 * n).contains(&i) || i >= 2 * n + half;
-            if rate {
-                q / h
-            } else {
-                q
-            }
-        })
-        .collect();
-    let mut blocks = blocks;
+    let mut scale = vec![q; size];
+    scale[n..2 * n].fill(q / h);
+    let mut blocks = vec![0, n, 2 * n];
+    let mut start = 2 * n;
+    for m in scene.load_models.models() {
+        let end = start + m.continuous_states();
+        let rates = end - m.continuous_rates();
+        scale[rates..end].fill(q / h);
+        blocks.extend([rates, end]);
+        start = end;
+    }
+    debug_assert_eq!(start, size);
     blocks.dedup();
     (scale, blocks)
 }
