@@ -117,17 +117,7 @@ impl InPlaneResidual {
         c: f64,
     ) -> InPlaneResidual {
         let (ri, ra) = (disc.plate().inner_radius, disc.plate().outer_radius);
-        let mut radii: Vec<f64> = Vec::new();
-        let index: Vec<usize> = nodes
-            .iter()
-            .map(|nd| match radii.iter().position(|&r| r == nd.radius) {
-                Some(i) => i,
-                None => {
-                    radii.push(nd.radius);
-                    radii.len() - 1
-                }
-            })
-            .collect();
+        let (radii, index) = super::node_frame::distinct_radii(nodes);
         let patches: Vec<LoadPatch> = radii
             .iter()
             .map(|&r| LoadPatch::new(ri, ra, r, c))

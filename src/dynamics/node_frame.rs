@@ -259,6 +259,24 @@ pub(crate) fn mindlin_gradient_phi(
     [c * e_r - s * e_phi, s * e_r + c * e_phi]
 }
 
+/// The distinct radii of `nodes` in order of first appearance, and each
+/// node's index into them: the residual compliances are computed once per
+/// radius.
+pub(crate) fn distinct_radii(nodes: &[&NodeFrame]) -> (Vec<f64>, Vec<usize>) {
+    let mut radii: Vec<f64> = Vec::new();
+    let index = nodes
+        .iter()
+        .map(|nd| match radii.iter().position(|&r| r == nd.radius) {
+            Some(i) => i,
+            None => {
+                radii.push(nd.radius);
+                radii.len() - 1
+            }
+        })
+        .collect();
+    (radii, index)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -109,17 +109,7 @@ impl ResidualCompliance {
     ) -> ResidualCompliance {
         let nodes: Vec<&NodeFrame> = ale.iter().chain(lagrange).collect();
         let n = nodes.len();
-        let mut radii: Vec<f64> = Vec::new();
-        let index: Vec<usize> = nodes
-            .iter()
-            .map(|nd| match radii.iter().position(|&r| r == nd.radius) {
-                Some(i) => i,
-                None => {
-                    radii.push(nd.radius);
-                    radii.len() - 1
-                }
-            })
-            .collect();
+        let (radii, index) = super::node_frame::distinct_radii(&nodes);
         let kernels = Kernels::new(model, &radii, patch);
         let mut pairs = Vec::with_capacity(n * n);
         let mut tables = Vec::new();
