@@ -9,7 +9,7 @@
 //!
 //! D/Dt = ∂/∂t + Ω ∂/∂θ acting on the Cartesian components: ∂u_i/∂θ is the
 //! node frames' transport term ∂(u_r, u_θ)/∂θ plus the turn e_z × u_i of the
-//! polar basis ([`InPlaneDynamics::ale_contacts`]: point values, not the
+//! polar basis (`InPlaneDynamics::ale_contacts`: point values, not the
 //! node frames' patch means under residual flexibility). It adds to the sliding velocity of
 //! both faces ([`super::face_friction`]); the faces' friction F then does the
 //! work u_i·F on in-plane mode i through the node loads. The normal forces
