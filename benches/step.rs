@@ -123,6 +123,8 @@ fn steps(c: &mut Criterion) {
         c.bench_function(name, |b| b.iter(|| sim.step().unwrap()));
     }
 
+    in_plane_modes(c);
+
     let mut group = c.benchmark_group("scenario");
     group.sample_size(10);
     group.bench_function("lathe_30_modes_5.5s_at_10kHz_exponential", |b| {
@@ -141,6 +143,34 @@ fn steps(c: &mut Criterion) {
         })
     });
     group.finish();
+}
+
+/// The step cost of in-plane modes against bending modes: the lathe disc
+/// (30 bending modes, one ALE rim load, exponential, 10 kHz) with 16
+/// in-plane modes added (k = 0..3, l = 0, 1: the torsional and radial
+/// families and three pairs, their spin terms at the lathe's speed), against
+/// the same disc with 15 bending modes added (l = 2 for k = 0..7). The cost
+/// per added mode is the difference to the base over the modes added.
+fn in_plane_modes(c: &mut Criterion) {
+    let cases: [(&str, u32, &[u32]); 3] = [
+        ("in_plane/base_30_bending", 1, &[]),
+        ("in_plane/plus_16_in_plane", 1, &[0, 1, 2, 3]),
+        ("in_plane/plus_15_bending", 2, &[]),
+    ];
+    for (name, lmax, in_plane) in cases {
+        let mut sim = lathe_with(
+            IntegratorKind::Exponential,
+            Coordinates::Ale,
+            7,
+            lmax,
+            10_000.0,
+            |c| {
+                c.plate.in_plane_nodal_diameters = in_plane.to_vec();
+                c.plate.in_plane_orders = vec![0, 1];
+            },
+        );
+        c.bench_function(name, |b| b.iter(|| sim.step().unwrap()));
+    }
 }
 
 /// The shipped scene `config/<file>` with `integrator` (None: as shipped),
