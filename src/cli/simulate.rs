@@ -2,7 +2,10 @@
 //! (the bag: `bag::offline`, through `cli::record`).
 //!
 //! Columns: time, joint_position, joint_velocity, q1..qN (Lagrangian, mode
-//! order of `modes`), qale1..qaleN, ale{j}_uz, lagrange{j}_uz (m); then, only
+//! order of `modes`), qale1..qaleN, ale{j}_uz, lagrange{j}_uz (m); with
+//! in-plane modes ale{j}_ux, ale{j}_uy, then lagrange{j}_ux, lagrange{j}_uy
+//! (m, the nodes' in-plane displacement in their parent frame's axes,
+//! docs/in_plane.md); then, only
 //! for scenes with load models (docs/scenes.md): joint_effort (N·m) and the
 //! CSV columns each model declares (`dynamics::load_models::outputs`), model
 //! by model in registry order: pad{p}_clamp_force, pad{p}_normal_force,
@@ -31,6 +34,14 @@ pub fn header(sim: &Simulation) -> String {
     cols.extend((1..=n).map(|i| format!("qale{i}")));
     cols.extend((1..=sim.n_ale_nodes()).map(|j| format!("ale{j}_uz")));
     cols.extend((1..=sim.n_lagrange_nodes()).map(|j| format!("lagrange{j}_uz")));
+    if sim.scene().in_plane.is_some() {
+        for (kind, n) in [
+            ("ale", sim.n_ale_nodes()),
+            ("lagrange", sim.n_lagrange_nodes()),
+        ] {
+            cols.extend((1..=n).flat_map(|j| [format!("{kind}{j}_ux"), format!("{kind}{j}_uy")]));
+        }
+    }
     if !sim.scene().load_models.is_empty() {
         cols.push("joint_effort".into());
     }
@@ -72,7 +83,10 @@ pub fn column_unit(name: &str) -> Option<&'static str> {
         _ if numbered("q", "")
             || numbered("qale", "")
             || numbered("ale", "_uz")
-            || numbered("lagrange", "_uz") =>
+            || numbered("lagrange", "_uz")
+            || ["_ux", "_uy"]
+                .iter()
+                .any(|s| numbered("ale", s) || numbered("lagrange", s)) =>
         {
             "m"
         }
@@ -160,6 +174,18 @@ impl RowWriter {
         }
         for i in 0..sim.n_lagrange_nodes() {
             self.exp(sim.lagrange_node_uz(i));
+        }
+        for i in 0..sim.n_ale_nodes() {
+            if let Some([ux, uy]) = sim.ale_node_in_plane_u(i) {
+                self.exp(ux);
+                self.exp(uy);
+            }
+        }
+        for i in 0..sim.n_lagrange_nodes() {
+            if let Some([ux, uy]) = sim.lagrange_node_in_plane_u(i) {
+                self.exp(ux);
+                self.exp(uy);
+            }
         }
         if !sim.scene().load_models.is_empty() {
             self.exp(j.effort);

@@ -383,6 +383,19 @@ impl Simulation {
             + self.residual_deflection(self.scene.ale_nodes.len() + j)
     }
 
+    /// The in-plane displacement (u_x, u_y) of [`Simulation::ale_node`] alone
+    /// (m, in plate_base axes; None without in-plane modes: the CSV's columns).
+    pub fn ale_node_in_plane_u(&self, j: usize) -> Option<[f64; 2]> {
+        self.in_plane_motion(j).map(|m| m.u)
+    }
+
+    /// The in-plane displacement of [`Simulation::lagrange_node`] alone (m,
+    /// in plate_rotor axes).
+    pub fn lagrange_node_in_plane_u(&self, j: usize) -> Option<[f64; 2]> {
+        self.in_plane_motion(self.scene.ale_nodes.len() + j)
+            .map(|m| m.u)
+    }
+
     /// Transverse force (N) at node `b` (ALE first, then Lagrangian): the held
     /// wrench plus the load models', z in the node frame.
     pub fn transverse_node_force(&self, b: usize) -> f64 {
