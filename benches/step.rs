@@ -196,6 +196,7 @@ fn scene(file: &str, integrator: Option<IntegratorKind>, bare: bool) -> Simulati
 fn scenes(c: &mut Criterion) {
     let files = [
         "brake_bench.yaml",
+        "brake_in_plane.yaml",
         "brake_squeal.yaml",
         "brake_squeal_paper.yaml",
         "lathe.yaml",
