@@ -37,7 +37,15 @@ const FAMILIES: &[(&str, &[&str])] = &[
             "face_friction.rs",
         ],
     ),
-    ("tool", &["tool.rs", "tool_config.rs"]),
+    (
+        "tool",
+        &[
+            "tool.rs",
+            "tool_config.rs",
+            "tool_in_step.rs",
+            "tool_step.rs",
+        ],
+    ),
     ("links", &["pitch_link.rs"]),
     ("springs", &["point_spring.rs"]),
     ("dampers", &["point_damper.rs"]),

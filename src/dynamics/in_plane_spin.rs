@@ -8,7 +8,7 @@
 //! the block's modes: [cos partners; sin partners] for k ≥ 1 (G couples the
 //! partners), the radial and torsional modes for k = 0 (G couples the two
 //! families). The torsional modes keep their coupling s with the joint
-//! ([`super::in_plane`], "Joint"): its Euler force is a load of the block.
+//! (docs/in_plane.md, "In the dynamics", Joint): its Euler force is a load of the block.
 //!
 //! # Descriptions
 //!

@@ -2,7 +2,7 @@
 //! vibration u = u_r e_r + u_θ e_θ, a second mode family beside the bending
 //! modes, by the same radial B-spline Ritz machinery (docs/in_plane.md).
 //! `modes` lists them, `simulate` and `run` carry them
-//! (`crate::dynamics::in_plane`), `campbell` adds their spinning waves
+//! (the dynamics' in-plane module), `campbell` adds their spinning waves
 //! ([`in_plane_campbell`]); the analyses that do not carry them refuse
 //! `plate.in_plane_nodal_diameters` ([`crate::model::PlateModel::new`]).
 //! For the spinning disc, `spin` gives
