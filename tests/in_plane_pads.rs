@@ -5,7 +5,8 @@
 //! ALE static response to the friction μN e_θ computed here; the sliding
 //! velocity's in-plane rate damps the radial mode at the closed-form rate
 //! 2μN U²/(Ωr) per contact; the ALE and Lagrangian descriptions agree; the
-//! keys not built are refused by name.
+//! friction at the mid-plane (the paper's model) deflects them to its own
+//! static; the keys not built are refused by name.
 
 mod support;
 
@@ -14,11 +15,8 @@ use annular_plate::dynamics::load_models::pad_config::{
     Caliper, ContactSurface, PadContact, PadsConfig,
 };
 use annular_plate::dynamics::{Simulation, Wrench};
-use annular_plate::model::in_plane::{
-    in_plane_plate, InPlaneDiscretisation, InPlaneFamily, InPlaneShape, InPlaneTable,
-};
-use support::bessel::jy_seq;
-use support::in_plane_exact::torsional_fixed_free_beta;
+use annular_plate::model::in_plane::InPlaneShape;
+use support::in_plane_modes::{exact_torsion, test_modes, TestMode};
 
 const RI: f64 = 0.07;
 const RA: f64 = 0.153;
@@ -103,136 +101,6 @@ fn normal_per_face() -> f64 {
     CLAMP / 2.0
 }
 
-/// The exact torsional mode l of the fixed–free annulus: ω, V(r) scaled to
-/// a positive unit peak and its modal mass 2π∫ρh V² r dr (Simpson, 20 000
-/// cells), as tests/in_plane_dynamics.rs builds it.
-struct Torsion {
-    omega: f64,
-    v: Box<dyn Fn(f64) -> f64>,
-    mass: f64,
-}
-
-fn exact_torsion(l: usize) -> Torsion {
-    let beta = torsional_fixed_free_beta(RI, RA, l);
-    let g = E / (2.0 * (1.0 + NU));
-    let (ji, yi) = jy_seq(1, beta * RI);
-    let raw = move |r: f64| {
-        let (j, y) = jy_seq(1, beta * r);
-        j[1] * yi[1] - y[1] * ji[1]
-    };
-    let n = 20_000;
-    let dr = (RA - RI) / n as f64;
-    let peak = (0..=n)
-        .map(|i| raw(RI + i as f64 * dr))
-        .fold(0.0f64, |a, v| if v.abs() > a.abs() { v } else { a });
-    let v = move |r: f64| raw(r) / peak;
-    let simpson: f64 = (0..=n)
-        .map(|i| {
-            let w = if i == 0 || i == n {
-                1.0
-            } else if i % 2 == 1 {
-                4.0
-            } else {
-                2.0
-            };
-            let r = RI + i as f64 * dr;
-            w * v(r) * v(r) * r
-        })
-        .sum::<f64>()
-        * dr
-        / 3.0;
-    Torsion {
-        omega: beta * (g / RHO).sqrt(),
-        v: Box::new(v),
-        mass: std::f64::consts::TAU * RHO * H * simpson,
-    }
-}
-
-/// (u_r, u_θ, ∂_θ u_r, ∂_θ u_θ) at (r, θ).
-type Polar = Box<dyn Fn(f64, f64) -> [f64; 4]>;
-
-/// One in-plane mode as the test sees it: its state index, k, m, ω and its
-/// polar displacement (u_r, u_θ) and their θ-derivatives at (r, θ).
-struct TestMode {
-    index: usize,
-    k: u32,
-    mass: f64,
-    omega: f64,
-    polar: Polar,
-}
-
-/// The in-plane modes of `config` for the test: the torsional ones from the
-/// exact solution, the radial ones and the k ≥ 1 pairs from the library's
-/// B-spline modes (U, V evaluated here), with their angular factors
-/// cos/sin kθ written out (cos: u_r = U cos kθ, u_θ = V sin kθ; sin:
-/// u_r = U sin kθ, u_θ = −V cos kθ).
-fn test_modes(config: &Config, sim: &Simulation) -> Vec<TestMode> {
-    let ip = sim.scene().in_plane.as_ref().unwrap();
-    let table = InPlaneTable::new(&config.plate, &config.centrifugal).unwrap();
-    let ip_plate = in_plane_plate(&config.plate, &config.centrifugal);
-    let disc = InPlaneDiscretisation::new(&ip_plate, table.splines).unwrap();
-    let orders = config.plate.in_plane_orders.len();
-    let mut out = Vec::new();
-    for (j, m) in ip.modes.iter().enumerate() {
-        let index = ip.offset + j;
-        let k = f64::from(m.k);
-        let mode = |family| {
-            disc.modes(m.k, family, orders)
-                .unwrap()
-                .into_iter()
-                .find(|x| x.l == m.l)
-                .unwrap()
-        };
-        let (mass, omega, polar): (f64, f64, Polar) = match m.shape {
-            InPlaneShape::Torsional => {
-                let t = exact_torsion(m.l as usize);
-                let v = t.v;
-                (t.mass, t.omega, Box::new(move |r, _| [0.0, v(r), 0.0, 0.0]))
-            }
-            InPlaneShape::Radial => {
-                let x = mode(InPlaneFamily::Radial);
-                (
-                    x.modal_mass,
-                    x.omega,
-                    Box::new(move |r, _| [x.eval(r).u, 0.0, 0.0, 0.0]),
-                )
-            }
-            InPlaneShape::Cos => {
-                let x = mode(InPlaneFamily::Coupled);
-                (
-                    x.modal_mass,
-                    x.omega,
-                    Box::new(move |r, t| {
-                        let e = x.eval(r);
-                        let (s, c) = (k * t).sin_cos();
-                        [e.u * c, e.v * s, -k * e.u * s, k * e.v * c]
-                    }),
-                )
-            }
-            InPlaneShape::Sin => {
-                let x = mode(InPlaneFamily::Coupled);
-                (
-                    x.modal_mass,
-                    x.omega,
-                    Box::new(move |r, t| {
-                        let e = x.eval(r);
-                        let (s, c) = (k * t).sin_cos();
-                        [e.u * s, -e.v * c, k * e.u * c, k * e.v * s]
-                    }),
-                )
-            }
-        };
-        out.push(TestMode {
-            index,
-            k: m.k,
-            mass,
-            omega,
-            polar,
-        });
-    }
-    out
-}
-
 /// The steady state of the pads' friction on the modes `modes`, solved
 /// here by fixed-point iteration: at contact (r, θ) both faces slide with
 /// v = Ω r e_θ + Ω Σ q̄_i ∂u_i/∂θ (polar: v_r = Ω Σ q̄ (∂_θ u_r − u_θ),
@@ -241,7 +109,13 @@ fn test_modes(config: &Config, sim: &Simulation) -> Vec<TestMode> {
 /// force u_i·F; k = 0 modes q = f/(mω²), k ≥ 1 pairs the ALE static
 /// (K₀ I − s J) q̄ = f̄/m, K₀ = ω² − k²Ω², s = 2ζωkΩ (the pair seen from
 /// space, docs/dynamics.md). Returns q̄ by state index.
-fn steady_braking(modes: &[TestMode], zeta: f64, n: usize, speed: f64) -> Vec<f64> {
+fn steady_braking(
+    modes: &[TestMode],
+    zeta: f64,
+    n: usize,
+    speed: f64,
+    surface: ContactSurface,
+) -> Vec<f64> {
     let friction = 2.0 * MU * normal_per_face();
     let mut q = vec![0.0; n];
     for _ in 0..6 {
@@ -249,7 +123,8 @@ fn steady_braking(modes: &[TestMode], zeta: f64, n: usize, speed: f64) -> Vec<f6
         for j in 0..CONTACTS.len() {
             let (r, theta) = contact_point(j);
             let (mut vr, mut vt) = (0.0, speed * r);
-            for m in modes {
+            // At the mid-plane the friction keeps to −e_θ (the paper's model).
+            for m in modes.iter().filter(|_| surface == ContactSurface::Faces) {
                 let [ur, ut, dur, dut] = (m.polar)(r, theta);
                 vr += speed * q[m.index] * (dur - ut);
                 vt += speed * q[m.index] * (dut + ur);
@@ -295,8 +170,21 @@ fn steady_braking(modes: &[TestMode], zeta: f64, n: usize, speed: f64) -> Vec<f6
 /// faces: no couple, no net axial force).
 #[test]
 fn steady_braking_deflects_the_in_plane_modes_to_their_static_response_to_the_friction() {
+    steady_braking_matches_the_static_response(ContactSurface::Faces);
+}
+
+/// The same with the friction at the mid-plane (the paper's model): along
+/// −e_θ at each contact whatever the twist, so the radial modes take
+/// nothing from a turned sliding direction.
+#[test]
+fn mid_plane_friction_deflects_the_in_plane_modes_to_their_static_response() {
+    steady_braking_matches_the_static_response(ContactSurface::MidPlane);
+}
+
+fn steady_braking_matches_the_static_response(surface: ContactSurface) {
     let zeta = 0.4;
     let mut config = disc(&[0, 1, 2], &[0, 1, 2], zeta);
+    config.section_mut::<PadsConfig>().unwrap().contact_surface = surface;
     // The static here leaves out the in-plane spin terms (Coriolis, spin
     // stiffness; tests/in_plane_spin_dynamics.rs): they move the steady
     // state by 8.0e-8 of the largest amplitude at 10 rad/s, as (Ω/ω)², so
@@ -309,7 +197,7 @@ fn steady_braking_deflects_the_in_plane_modes_to_their_static_response_to_the_fr
     }
     let q = sim.q_ale().to_vec();
     let modes = test_modes(&config, &sim);
-    let expected = steady_braking(&modes, zeta, q.len(), config.joint.speed);
+    let expected = steady_braking(&modes, zeta, q.len(), config.joint.speed, surface);
     let scale = q.iter().fold(0.0f64, |a, v| a.max(v.abs()));
     let ip = sim.scene().in_plane.as_ref().unwrap();
     let mut worst = 0.0f64;
@@ -327,7 +215,7 @@ fn steady_braking_deflects_the_in_plane_modes_to_their_static_response_to_the_fr
     // The twist alone, against the exact torsional modes with the friction
     // taken tangential: f = −μ(N_t + N_b) Σ V(r_c).
     let friction = 2.0 * MU * normal_per_face();
-    let t = exact_torsion(0);
+    let t = exact_torsion(&config.plate, 0);
     let tangential: f64 = (0..CONTACTS.len())
         .map(|j| -friction * (t.v)(contact_point(j).0))
         .sum::<f64>()
@@ -437,21 +325,12 @@ fn ale_and_lagrangian_descriptions_agree_with_pads_on_the_in_plane_modes() {
     assert!(worst < 1e-6, "{worst:e}");
 }
 
-/// Friction at the mid-plane and the lining's patches do not act on the
-/// in-plane modes yet: refused, naming the key.
+/// The lining's patches do not act on the in-plane modes yet: refused,
+/// naming the key.
 #[test]
-fn mid_plane_pads_and_lining_patches_with_in_plane_modes_are_refused_by_key() {
-    let mut mid = disc(&[0], &[0], 0.0);
-    let mut pads: PadsConfig = mid.section::<PadsConfig>().unwrap().clone();
-    pads.contact_surface = ContactSurface::MidPlane;
-    mid.set_section(pads.clone());
-    let error = Simulation::new(mid).err().unwrap().to_string();
-    println!("{error}");
-    assert!(error.contains("pads.contact_surface"), "{error}");
+fn lining_patches_with_in_plane_modes_are_refused_by_key() {
     let mut shear = disc(&[0], &[0], 0.0);
-    pads.contact_surface = ContactSurface::Faces;
-    pads.shear = Some((1.0e6, 10.0));
-    shear.set_section(pads);
+    shear.section_mut::<PadsConfig>().unwrap().shear = Some((1.0e6, 10.0));
     let error = Simulation::new(shear).err().unwrap().to_string();
     println!("{error}");
     assert!(error.contains("pads.shear_stiffness"), "{error}");
@@ -476,7 +355,7 @@ fn the_in_plane_brake_scene_twists_the_disc_to_the_exact_static_sum() {
     }
     let ip = sim.scene().in_plane.as_ref().unwrap();
     let index = ip.offset + ip.torsional[0];
-    let t = exact_torsion(0);
+    let t = exact_torsion(&config.plate, 0);
     let clamp = config.section::<PadsConfig>().unwrap().clamp_force[0];
     let mu = config.section::<PadsConfig>().unwrap().friction_coefficient;
     let per_face = clamp / sim.scene().ale_nodes.len() as f64;

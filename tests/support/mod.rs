@@ -6,6 +6,7 @@ pub mod exact_plate;
 pub mod fit;
 pub mod fourth_order;
 pub mod in_plane_exact;
+pub mod in_plane_modes;
 pub mod in_plane_spinning_exact;
 pub mod in_plane_static;
 pub mod lame;

@@ -390,14 +390,19 @@ impl LoadModel for Pads {
     fn takes_mindlin_modes(&self) -> bool {
         true
     }
-    /// Friction on the faces does work on the in-plane modes (`pad_in_plane.rs`).
+    /// Friction on the faces does work on the in-plane modes, and their rate
+    /// enters its sliding velocity (`pad_in_plane.rs`). At the mid-plane the
+    /// friction −μN sign Ω e_θ does its work u_i·F through the node loads
+    /// alone: its direction reads no sliding velocity.
     fn attach_in_plane(
         &mut self,
         ip: &crate::dynamics::in_plane::InPlaneDynamics,
     ) -> Result<(), crate::dynamics::error::SimulationError> {
+        if self.contact_surface == ContactSurface::MidPlane {
+            return Ok(());
+        }
         let nodes = self.contacts.iter().map(|c| c.node);
-        let shear = self.shear.is_some();
-        self.in_plane = Some(PadInPlane::attach(ip, self.contact_surface, shear, nodes)?);
+        self.in_plane = Some(PadInPlane::attach(ip, self.shear.is_some(), nodes)?);
         Ok(())
     }
     fn channel_len(&self, channel: usize) -> usize {

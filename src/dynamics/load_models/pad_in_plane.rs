@@ -16,7 +16,6 @@
 //! do no work on the in-plane modes: bending and in-plane motion couple
 //! through the friction only.
 
-use super::pad_config::ContactSurface;
 use crate::dynamics::error::SimulationError;
 use crate::dynamics::in_plane::InPlaneDynamics;
 
@@ -32,27 +31,18 @@ pub struct PadInPlane {
 }
 
 impl PadInPlane {
-    /// The in-plane modes under the contacts at ALE nodes `nodes`, or the
-    /// refusal of what does not carry them yet: friction at the mid-plane
-    /// (`surface`) and the lining's patches (`shear`).
+    /// The in-plane modes under the contacts at ALE nodes `nodes` (friction
+    /// on the faces), or the refusal of the lining's patches (`shear`).
     pub fn attach(
         ip: &InPlaneDynamics,
-        surface: ContactSurface,
         shear: bool,
         nodes: impl Iterator<Item = usize>,
     ) -> Result<PadInPlane, SimulationError> {
-        let refuse = |key, why| Err(SimulationError::InPlaneKeyNotWired { key, why });
-        if surface != ContactSurface::Faces {
-            return refuse(
-                "pads.contact_surface",
-                "the friction on the in-plane modes is built for the faces (pads.contact_surface: faces)",
-            );
-        }
         if shear {
-            return refuse(
-                "pads.shear_stiffness",
-                "the lining's patches do not slide with the in-plane modes yet",
-            );
+            return Err(SimulationError::InPlaneKeyNotWired {
+                key: "pads.shear_stiffness",
+                why: "the lining's patches do not slide with the in-plane modes yet",
+            });
         }
         let shapes = nodes
             .flat_map(|n| ip.ale_contacts[n].iter().copied())

@@ -164,6 +164,13 @@ impl LoadModel for PitchLinks {
     fn takes_mindlin_modes(&self) -> bool {
         true
     }
+    /// Prescribed F_z alone: no work on the in-plane modes.
+    fn attach_in_plane(
+        &mut self,
+        _ip: &crate::dynamics::in_plane::InPlaneDynamics,
+    ) -> Result<(), crate::dynamics::error::SimulationError> {
+        Ok(())
+    }
     fn as_any(&self) -> &dyn Any {
         self
     }

@@ -132,6 +132,13 @@ impl LoadModel for PointSprings {
     fn takes_mindlin_modes(&self) -> bool {
         true
     }
+    /// F_z alone, at the mid-plane point: no work on the in-plane modes.
+    fn attach_in_plane(
+        &mut self,
+        _ip: &crate::dynamics::in_plane::InPlaneDynamics,
+    ) -> Result<(), crate::dynamics::error::SimulationError> {
+        Ok(())
+    }
 
     /// F_z = −k_s w − c_s ẇ at each node.
     fn evaluate(&self, ctx: &LoadContext, _slot: &[f64], _commands: &[f64], out: ModelOut) {

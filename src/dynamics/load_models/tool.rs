@@ -177,6 +177,14 @@ impl LoadModel for Tool {
     fn takes_mindlin_modes(&self) -> bool {
         true
     }
+    /// The feed force is F_z alone and the chip is cut at w: no work on the
+    /// in-plane modes, which do not move the tip's level.
+    fn attach_in_plane(
+        &mut self,
+        _ip: &crate::dynamics::in_plane::InPlaneDynamics,
+    ) -> Result<(), crate::dynamics::error::SimulationError> {
+        Ok(())
+    }
     fn as_any(&self) -> &dyn Any {
         self
     }

@@ -1,0 +1,159 @@
+//! The load models that push along the axis only — springs, dampers, pitch
+//! links and the lathe's tool (its feed force) — with in-plane modes
+//! (`plate.in_plane_nodal_diameters`): they do no work on the in-plane modes
+//! and the in-plane modes do not move what they read, so the bending motion
+//! is the one without in-plane modes, and the in-plane motion is the one
+//! without the models, step for step.
+
+mod support;
+
+use annular_plate::config::Config;
+use annular_plate::dynamics::{Simulation, Wrench};
+
+/// A disc with ⟨k = 0, 1, 2; l = 0⟩ bending modes turning at 10 rad/s, a
+/// spring under an ALE rim node, a damper under an ALE node at mid-radius and
+/// a pitch link at a material rim point (`models` false: none of them),
+/// with in-plane modes `in_plane` (k, one order each).
+fn scene(in_plane: &str, models: bool) -> Config {
+    let sections = if models {
+        "    springs:
+      ale_nodes: [1]
+      stiffness: 1.0e6
+      damping: 20.0
+    dampers:
+      ale_nodes: [2]
+      damping: 300.0
+    links:
+      lagrange_nodes: [1]
+      mean_force: 100.0
+      cyclic_force: 50.0
+"
+    } else {
+        ""
+    };
+    let text = format!(
+        "/**:
+  ros__parameters:
+    plate:
+      nodal_diameters: [0, 1, 2]
+      nodal_circles: [0]
+      damping: [0.01]
+      in_plane_nodal_diameters: {in_plane}
+      in_plane_orders: [0]
+    nodes:
+      ale_radial: [1.0, 0.5]
+      ale_angular: [0.0, 0.25]
+      lagrange_radial: [1.0]
+      lagrange_angular: [0.5]
+    joint:
+      speed: 10.0
+{sections}    simulation:
+      integrator: exponential
+      rate_hz: 10000.0
+    initial:
+      q: [1.0e-6, 1.0e-6, 0.0, 1.0e-6, 0.0]
+"
+    );
+    Config::from_yaml_str(&text, "annular_plate").unwrap()
+}
+
+/// Per step the ALE amplitudes, with a tangential and a radial force held
+/// at the rim node from the start.
+fn run(config: Config, steps: usize) -> Vec<Vec<f64>> {
+    let mut sim = Simulation::new(config).unwrap();
+    let held = Wrench {
+        force: [300.0, -800.0, 0.0],
+        moment: [0.0; 3],
+    };
+    sim.set_ale_wrench(0, held).unwrap();
+    (0..steps)
+        .map(|_| {
+            sim.step().unwrap();
+            sim.q_ale().to_vec()
+        })
+        .collect()
+}
+
+/// The largest |a − b| over the runs against the largest |b|.
+fn worst(a: &[Vec<f64>], b: &[Vec<f64>], range: std::ops::Range<usize>) -> (f64, f64) {
+    let peak = b
+        .iter()
+        .flat_map(|r| &r[range.clone()])
+        .fold(0.0f64, |m, v| m.max(v.abs()));
+    let diff = a
+        .iter()
+        .zip(b)
+        .flat_map(|(x, y)| x[range.clone()].iter().zip(&y[range.clone()]))
+        .fold(0.0f64, |m, (x, y)| m.max((x - y).abs()));
+    (diff, peak)
+}
+
+/// Springs, dampers and links with in-plane modes: the bending amplitudes
+/// are those of the scene without in-plane modes, and the in-plane
+/// amplitudes under the held in-plane force those of the scene without the
+/// models — which move the bending by far more than the test's bound.
+#[test]
+fn springs_dampers_and_links_act_on_the_bending_alone() {
+    let steps = 400;
+    let with_both = run(scene("[0, 1]", true), steps);
+    let bending_only = run(scene("[]", true), steps);
+    let in_plane_only = run(scene("[0, 1]", false), steps);
+    let n = bending_only[0].len();
+    let (bending, peak) = worst(&with_both, &bending_only, 0..n);
+    let all = with_both[0].len();
+    let (in_plane, in_plane_peak) = worst(&with_both, &in_plane_only, n..all);
+    let (moved, _) = worst(&with_both, &in_plane_only, 0..n);
+    println!(
+        "bending: {bending:.2e} m of {peak:.3e} m against the scene without in-plane modes; \
+         in-plane: {in_plane:.2e} m of {in_plane_peak:.3e} m against the scene without the models; \
+         the models move the bending by {moved:.3e} m"
+    );
+    assert!(
+        peak > 1e-7 && in_plane_peak > 1e-9,
+        "{peak:e} {in_plane_peak:e}"
+    );
+    assert!(
+        moved > 1e-3 * peak,
+        "the models must act on the bending: {moved:e}"
+    );
+    assert!(bending <= 1e-12 * peak, "{bending:e}");
+    assert!(in_plane <= 1e-12 * in_plane_peak, "{in_plane:e}");
+}
+
+/// The lathe (config/lathe.yaml) with in-plane modes k = 0, 1: through the
+/// start of the cut (the tip reaches the face at 0.25 s) the bending
+/// amplitudes are those without in-plane modes and the feed force, along
+/// the axis, leaves the in-plane modes at rest.
+#[test]
+fn the_tool_cuts_as_without_in_plane_modes_and_leaves_them_at_rest() {
+    let lathe = support::scene_files::text("lathe.yaml");
+    let with = lathe.replacen(
+        "      nodal_circles: [0, 1]\n",
+        "      nodal_circles: [0, 1]\n      in_plane_nodal_diameters: [0, 1]\n",
+        1,
+    );
+    assert_ne!(with, lathe);
+    let steps = 400;
+    let run = |text: &str| {
+        let config = Config::from_yaml_str(text, support::scene_files::NODE).unwrap();
+        let mut sim = Simulation::new(config).unwrap();
+        (0..steps)
+            .map(|_| {
+                sim.step().unwrap();
+                sim.q_ale().to_vec()
+            })
+            .collect::<Vec<_>>()
+    };
+    let (a, b) = (run(&with), run(&lathe));
+    let n = b[0].len();
+    let (bending, peak) = worst(&a, &b, 0..n);
+    let in_plane = a
+        .iter()
+        .flat_map(|r| &r[n..])
+        .fold(0.0f64, |m, v| m.max(v.abs()));
+    println!("bending {bending:.2e} m of {peak:.3e} m; in-plane largest {in_plane:e} m");
+    assert!(a[0].len() > n, "the in-plane modes are in the state");
+    assert!(peak > 1e-7, "the tool must cut: {peak:e}");
+    assert!(bending <= 1e-12 * peak, "{bending:e}");
+    assert_eq!(in_plane, 0.0);
+}
