@@ -423,7 +423,8 @@ impl InPlaneDynamics {
 
     /// Refuse what the in-plane modes do not carry yet, naming the key
     /// (the load models refuse for themselves,
-    /// `LoadModel::attach_in_plane`): follower loads, centrifugal stiffening, an off-axis reference
+    /// `LoadModel::attach_in_plane`): follower loads, centrifugal stiffening
+    /// on the implicit midpoint rule, an off-axis reference
     /// rotation, a start above the speed bound (where the spin terms are not
     /// built), and a torque-limited drive unless it is one torsional mode on
     /// the exponential integrator.
@@ -437,10 +438,12 @@ impl InPlaneDynamics {
                 "the follower turn of an in-plane force is not built for the in-plane modes",
             );
         }
-        if config.centrifugal.stiffening {
+        if config.centrifugal.stiffening
+            && config.simulation.integrator == IntegratorKind::ImplicitMidpoint
+        {
             return refuse(
                 "plate.centrifugal_stiffening",
-                "the bending modes' stiffening is not stepped together with the in-plane modes yet",
+                "the stiffened implicit midpoint rule steps the bending modes' blocks only (simulation.integrator: exponential, contact_exponential or rk4 step both)",
             );
         }
         let w = config.reference.angular_velocity;

@@ -113,6 +113,24 @@ impl State {
         }
     }
 
+    /// The Lagrangian amplitudes and rates, then the ALE ones, to write.
+    pub fn lagrange_and_ale_mut(&mut self) -> (&mut [f64], &mut [f64], &mut [f64], &mut [f64]) {
+        match self.coordinates {
+            Coordinates::Lagrangian => (
+                &mut self.q,
+                &mut self.q_dot,
+                &mut self.q_other,
+                &mut self.q_dot_other,
+            ),
+            Coordinates::Ale => (
+                &mut self.q_other,
+                &mut self.q_dot_other,
+                &mut self.q,
+                &mut self.q_dot,
+            ),
+        }
+    }
+
     /// Copy `other` into `self`, reusing the amplitude buffers (the derived
     /// `clone_from` would allocate).
     pub fn copy_from(&mut self, other: &State) {

@@ -519,24 +519,41 @@ impl Stepper {
         } = *joint;
         self.exp_harmonics(&chi0, scene.layout.k_max);
         if let Some(stiffening) = &scene.stiffening {
-            let (lagrange_q, lagrange_v) = match state.coordinates {
-                Coordinates::Lagrangian => (&mut state.q, &mut state.q_dot),
-                Coordinates::Ale => (&mut state.q_other, &mut state.q_dot_other),
+            let substep = block_exponential::JointSubstep {
+                h,
+                harmonics_start: &self.exp_harm,
+                speed_mean,
+                speed_end: speed1,
             };
+            let (lagrange_q, lagrange_v, ale_q, ale_v) = state.lagrange_and_ale_mut();
             block_exponential::advance(
                 stiffening,
                 &mut self.stiffened,
                 &self.consts,
-                block_exponential::JointSubstep {
-                    h,
-                    harmonics_start: &self.exp_harm,
-                    speed_mean,
-                    speed_end: speed1,
-                },
+                substep,
                 &self.loads,
                 lagrange_q,
                 lagrange_v,
             );
+            // The in-plane modes (no bending stiffness of theirs: their spin
+            // terms carry the prestress) step by their own blocks.
+            if let Some(ip) = &scene.in_plane {
+                harmonics(&chi1, scene.layout.k_max, &mut self.exp_harm_next);
+                in_plane_exponential::advance(
+                    ip,
+                    &mut self.in_plane_spin,
+                    &self.consts,
+                    substep,
+                    &self.exp_harm_next,
+                    &self.loads,
+                    in_plane_exponential::Amplitudes {
+                        lagrange_q,
+                        lagrange_v,
+                        ale_q,
+                        ale_v,
+                    },
+                );
+            }
             return self.derive_ale(scene, state, chi1, speed1);
         }
         if self.propagators_for != Some((h, speed_mean)) {
@@ -553,20 +570,7 @@ impl Stepper {
         // Each mode's new Lagrangian (q, q̇) at χ1 and, from it, its ALE one
         // (the same operations as `derive_ale`, while the pair is at hand).
         harmonics(&chi1, scene.layout.k_max, &mut self.exp_harm_next);
-        let (lagrange_q, lagrange_v, ale_q, ale_v) = match state.coordinates {
-            Coordinates::Lagrangian => (
-                &mut state.q,
-                &mut state.q_dot,
-                &mut state.q_other,
-                &mut state.q_dot_other,
-            ),
-            Coordinates::Ale => (
-                &mut state.q_other,
-                &mut state.q_dot_other,
-                &mut state.q,
-                &mut state.q_dot,
-            ),
-        };
+        let (lagrange_q, lagrange_v, ale_q, ale_v) = state.lagrange_and_ale_mut();
         // All of length n, so one index check serves every array (the compiler merges them).
         let n = lagrange_q.len();
         let (lagrange_v, ale_q, ale_v) = (&mut lagrange_v[..n], &mut ale_q[..n], &mut ale_v[..n]);
@@ -653,20 +657,7 @@ impl Stepper {
     /// The exponential step's result is the Lagrangian description at χ1:
     /// derive the ALE one.
     fn derive_ale(&mut self, scene: &Scene, state: &mut State, chi1: JointAngle, speed1: f64) {
-        let (lagrange_q, lagrange_v, ale_q, ale_v) = match state.coordinates {
-            Coordinates::Lagrangian => (
-                &mut state.q,
-                &mut state.q_dot,
-                &mut state.q_other,
-                &mut state.q_dot_other,
-            ),
-            Coordinates::Ale => (
-                &mut state.q_other,
-                &mut state.q_dot_other,
-                &mut state.q,
-                &mut state.q_dot,
-            ),
-        };
+        let (lagrange_q, lagrange_v, ale_q, ale_v) = state.lagrange_and_ale_mut();
         ale_q.copy_from_slice(lagrange_q);
         ale_v.copy_from_slice(lagrange_v);
         self.exp_harmonics(&chi1, scene.layout.k_max);
