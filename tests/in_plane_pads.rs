@@ -446,3 +446,41 @@ fn contact_exponential_and_rk4_agree_on_the_in_plane_brake_scene_at_speed() {
     assert!(peak > 1e-7, "{peak:e}");
     assert!(worst < 1e-6 * peak, "{:e}", worst / peak);
 }
+
+/// A commanded slow-down of config/brake_in_plane.yaml with frictionless
+/// pads (μ = 0: springs on the faces, no torque): the joint decelerates at
+/// its limit α = −50 rad/s², and the torsional mode carries the Euler force
+/// −s α to its quasi-static twist −s α/(m ω²), with the pads evaluated
+/// within the step (`contact_exponential`, RK4), 0.1 s into the ramp. The
+/// spin terms move it by (Ω/ω)² ≤ 2e-7. (Both integrators recompute the
+/// node loads at each evaluation, which once dropped the Euler force.)
+#[test]
+fn the_euler_force_twists_the_disc_under_a_commanded_ramp_with_pads_in_the_step() {
+    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/config/brake_in_plane.yaml");
+    let mut config = Config::from_params_file(std::path::Path::new(path), "annular_plate").unwrap();
+    config
+        .section_mut::<PadsConfig>()
+        .unwrap()
+        .friction_coefficient = 0.0;
+    for integrator in [IntegratorKind::ContactExponential, IntegratorKind::Rk4] {
+        let mut c = config.clone();
+        c.simulation.integrator = integrator;
+        let mut sim = Simulation::new(c).unwrap();
+        sim.set_speed_command(5.0).unwrap();
+        for _ in 0..100 {
+            sim.step().unwrap();
+        }
+        let ip = sim.scene().in_plane.as_ref().unwrap();
+        let j = ip.torsional[0];
+        let m = &ip.modes[j];
+        let alpha = sim.state().acceleration;
+        let expected = -m.coupling * alpha / (m.modal_mass * m.omega * m.omega);
+        let got = sim.q_ale()[ip.offset + j];
+        let error = (got / expected - 1.0).abs();
+        println!(
+            "{integrator:?}: α = {alpha} rad/s², torsional q = {got:.6e} m, −sα/(mω²) = {expected:.6e} m: {error:.2e}"
+        );
+        assert!((alpha + 50.0).abs() < 1e-9, "{alpha}");
+        assert!(error < 1e-5, "{integrator:?}: {error:e}");
+    }
+}

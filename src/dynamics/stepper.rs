@@ -777,6 +777,7 @@ impl Stepper {
             consts,
             coords,
             alpha,
+            euler_alpha: alpha,
             drive: stage_drive,
             base_ale_frame,
             harm,

@@ -100,6 +100,7 @@ impl Stepper {
             consts,
             coords: Coordinates::Ale,
             alpha: 0.0,
+            euler_alpha: alpha,
             drive: stage_drive,
             base_ale_frame,
             harm,

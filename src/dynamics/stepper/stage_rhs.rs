@@ -27,6 +27,10 @@ pub(super) struct StageRhs<'a> {
     pub coords: Coordinates,
     /// Joint acceleration α (the kΩ̇ term of the ALE equations) when held.
     pub alpha: f64,
+    /// The held joint acceleration whose Euler force −s α acts on the
+    /// torsional in-plane modes (the joint's own, also where `alpha` is
+    /// that of a frame turning at the mean speed).
+    pub euler_alpha: f64,
     /// The drive's law at each instant instead of `alpha`: the joint
     /// integrated in the step ([`crate::dynamics::joint::integrated_in_step`]).
     pub drive: Option<StageDrive<'a>>,
@@ -100,6 +104,11 @@ impl StageRhs<'_> {
                 &self.views.q_lagrange,
                 self.loads,
             );
+            // The Euler force −s α of the imposed joint acceleration on the
+            // torsional modes (`base_ale_frame` has it from the substep's start).
+            if let (Some(ip), None) = (&scene.in_plane, self.drive) {
+                ip.add_euler_force(self.euler_alpha, &mut self.loads.ale_frame);
+            }
         } else {
             self.loads.ale_frame.copy_from_slice(self.base_ale_frame);
         }
