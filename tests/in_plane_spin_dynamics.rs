@@ -356,6 +356,34 @@ fn stiffening_with_in_plane_modes_on_the_implicit_midpoint_rule_is_refused() {
     );
 }
 
+/// RK4's inner step resolves the spinning in-plane modes: h_inner times
+/// the largest turning-frame frequency of the retained modes (read from
+/// the exponential step's map, which the collocation test above checks)
+/// stays within `simulation.rk4_step_limit`, at speeds where the Coriolis
+/// coupling splits the waves by up to 2Ω.
+#[test]
+fn rk4_inner_steps_resolve_the_spinning_in_plane_frequencies() {
+    for speed in [3000.0, 9000.0] {
+        let exp = disc(&[0, 1, 2], &[0, 1, 2], speed, 1e6);
+        let fastest = [0, 1, 2]
+            .iter()
+            .flat_map(|&k| stepped_frequencies(&exp, k))
+            .fold(0.0f64, f64::max);
+        let mut rk4 = disc(&[0, 1, 2], &[0, 1, 2], speed, 1e4);
+        rk4.simulation.integrator = IntegratorKind::Rk4;
+        let limit = rk4.simulation.rk4_step_limit;
+        let mut sim = Simulation::new(rk4).unwrap();
+        sim.step().unwrap();
+        let h_inner = sim.dt() / sim.inner_substeps() as f64;
+        println!(
+            "Ω {speed} rad/s: fastest turning-frame frequency {fastest:.1} rad/s, {} inner steps: h·ω = {:.4} (limit {limit})",
+            sim.inner_substeps(),
+            h_inner * fastest
+        );
+        assert!(h_inner * fastest <= limit, "{}", h_inner * fastest);
+    }
+}
+
 #[test]
 fn the_implicit_midpoint_rule_is_refused_at_speed_naming_the_key() {
     let mut c = disc(&[1], &[0], 3000.0, 1e6);

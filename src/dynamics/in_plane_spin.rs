@@ -142,6 +142,24 @@ pub struct InPlaneSpinTerms {
 }
 
 impl InPlaneSpinTerms {
+    /// Gershgorin bounds of the spin terms over every block: the largest
+    /// row sum of |K_Ω/m| (per (rad/s)²) and of |G/m| (per rad/s). A mode's
+    /// turning-frame rate is then within √(ω² + Ω² b_K) + |Ω| b_G.
+    pub fn rate_bounds(&self) -> (f64, f64) {
+        let row_sums = |m: &[f64], n: usize| {
+            m.chunks_exact(n.max(1))
+                .map(|row| row.iter().map(|x| x.abs()).sum::<f64>())
+                .fold(0.0f64, f64::max)
+        };
+        self.blocks.iter().fold((0.0f64, 0.0f64), |(k, g), b| {
+            let n = b.modes.len();
+            (
+                k.max(row_sums(&b.k_over_m, n)),
+                g.max(row_sums(&b.g_over_m, n)),
+            )
+        })
+    }
+
     /// acc −= M⁻¹ (Ω G q̇ + Ω² K_Ω q) over every block, in `coords`.
     pub fn subtract_accelerations(
         &self,

@@ -258,20 +258,26 @@ impl Stepper {
     }
 
     /// λ_max = max over the modes of |ω_eff| + 2ζω + kΩ, the load models'
-    /// coupling included as bounded in [`LoadModels`](super::load_models::LoadModels).
+    /// coupling included as bounded in [`LoadModels`](super::load_models::LoadModels),
+    /// and the in-plane spin terms' Gershgorin bounds (`InPlaneSpinTerms::rate_bounds`).
     fn lambda_max(&self, scene: &Scene, speed: f64) -> f64 {
         let c = scene.load_models.coupling();
         let stiffening = scene
             .stiffening
             .as_ref()
             .map_or(0.0, |s| s.rate_bound * speed * speed);
+        let (spin_stiffness, coriolis) = scene.in_plane.as_ref().map_or((0.0, 0.0), |ip| {
+            let (k, g) = ip.spin.rate_bounds();
+            (k * speed * speed, g * speed.abs())
+        });
         scene
             .elastic_modes()
             .zip(&self.consts)
             .map(|((k, ..), mc)| {
-                (mc.omega_eff_sq.abs() + stiffening + c.stiffness_rate_sq).sqrt()
+                (mc.omega_eff_sq.abs() + stiffening + spin_stiffness + c.stiffness_rate_sq).sqrt()
                     + mc.damping_rate
                     + c.damping_rate
+                    + coriolis
                     + k as f64 * speed.abs()
             })
             .fold(0.0, f64::max)
