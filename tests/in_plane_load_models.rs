@@ -3,12 +3,16 @@
 //! (`plate.in_plane_nodal_diameters`): they do no work on the in-plane modes
 //! and the in-plane modes do not move what they read, so the bending motion
 //! is the one without in-plane modes, and the in-plane motion is the one
-//! without the models, step for step.
+//! without the models, step for step. The tool's main cutting force
+//! (`tool.cutting_specific_force`) brakes the joint by F_c r_a and twists the
+//! disc to the exact static of a tangential rim force.
 
 mod support;
 
 use annular_plate::config::Config;
+use annular_plate::dynamics::load_models::tool::ToolOutputs;
 use annular_plate::dynamics::{Simulation, Wrench};
+use support::in_plane_modes::exact_torsion;
 
 /// A disc with ⟨k = 0, 1, 2; l = 0⟩ bending modes turning at 10 rad/s, a
 /// spring under an ALE rim node, a damper under an ALE node at mid-radius and
@@ -156,4 +160,69 @@ fn the_tool_cuts_as_without_in_plane_modes_and_leaves_them_at_rest() {
     assert!(peak > 1e-7, "the tool must cut: {peak:e}");
     assert!(bending <= 1e-12 * peak, "{bending:e}");
     assert_eq!(in_plane, 0.0);
+}
+
+/// config/lathe.yaml with Kienzle's main cutting force (k_c1.1 = 2000 N/mm²,
+/// m_c = 0.25) and the in-plane modes k = 0, l = 0, 1.2 s (the cut meets its
+/// own surface from 0.815 s on): the drive holding the speed carries the
+/// cutting torque, effort = F_c r_a with F_c = k_c1.1 b h^(1−m_c) (1 mm)^m_c
+/// of the chip h the tool reports (within 1 % of the steady 2π v_f/Ω: the
+/// regeneration settles by 1.4 s), and the first torsional mode holds the
+/// static twist of the tangential rim force, −F_c V(r_a)/(m ω²), V, m and ω
+/// of the exact torsional mode (Bessel functions). Without the key the
+/// effort is 0.
+#[test]
+fn the_main_cutting_force_brakes_the_joint_and_twists_the_disc() {
+    let lathe = support::scene_files::text("lathe.yaml");
+    let with = lathe
+        .replacen(
+            "      nodal_circles: [0, 1]\n",
+            "      nodal_circles: [0, 1]\n      in_plane_nodal_diameters: [0]\n      in_plane_orders: [0]\n",
+            1,
+        )
+        .replacen(
+            "      force_exponent: 0.7013     # m_f\n",
+            "      force_exponent: 0.7013     # m_f\n      cutting_specific_force: 2.0e9\n      cutting_exponent: 0.25\n",
+            1,
+        );
+    let config = Config::from_yaml_str(&with, support::scene_files::NODE).unwrap();
+    let (specific, exponent) = (2.0e9, 0.25);
+    let mut sim = Simulation::new(config.clone()).unwrap();
+    for _ in 0..1200 {
+        sim.step().unwrap();
+    }
+    let speed = config.joint.speed;
+    let tool = sim.tool_output().unwrap();
+    let steady = std::f64::consts::TAU * tool.feed_rate / speed;
+    let chip = tool.chip;
+    let b = 0.001;
+    let force = specific * b * chip.powf(1.0 - exponent) * 1.0e-3f64.powf(exponent);
+    let ra = config.plate.outer_radius;
+    let effort = sim.joint().effort;
+    let ip = sim.scene().in_plane.as_ref().unwrap();
+    let index = ip.offset + ip.torsional[0];
+    let t = exact_torsion(&config.plate, 0);
+    let twist = -force * (t.v)(ra) / (t.mass * t.omega * t.omega);
+    let got = sim.q_ale()[index];
+    let (effort_error, twist_error) = (
+        (effort / (force * ra) - 1.0).abs(),
+        (got / twist - 1.0).abs(),
+    );
+    println!(
+        "chip {chip:.6e} m (2π v_f/Ω {steady:.6e} m), F_c {force:.3} N: effort {effort:.6} N·m against F_c r_a {:.6} N·m ({effort_error:.2e}); twist {got:.6e} m against {twist:.6e} m ({twist_error:.2e})",
+        force * ra
+    );
+    assert!(
+        (chip / steady - 1.0).abs() < 1e-2,
+        "not cutting steadily: {chip:e}"
+    );
+    assert!(effort_error < 1e-6, "{effort_error:e}");
+    assert!(twist_error < 1e-4, "{twist_error:e}");
+    let mut plain =
+        Simulation::new(Config::from_yaml_str(&lathe, support::scene_files::NODE).unwrap())
+            .unwrap();
+    for _ in 0..400 {
+        plain.step().unwrap();
+    }
+    assert_eq!(plain.joint().effort, 0.0);
 }

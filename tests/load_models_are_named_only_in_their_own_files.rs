@@ -42,6 +42,7 @@ const FAMILIES: &[(&str, &[&str])] = &[
         &[
             "tool.rs",
             "tool_config.rs",
+            "tool_cutting.rs",
             "tool_in_step.rs",
             "tool_step.rs",
         ],

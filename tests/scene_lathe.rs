@@ -262,6 +262,16 @@ fn bad_tool_data_are_refused_naming_the_key() {
         "specific_force: 0.0",
         "tool.specific_force",
     );
+    rejected(
+        "force_exponent: 0.7013",
+        "force_exponent: 0.7013\n      cutting_specific_force: -1.0",
+        "tool.cutting_specific_force",
+    );
+    rejected(
+        "force_exponent: 0.7013",
+        "force_exponent: 0.7013\n      cutting_exponent: 1.0",
+        "tool.cutting_exponent",
+    );
     // Tool keys without a tool.
     let e = rejected("      ale_node: 1\n", "", "tool.depth_of_cut");
     assert!(

@@ -46,6 +46,7 @@ pub mod pad_series;
 pub mod pad_shear;
 pub mod parameters;
 pub mod tool_config;
+mod tool_cutting;
 mod tool_in_step;
 mod tool_step;
 pub mod undo;

@@ -86,6 +86,9 @@ pub struct Tool {
     pub within_step: bool,
     /// (1 mm)^m_f of eq. (21), computed once ([`Tool::reference_factor`]).
     pub reference_factor: f64,
+    /// The main cutting force's k_c1.1 (Pa; 0: none), m_c and (1 mm)^m_c
+    /// (`tool_cutting.rs`).
+    pub cutting: [f64; 3],
 }
 
 /// The tool's slot in the [`State`](crate::dynamics::State) (so reset and
@@ -164,6 +167,11 @@ pub fn build(config: &Config, nodes: &SceneNodes) -> Option<Box<dyn LoadModel>> 
         series: nodes.residual.map(|r| r.between(t.node, t.node, 0.0)),
         within_step: config.simulation.integrator == IntegratorKind::ContactExponential,
         reference_factor: Tool::reference_factor(t.force_exponent),
+        cutting: [
+            t.cutting_specific_force,
+            t.cutting_exponent,
+            Tool::reference_factor(t.cutting_exponent),
+        ],
     }))
 }
 
@@ -249,7 +257,9 @@ impl LoadModel for Tool {
         if self.within_step {
             return self.evaluate_in_step(ctx, slot, commands, out);
         }
-        out.ale[self.node].force[2] -= ToolStep::load(slot).force;
+        let step = ToolStep::load(slot);
+        out.ale[self.node].force[2] -= step.force;
+        self.add_cutting_force(step.chip, ctx.speed, &mut out.ale[self.node]);
     }
 
     fn commit_substep(&self, ctx: &LoadContext, slot: &mut [f64], commands: &[f64], h: f64) {
@@ -512,6 +522,7 @@ mod tests {
             series: None,
             within_step: false,
             reference_factor: Tool::reference_factor(0.7013),
+            cutting: [0.0, 0.25, 1.0],
         }
     }
 

@@ -29,6 +29,10 @@ pub struct ToolConfig {
     pub specific_force: f64,
     /// m_f of eq. (21).
     pub force_exponent: f64,
+    /// k_c1.1 of Kienzle's main cutting force (tangential), Pa; 0: none.
+    pub cutting_specific_force: f64,
+    /// m_c of Kienzle's main cutting force.
+    pub cutting_exponent: f64,
 }
 
 impl LoadModelSection for ToolConfig {
@@ -129,6 +133,27 @@ pub const SECTIONS: &[Section] = &[Section {
             "≥ 0, < 1",
             "m_f of eq. (21)",
         ),
+        param(
+            "tool.cutting_specific_force",
+            Ty::Double,
+            "double",
+            "Pa",
+            Value::Double(0.0),
+            "0 (none: the paper's model)",
+            "≥ 0",
+            "k_c1.1 of the main cutting force F_c = k_c1.1 b h^(1−m_c) (1 mm)^m_c, tangential at the tool's node against the rotation: it brakes the joint (its effort carries F_c r_a) and twists the in-plane modes (docs/scenes.md); for steel about 1.5e9–2.2e9 (1500–2200 N/mm²)",
+        )
+        .min(0.0),
+        param(
+            "tool.cutting_exponent",
+            Ty::Double,
+            "double",
+            "—",
+            Value::Double(0.25),
+            "0.25",
+            "≥ 0, < 1",
+            "m_c of the main cutting force (steel about 0.2–0.3)",
+        ),
     ],
 }];
 
@@ -163,14 +188,12 @@ fn read(r: &Reader, ctx: &mut SectionContext) -> Result<Option<Box<dyn SectionDa
     let stiffness = r.positive("tool.stiffness")?;
     let damping = non_negative("tool.damping", r.f64("tool.damping")?)?;
     let specific_force = r.positive("tool.specific_force")?;
-    let force_exponent = non_negative("tool.force_exponent", r.f64("tool.force_exponent")?)?;
-    if force_exponent >= 1.0 {
-        return Err(ConfigError::AboveMaximum {
-            key: "tool.force_exponent".into(),
-            value: force_exponent,
-            max: 1.0,
-        });
-    }
+    let force_exponent = exponent(r, "tool.force_exponent")?;
+    let cutting_specific_force = non_negative(
+        "tool.cutting_specific_force",
+        r.f64("tool.cutting_specific_force")?,
+    )?;
+    let cutting_exponent = exponent(r, "tool.cutting_exponent")?;
     Ok(Some(
         ToolConfig {
             node,
@@ -181,9 +204,24 @@ fn read(r: &Reader, ctx: &mut SectionContext) -> Result<Option<Box<dyn SectionDa
             damping,
             specific_force,
             force_exponent,
+            cutting_specific_force,
+            cutting_exponent,
         }
         .boxed(),
     ))
+}
+
+/// A Kienzle exponent `key`: ≥ 0 and < 1.
+fn exponent(r: &Reader, key: &'static str) -> Result<f64, ConfigError> {
+    let value = non_negative(key, r.f64(key)?)?;
+    if value >= 1.0 {
+        return Err(ConfigError::AboveMaximum {
+            key: key.into(),
+            value,
+            max: 1.0,
+        });
+    }
+    Ok(value)
 }
 
 /// `tool.ale_node` (≥ 1) → the 0-based ALE node, which must lie on the rim.

@@ -84,6 +84,7 @@ impl Tool {
             // Between substeps (the outputs at a step's end): the force the
             // last one ended with.
             out.ale[self.node].force[2] -= slot[FORCE];
+            self.add_cutting_force(slot[CHIP], ctx.speed, &mut out.ale[self.node]);
             out.rates.fill(0.0);
             return;
         }
@@ -91,6 +92,7 @@ impl Tool {
         let from_middle = slot[CLOCK] - 0.5 * held.h;
         let (cut, zeta) = self.cut_now(ctx, slot, &held, Self::tip(slot), from_middle);
         out.ale[self.node].force[2] -= cut.force;
+        self.add_cutting_force(cut.chip, ctx.speed, &mut out.ale[self.node]);
         out.rates[0] = if self.damping > 0.0 {
             (cut.force - self.stiffness * slot[DEFLECTION]) / self.damping
         } else {
