@@ -69,6 +69,34 @@ impl AngleTable {
     }
 }
 
+impl AngleTable {
+    /// dC/dΔ of [`AngleTable::at`]'s interpolant (the derivative of the
+    /// same cubic Hermite piece).
+    fn slope_at(&self, delta: f64) -> Compliance {
+        let x = delta.rem_euclid(TAU);
+        let h = TAU / TABLE_INTERVALS as f64;
+        let i = ((x / h) as usize).min(TABLE_INTERVALS - 1);
+        let t = x / h - i as f64;
+        let (d00, d10, d01, d11) = (
+            (6.0 * t * t - 6.0 * t) / h,
+            3.0 * t * t - 4.0 * t + 1.0,
+            (-6.0 * t * t + 6.0 * t) / h,
+            3.0 * t * t - 2.0 * t,
+        );
+        let (v0, v1, s0, s1) = (
+            &self.values[i],
+            &self.values[i + 1],
+            &self.slopes[i],
+            &self.slopes[i + 1],
+        );
+        std::array::from_fn(|r| {
+            std::array::from_fn(|c| {
+                d00 * v0[r][c] + d10 * s0[r][c] + d01 * v1[r][c] + d11 * s1[r][c]
+            })
+        })
+    }
+}
+
 /// dC/dΔ of [`InPlaneKernel::at`], term by term.
 fn slope(kernel: &InPlaneKernel, delta: f64) -> Compliance {
     let mut d = [[0.0; 2]; 2];
@@ -86,7 +114,8 @@ fn slope(kernel: &InPlaneKernel, delta: f64) -> Compliance {
 /// One pair's compliance.
 #[derive(Debug, Clone, PartialEq)]
 enum PairCompliance {
-    Constant(Compliance),
+    /// C(offset) and dC/dΔ there (offset = angle_a − angle_b).
+    Constant(Compliance, Compliance),
     /// C(offset + sign χ): offset = angle_a − angle_b, sign −1 when a is the
     /// ALE node, +1 when b is.
     Turning {
@@ -133,7 +162,10 @@ impl InPlaneResidual {
                 let offset = na.angle - nb.angle;
                 if na.kind == nb.kind {
                     let kernel = residual_kernel(&harmonics, modes, key.0, key.1);
-                    pairs.push(PairCompliance::Constant(kernel.at(offset)));
+                    pairs.push(PairCompliance::Constant(
+                        kernel.at(offset),
+                        slope(&kernel, offset),
+                    ));
                     continue;
                 }
                 let table = match table_of.iter().find(|(k, _)| *k == key) {
@@ -168,13 +200,70 @@ impl InPlaneResidual {
     #[inline]
     fn between(&self, a: usize, b: usize, chi: f64) -> Compliance {
         match &self.pairs[a * self.n + b] {
-            PairCompliance::Constant(c) => *c,
+            PairCompliance::Constant(c, _) => *c,
             PairCompliance::Turning {
                 offset,
                 sign,
                 table,
             } => self.tables[*table].at(offset + sign * chi),
         }
+    }
+
+    /// C, ∂C/∂χ and ∂C/∂θ_a between nodes a and b at joint angle χ.
+    fn with_slopes(&self, a: usize, b: usize, chi: f64) -> [Compliance; 3] {
+        match &self.pairs[a * self.n + b] {
+            PairCompliance::Constant(c, d) => [*c, [[0.0; 2]; 2], *d],
+            PairCompliance::Turning {
+                offset,
+                sign,
+                table,
+            } => {
+                let t = &self.tables[*table];
+                let d = t.slope_at(offset + sign * chi);
+                let by_chi = d.map(|row| row.map(|x| sign * x));
+                [t.at(offset + sign * chi), by_chi, d]
+            }
+        }
+    }
+
+    /// The rates of the residual in-plane displacement at node a under the
+    /// held forces `force(b)` (as [`InPlaneResidual::displacement`]) at
+    /// joint angle χ and speed Ω, m/s: the frame's own (Ω ∂u/∂χ: nonzero
+    /// where the node and the force turn against each other) and the
+    /// material's under an ALE node (`ale`), which adds the transport
+    /// Ω ∂(u_r, u_θ)/∂θ in the plate's turning axes (as the modes' part,
+    /// `InPlaneDynamics::ale_turn`); for a Lagrangian node the two are the
+    /// same.
+    pub fn rates(
+        &self,
+        a: usize,
+        chi: f64,
+        speed: f64,
+        ale: bool,
+        force: impl Fn(usize) -> [f64; 2],
+    ) -> ([f64; 2], [f64; 2]) {
+        let (mut frame, mut along) = ([0.0; 2], [0.0; 2]);
+        for b in 0..self.n {
+            let f = force(b);
+            if f == [0.0, 0.0] {
+                continue;
+            }
+            let (c, s) = self.turns[b];
+            let fp = [c * f[0] + s * f[1], -s * f[0] + c * f[1]];
+            let [_, by_chi, by_theta] = self.with_slopes(a, b, chi);
+            for r in 0..2 {
+                frame[r] += speed * (by_chi[r][0] * fp[0] + by_chi[r][1] * fp[1]);
+                along[r] += by_theta[r][0] * fp[0] + by_theta[r][1] * fp[1];
+            }
+        }
+        let material = if ale {
+            [frame[0] + speed * along[0], frame[1] + speed * along[1]]
+        } else {
+            frame
+        };
+        let (c, s) = self.turns[a];
+        let cartesian = |p: [f64; 2]| [c * p[0] - s * p[1], s * p[0] + c * p[1]];
+        (cartesian(frame), cartesian(material))
     }
 
     /// The residual in-plane displacement (u_x, u_y) at node a, in its

@@ -334,8 +334,8 @@ impl Simulation {
     }
 
     /// The in-plane motion of node `a` (ALE first, then Lagrangian), with
-    /// the in-plane residual under the held in-plane forces (None without
-    /// in-plane modes; docs/in_plane.md, "Node frames").
+    /// the in-plane residual under the held in-plane forces and its rates
+    /// (None without in-plane modes; docs/in_plane.md, "Node frames").
     fn in_plane_motion(&self, a: usize) -> Option<InPlaneNodeMotion> {
         let ip = self.scene.in_plane.as_ref()?;
         let n_ale = self.scene.ale_nodes.len();
@@ -348,8 +348,16 @@ impl Simulation {
             ip.node_motion(&ip.lagrange_nodes[a - n_ale], None, q, q_dot, speed)
         };
         if let Some(r) = &ip.residual {
-            let u = r.displacement(a, self.state.chi.wrapped(), |b| self.in_plane_node_force(b));
+            let chi = self.state.chi.wrapped();
+            let force = |b| self.in_plane_node_force(b);
+            let u = r.displacement(a, chi, force);
+            let (frame, material) = r.rates(a, chi, speed, a < n_ale, force);
             motion.u = [motion.u[0] + u[0], motion.u[1] + u[1]];
+            motion.u_dot = [motion.u_dot[0] + frame[0], motion.u_dot[1] + frame[1]];
+            motion.material_u_dot = [
+                motion.material_u_dot[0] + material[0],
+                motion.material_u_dot[1] + material[1],
+            ];
         }
         Some(motion)
     }
