@@ -43,18 +43,37 @@ impl AngleTable {
     }
 
     fn at(&self, delta: f64) -> Compliance {
+        self.piece(delta, |t, h| {
+            let (t2, t3) = (t * t, t * t * t);
+            [
+                2.0 * t3 - 3.0 * t2 + 1.0,
+                (t3 - 2.0 * t2 + t) * h,
+                -2.0 * t3 + 3.0 * t2,
+                (t3 - t2) * h,
+            ]
+        })
+    }
+
+    /// dC/dΔ of [`AngleTable::at`]'s interpolant (the derivative of the
+    /// same cubic Hermite piece).
+    fn slope_at(&self, delta: f64) -> Compliance {
+        self.piece(delta, |t, h| {
+            [
+                (6.0 * t * t - 6.0 * t) / h,
+                3.0 * t * t - 4.0 * t + 1.0,
+                (-6.0 * t * t + 6.0 * t) / h,
+                3.0 * t * t - 2.0 * t,
+            ]
+        })
+    }
+
+    /// The Hermite piece holding Δ, weighted by `basis(t, h)` (t in [0, 1]
+    /// across the interval of length h): value, slope, value, slope at its ends.
+    fn piece(&self, delta: f64, basis: impl Fn(f64, f64) -> [f64; 4]) -> Compliance {
         let x = delta.rem_euclid(TAU);
         let h = TAU / TABLE_INTERVALS as f64;
         let i = ((x / h) as usize).min(TABLE_INTERVALS - 1);
-        let t = x / h - i as f64;
-        let t2 = t * t;
-        let t3 = t2 * t;
-        let (h00, h10, h01, h11) = (
-            2.0 * t3 - 3.0 * t2 + 1.0,
-            t3 - 2.0 * t2 + t,
-            -2.0 * t3 + 3.0 * t2,
-            t3 - t2,
-        );
+        let [w0, w1, w2, w3] = basis(x / h - i as f64, h);
         let (v0, v1, d0, d1) = (
             &self.values[i],
             &self.values[i + 1],
@@ -62,37 +81,7 @@ impl AngleTable {
             &self.slopes[i + 1],
         );
         std::array::from_fn(|r| {
-            std::array::from_fn(|c| {
-                h00 * v0[r][c] + h10 * h * d0[r][c] + h01 * v1[r][c] + h11 * h * d1[r][c]
-            })
-        })
-    }
-}
-
-impl AngleTable {
-    /// dC/dΔ of [`AngleTable::at`]'s interpolant (the derivative of the
-    /// same cubic Hermite piece).
-    fn slope_at(&self, delta: f64) -> Compliance {
-        let x = delta.rem_euclid(TAU);
-        let h = TAU / TABLE_INTERVALS as f64;
-        let i = ((x / h) as usize).min(TABLE_INTERVALS - 1);
-        let t = x / h - i as f64;
-        let (d00, d10, d01, d11) = (
-            (6.0 * t * t - 6.0 * t) / h,
-            3.0 * t * t - 4.0 * t + 1.0,
-            (-6.0 * t * t + 6.0 * t) / h,
-            3.0 * t * t - 2.0 * t,
-        );
-        let (v0, v1, s0, s1) = (
-            &self.values[i],
-            &self.values[i + 1],
-            &self.slopes[i],
-            &self.slopes[i + 1],
-        );
-        std::array::from_fn(|r| {
-            std::array::from_fn(|c| {
-                d00 * v0[r][c] + d10 * s0[r][c] + d01 * v1[r][c] + d11 * s1[r][c]
-            })
+            std::array::from_fn(|c| w0 * v0[r][c] + w1 * d0[r][c] + w2 * v1[r][c] + w3 * d1[r][c])
         })
     }
 }
