@@ -10,7 +10,12 @@
 
 mod support;
 
-use annular_plate::config::{Boundary, Config, IntegratorKind, NodePosition, WrenchConfig};
+use annular_plate::config::{
+    Boundary, Config, Coordinates, IntegratorKind, NodePosition, WrenchConfig,
+};
+use annular_plate::dynamics::load_models::pad_config::{
+    Caliper, ContactSurface, PadContact, PadsConfig,
+};
 use annular_plate::dynamics::{NodeOutput, Simulation};
 use std::f64::consts::PI;
 use support::in_plane_exact::Edge;
@@ -114,6 +119,102 @@ fn a_held_in_plane_force_at_the_rim_settles_at_the_exact_patch_displacement() {
                 out.in_plane.u
             );
         }
+    }
+}
+
+/// (F_r, F_θ) or (u_r, u_θ) of Cartesian `v` at polar angle `theta`.
+fn polar(v: [f64; 2], theta: f64) -> [f64; 2] {
+    let (s, c) = theta.sin_cos();
+    [c * v[0] + s * v[1], -s * v[0] + c * v[1]]
+}
+
+/// Two contacts of one pad (radial, angular fraction of a turn) on a fixed
+/// caliper, 2 kN per face, μ = 0.5, friction on the faces.
+const PAD: [(f64, f64); 2] = [(0.5, 0.02), (0.9, 0.06)];
+
+/// Steady braking at Ω = 0.5 rad/s, settled after 10 ms: each pad frame's
+/// in-plane displacement (modes + residual) against the exact patch
+/// compliances of `tests/support/in_plane_static.rs` under the friction the
+/// step used (the published model wrenches), summed over both contacts; the
+/// modes alone are far off.
+#[test]
+fn steady_braking_with_residual_flexibility_deflects_the_pad_frames_to_the_exact_static() {
+    let mut c = disc(0.4, 100_000.0);
+    c.plate.residual_flexibility = true;
+    c.joint.speed = 0.5;
+    c.simulation.coordinates = Coordinates::Ale;
+    for &(radial, angular) in &PAD {
+        c.nodes.ale.push(node(radial, angular));
+    }
+    c.set_section(PadsConfig {
+        contacts: (0..PAD.len())
+            .map(|node| PadContact { node, pad: 0 })
+            .collect(),
+        clamp_force: vec![4000.0],
+        contact_stiffness: 1.0e7,
+        contact_damping: 0.0,
+        friction_coefficient: 0.5,
+        lift_off: false,
+        follower_friction: true,
+        caliper: Caliper::Fixed,
+        contact_surface: ContactSurface::Faces,
+        static_friction_coefficient: None,
+        stribeck_speed: 1.0,
+        mass: 0.0,
+        backing_stiffness: None,
+        shear: None,
+    });
+    let mut sim = Simulation::new(c).unwrap();
+    for _ in 0..1000 {
+        sim.step().unwrap();
+    }
+    let at = |j: usize| {
+        let (radial, angular) = PAD[j];
+        (RI + radial * (RA - RI), angular * 2.0 * PI)
+    };
+    // The friction the step used, polar at each contact.
+    let forces: Vec<[f64; 2]> = (0..PAD.len())
+        .map(|b| {
+            let f = sim.ale_model_wrench(b).force;
+            polar([f[0], f[1]], at(b).1)
+        })
+        .collect();
+    let plate = InPlaneStatic::new(E, NU, H, RI, RA, Edge::Fixed, Edge::Free);
+    let patches: Vec<Patch> = (0..PAD.len())
+        .map(|j| Patch::new(RI, RA, at(j).0, H))
+        .collect();
+    let mut exact = vec![[0.0; 2]; PAD.len()];
+    for (b, f) in forces.iter().enumerate() {
+        let reads: Vec<(Patch, f64)> = (0..PAD.len())
+            .map(|a| (patches[a], at(a).1 - at(b).1))
+            .collect();
+        let (cs, k_used, backward) = plate.series(&patches[b], &reads, 1e-7, 3000);
+        assert!(k_used < 3000 && backward < 1e-12, "{k_used}, {backward:e}");
+        for (u, m) in exact.iter_mut().zip(&cs) {
+            u[0] += m[0][0] * f[0] + m[0][1] * f[1];
+            u[1] += m[1][0] * f[0] + m[1][1] * f[1];
+        }
+    }
+    let ip = sim.scene().in_plane.as_ref().unwrap();
+    for (a, want) in exact.iter().enumerate() {
+        let theta = at(a).1;
+        let total = polar(sim.ale_node(a).in_plane.u, theta);
+        let modal = ip.node_motion(&ip.ale_nodes[a], None, sim.q_ale(), sim.q_dot_ale(), 0.0);
+        let modal = polar(modal.u, theta);
+        let scale = want[0].abs().max(want[1].abs());
+        let err = |u: [f64; 2]| (u[0] - want[0]).abs().max((u[1] - want[1]).abs()) / scale;
+        println!(
+            "pad contact {a}: friction (F_r, F_θ) = ({:.4e}, {:.4e}) N; exact (u_r, u_θ) = ({:.6e}, {:.6e}) m; node frame ({:.6e}, {:.6e}): {:.2e}; modes alone ({:.6e}, {:.6e}): {:.2e}",
+            forces[a][0], forces[a][1], want[0], want[1], total[0], total[1], err(total),
+            modal[0], modal[1], err(modal),
+        );
+        assert!(forces[a][1].abs() > 1000.0, "no friction: {:?}", forces[a]);
+        assert!(err(total) < 1e-5, "contact {a}: {:e}", err(total));
+        assert!(
+            err(modal) > 1e-2,
+            "contact {a}: modes alone {:e}",
+            err(modal)
+        );
     }
 }
 

@@ -339,7 +339,8 @@ fn lining_patches_with_in_plane_modes_are_refused_by_key() {
 /// config/brake_in_plane.yaml (the bench with in-plane k = 0, 1, 2, l = 0,
 /// clamped at 5 kN per face from the start, 15 rad/s): after 0.3 s the first
 /// torsional mode holds the exact modal static twist under the three
-/// contacts' friction −2μN e_θ (N = 5 kN/3 per face and contact, the
+/// contacts' friction −2μN e_θ, spread over the nodes' load patches (the
+/// scene has residual flexibility) (N = 5 kN/3 per face and contact, the
 /// floating caliper's share on the undeformed disc; the bending stays at
 /// rest under equal faces) within 1e-6 — the static at rest, which the spin
 /// terms move by (Ω/ω_min)² = 1.8e-7 at 15 rad/s — and the drive's effort
@@ -363,7 +364,7 @@ fn the_in_plane_brake_scene_twists_the_disc_to_the_exact_static_sum() {
         .scene()
         .ale_nodes
         .iter()
-        .map(|n| -2.0 * mu * per_face * (t.v)(n.radius))
+        .map(|n| -2.0 * mu * per_face * patch_mean(&config, &t, n.radius))
         .sum();
     let expected = force / (t.mass * t.omega * t.omega);
     let got = sim.q_ale()[index];
@@ -376,6 +377,32 @@ fn the_in_plane_brake_scene_twists_the_disc_to_the_exact_static_sum() {
     );
     assert!(error < 1e-6, "{error:e}");
     assert!((effort / torque - 1.0).abs() < 1e-6, "{effort}");
+}
+
+/// V at a contact at radius `r`: with `plate.residual_flexibility` the
+/// friction is spread over the node's load patch |r' − r| ≤ c (clipped to
+/// the annulus), so its mean ∫V r' dr' / ∫r' dr' (Simpson, 2000 cells);
+/// otherwise the point value.
+fn patch_mean(config: &Config, t: &Torsion, r: f64) -> f64 {
+    if !config.plate.residual_flexibility {
+        return (t.v)(r);
+    }
+    let c = config.plate.residual_patch_half_width();
+    let patch = support::mindlin_static::Patch::new(RI, RA, r, c);
+    let n = 2000;
+    let dr = (patch.hi - patch.lo) / n as f64;
+    let sum: f64 = (0..=n)
+        .map(|i| {
+            let w = if i == 0 || i == n {
+                1.0
+            } else {
+                (2 + 2 * (i % 2)) as f64
+            };
+            let x = patch.lo + i as f64 * dr;
+            w * (t.v)(x) * x
+        })
+        .sum();
+    sum * dr / 3.0 / patch.area_factor()
 }
 
 /// `simulate --output-rate` of config/brake_in_plane.yaml: the aliasing

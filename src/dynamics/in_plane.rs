@@ -102,11 +102,13 @@ pub struct InPlaneDynamics {
     /// Per ALE node, per in-plane mode: ∂(u_r, u_θ)/∂θ in the ALE frame's
     /// axes (the transport term of the material's rate, module docs).
     pub ale_turn: Vec<Vec<[f64; 2]>>,
-    /// Per ALE node, per in-plane mode: the point values of (u_x, u_y) and of
-    /// ∂(u_x, u_y)/∂θ (the transport term [`InPlaneDynamics::ale_turn`] plus
-    /// e_z × u, the turn of the polar basis), for contacts at the node: the
-    /// pads' contact forces act at points, and their in-plane residual
-    /// flexibility is not built, so they take no patch means.
+    /// Per ALE node, per in-plane mode: (u_x, u_y) and ∂(u_x, u_y)/∂θ (the
+    /// transport term [`InPlaneDynamics::ale_turn`] plus e_z × u, the turn of
+    /// the polar basis), for contacts at the node. With
+    /// `plate.residual_flexibility` these are the patch means of the node
+    /// frames: the pads' friction is spread over the node's load patch, so
+    /// the modes and the in-plane residual of the node frames see the same
+    /// force (docs/in_plane.md, "Pads").
     pub ale_contacts: Vec<Vec<[[f64; 2]; 2]>>,
     /// The residual compliance between the node frames
     /// (`plate.residual_flexibility`; None when off or without nodes).
@@ -208,11 +210,6 @@ impl InPlaneDynamics {
                     .collect()
             };
         let (ale_shapes, lagrange_shapes) = (at_nodes(ale, patch), at_nodes(lagrange, patch));
-        let ale_points = if patch.is_some() {
-            at_nodes(ale, None)
-        } else {
-            ale_shapes.clone()
-        };
         let firsts = |shapes: &[Vec<([f64; 2], [f64; 2])>]| -> Vec<Vec<[f64; 2]>> {
             shapes
                 .iter()
@@ -254,7 +251,7 @@ impl InPlaneDynamics {
                 .iter()
                 .map(|n| n.iter().map(|s| s.1).collect())
                 .collect(),
-            ale_contacts: ale_points
+            ale_contacts: ale_shapes
                 .iter()
                 .map(|n| {
                     n.iter()
@@ -317,8 +314,9 @@ impl InPlaneDynamics {
         }
     }
 
-    /// The same for a load model's force at an ALE node: its point values
-    /// ([`InPlaneDynamics::ale_contacts`]).
+    /// The same for a load model's force at an ALE node, through
+    /// [`InPlaneDynamics::ale_contacts`] (point values, or patch means with
+    /// `plate.residual_flexibility`).
     pub fn add_contact_force(&self, shapes: &[[[f64; 2]; 2]], force: &[f64; 3], out: &mut [f64]) {
         for (o, [u, _]) in out[self.offset..].iter_mut().zip(shapes) {
             *o += u[0] * force[0] + u[1] * force[1];

@@ -9,9 +9,10 @@
 //!
 //! D/Dt = ∂/∂t + Ω ∂/∂θ acting on the Cartesian components: ∂u_i/∂θ is the
 //! node frames' transport term ∂(u_r, u_θ)/∂θ plus the turn e_z × u_i of the
-//! polar basis (`InPlaneDynamics::ale_contacts`: point values, not the
-//! node frames' patch means under residual flexibility). It adds to the sliding velocity of
-//! both faces ([`super::face_friction`]); the faces' friction F then does the
+//! polar basis (`InPlaneDynamics::ale_contacts`: point values, or with
+//! `plate.residual_flexibility` the node frames' patch means, so the node
+//! frames' in-plane residual and the modes see the same spread friction).
+//! It adds to the sliding velocity of both faces ([`super::face_friction`]); the faces' friction F then does the
 //! work u_i·F on in-plane mode i through the node loads. The normal forces
 //! do no work on the in-plane modes: bending and in-plane motion couple
 //! through the friction only.
