@@ -16,7 +16,7 @@ use annular_plate::dynamics::load_models::pad_config::{
 };
 use annular_plate::dynamics::{Simulation, Wrench};
 use annular_plate::model::in_plane::InPlaneShape;
-use support::in_plane_modes::{exact_torsion, test_modes, TestMode};
+use support::in_plane_modes::{exact_torsion, patch_mean, test_modes, TestMode};
 
 const RI: f64 = 0.07;
 const RA: f64 = 0.153;
@@ -377,32 +377,6 @@ fn the_in_plane_brake_scene_twists_the_disc_to_the_exact_static_sum() {
     );
     assert!(error < 1e-6, "{error:e}");
     assert!((effort / torque - 1.0).abs() < 1e-6, "{effort}");
-}
-
-/// V at a contact at radius `r`: with `plate.residual_flexibility` the
-/// friction is spread over the node's load patch |r' − r| ≤ c (clipped to
-/// the annulus), so its mean ∫V r' dr' / ∫r' dr' (Simpson, 2000 cells);
-/// otherwise the point value.
-fn patch_mean(config: &Config, t: &Torsion, r: f64) -> f64 {
-    if !config.plate.residual_flexibility {
-        return (t.v)(r);
-    }
-    let c = config.plate.residual_patch_half_width();
-    let patch = support::mindlin_static::Patch::new(RI, RA, r, c);
-    let n = 2000;
-    let dr = (patch.hi - patch.lo) / n as f64;
-    let sum: f64 = (0..=n)
-        .map(|i| {
-            let w = if i == 0 || i == n {
-                1.0
-            } else {
-                (2 + 2 * (i % 2)) as f64
-            };
-            let x = patch.lo + i as f64 * dr;
-            w * (t.v)(x) * x
-        })
-        .sum();
-    sum * dr / 3.0 / patch.area_factor()
 }
 
 /// `simulate --output-rate` of config/brake_in_plane.yaml: the aliasing

@@ -144,3 +144,34 @@ pub fn test_modes(config: &Config, sim: &Simulation) -> Vec<TestMode> {
     }
     out
 }
+
+/// V at a contact at radius `r`: with `plate.residual_flexibility` the
+/// friction is spread over the node's load patch |r' − r| ≤ c (clipped to
+/// the annulus), so its mean ∫V r' dr' / ∫r' dr' (Simpson, 2000 cells);
+/// otherwise the point value.
+pub fn patch_mean(config: &Config, t: &Torsion, r: f64) -> f64 {
+    if !config.plate.residual_flexibility {
+        return (t.v)(r);
+    }
+    let c = config.plate.residual_patch_half_width();
+    let patch = super::mindlin_static::Patch::new(
+        config.plate.inner_radius,
+        config.plate.outer_radius,
+        r,
+        c,
+    );
+    let n = 2000;
+    let dr = (patch.hi - patch.lo) / n as f64;
+    let sum: f64 = (0..=n)
+        .map(|i| {
+            let w = if i == 0 || i == n {
+                1.0
+            } else {
+                (2 + 2 * (i % 2)) as f64
+            };
+            let x = patch.lo + i as f64 * dr;
+            w * (t.v)(x) * x
+        })
+        .sum();
+    sum * dr / 3.0 / patch.area_factor()
+}
