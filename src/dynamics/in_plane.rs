@@ -498,7 +498,7 @@ fn spin_terms(
             InPlaneSpinBlock::new(disc, prestress, k, &entries)
         })
         .collect();
-    InPlaneSpinTerms { blocks }
+    InPlaneSpinTerms::new(blocks)
 }
 
 /// s = 2π ∫ ρh V r² dr over the mode's B-spline spans (3-point Gauss per

@@ -139,25 +139,31 @@ impl InPlaneSpinBlock {
 #[derive(Debug, Clone, PartialEq)]
 pub struct InPlaneSpinTerms {
     pub blocks: Vec<InPlaneSpinBlock>,
-}
-
-impl InPlaneSpinTerms {
     /// Gershgorin bounds of the spin terms over every block: the largest
     /// row sum of |K_Ω/m| (per (rad/s)²) and of |G/m| (per rad/s). A mode's
     /// turning-frame rate is then within √(ω² + Ω² b_K) + |Ω| b_G.
-    pub fn rate_bounds(&self) -> (f64, f64) {
+    pub rate_bounds: (f64, f64),
+}
+
+impl InPlaneSpinTerms {
+    /// The terms of `blocks`, with their [`InPlaneSpinTerms::rate_bounds`].
+    pub fn new(blocks: Vec<InPlaneSpinBlock>) -> InPlaneSpinTerms {
         let row_sums = |m: &[f64], n: usize| {
             m.chunks_exact(n.max(1))
                 .map(|row| row.iter().map(|x| x.abs()).sum::<f64>())
                 .fold(0.0f64, f64::max)
         };
-        self.blocks.iter().fold((0.0f64, 0.0f64), |(k, g), b| {
+        let rate_bounds = blocks.iter().fold((0.0f64, 0.0f64), |(k, g), b| {
             let n = b.modes.len();
             (
                 k.max(row_sums(&b.k_over_m, n)),
                 g.max(row_sums(&b.g_over_m, n)),
             )
-        })
+        });
+        InPlaneSpinTerms {
+            blocks,
+            rate_bounds,
+        }
     }
 
     /// acc −= M⁻¹ (Ω G q̇ + Ω² K_Ω q) over every block, in `coords`.

@@ -259,7 +259,7 @@ impl Stepper {
 
     /// λ_max = max over the modes of |ω_eff| + 2ζω + kΩ, the load models'
     /// coupling included as bounded in [`LoadModels`](super::load_models::LoadModels),
-    /// and the in-plane spin terms' Gershgorin bounds (`InPlaneSpinTerms::rate_bounds`).
+    /// and the in-plane spin terms' Gershgorin bounds (`InPlaneSpinTerms::rate_bounds`, made once).
     fn lambda_max(&self, scene: &Scene, speed: f64) -> f64 {
         let c = scene.load_models.coupling();
         let stiffening = scene
@@ -267,7 +267,7 @@ impl Stepper {
             .as_ref()
             .map_or(0.0, |s| s.rate_bound * speed * speed);
         let (spin_stiffness, coriolis) = scene.in_plane.as_ref().map_or((0.0, 0.0), |ip| {
-            let (k, g) = ip.spin.rate_bounds();
+            let (k, g) = ip.spin.rate_bounds;
             (k * speed * speed, g * speed.abs())
         });
         scene
