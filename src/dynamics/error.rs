@@ -83,6 +83,23 @@ pub enum StepError {
         /// The step, s.
         step: f64,
     },
+    /// The load models' damping at the current state is beyond what an
+    /// integrator that holds their forces over a substep resolves
+    /// (`LoadModel::held_damping_rate`: the face friction's μN/|V| grows as
+    /// the sliding slows).
+    #[error("the load models damp the modes at rates up to {rate:.0} 1/s at the current state (the face friction's μN/|V| grows as the sliding slows; Ω = {speed} rad/s), but simulation.integrator = {integrator} holds their forces over a substep of {step:e} s (h × rate = {:.2} > {limit}): use simulation.integrator: contact_exponential or rk4, which evaluate them within the step, or raise simulation.rate_hz / simulation.substeps; the step was undone", step * rate)]
+    HeldDampingTooFast {
+        /// The integrator, by its parameter name.
+        integrator: &'static str,
+        /// The damping rate bound, 1/s.
+        rate: f64,
+        /// The substep, s.
+        step: f64,
+        /// The largest h × rate accepted.
+        limit: f64,
+        /// Ω at the substep's start, rad/s.
+        speed: f64,
+    },
     /// The joint turned faster than the in-plane modes' bound where their spin terms are not built.
     #[error("the joint speed {speed} rad/s is beyond {limit:.3} rad/s, the bound for in-plane modes (plate.in_plane_nodal_diameters) where their spin terms are not built (simulation.integrator: implicit_midpoint, or joint.max_torque with torsional modes; Coriolis coupling 2Ω/ω_min up to 1e-3); the step was undone")]
     InPlaneSpin {

@@ -23,7 +23,9 @@ use super::integrators::exponential::ModePropagator;
 use super::integrators::stiffened_midpoint::StiffenedMidpoint;
 use super::integrators::{block_exponential, implicit_midpoint, rk4, MAX_INNER_SUBSTEPS};
 use super::joint::{drive, integrated_in_step, StageDrive};
-use super::load_models::{LoadContext, LoadModelState, LoadModelUndo, ModelWrenches};
+use super::load_models::{
+    LoadContext, LoadModelState, LoadModelUndo, ModelWrenches, HELD_COUPLING_LIMIT,
+};
 use super::loads::{add_reference_motion, compute as node_loads, StepLoads};
 use super::scene::Scene;
 use super::state::{JointAngle, State};
@@ -159,6 +161,9 @@ pub struct Stepper {
     undo: LoadModelUndo,
     /// Inner substeps used in the last step (1 for the exponential integrator).
     last_inner_substeps: usize,
+    /// The load models' damping at the current substep's start, 1/s
+    /// (`LoadModels::held_damping_rate`; set by each substep before use).
+    held_damping_rate: f64,
     /// Wrenches of the load models at the last evaluation, and what it was of.
     model_wrenches: ModelWrenches,
     evaluation: ModelEvaluation,
@@ -209,6 +214,7 @@ impl Stepper {
             backup: State::new(n, Coordinates::Ale, 0.0, 0.0),
             undo: LoadModelUndo::new(&scene.load_models),
             last_inner_substeps: 1,
+            held_damping_rate: 0.0,
             model_wrenches: scene.model_wrenches(),
             evaluation: ModelEvaluation::with_capacity(model_evaluation::key_len(scene)),
             stiffened: scene
@@ -259,7 +265,8 @@ impl Stepper {
 
     /// λ_max = max over the modes of |ω_eff| + 2ζω + kΩ, the load models'
     /// coupling included as bounded in [`LoadModels`](super::load_models::LoadModels),
-    /// and the in-plane spin terms' Gershgorin bounds (`InPlaneSpinTerms::rate_bounds`, made once).
+    /// the in-plane spin terms' Gershgorin bounds (`InPlaneSpinTerms::rate_bounds`, made once),
+    /// and the models' damping at the substep's start (`LoadModels::held_damping_rate`).
     fn lambda_max(&self, scene: &Scene, speed: f64) -> f64 {
         let c = scene.load_models.coupling();
         let stiffening = scene
@@ -277,10 +284,32 @@ impl Stepper {
                 (mc.omega_eff_sq.abs() + stiffening + spin_stiffness + c.stiffness_rate_sq).sqrt()
                     + mc.damping_rate
                     + c.damping_rate
+                    + self.held_damping_rate
                     + coriolis
                     + k as f64 * speed.abs()
             })
             .fold(0.0, f64::max)
+    }
+
+    /// Refuse a substep of `h` whose held model forces would not resolve the
+    /// models' damping at its start (`LoadModels::held_damping_rate`).
+    fn check_held_damping(
+        &self,
+        settings: &StepperSettings,
+        h: f64,
+        speed: f64,
+    ) -> Result<(), StepError> {
+        let rate = self.held_damping_rate;
+        if h * rate > HELD_COUPLING_LIMIT {
+            return Err(StepError::HeldDampingTooFast {
+                integrator: settings.integrator.name(),
+                rate,
+                step: h,
+                limit: HELD_COUPLING_LIMIT,
+                speed,
+            });
+        }
+        Ok(())
     }
 
     /// The inner substeps for a substep of h from Ω0 under α, or the refusal.
@@ -363,6 +392,9 @@ impl Stepper {
                 &inputs.commands,
                 &mut self.model_wrenches,
             );
+            if settings.integrator != IntegratorKind::ContactExponential {
+                self.held_damping_rate = models.held_damping_rate(&ctx, &self.model_wrenches);
+            }
             state.load_models = slots;
         }
         self.node_loads(scene, state, inputs);
@@ -411,10 +443,12 @@ impl Stepper {
                     self.contact_exponential(scene, state, inputs, &joint, tolerance, stage_drive);
             }
             IntegratorKind::Exponential | IntegratorKind::ContactExponential => {
+                self.check_held_damping(settings, h, state.speed)?;
                 add_reference_motion(scene, joint.speed_mean, &mut self.loads.ale_frame);
                 self.exponential(scene, state, &joint);
             }
             IntegratorKind::ImplicitMidpoint => {
+                self.check_held_damping(settings, h, state.speed)?;
                 add_reference_motion(scene, joint.speed_mean, &mut self.loads.ale_frame);
                 let inner =
                     self.checked_inner_substeps(scene, settings, h, joint.speed0, joint.alpha)?;

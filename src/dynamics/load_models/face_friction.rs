@@ -162,6 +162,47 @@ pub fn friction_force(
     [scale * v[0], scale * v[1], scale * v[2]]
 }
 
+/// max(g(s)/s, |g′(s)|) at the sliding velocity `v`, g(s) = μ(s) tanh(s/v_reg):
+/// the friction's damping per unit normal force across and along the
+/// sliding, s/m; μ(0)/v_reg at rest.
+pub fn damping_per_normal(law: &FrictionLaw, v: [f64; 3], regularisation_speed: f64) -> f64 {
+    let s = (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt();
+    let x = s / regularisation_speed;
+    let t = x.tanh();
+    let across = if x < 1e-8 {
+        law.mu(s) / regularisation_speed
+    } else {
+        law.mu(s) * t / s
+    };
+    let along = law.slope(s) * t + law.mu(s) * (1.0 - t * t) / regularisation_speed;
+    across.max(along.abs())
+}
+
+/// Σ_i a_ci a_diᵀ / m_i over the modes for rows a (2 per contact point),
+/// row-major over 2C × 2C: the Gram matrix J M⁻¹ Jᵀ of the faces' sliding
+/// velocity rows among the contact points (`pad_friction_damping.rs`).
+pub fn contact_gram<'a>(
+    rows: impl Fn(usize, usize) -> [f64; 2],
+    contacts: usize,
+    modal_mass: impl Iterator<Item = &'a f64> + Clone,
+) -> Vec<f64> {
+    let n = 2 * contacts;
+    let mut gram = vec![0.0; n * n];
+    for c in 0..contacts {
+        for d in 0..contacts {
+            for (i, m) in modal_mass.clone().enumerate() {
+                let (a, b) = (rows(c, i), rows(d, i));
+                for (x, ax) in a.iter().enumerate() {
+                    for (y, by) in b.iter().enumerate() {
+                        gram[(2 * c + x) * n + 2 * d + y] += ax * by / m;
+                    }
+                }
+            }
+        }
+    }
+    gram
+}
+
 /// An ALE frame at (r, θ) whose one "mode" is the rigid tilt w = α r cos θ
 /// (a plate tilted about the y axis, held in space by q̄ = 1, q̄̇ = 0).
 #[cfg(test)]
@@ -205,6 +246,56 @@ mod tests {
                     assert!((v[2] + speed * alpha * radius * s).abs() < 1e-15);
                 }
             }
+        }
+    }
+
+    /// The largest |eigenvalue| of ∂F/∂v per unit normal force, by central
+    /// differences of the friction force itself (∂F/∂v is symmetric: F is
+    /// the gradient of a potential in v).
+    fn jacobian_norm(law: &FrictionLaw, v: [f64; 3]) -> f64 {
+        let (d, vr) = (1e-9, 1e-3);
+        let mut j = [[0.0; 3]; 3];
+        for (a, col) in j.iter_mut().enumerate() {
+            let (mut p, mut m) = (v, v);
+            p[a] += d;
+            m[a] -= d;
+            let (fp, fm) = (
+                friction_force(law, 1.0, p, vr),
+                friction_force(law, 1.0, m, vr),
+            );
+            for b in 0..3 {
+                col[b] = (fp[b] - fm[b]) / (2.0 * d);
+            }
+        }
+        let j = nalgebra::Matrix3::from_fn(|r, c| 0.5 * (j[c][r] + j[r][c]));
+        j.symmetric_eigenvalues().amax()
+    }
+
+    #[test]
+    fn the_damping_per_normal_force_is_the_friction_law_s_largest_slope() {
+        let laws = [
+            FrictionLaw {
+                kinetic: 0.5,
+                excess: 0.0,
+                stribeck_speed: 1.0,
+            },
+            FrictionLaw {
+                kinetic: 0.4,
+                excess: 0.2,
+                stribeck_speed: 0.01,
+            },
+        ];
+        for law in &laws {
+            for s in [2e-4, 1e-3, 5e-3, 0.05, 1.0, 30.0] {
+                let v = [0.6 * s, -0.8 * s, 0.0];
+                let got = damping_per_normal(law, v, 1e-3);
+                let want = jacobian_norm(law, v);
+                assert!(
+                    (got / want - 1.0).abs() < 1e-3,
+                    "s = {s}: {got} against {want}"
+                );
+            }
+            assert_eq!(damping_per_normal(law, [0.0; 3], 1e-3), law.mu(0.0) / 1e-3);
         }
     }
 }

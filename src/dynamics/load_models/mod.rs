@@ -35,6 +35,7 @@ pub mod outputs;
 pub mod pad_calipers;
 pub mod pad_config;
 pub mod pad_contact_law;
+mod pad_friction_damping;
 pub mod pad_in_plane;
 mod pad_linear;
 mod pad_linear_mass;
@@ -350,6 +351,16 @@ impl LoadModels {
     /// The summed coupling rates of all models.
     pub fn coupling(&self) -> Coupling {
         self.coupling
+    }
+
+    /// The summed [`LoadModel::held_damping_rate`] of all models at the
+    /// state of their last [`LoadModels::evaluate`] into `wrenches`, 1/s.
+    pub fn held_damping_rate(&self, ctx: &LoadContext, wrenches: &ModelWrenches) -> f64 {
+        self.models
+            .iter()
+            .zip(&wrenches.scratch)
+            .map(|(m, s)| m.held_damping_rate(ctx, s.as_ref()))
+            .sum()
     }
 
     /// Continuous states of all models (RK4 integrates them with the modes).

@@ -129,6 +129,9 @@ pub struct Pads {
     pub initial_clamp_force: Vec<f64>,
     /// The coupling bound of the contact springs and dampers ([`LoadModel::coupling`]).
     pub coupling: Coupling,
+    /// T M⁻¹ Tᵀ of the bending tilt rows among the contact points, 2C × 2C
+    /// (`pad_friction_damping.rs`; faces only, else empty).
+    pub friction_gram: Vec<f64>,
     /// The residual compliance G among the contact points
     /// (`plate.residual_flexibility`): the contacts act in series with it
     /// (`Pads::series_forces`); None: on the modal deflection.
@@ -162,6 +165,9 @@ pub struct ContactForces {
     /// The top and bottom normal forces before lift-off, N (finite): the
     /// law's switching functions (> 0: the face is closed).
     pub margin: [f64; 2],
+    /// The top and bottom faces' friction damping N max(g/s, |g′|), N·s/m
+    /// (faces only; `pad_friction_damping.rs`).
+    pub damping: [f64; 2],
 }
 
 impl Pads {
@@ -276,6 +282,7 @@ pub fn build(config: &Config, nodes: &SceneNodes) -> Option<Box<dyn LoadModel>> 
             stribeck_speed: p.stribeck_speed,
             initial_clamp_force: p.clamp_force.clone(),
             coupling: Coupling::default(),
+            friction_gram: Vec::new(),
             series: nodes.residual.map(|r| {
                 ContactCompliance::among(r, &p.contacts.iter().map(|c| c.node).collect::<Vec<_>>())
             }),
@@ -290,7 +297,8 @@ pub fn build(config: &Config, nodes: &SceneNodes) -> Option<Box<dyn LoadModel>> 
             in_plane: None,
         }
         .with_coupling(nodes)
-        .with_patch_coupling(),
+        .with_patch_coupling()
+        .with_friction_gram(nodes),
     ))
 }
 
@@ -381,6 +389,11 @@ impl LoadModel for Pads {
     }
     fn coupling(&self) -> Coupling {
         self.coupling
+    }
+    fn held_damping_rate(&self, _ctx: &LoadContext, scratch: &dyn Any) -> f64 {
+        scratch
+            .downcast_ref::<PadScratch>()
+            .map_or(0.0, |s| self.friction_damping_rate(s))
     }
     /// The contact springs act on w; the face kinematics (friction on the
     /// faces, the lining's patches) on the node frames' face displacement,
@@ -565,6 +578,7 @@ mod tests {
             stribeck_speed: 1.0,
             initial_clamp_force: vec![1000.0],
             coupling: Coupling::default(),
+            friction_gram: Vec::new(),
             series: None,
             mass: 0.0,
             backing_stiffness: 0.0,

@@ -5,7 +5,9 @@
 //! (`face_friction.rs` for the faces' kinematics and μ(v)). The model that
 //! uses it, its builder and its registration are in `pad.rs`.
 
-use super::face_friction::{friction_force, sliding_velocity, FaceKinematics, FrictionLaw};
+use super::face_friction::{
+    damping_per_normal, friction_force, sliding_velocity, FaceKinematics, FrictionLaw,
+};
 use super::model::SurfaceKinematics;
 use super::pad::{ContactForces, PadContactPoint, Pads, FRICTION_REGULARISATION_SPEED};
 use super::pad_config::Caliper;
@@ -149,7 +151,8 @@ impl Pads {
         let mut w = Wrench::default();
         let (s, c) = contact.sin_cos;
         f.tangential = 0.0;
-        for (normal, z) in [(f.top, contact.face_z[0]), (f.bottom, contact.face_z[1])] {
+        let faces = [(f.top, contact.face_z[0]), (f.bottom, contact.face_z[1])];
+        for (face, (normal, z)) in faces.into_iter().enumerate() {
             let v = sliding_velocity(
                 k,
                 z + self.node_z(contact),
@@ -158,12 +161,10 @@ impl Pads {
                 speed,
                 self.follower_friction,
             );
-            let fr = friction_force(
-                &self.friction_law(self.friction_coefficient),
-                normal,
-                v,
-                FRICTION_REGULARISATION_SPEED,
-            );
+            let law = self.friction_law(self.friction_coefficient);
+            let fr = friction_force(&law, normal, v, FRICTION_REGULARISATION_SPEED);
+            f.damping[face] =
+                normal.abs() * damping_per_normal(&law, v, FRICTION_REGULARISATION_SPEED);
             for (wa, fa) in w.force.iter_mut().zip(&fr) {
                 *wa += fa;
             }
@@ -185,7 +186,7 @@ impl Pads {
     }
 
     /// z of the contact's node frame (the faces are at node z + face_z).
-    fn node_z(&self, contact: &PadContactPoint) -> f64 {
+    pub(super) fn node_z(&self, contact: &PadContactPoint) -> f64 {
         0.5 * (self.thickness_from(contact)) - contact.face_z[0]
     }
 

@@ -17,6 +17,7 @@
 //! do no work on the in-plane modes: bending and in-plane motion couple
 //! through the friction only.
 
+use super::face_friction::contact_gram;
 use crate::dynamics::error::SimulationError;
 use crate::dynamics::in_plane::InPlaneDynamics;
 
@@ -29,6 +30,8 @@ pub struct PadInPlane {
     modes: usize,
     /// Per contact point, per in-plane mode: u and ∂u/∂θ in frame A's axes.
     shapes: Vec<[[f64; 2]; 2]>,
+    /// U M⁻¹ Uᵀ among the contact points, 2C × 2C, 1/kg (`pad_friction_damping.rs`).
+    gram: Vec<f64>,
 }
 
 impl PadInPlane {
@@ -45,14 +48,27 @@ impl PadInPlane {
                 why: "the lining's patches do not slide with the in-plane modes yet",
             });
         }
-        let shapes = nodes
+        let shapes: Vec<[[f64; 2]; 2]> = nodes
             .flat_map(|n| ip.ale_contacts[n].iter().copied())
             .collect();
+        let modes = ip.len();
+        let gram = contact_gram(
+            |c, i| shapes[c * modes + i][0],
+            shapes.len() / modes.max(1),
+            ip.modes.iter().map(|m| &m.modal_mass),
+        );
         Ok(PadInPlane {
             offset: ip.offset,
             modes: ip.len(),
             shapes,
+            gram,
         })
+    }
+
+    /// U M⁻¹ Uᵀ of the in-plane rows among the contact points, 2C × 2C,
+    /// 1/kg: the in-plane modes' share of the face friction's damping bound.
+    pub fn gram(&self) -> &[f64] {
+        &self.gram
     }
 
     /// D u/Dt under contact `contact` for ALE amplitudes `q`, rates `q_dot`
