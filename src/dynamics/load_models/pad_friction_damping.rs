@@ -19,12 +19,15 @@
 //! c_f one friction law per face, written by the face wrench.
 //!
 //! The lining's patches (`pad_shear.rs`) carry the friction through their
-//! own states, which only RK4 integrates: they are not bounded here.
+//! own states, which only RK4 and `contact_exponential` integrate: on the
+//! disc a patch is at most its k_t ∥ c_t (in stick), constant, so the same
+//! Gram matrix bounds it once in the pads' coupling
+//! ([`Pads::patch_face_coupling`]).
 //!
 //! [`LoadModel::held_damping_rate`]: super::model::LoadModel::held_damping_rate
 
 use super::face_friction::contact_gram;
-use super::model::SceneNodes;
+use super::model::{Coupling, SceneNodes};
 use super::pad::{PadScratch, Pads};
 use super::pad_config::ContactSurface;
 
@@ -46,10 +49,34 @@ impl Pads {
         if self.friction_gram.is_empty() || self.shear.is_some() {
             return 0.0;
         }
+        self.face_gram_bound(|c, f| s.forces[c].damping[f].sqrt())
+    }
+
+    /// The lining's patches on the faces' velocity rows: in stick a face is
+    /// held to the backing plate through its patch's k_t ∥ c_t, so the
+    /// coupling bound takes k_t λ(G) and c_t λ(G) with λ(G) ≤ the Gershgorin
+    /// bound of G over the faces (both families' rows), 1/kg; zero without
+    /// patches or friction on the faces.
+    pub(super) fn patch_face_coupling(&self) -> Coupling {
+        match self.shear {
+            Some(law) if !self.friction_gram.is_empty() => {
+                let g = self.face_gram_bound(|_, _| 1.0);
+                Coupling {
+                    stiffness_rate_sq: law.stiffness * g,
+                    damping_rate: law.damping * g,
+                }
+            }
+            _ => Coupling::default(),
+        }
+    }
+
+    /// max over the rows of Σ_cols |r_row G_row,col r_col|: Gershgorin's bound
+    /// of the largest eigenvalue of diag(r) G diag(r), G the Gram matrix of
+    /// the faces' in-plane velocity rows (two per face), r per face.
+    fn face_gram_bound(&self, root: impl Fn(usize, usize) -> f64) -> f64 {
         let n = 2 * self.contacts.len();
         let in_plane = self.in_plane.as_ref().map(|ip| ip.gram());
         let z = |c: usize, f: usize| self.contacts[c].face_z[f] + self.node_z(&self.contacts[c]);
-        let root = |c: usize, f: usize| s.forces[c].damping[f].sqrt();
         let mut bound = 0.0f64;
         for (c, f, x) in face_rows(self.contacts.len()) {
             let row = 2 * c + x;

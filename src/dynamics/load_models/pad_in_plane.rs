@@ -18,7 +18,6 @@
 //! through the friction only.
 
 use super::face_friction::contact_gram;
-use crate::dynamics::error::SimulationError;
 use crate::dynamics::in_plane::InPlaneDynamics;
 
 /// The in-plane modes under the contact points.
@@ -36,18 +35,8 @@ pub struct PadInPlane {
 
 impl PadInPlane {
     /// The in-plane modes under the contacts at ALE nodes `nodes` (friction
-    /// on the faces), or the refusal of the lining's patches (`shear`).
-    pub fn attach(
-        ip: &InPlaneDynamics,
-        shear: bool,
-        nodes: impl Iterator<Item = usize>,
-    ) -> Result<PadInPlane, SimulationError> {
-        if shear {
-            return Err(SimulationError::InPlaneKeyNotWired {
-                key: "pads.shear_stiffness",
-                why: "the lining's patches do not slide with the in-plane modes yet",
-            });
-        }
+    /// on the faces, with or without the lining's patches).
+    pub fn attach(ip: &InPlaneDynamics, nodes: impl Iterator<Item = usize>) -> PadInPlane {
         let shapes: Vec<[[f64; 2]; 2]> = nodes
             .flat_map(|n| ip.ale_contacts[n].iter().copied())
             .collect();
@@ -57,12 +46,12 @@ impl PadInPlane {
             shapes.len() / modes.max(1),
             ip.modes.iter().map(|m| &m.modal_mass),
         );
-        Ok(PadInPlane {
+        PadInPlane {
             offset: ip.offset,
             modes: ip.len(),
             shapes,
             gram,
-        })
+        }
     }
 
     /// U M⁻¹ Uᵀ of the in-plane rows among the contact points, 2C × 2C,
