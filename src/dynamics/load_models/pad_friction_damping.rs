@@ -15,8 +15,9 @@
 //! matrix G_fg = J_f M⁻¹ J_gᵀ = z_f z_g T_c M⁻¹ T_dᵀ + U_c M⁻¹ U_dᵀ (the
 //! two families share no mode). Gershgorin's row sums of |B| bound that
 //! eigenvalue from above. T M⁻¹ Tᵀ and U M⁻¹ Uᵀ among the contacts are made
-//! once (2C × 2C each); the bound costs (4C)² products per evaluation, and
-//! c_f one friction law per face, written by the face wrench.
+//! once (2C × 2C each); the bound costs (4C)² products where an integrator
+//! asks for it (at each substep's start), and c_f one slope of the friction
+//! law per face, written by the face wrench at each evaluation.
 //!
 //! The lining's patches (`pad_shear.rs`) carry the friction through their
 //! own states, which only RK4 and `contact_exponential` integrate: on the
