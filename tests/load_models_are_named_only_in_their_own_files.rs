@@ -27,6 +27,7 @@ const FAMILIES: &[(&str, &[&str])] = &[
             "pad_contact_law.rs",
             "pad_in_plane.rs",
             "pad_friction_damping.rs",
+            "pad_tests.rs",
             "pad_linear.rs",
             "pad_linear_mass.rs",
             "pad_linear_shear.rs",
