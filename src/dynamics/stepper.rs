@@ -393,7 +393,7 @@ impl Stepper {
                 &mut self.model_wrenches,
             );
             if settings.integrator != IntegratorKind::ContactExponential {
-                self.held_damping_rate = models.held_damping_rate(&ctx, &self.model_wrenches);
+                self.held_damping_rate = models.held_damping_rate(&ctx, &mut self.model_wrenches);
             }
             state.load_models = slots;
         }

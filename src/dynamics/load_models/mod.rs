@@ -355,11 +355,11 @@ impl LoadModels {
 
     /// The summed [`LoadModel::held_damping_rate`] of all models at the
     /// state of their last [`LoadModels::evaluate`] into `wrenches`, 1/s.
-    pub fn held_damping_rate(&self, ctx: &LoadContext, wrenches: &ModelWrenches) -> f64 {
+    pub fn held_damping_rate(&self, ctx: &LoadContext, wrenches: &mut ModelWrenches) -> f64 {
         self.models
             .iter()
-            .zip(&wrenches.scratch)
-            .map(|(m, s)| m.held_damping_rate(ctx, s.as_ref()))
+            .zip(wrenches.scratch.iter_mut())
+            .map(|(m, s)| m.held_damping_rate(ctx, s.as_mut()))
             .sum()
     }
 

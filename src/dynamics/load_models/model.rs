@@ -274,12 +274,12 @@ pub trait LoadModel: Debug + Send + Sync {
 
     /// A bound, 1/s, on the largest eigenvalue of M^(−½) C M^(−½) for the
     /// damping C = −∂F/∂q̇ its law has at the state of its last
-    /// [`LoadModel::evaluate`] (whose scratch is `scratch`), beyond the
+    /// [`LoadModel::evaluate`] (whose scratch, `scratch`, it may use), beyond the
     /// constant [`LoadModel::coupling`]: a damping that grows as the state
     /// changes (the face friction's μN/|V| as the sliding slows). The
     /// integrators that hold its forces over a substep must resolve it.
     /// Default: none.
-    fn held_damping_rate(&self, _ctx: &LoadContext, _scratch: &dyn Any) -> f64 {
+    fn held_damping_rate(&self, _ctx: &LoadContext, _scratch: &mut dyn Any) -> f64 {
         0.0
     }
 

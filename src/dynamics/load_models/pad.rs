@@ -165,8 +165,8 @@ pub struct ContactForces {
     /// The top and bottom normal forces before lift-off, N (finite): the
     /// law's switching functions (> 0: the face is closed).
     pub margin: [f64; 2],
-    /// The top and bottom faces' friction damping N max(g/s, |g′|), N·s/m
-    /// (faces only; `pad_friction_damping.rs`).
+    /// The top and bottom faces' friction damping N max(g/s, |g′|), N·s/m,
+    /// where an integrator asked for its bound (`pad_friction_damping.rs`).
     pub damping: [f64; 2],
 }
 
@@ -390,10 +390,10 @@ impl LoadModel for Pads {
     fn coupling(&self) -> Coupling {
         self.coupling
     }
-    fn held_damping_rate(&self, _ctx: &LoadContext, scratch: &dyn Any) -> f64 {
+    fn held_damping_rate(&self, ctx: &LoadContext, scratch: &mut dyn Any) -> f64 {
         scratch
-            .downcast_ref::<PadScratch>()
-            .map_or(0.0, |s| self.friction_damping_rate(s))
+            .downcast_mut::<PadScratch>()
+            .map_or(0.0, |s| self.friction_damping_rate(ctx.speed, s))
     }
     /// The contact springs act on w; the face kinematics (friction on the
     /// faces, the lining's patches) on the node frames' face displacement,

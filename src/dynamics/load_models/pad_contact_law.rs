@@ -5,9 +5,7 @@
 //! (`face_friction.rs` for the faces' kinematics and μ(v)). The model that
 //! uses it, its builder and its registration are in `pad.rs`.
 
-use super::face_friction::{
-    damping_per_normal, friction_force, sliding_velocity, FaceKinematics, FrictionLaw,
-};
+use super::face_friction::{friction_force, sliding_velocity, FaceKinematics, FrictionLaw};
 use super::model::SurfaceKinematics;
 use super::pad::{ContactForces, PadContactPoint, Pads, FRICTION_REGULARISATION_SPEED};
 use super::pad_config::Caliper;
@@ -151,8 +149,7 @@ impl Pads {
         let mut w = Wrench::default();
         let (s, c) = contact.sin_cos;
         f.tangential = 0.0;
-        let faces = [(f.top, contact.face_z[0]), (f.bottom, contact.face_z[1])];
-        for (face, (normal, z)) in faces.into_iter().enumerate() {
+        for (normal, z) in [(f.top, contact.face_z[0]), (f.bottom, contact.face_z[1])] {
             let v = sliding_velocity(
                 k,
                 z + self.node_z(contact),
@@ -163,8 +160,6 @@ impl Pads {
             );
             let law = self.friction_law(self.friction_coefficient);
             let fr = friction_force(&law, normal, v, FRICTION_REGULARISATION_SPEED);
-            f.damping[face] =
-                normal.abs() * damping_per_normal(&law, v, FRICTION_REGULARISATION_SPEED);
             for (wa, fa) in w.force.iter_mut().zip(&fr) {
                 *wa += fa;
             }

@@ -15,9 +15,9 @@
 //! matrix G_fg = J_f M⁻¹ J_gᵀ = z_f z_g T_c M⁻¹ T_dᵀ + U_c M⁻¹ U_dᵀ (the
 //! two families share no mode). Gershgorin's row sums of |B| bound that
 //! eigenvalue from above. T M⁻¹ Tᵀ and U M⁻¹ Uᵀ among the contacts are made
-//! once (2C × 2C each); the bound costs (4C)² products where an integrator
-//! asks for it (at each substep's start), and c_f one slope of the friction
-//! law per face, written by the face wrench at each evaluation.
+//! once (2C × 2C each); where an integrator asks for the bound (at each
+//! substep's start) it costs one slope of the friction law per face and
+//! (4C)² products.
 //!
 //! The lining's patches (`pad_shear.rs`) carry the friction through their
 //! own states, which only RK4 and `contact_exponential` integrate: on the
@@ -27,9 +27,9 @@
 //!
 //! [`LoadModel::held_damping_rate`]: super::model::LoadModel::held_damping_rate
 
-use super::face_friction::contact_gram;
+use super::face_friction::{contact_gram, damping_per_normal, sliding_velocity};
 use super::model::{Coupling, SceneNodes};
-use super::pad::{PadScratch, Pads};
+use super::pad::{PadScratch, Pads, FRICTION_REGULARISATION_SPEED};
 use super::pad_config::ContactSurface;
 
 impl Pads {
@@ -44,11 +44,22 @@ impl Pads {
         self
     }
 
-    /// The Gershgorin bound of B = c^(½) G c^(½) at the faces' damping
-    /// c_f of the last evaluation (`ContactForces::damping`), 1/s.
-    pub(super) fn friction_damping_rate(&self, s: &PadScratch) -> f64 {
+    /// The Gershgorin bound of B = c^(½) G c^(½) at the normal forces and
+    /// face kinematics of the last evaluation at speed Ω = `speed`, 1/s; the
+    /// faces' c_f into `ContactForces::damping`.
+    pub(super) fn friction_damping_rate(&self, speed: f64, s: &mut PadScratch) -> f64 {
         if self.friction_gram.is_empty() || self.shear.is_some() {
             return 0.0;
+        }
+        let law = self.friction_law(self.friction_coefficient);
+        for ((c, f), k) in self.contacts.iter().zip(s.forces.iter_mut()).zip(&s.faces) {
+            let faces = [(f.top, c.face_z[0]), (f.bottom, c.face_z[1])];
+            for ((normal, z), damping) in faces.into_iter().zip(f.damping.iter_mut()) {
+                let z = z + self.node_z(c);
+                let v = sliding_velocity(k, z, c.radius, c.sin_cos, speed, self.follower_friction);
+                *damping =
+                    normal.abs() * damping_per_normal(&law, v, FRICTION_REGULARISATION_SPEED);
+            }
         }
         self.face_gram_bound(|c, f| s.forces[c].damping[f].sqrt())
     }
