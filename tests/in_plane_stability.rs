@@ -254,3 +254,84 @@ fn the_in_plane_friction_damping_is_the_decay_a_simulation_shows() {
     // Measured 1.6e-5 (the k = 1 pair); the bound of the bending squeal tests is 2e-2.
     assert!(worst < 1e-3, "{worst:e}");
 }
+
+/// Massive pads (`pads.mass`): the sum of a pad's face forces changes with
+/// its compressions, and the friction −g sign V (δN_t + δN_b) e_θ it adds
+/// drives the in-plane modes (docs/in_plane.md, "Stability"). A run started
+/// on Re v of the bending or pad eigenvalue whose eigenvector has the
+/// largest in-plane part
+/// follows Re(v e^{λt}) in its in-plane amplitudes, which the linearisation
+/// has from that term alone (without it they are 0 in v).
+#[test]
+fn massive_pads_drive_the_in_plane_modes_as_the_eigenvector_says() {
+    use annular_plate::dynamics::load_models::pad::Pads;
+    let mut c = brake(true);
+    c.simulation.rate_hz = 100_000.0;
+    c.section_mut::<annular_plate::dynamics::load_models::pad_config::PadsConfig>()
+        .unwrap()
+        .mass = 0.5;
+    let (speed, (mu, clamp)) = (c.joint.speed, configured(&c));
+    let mut base = Simulation::new(c.clone()).unwrap();
+    let scene = base.scene();
+    let n = scene.n_modes();
+    let ip = scene.in_plane.as_ref().unwrap();
+    let in_plane = ip.offset..ip.offset + ip.len();
+    let a = linear_system(scene, speed, mu, &clamp);
+    let len = a.nrows();
+    let eig = a.eigen().unwrap();
+    let (s, u) = (eig.S(), eig.U());
+    let share = |j: usize| {
+        let part = |r: std::ops::Range<usize>| r.map(|i| u[(i, j)].norm()).fold(0.0, f64::max);
+        part(in_plane.clone()) / part(0..ip.offset).max(part(2 * n..len))
+    };
+    // Among the bending and pad eigenvalues (in-plane part below the rest).
+    let j = (0..len)
+        .filter(|&j| s[j].im > 0.0 && share(j) < 1.0)
+        .max_by(|&x, &y| share(x).total_cmp(&share(y)))
+        .unwrap();
+    let (lambda, v): (Complex<f64>, Vec<Complex<f64>>) = (
+        Complex::new(s[j].re, s[j].im),
+        (0..len)
+            .map(|r| Complex::new(u[(r, j)].re, u[(r, j)].im))
+            .collect(),
+    );
+    println!("λ = {lambda:.3}, in-plane share of v {:.2e}", share(j));
+    let peak = v[in_plane.clone()]
+        .iter()
+        .map(|z| z.norm())
+        .fold(0.0, f64::max);
+    let v: Vec<Complex<f64>> = v.iter().map(|z| z * (1e-9 / peak)).collect();
+    let index = base.scene().load_models.find::<Pads>().unwrap().0;
+    let mut perturbed = Simulation::new(c.clone()).unwrap();
+    let mut state = perturbed.state().clone();
+    for i in 0..n {
+        state.q[i] += v[i].re;
+        state.q_dot[i] += v[n + i].re;
+    }
+    let slot = &mut state.load_models.slots[index];
+    let faces = slot.len() / 2;
+    assert_eq!(2 * n + 2 * faces, len, "y = (q̄, q̄̇, ξ, ξ̇)");
+    for f in 0..faces {
+        slot[f] += v[2 * n + f].re;
+        slot[faces + f] += v[2 * n + faces + f].re;
+    }
+    state.rederive(perturbed.scene());
+    perturbed.restore(state);
+    let mut worst = 0.0f64;
+    for _ in 0..200 {
+        base.step().unwrap();
+        perturbed.step().unwrap();
+        let t = perturbed.time();
+        let e = (lambda * t).exp();
+        let scale = in_plane
+            .clone()
+            .map(|i| (v[i] * e).norm())
+            .fold(0.0, f64::max);
+        for i in in_plane.clone() {
+            let got = perturbed.q_ale()[i] - base.q_ale()[i];
+            worst = worst.max((got - (v[i] * e).re).abs() / scale);
+        }
+    }
+    println!("in-plane amplitudes against Re(v e^(λt)) over 2 ms: worst {worst:.2e} of the peak");
+    assert!(worst < 1e-3, "{worst:e}");
+}

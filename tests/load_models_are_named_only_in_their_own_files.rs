@@ -27,6 +27,7 @@ const FAMILIES: &[(&str, &[&str])] = &[
             "pad_contact_law.rs",
             "pad_in_plane.rs",
             "pad_linear.rs",
+            "pad_linear_in_plane.rs",
             "pad_linear_mass.rs",
             "pad_linear_shear.rs",
             "pad_mass.rs",
