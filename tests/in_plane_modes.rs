@@ -365,7 +365,7 @@ fn modes_leaves_out_the_rigid_in_plane_motions_of_a_free_annulus() {
     assert!((f - exact).abs() / exact < TOLERANCE, "{f} against {exact}");
 }
 
-/// campbell, stability, study and plot refuse a scene with in-plane modes,
+/// campbell --plot, study and plot refuse a scene with in-plane modes,
 /// and simulate and the node refuse the bench scene with them (its 25 rad/s
 /// is beyond the speed bound of the in-plane modes without their spin
 /// terms), naming the key, before any work and writing nothing.
@@ -391,17 +391,6 @@ fn the_commands_that_would_simulate_refuse_in_plane_modes() {
         (
             "campbell",
             vec!["campbell", BENCH, "--plot", campbell.to_str().unwrap()],
-        ),
-        (
-            "stability",
-            vec![
-                "stability",
-                BENCH,
-                "--mu",
-                "0.3:0.4:2",
-                "--speeds",
-                "10:20:2",
-            ],
         ),
         (
             "study",

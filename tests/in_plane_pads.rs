@@ -441,8 +441,8 @@ fn the_in_plane_brake_scene_twists_the_disc_to_the_exact_static_sum() {
 }
 
 /// `simulate --output-rate` of config/brake_in_plane.yaml: the aliasing
-/// check against the squeal frequency is not made with in-plane modes (the
-/// stability analysis does not take them), so the run writes its rows.
+/// check against the squeal frequency is not made with in-plane modes, so
+/// the run writes its rows.
 #[test]
 fn simulate_with_an_output_rate_runs_the_in_plane_brake_scene() {
     let dir = support::cli::scratch_dir("in_plane_pads_output_rate");

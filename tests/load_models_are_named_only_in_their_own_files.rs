@@ -29,6 +29,7 @@ const FAMILIES: &[(&str, &[&str])] = &[
             "pad_friction_damping.rs",
             "pad_tests.rs",
             "pad_linear.rs",
+            "pad_linear_in_plane.rs",
             "pad_linear_mass.rs",
             "pad_linear_shear.rs",
             "pad_mass.rs",

@@ -200,8 +200,8 @@ impl RowWriter {
 /// pads the least stable mode of the linear stability analysis at the scene's
 /// speed, friction coefficient and clamp forces (`dynamics::stability`) — the
 /// squeal — at the space-fixed nodes (|Im λ|/2π of the ALE system). `None`
-/// for scenes without pads, and with in-plane modes, which the stability
-/// analysis does not take (docs/in_plane.md).
+/// for scenes without pads, and with in-plane modes: their scenes are not
+/// checked yet (docs/in_plane.md, "Stability").
 pub(crate) fn relevant_frequency(sim: &Simulation) -> Option<f64> {
     if sim.scene().in_plane.is_some() {
         return None;

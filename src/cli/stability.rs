@@ -80,8 +80,11 @@ pub struct UnstableMode {
     /// Nodal diameters k of the plate mode with the largest amplitude in
     /// its eigenvector.
     pub k: u32,
-    /// Nodal circles l.
+    /// Nodal circles l (the order l of an in-plane mode).
     pub l: u32,
+    /// An in-plane mode (written only when true).
+    #[serde(default, skip_serializing_if = "std::ops::Not::not")]
+    pub in_plane: bool,
     /// Its frequency |Im λ| / 2π in the space-fixed frame, Hz.
     pub frequency_hz: f64,
 }
@@ -158,6 +161,7 @@ impl StabilityMap {
                         .map(|p| UnstableMode {
                             k: p.k,
                             l: p.l,
+                            in_plane: p.in_plane,
                             frequency_hz: p.frequency_hz,
                         })
                         .collect()
@@ -242,8 +246,6 @@ pub fn main(args: StabilityArgs) -> CliResult<()> {
     let params = super::params_with_overrides(&file, &args.overrides)?;
     let digest = params_digest(&params);
     let config = super::load_config_with(&file, &args.overrides)?;
-    crate::model::refuse_in_plane(&config.plate)
-        .map_err(|e| CliError::Usage(format!("{}: {e}", file.display())))?;
     if let Some(p) = &args.plot {
         super::plot::check_output_path(p)?;
     }

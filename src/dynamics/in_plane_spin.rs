@@ -111,6 +111,32 @@ impl InPlaneSpinBlock {
         }
     }
 
+    /// −M⁻¹ (Ω G (q̄̇ − kΩ 𝒥 q̄) + Ω² K_Ω q̄) of the ALE description
+    /// (module docs) as matrix entries of ẏ = A y, y = (q̄, q̄̇) with `n`
+    /// modes: `add(row, column, value)` per entry, the rows those of q̄̈. With
+    /// 𝒥 x = (−x_s, x_c) over [cos; sin], −ΩG(−kΩ𝒥) = kΩ² G𝒥: on the
+    /// cos column b the term kΩ² G[a, b] lands on the sin partner with a
+    /// minus sign, on the sin column with a plus sign on the cos partner —
+    /// the same sums as [`InPlaneSpinBlock::row_acceleration`] in ALE.
+    pub fn add_ale_system(&self, speed: f64, n: usize, mut add: impl FnMut(usize, usize, f64)) {
+        let len = self.len();
+        let (half, kw) = (len / 2, self.k as f64 * speed);
+        for (a, &i) in self.modes.iter().enumerate() {
+            for (b, &j) in self.modes.iter().enumerate() {
+                let g = speed * self.g_over_m[a * len + b];
+                add(n + i, n + j, -g);
+                add(n + i, j, -speed * speed * self.k_over_m[a * len + b]);
+                if self.k != 0 {
+                    if b < half {
+                        add(n + i, self.modes[b + half], -g * kw);
+                    } else {
+                        add(n + i, self.modes[b - half], g * kw);
+                    }
+                }
+            }
+        }
+    }
+
     /// (Ω G q̇ + Ω² K_Ω q)_a / m_a of row a, in `coords`.
     #[inline]
     pub fn row_acceleration(

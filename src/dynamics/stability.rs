@@ -8,7 +8,27 @@
 //!   q̄̈ = per pair: 2kΩ J q̄̇ + 2ζωkΩ J q̄ + (k²Ω² − ω_eff²) q̄ − 2ζω q̄̇
 //!        + the centrifugal stiffening + the load models' terms,
 //!
-//! each load model adding its first-order terms and its own states to y
+//! each load model adding its first-order terms and its own states to y.
+//!
+//! The in-plane modes (`plate.in_plane_nodal_diameters`; docs/in_plane.md,
+//! "Stability") follow the same way from their turning-frame equations per k
+//! (`in_plane_spin.rs`, (S1)): M q̈ + (D + ΩG) q̇ + K̃ q = f, K̃ = K + Ω²K_Ω,
+//! M, D = 2ζωM, K = ω²M diagonal, G skew. A k ≥ 1 pair's ALE amplitudes are
+//! x̄ = R(kΩt) x of the body ones, R(φ) = cos φ I + sin φ 𝒥, 𝒥 x = (−x_s,
+//! x_c) the pair's quarter turn (𝒥² = −I; M, D, K and K_Ω act alike on
+//! both partners and G = [[0, 2B], [−2B, 0]] over [cos; sin], so all commute
+//! with 𝒥). With x = R(−kΩt) x̄:
+//! ẋ = R(−kΩt)(x̄̇ − kΩ𝒥 x̄), ẍ = R(−kΩt)(x̄̈ − 2kΩ𝒥 x̄̇ − k²Ω² x̄), so
+//!
+//!   M x̄̈ = (2kΩM𝒥 − ΩG − D) x̄̇ + (k²Ω²M + kΩ²G𝒥 + kΩD𝒥 − K̃) x̄ + f̄,
+//!
+//! the terms the step uses in ALE (`InPlaneSpinBlock::row_acceleration`
+//! with Coordinates::Ale: Ω G and D act on the Lagrangian rate in ALE axes,
+//! x̄̇ − kΩ𝒥 x̄). k = 0 (G couples the radial and torsional families) has
+//! no turn: M x̄̈ = −(D + ΩG) x̄̇ − K̃ x̄. The bending pairs' terms are those
+//! of the first equation with G = K_Ω = 0; the torsional modes' coupling
+//! with the joint drops out with the speed held. Every load model adds its
+//! first-order terms and its own states to y
 //! (`LoadModel::add_linear_terms`, `load_models::linear`): the brake pads
 //! their contact springs, dampers and friction (`load_models/pad_linear.rs`),
 //! massive pads their compressions, the lining's patches one first-order
@@ -65,9 +85,16 @@ pub fn linear_system(
     if let Some(s) = &scene.stiffening {
         s.add_to_system(speed * speed, n, |r, c, v| a[(r, c)] += v);
     }
+    if let Some(ip) = &scene.in_plane {
+        for block in &ip.spin.blocks {
+            block.add_ale_system(speed, n, |r, c, v| a[(r, c)] += v);
+        }
+    }
+    let modal_mass: Vec<f64> = consts.iter().map(|c| c.mass).collect();
     let ctx = LinearContext {
         ale_nodes: &scene.ale_nodes,
-        modal_mass: &scene.model.body().modal_mass,
+        in_plane: scene.in_plane.as_ref(),
+        modal_mass: &modal_mass,
         speed,
         friction_coefficient,
         clamp_force,

@@ -18,8 +18,10 @@ pub struct GridPoint {
     /// The mode with the largest amplitude in its eigenvector (peak
     /// displacement): its nodal diameters,
     pub k: u32,
-    /// and its nodal circles.
+    /// and its nodal circles (its order l for an in-plane mode),
     pub l: u32,
+    /// whether it is an in-plane mode (`plate.in_plane_nodal_diameters`).
+    pub in_plane: bool,
     /// |Im λ| / 2π, Hz (space-fixed frame: ALE coordinates).
     pub frequency_hz: f64,
 }
@@ -43,11 +45,20 @@ fn point(scene: &Scene, speed: f64, mu: f64, clamp: &[f64]) -> GridPoint {
     let dominant = (0..n)
         .max_by(|&a, &b| mode.vector[a].norm().total_cmp(&mode.vector[b].norm()))
         .unwrap_or(0);
-    let m = &scene.model.modes()[dominant];
+    let bending = scene.model.modes();
+    let (k, l, in_plane) = match (bending.get(dominant), &scene.in_plane) {
+        (Some(m), _) => (m.k, m.l, false),
+        (None, Some(ip)) => {
+            let m = &ip.modes[dominant - ip.offset];
+            (m.k, m.l, true)
+        }
+        (None, None) => unreachable!("a dominant index among the scene's modes"),
+    };
     GridPoint {
         growth_rate: growth_rate(scene, speed, mu, clamp),
-        k: m.k,
-        l: m.l,
+        k,
+        l,
+        in_plane,
         frequency_hz: mode.eigenvalue.im.abs() / TAU,
     }
 }

@@ -23,6 +23,7 @@
 //! model says which values it starts with
 //! ([`operating_point`](super::LoadModel::operating_point)).
 
+use crate::dynamics::in_plane::InPlaneDynamics;
 use crate::dynamics::node_frame::NodeFrame;
 use faer::Mat;
 
@@ -51,7 +52,10 @@ pub struct OperatingPoint {
 pub struct LinearContext<'a> {
     /// The ALE node frames.
     pub ale_nodes: &'a [NodeFrame],
-    /// Modal masses m_i, kg, in the model's mode order.
+    /// The in-plane modes after the bending ones (their shapes under the
+    /// ALE contacts; None without `plate.in_plane_nodal_diameters`).
+    pub in_plane: Option<&'a InPlaneDynamics>,
+    /// Modal masses m_i, kg, of every mode: the bending modes, then the in-plane ones.
     pub modal_mass: &'a [f64],
     /// Joint speed Ω, rad/s (held constant).
     pub speed: f64,

@@ -38,6 +38,7 @@ pub mod pad_contact_law;
 mod pad_friction_damping;
 pub mod pad_in_plane;
 mod pad_linear;
+mod pad_linear_in_plane;
 mod pad_linear_mass;
 mod pad_linear_shear;
 pub mod pad_mass;

@@ -127,6 +127,7 @@ impl Pads {
                 mu,
             };
             self.add_contact_terms(ctx, &mut out, &c, series.as_ref());
+            self.add_in_plane_terms(ctx, &mut out, &c);
             if self.contact_surface == ContactSurface::Faces {
                 self.add_face_terms(ctx, &mut out, &c, series.as_ref());
                 if let Some(law) = &self.shear {
@@ -140,9 +141,9 @@ impl Pads {
                     }
                     ContactSurface::MidPlane => 0.0,
                 };
-                let n = out.at.modes;
+                let nb = c.node.shapes.len();
                 let net = match &series {
-                    Some(l) => NetForce::in_series(l, ci, n, self),
+                    Some(l) => NetForce::in_series(l, ci, nb, self),
                     None => NetForce::direct(self, contact, c.node),
                 };
                 self.add_pad_terms(ctx, &mut out, contact, couple, &net);
@@ -180,17 +181,18 @@ impl Pads {
         let n = out.at.modes;
         let mass = ctx.modal_mass;
         let (ci, mean, node) = (c.index, c.mean, c.node);
+        let nb = node.shapes.len();
         let f_theta = -c.mu * 2.0 * c.preload * Pads::sliding_sign(ctx.speed, c.contact.radius);
         let (s, co) = c.contact.angle.sin_cos();
         let (fx, fy) = (-s * f_theta, co * f_theta);
-        for i in 0..n {
+        for i in 0..nb {
             let wi = node.shapes[i].w;
             let di = wi - mean[i];
-            for (m, (&sm, &mean_m)) in node.shapes.iter().zip(mean).enumerate().take(n) {
+            for (m, (&sm, &mean_m)) in node.shapes.iter().zip(mean).enumerate() {
                 let dm = sm.w - mean_m;
                 let mut k = match series {
                     None => -2.0 * self.stiffness * di * dm,
-                    Some(l) => wi * l.q[ci * n + m],
+                    Some(l) => wi * l.q[ci * nb + m],
                 };
                 if self.follower_friction {
                     k += wi * self.follower_normal(node, m, sm.tilt, [fx, fy], f_theta);
@@ -198,7 +200,7 @@ impl Pads {
                 out.a[(n + i, m)] += k / mass[i];
                 let damping = match series {
                     None => 2.0 * self.damping * di * dm,
-                    Some(l) => -wi * l.q_dot[ci * n + m],
+                    Some(l) => -wi * l.q_dot[ci * nb + m],
                 };
                 out.a[(n + i, n + m)] -= damping / mass[i];
             }
@@ -242,30 +244,30 @@ impl Pads {
         series: Option<&LinearSeriesForces>,
     ) {
         let n = out.at.modes;
+        let nb = c.node.shapes.len();
         let ci = c.index;
-        let series = series.map(|l| (&l.q[ci * n..(ci + 1) * n], &l.q_dot[ci * n..(ci + 1) * n]));
+        let series = series.map(|l| {
+            (
+                &l.q[ci * nb..(ci + 1) * nb],
+                &l.q_dot[ci * nb..(ci + 1) * nb],
+            )
+        });
         let (speed, mean, preload) = (ctx.speed, c.mean, c.preload);
         let mass = ctx.modal_mass;
         let node = c.node;
         let h = c.contact.face_z[0] - c.contact.face_z[1];
         let r = c.contact.radius;
         let (s, co) = c.contact.sin_cos;
-        let v = speed * r;
-        let x = v.abs() / FRICTION_REGULARISATION_SPEED;
-        let law = self.friction_law(ctx.friction_coefficient);
-        let mu_v = law.mu(v.abs());
-        let g_over_v = Pads::friction_per_speed(mu_v, v.abs());
-        let g_slope = mu_v / (FRICTION_REGULARISATION_SPEED * x.cosh().powi(2))
-            + law.slope(v.abs()) * x.tanh();
-        let couple = h * mu_v * (v / FRICTION_REGULARISATION_SPEED).tanh();
+        let (g_over_v, g_slope) = self.face_friction_slopes(ctx, c);
+        let couple = h * c.mu * Pads::sliding_sign(speed, r);
         let lever = 0.5 * h * h * preload;
         // Per mode: ∂_r w, ∂_θ w and the turn of the gradient ∂(∇w)/∂θ in the same
         // components: ∂_r ∂_θ w − ∂_θ w / r and ∂²_θ w + r ∂_r w.
         let radial = |g: [f64; 2]| co * g[0] + s * g[1];
         let angular = |g: [f64; 2]| r * (-s * g[0] + co * g[1]);
-        for (i, &mass_i) in mass.iter().enumerate().take(n) {
+        for (i, &mass_i) in mass.iter().enumerate().take(nb) {
             let (dr_i, dt_i) = (radial(node.gradient(i)), angular(node.gradient(i)));
-            for m in 0..n {
+            for m in 0..nb {
                 let (dr_m, dt_m) = (radial(node.gradient(m)), angular(node.gradient(m)));
                 let (drt_m, dtt_m) = (radial(node.gradient_phi[m]), angular(node.gradient_phi[m]));
                 let dn = node.shapes[m].w - mean[m];

@@ -99,7 +99,7 @@ impl Pads {
         let (xt, vt) = pad_index(&out.at, 2 * contact.pad);
         let (xb, vb) = pad_index(&out.at, 2 * contact.pad + 1);
         let a = &mut *out.a;
-        for i in 0..n {
+        for i in 0..node.shapes.len() {
             let g = node.gradient(i);
             // couple ∂_θ w_i / r; f_i = w_i F + arm δN, δN = −F/2.
             let arm = couple * (-s * g[0] + co * g[1]);
@@ -119,7 +119,7 @@ impl Pads {
             for v in [vt, vb] {
                 a[(row, v)] -= half * c;
             }
-            for m in 0..n {
+            for m in 0..net.q.len() {
                 a[(row, m)] += sign * half * net.q[m];
                 a[(row, n + m)] += sign * half * net.q_dot[m];
             }
