@@ -335,3 +335,30 @@ fn massive_pads_drive_the_in_plane_modes_as_the_eigenvector_says() {
     println!("in-plane amplitudes against Re(v e^(λt)) over 2 ms: worst {worst:.2e} of the peak");
     assert!(worst < 1e-3, "{worst:e}");
 }
+
+/// The lining's patches run with the in-plane modes in the simulation, but
+/// their linearisation carries the bending modes only: the analysis
+/// refuses them by key, and takes them without in-plane modes.
+#[test]
+fn the_stability_analysis_refuses_lining_patches_with_in_plane_modes_by_key() {
+    use annular_plate::dynamics::load_models::pad_config::PadsConfig;
+    let with_patches = |in_plane| {
+        let mut c = brake(in_plane);
+        c.section_mut::<PadsConfig>().unwrap().shear = Some((1.0e6, 10.0));
+        Simulation::new(c)
+            .unwrap()
+            .scene()
+            .load_models
+            .check_linear()
+    };
+    let error = with_patches(true).unwrap_err().to_string();
+    println!("{error}");
+    assert!(error.contains("pads.shear_stiffness"), "{error}");
+    assert!(with_patches(false).is_ok());
+    assert!(Simulation::new(brake(true))
+        .unwrap()
+        .scene()
+        .load_models
+        .check_linear()
+        .is_ok());
+}

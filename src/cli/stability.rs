@@ -291,6 +291,10 @@ pub fn main(args: StabilityArgs) -> CliResult<()> {
     }
     let sim =
         Simulation::new(config).map_err(|e| CliError::Usage(format!("{}: {e}", file.display())))?;
+    sim.scene()
+        .load_models
+        .check_linear()
+        .map_err(|e| CliError::Usage(format!("{}: {e}", file.display())))?;
     let (rows, shard) = match shard {
         Some((i, n)) => {
             let range = shard_rows(speeds.len(), i - 1, n);

@@ -364,6 +364,12 @@ impl LoadModels {
             .sum()
     }
 
+    /// The first refusal of [`LoadModel::check_linear`] among the models:
+    /// what the stability analysis cannot linearise in this scene.
+    pub fn check_linear(&self) -> Result<(), SimulationError> {
+        self.models.iter().try_for_each(|m| m.check_linear())
+    }
+
     /// Continuous states of all models (RK4 integrates them with the modes).
     pub fn continuous_states(&self) -> usize {
         self.state_ranges.last().map_or(0, |r| r.end)

@@ -336,6 +336,12 @@ pub trait LoadModel: Debug + Send + Sync {
         LinearStates::default()
     }
 
+    /// Refuse, naming the key, what [`LoadModel::add_linear_terms`] does not
+    /// carry in this scene (with the in-plane modes attached). Default: all.
+    fn check_linear(&self) -> Result<(), SimulationError> {
+        Ok(())
+    }
+
     /// Its first-order terms about steady motion at constant Ω, added into
     /// `out.a` on the modes' rows and columns and on its own states'
     /// ([`super::linear`]). Default: none — not part of the linearisation.

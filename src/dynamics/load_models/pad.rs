@@ -431,6 +431,15 @@ impl LoadModel for Pads {
     fn linear_states(&self) -> LinearStates {
         self.linear_state_count()
     }
+    fn check_linear(&self) -> Result<(), crate::dynamics::error::SimulationError> {
+        match (&self.shear, &self.in_plane) {
+            (Some(_), Some(_)) => Err(crate::dynamics::error::SimulationError::InPlaneKeyNotWired {
+                key: "pads.shear_stiffness",
+                why: "the stability analysis linearises the lining's patches on the bending modes only",
+            }),
+            _ => Ok(()),
+        }
+    }
     fn add_linear_terms(&self, ctx: &LinearContext, out: LinearOut) {
         self.add_linear(ctx, out);
     }
