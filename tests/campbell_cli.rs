@@ -257,3 +257,62 @@ fn the_picture_marks_each_critical_speed_on_its_speed_line() {
     ]);
     assert!(!ok && err.contains("/nonexistent/dir"), "{err}");
 }
+
+/// With in-plane modes (config/brake_in_plane.yaml: k = 0, 1, 2) the
+/// picture adds their waves and rings each in-plane critical speed in range
+/// (the backward ⟨2, 0⟩ wave standing still in space near 48.8 krad/s) on its
+/// speed line kΩ/2π; the CLI and the library draw the same picture.
+#[test]
+fn the_picture_rings_each_in_plane_critical_speed_on_its_speed_line() {
+    let file = Path::new(env!("CARGO_MANIFEST_DIR")).join("config/brake_in_plane.yaml");
+    let out = dir().join("campbell_in_plane.png");
+    let (ok, _, err) = run(&[
+        "campbell",
+        file.to_str().unwrap(),
+        "--speeds",
+        "0:60000:31",
+        "--plot",
+        out.to_str().unwrap(),
+    ]);
+    assert!(ok, "{err}");
+    let config = Config::from_params_file(&file, "annular_plate").unwrap();
+    let model = PlateModel::bending(&config.plate).unwrap();
+    let speeds: Vec<f64> = (0..=30).map(|i| 2000.0 * i as f64).collect();
+    let diagram = campbell(&model, &config.centrifugal, &speeds).unwrap();
+    assert_eq!(diagram.in_plane.len(), 4, "k = 0 (two orders), 1, 2");
+    let again = dir().join("campbell_in_plane_again.png");
+    let size = Size {
+        width: 1200,
+        height: 800,
+    };
+    let geometry = plot::campbell(&diagram, config.centrifugal.stiffening, &again, size).unwrap();
+    assert_eq!(
+        std::fs::read(&out).unwrap(),
+        std::fs::read(&again).unwrap(),
+        "CLI and library draw the same picture"
+    );
+    assert_eq!(
+        geometry.in_plane_markers.len(),
+        diagram.in_plane_critical_speeds.len()
+    );
+    assert!(!geometry.in_plane_markers.is_empty());
+    let img = image::open(&out).unwrap().to_rgb8();
+    let dark = |x: i32, y: i32| img.get_pixel(x as u32, y as u32).0.iter().all(|&c| c < 60);
+    for &(k, order, x, y) in &geometry.in_plane_markers {
+        let c = diagram
+            .in_plane_critical_speeds
+            .iter()
+            .find(|c| c.k == k && c.order == order)
+            .unwrap();
+        println!(
+            "in-plane ⟨{k}, {order}⟩ critical at {:.1} rad/s, ring at ({x}, {y})",
+            c.rad_s
+        );
+        // The ring: dark on its circle, in all four directions.
+        let r = plot::CRITICAL_MARKER_RADIUS;
+        let on_ring = [(r, 0), (-r, 0), (0, r), (0, -r)].iter().all(|&(dx, dy)| {
+            (-1..=1).any(|d| dark(x + dx + d * dx.signum(), y + dy + d * dy.signum()))
+        });
+        assert!(on_ring, "no ring for in-plane ⟨{k},{order}⟩ at ({x}, {y})");
+    }
+}

@@ -97,8 +97,6 @@ pub(crate) fn linspace(from: f64, to: f64, n: usize) -> Vec<f64> {
 pub fn main(args: CampbellArgs) -> CliResult<()> {
     let config = super::load_config_with(&args.file, &args.overrides)?;
     if let Some(p) = &args.plot {
-        // The picture draws the bending modes only.
-        crate::model::refuse_in_plane(&config.plate)?;
         super::plot::check_output_path(p)?;
     }
     // The in-plane waves come from the plate's in-plane keys (`campbell`).

@@ -3,7 +3,12 @@
 //! frequencies f ± kΩ/2π (thin; the backward one as |f − kΩ/2π|, so it
 //! touches zero at the critical speed), the speed lines kΩ/2π (grey, dashed)
 //! and the critical speeds marked where the rotating frequency meets its
-//! speed line (black dots, labelled).
+//! speed line (black dots, labelled). With in-plane modes
+//! (`plate.in_plane_nodal_diameters`) each in-plane wave ⟨k, order⟩ adds its
+//! turning-frame forward and backward frequencies (dashed, medium) and the
+//! space-fixed ones (dashed, thin; the backward one as |ω − kΩ|/2π), and each
+//! in-plane critical speed, where the backward wave meets its speed line,
+//! a hollow black ring.
 
 use super::render::*;
 use super::Size;
@@ -20,6 +25,8 @@ use std::path::Path;
 pub struct CampbellGeometry {
     /// One per critical speed: (k, l, pixel x, pixel y).
     pub markers: Vec<(u32, u32, i32, i32)>,
+    /// One per in-plane critical speed: (k, order, pixel x, pixel y).
+    pub in_plane_markers: Vec<(u32, u32, i32, i32)>,
 }
 
 /// Draw `diagram` to `out` (.png or .svg).
@@ -45,7 +52,7 @@ struct CampbellPicture<'a> {
 }
 
 /// Marker radius, px.
-pub(crate) const CRITICAL_MARKER_RADIUS: i32 = 6;
+pub const CRITICAL_MARKER_RADIUS: i32 = 6;
 
 impl Painter for CampbellPicture<'_> {
     type Out = CampbellGeometry;
@@ -56,10 +63,13 @@ impl Painter for CampbellPicture<'_> {
     ) -> CliResult<CampbellGeometry> {
         let d = self.diagram;
         let (top, rest) = root.split_vertically(44);
-        let title = format!(
+        let mut title = format!(
             "Campbell diagram — centrifugal stiffening {}; thick: rotating frame, thin: forward/backward, dashed: kΩ/2π, dots: critical speeds",
             if self.stiffening { "on" } else { "off" }
         );
+        if !d.in_plane.is_empty() {
+            title.push_str("; in-plane waves long-dashed, rings: their critical speeds");
+        }
         draw_title(&top, &title, 20.0)?;
         let s = &d.speeds_rad_s;
         let (x0, x1) = (
@@ -71,6 +81,13 @@ impl Painter for CampbellPicture<'_> {
         } else {
             (x0 - 1.0, x0 + 1.0)
         };
+        let in_plane = d.in_plane.iter().flat_map(|w| {
+            w.rotating_forward_hz
+                .iter()
+                .chain(&w.rotating_backward_hz)
+                .chain(&w.forward_hz)
+                .chain(&w.backward_hz)
+        });
         let y_max = d
             .modes
             .iter()
@@ -78,9 +95,10 @@ impl Painter for CampbellPicture<'_> {
                 m.rotating_hz
                     .iter()
                     .chain(&m.forward_hz)
-                    .map(|v| v.abs())
-                    .chain(m.backward_hz.iter().map(|v| v.abs()))
+                    .chain(&m.backward_hz)
             })
+            .chain(in_plane)
+            .map(|v| v.abs())
             .fold(0.0, f64::max)
             .max(1e-9)
             * 1.05;
@@ -102,7 +120,14 @@ impl Painter for CampbellPicture<'_> {
             .bold_line_style(RGBColor(220, 220, 220))
             .draw()
             .map_err(de)?;
-        let mut ks: Vec<u32> = d.modes.iter().map(|m| m.k).filter(|&k| k > 0).collect();
+        let in_plane_ks = d.in_plane.iter().map(|w| w.k);
+        let mut ks: Vec<u32> = d
+            .modes
+            .iter()
+            .map(|m| m.k)
+            .chain(in_plane_ks)
+            .filter(|&k| k > 0)
+            .collect();
         ks.sort_unstable();
         ks.dedup();
         for &k in &ks {
@@ -149,6 +174,38 @@ impl Painter for CampbellPicture<'_> {
                     .map_err(de)?;
             }
         }
+        for (i, w) in d.in_plane.iter().enumerate() {
+            let color = PALETTE[(d.modes.len() + i) % PALETTE.len()];
+            let curves = [
+                (&w.rotating_forward_hz, 2),
+                (&w.rotating_backward_hz, 2),
+                (&w.forward_hz, 1),
+                (&w.backward_hz, 1),
+            ];
+            for (j, (v, width)) in curves.into_iter().enumerate() {
+                let pts: Vec<(f64, f64)> = s.iter().zip(v).map(|(&x, &y)| (x, y.abs())).collect();
+                let series = chart
+                    .draw_series(std::iter::once(DashedPathElement::new(
+                        pts,
+                        10,
+                        4,
+                        color.stroke_width(width),
+                    )))
+                    .map_err(de)?;
+                if j == 0 {
+                    series
+                        .label(format!("in-plane ⟨{}, {}⟩", w.k, w.order))
+                        .legend(move |(x, y)| {
+                            DashedPathElement::new(
+                                vec![(x, y), (x + 20, y)],
+                                6,
+                                3,
+                                color.stroke_width(2),
+                            )
+                        });
+                }
+            }
+        }
         let mut markers = Vec::new();
         for c in d
             .critical_speeds
@@ -172,6 +229,29 @@ impl Painter for CampbellPicture<'_> {
             .map_err(de)?;
             markers.push((c.k, c.l, px, py));
         }
+        let mut in_plane_markers = Vec::new();
+        for c in d
+            .in_plane_critical_speeds
+            .iter()
+            .filter(|c| c.rad_s >= x0 && c.rad_s <= x1)
+        {
+            let p = (c.rad_s, c.k as f64 * c.rad_s / TAU);
+            chart
+                .draw_series(std::iter::once(Circle::new(
+                    p,
+                    CRITICAL_MARKER_RADIUS,
+                    BLACK.stroke_width(3),
+                )))
+                .map_err(de)?;
+            let (px, py) = chart.backend_coord(&p);
+            root.draw(&Text::new(
+                format!("{:.0} rad/s", c.rad_s),
+                (px + 8, py + 4),
+                (FONT, 13).into_font(),
+            ))
+            .map_err(de)?;
+            in_plane_markers.push((c.k, c.order, px, py));
+        }
         chart
             .configure_series_labels()
             .position(SeriesLabelPosition::UpperLeft)
@@ -180,6 +260,9 @@ impl Painter for CampbellPicture<'_> {
             .label_font((FONT, 13))
             .draw()
             .map_err(de)?;
-        Ok(CampbellGeometry { markers })
+        Ok(CampbellGeometry {
+            markers,
+            in_plane_markers,
+        })
     }
 }
