@@ -200,12 +200,10 @@ impl RowWriter {
 /// pads the least stable mode of the linear stability analysis at the scene's
 /// speed, friction coefficient and clamp forces (`dynamics::stability`) — the
 /// squeal — at the space-fixed nodes (|Im λ|/2π of the ALE system). `None`
-/// for scenes without pads, and with in-plane modes: their scenes are not
-/// checked yet (docs/in_plane.md, "Stability").
+/// for scenes without pads, and where the analysis refuses the scene (the
+/// lining's patches with in-plane modes, `LoadModel::check_linear`).
 pub(crate) fn relevant_frequency(sim: &Simulation) -> Option<f64> {
-    if sim.scene().in_plane.is_some() {
-        return None;
-    }
+    sim.scene().load_models.check_linear().ok()?;
     stability::squeal_frequency(sim)
 }
 
