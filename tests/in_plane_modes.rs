@@ -365,7 +365,7 @@ fn modes_leaves_out_the_rigid_in_plane_motions_of_a_free_annulus() {
     assert!((f - exact).abs() / exact < TOLERANCE, "{f} against {exact}");
 }
 
-/// study and plot refuse a scene with in-plane modes,
+/// study refuses a scene with in-plane modes,
 /// and simulate and the node refuse the bench scene with them (its 25 rad/s
 /// is beyond the speed bound of the in-plane modes without their spin
 /// terms), naming the key, before any work and writing nothing.
@@ -374,7 +374,6 @@ fn the_commands_that_would_simulate_refuse_in_plane_modes() {
     let dir = support::cli::scratch_dir("in_plane_refusals");
     let csv = dir.join("out.csv");
     let study = dir.join("study.png");
-    let png = dir.join("modes.png");
     let commands: Vec<(&str, Vec<&str>)> = vec![
         (
             "simulate",
@@ -398,10 +397,6 @@ fn the_commands_that_would_simulate_refuse_in_plane_modes() {
                 study.to_str().unwrap(),
             ],
         ),
-        (
-            "plot",
-            vec!["plot", "modes", BENCH, "--out", png.to_str().unwrap()],
-        ),
     ];
     for (name, mut args) in commands {
         args.extend(["-p", "plate.in_plane_nodal_diameters:=[0]"]);
@@ -420,7 +415,7 @@ fn the_commands_that_would_simulate_refuse_in_plane_modes() {
             // spin terms are not built there.
             "spin terms are not built"
         } else {
-            "do not carry in-plane modes yet"
+            "does not carry in-plane modes yet"
         };
         assert!(stderr.contains(why), "{name}: {stderr}");
         assert!(!stderr.contains("panicked"), "{name}: {stderr}");
@@ -431,7 +426,7 @@ fn the_commands_that_would_simulate_refuse_in_plane_modes() {
             stderr.lines().last().unwrap_or("")
         );
     }
-    for f in [&csv, &study, &png] {
+    for f in [&csv, &study] {
         assert!(!f.exists(), "{} was written", f.display());
     }
     let _ = std::fs::remove_dir_all(&dir);
@@ -565,4 +560,43 @@ fn the_prestress_holds_a_fixed_rim() {
             assert!(residual.abs() < 1e-6 * c.plate.density * ra, "{residual:e}");
         }
     }
+}
+
+/// `plot modes` and `plot mode` draw the bending modes of a scene with
+/// in-plane modes, the same bytes as without them (the in-plane shapes are
+/// listed by `modes`); `--index` counts the bending modes.
+#[test]
+fn plot_draws_the_bending_modes_of_a_scene_with_in_plane_modes() {
+    let dir = support::cli::scratch_dir("in_plane_plot_modes");
+    let scene = concat!(env!("CARGO_MANIFEST_DIR"), "/config/brake_in_plane.yaml");
+    let draw = |args: &[&str], name: &str, extra: &[&str]| {
+        let out = dir.join(name);
+        let mut all: Vec<&str> = args.to_vec();
+        all.extend([scene, "--out", out.to_str().unwrap()]);
+        all.extend(extra);
+        let (ok, _, err) = run(&all);
+        assert!(ok, "{err}");
+        std::fs::read(&out).unwrap()
+    };
+    let none = ["-p", "plate.in_plane_nodal_diameters:=[]"];
+    for (args, name) in [
+        (&["plot", "modes"][..], "grid"),
+        (&["plot", "mode", "--index", "9"][..], "mode9"),
+    ] {
+        let with = draw(args, &format!("{name}_in_plane.png"), &[]);
+        let without = draw(args, &format!("{name}_bending.png"), &none);
+        assert_eq!(with, without, "{name}");
+    }
+    let out = dir.join("mode10.png");
+    let (ok, _, err) = run(&[
+        "plot",
+        "mode",
+        "--index",
+        "10",
+        scene,
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert!(!ok && err.contains("bending modes 1..9"), "{err}");
+    let _ = std::fs::remove_dir_all(&dir);
 }

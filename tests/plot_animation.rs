@@ -282,3 +282,75 @@ fn frame_count_is_duration_times_fps_and_mp4_without_ffmpeg_names_the_remedy() {
         "{text}"
     );
 }
+
+/// With in-plane modes (`plate.in_plane_nodal_diameters`) the CSV carries
+/// their amplitudes after the bending ones. The pitch links push along the
+/// axis only, so the bending amplitudes of the swash plate are the same
+/// with and without in-plane modes (tests/in_plane_load_models.rs): the
+/// frames are the same pixels below the caption, whose second line names
+/// the in-plane columns it does not draw. A CSV and a params file that disagree on the
+/// in-plane modes are refused, naming the columns.
+#[test]
+fn frames_with_in_plane_modes_draw_the_bending_and_name_the_in_plane_columns() {
+    let in_plane = ["-p", "plate.in_plane_nodal_diameters:=[0, 1]"];
+    let csv_with = simulated_csv(&in_plane);
+    let csv_without = simulated_csv(&[]);
+    let mut config_with = Config::from_params_file(&scene(), "/annular_plate").unwrap();
+    config_with.plate.in_plane_nodal_diameters = vec![0, 1];
+    let config_without = Config::from_params_file(&scene(), "/annular_plate").unwrap();
+    let anim = Animation {
+        fps: 10,
+        max_frames: 10_000,
+        slowdown: 1.0,
+        scale: None,
+        size: Size {
+            width: 400,
+            height: 240,
+        },
+    };
+    let draw = |csv: &Path, config: &Config, name: &str| {
+        let out = dir().join(name);
+        let data = CsvData::read(csv).unwrap();
+        animate(&data, config, &anim, &out, |_, _| {}).map(|info| (info, frames(&out)))
+    };
+    let (info_with, with) = draw(&csv_with, &config_with, "animate_in_plane.gif").unwrap();
+    let (info_without, without) =
+        draw(&csv_without, &config_without, "animate_bending.gif").unwrap();
+    assert_eq!(
+        (info_with.rows, info_with.w_ref, info_with.scale),
+        (info_without.rows, info_without.w_ref, info_without.scale),
+        "the same rows, colour reference and magnification"
+    );
+    assert_eq!(with.len(), without.len());
+    let caption_band = 46;
+    let mut differing_caption_pixels = 0;
+    // The GIF's palette is quantised per frame, so equal pictures may
+    // differ where the caption changed the palette: a few pixels, by a few
+    // levels on average.
+    let (mut sum_below, mut count_below) = (0u64, 0u64);
+    for (a, b) in with.iter().zip(&without) {
+        for (x, y, p) in a.enumerate_pixels() {
+            if y < caption_band {
+                differing_caption_pixels += usize::from(p != b.get_pixel(x, y));
+            } else {
+                let q = b.get_pixel(x, y);
+                sum_below += (0..3).map(|c| u64::from(p[c].abs_diff(q[c]))).sum::<u64>();
+                count_below += 3;
+            }
+        }
+    }
+    let mean_below = sum_below as f64 / count_below as f64;
+    println!("below the caption: mean channel difference {mean_below:.3} of 255");
+    assert!(mean_below < 0.5, "{mean_below}");
+    assert!(
+        differing_caption_pixels > 0,
+        "the caption names the in-plane columns"
+    );
+    for (csv, config) in [(&csv_with, &config_without), (&csv_without, &config_with)] {
+        let err = draw(csv, config, "animate_mismatch.gif")
+            .unwrap_err()
+            .to_string();
+        println!("{err}");
+        assert!(err.contains("is it the scene of this run?"), "{err}");
+    }
+}

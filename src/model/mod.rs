@@ -49,7 +49,7 @@ pub use spinning::{ModalGeometricStiffness, SpinningSpectrum};
 use crate::config::{PlateConfig, PlateTheory};
 
 /// Refuse a non-empty `plate.in_plane_nodal_diameters` for the analyses
-/// that do not carry in-plane modes (study, plot).
+/// that do not carry in-plane modes (study).
 pub fn refuse_in_plane(plate: &PlateConfig) -> Result<(), ModelError> {
     if plate.in_plane_nodal_diameters.is_empty() {
         return Ok(());

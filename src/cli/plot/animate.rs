@@ -118,7 +118,21 @@ impl Grid {
 }
 
 /// The Lagrangian amplitudes of the rows `rows`: columns q1…qN.
-fn amplitudes(data: &CsvData, n: usize, rows: &[usize]) -> CliResult<Vec<Vec<f64>>> {
+/// The bending amplitudes q1..qn of `rows`; the CSV's modal columns end at
+/// q(n + in_plane) (the in-plane modes follow the bending ones).
+fn amplitudes(
+    data: &CsvData,
+    n: usize,
+    in_plane: usize,
+    rows: &[usize],
+) -> CliResult<Vec<Vec<f64>>> {
+    let total = n + in_plane;
+    if in_plane > 0 && !data.header.iter().any(|h| h == &format!("q{total}")) {
+        return Err(CliError::Usage(format!(
+            "{} has no column q{total}: the params file has {n} bending and {in_plane} in-plane modes (is it the scene of this run?)",
+            data.path.display()
+        )));
+    }
     let cols: Vec<&[f64]> = (1..=n)
         .map(|i| data.column(&format!("q{i}")))
         .collect::<CliResult<_>>()
@@ -127,8 +141,8 @@ fn amplitudes(data: &CsvData, n: usize, rows: &[usize]) -> CliResult<Vec<Vec<f64
                 "{e} (the params file has {n} modes: is it the scene of this run?)"
             ))
         })?;
-    if data.header.iter().any(|h| h == &format!("q{}", n + 1)) {
-        return Err(CliError::Usage(format!("{} has more modal columns than the {n} modes of the params file: is it the scene of this run?", data.path.display())));
+    if data.header.iter().any(|h| h == &format!("q{}", total + 1)) {
+        return Err(CliError::Usage(format!("{} has more modal columns than the {total} modes of the params file: is it the scene of this run?", data.path.display())));
     }
     Ok(rows
         .iter()
@@ -179,14 +193,21 @@ pub fn animate(
     out: &Path,
     mut progress: impl FnMut(usize, usize),
 ) -> CliResult<AnimationInfo> {
-    let model = PlateModel::new(&config.plate)
-        .map_err(|e| CliError::Usage(format!("the params file's plate: {e}")))?;
+    // The bending modes are drawn; the in-plane ones (µm in the plane)
+    // are named in the caption, their columns read past.
+    let (model, in_plane) = if config.plate.in_plane_nodal_diameters.is_empty() {
+        PlateModel::bending(&config.plate).map(|m| (m, 0))
+    } else {
+        PlateModel::bending_and_in_plane(&config.plate, &config.centrifugal)
+            .map(|(m, table)| (m, table.entries.len()))
+    }
+    .map_err(|e| CliError::Usage(format!("the params file's plate: {e}")))?;
     let times = data.column("time")?;
     let chi = data.column("joint_position")?;
     // The work is the frames' (bounded by --max-frames), not the rows'.
     let rows = frame_rows(times, anim.fps, anim.slowdown, anim.max_frames)?;
     progress(0, rows.len());
-    let q = amplitudes(data, model.n_modes(), &rows)?;
+    let q = amplitudes(data, model.n_modes(), in_plane, &rows)?;
     let grid = Grid::new(&model);
     let mut w = vec![0.0; grid.radii.len() * SECTORS];
     let mut w_ref: f64 = 0.0;
@@ -208,6 +229,7 @@ pub fn animate(
         model: &model,
         grid: &grid,
         config,
+        in_plane,
         w_ref,
         scale,
         px_per_m,
@@ -238,6 +260,8 @@ struct View<'a> {
     model: &'a PlateModel,
     grid: &'a Grid,
     config: &'a Config,
+    /// In-plane modes in the run (not drawn; named in the caption).
+    in_plane: usize,
     w_ref: f64,
     scale: f64,
     px_per_m: f64,
@@ -269,6 +293,17 @@ impl View<'_> {
             }
             root.draw(&Text::new(caption, (10, 6), style))
                 .map_err(super::render::de)?;
+            if self.in_plane > 0 {
+                let n = self.model.n_modes();
+                let note = format!(
+                    "bending drawn; in-plane modes q{}–q{} not drawn",
+                    n + 1,
+                    n + self.in_plane
+                );
+                let small = (FONT, 14).into_font().color(&BLACK);
+                root.draw(&Text::new(note, (10, 28), small))
+                    .map_err(super::render::de)?;
+            }
             root.present().map_err(super::render::de)?;
         }
         Ok(buf)

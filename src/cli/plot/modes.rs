@@ -196,7 +196,8 @@ pub(super) fn model_for(config: &Config, ks: &[u32], ls: &[u32]) -> CliResult<Pl
             "nodal diameters must be ≤ 200 and nodal circles ≤ 50".to_string(),
         ));
     }
-    PlateModel::new(&plate).map_err(|e| CliError::Usage(format!("{e}")))
+    // The bending modes' shapes; the in-plane ones are listed by `modes`.
+    PlateModel::bending(&plate).map_err(|e| CliError::Usage(format!("{e}")))
 }
 
 pub(super) struct ModeGrid<'a> {
@@ -360,10 +361,10 @@ pub fn mode_picture(
     let (model, mode) = match which {
         ModeChoice::Index(i) => {
             let model =
-                PlateModel::new(&config.plate).map_err(|e| CliError::Usage(format!("{e}")))?;
+                PlateModel::bending(&config.plate).map_err(|e| CliError::Usage(format!("{e}")))?;
             if i == 0 || i > model.n_modes() {
                 return Err(CliError::Usage(format!(
-                    "--index {i}: the model has modes 1..{} (see `annular_plate modes`)",
+                    "--index {i}: the model has bending modes 1..{} (see `annular_plate modes`)",
                     model.n_modes()
                 )));
             }
