@@ -34,15 +34,7 @@ fn disc(k: &[u32]) -> (PlateConfig, CentrifugalConfig) {
 
 /// The collocation's (forward, backward) `count` lowest waves, rad/s, turning frame.
 fn reference(plate: &PlateConfig, k: u32, spin: f64, count: usize) -> (Vec<f64>, Vec<f64>) {
-    let a = SpinningAnnulus {
-        youngs_modulus: plate.youngs_modulus,
-        poisson_ratio: plate.poisson_ratio,
-        density: plate.density,
-        inner_radius: plate.inner_radius,
-        outer_radius: plate.outer_radius,
-        inner_fixed: true,
-        outer_fixed: false,
-    };
+    let a = SpinningAnnulus::of(plate, true);
     let z = roots(&a, &Lame::new(plate, true), k, spin, 48);
     let mut r: Vec<f64> = z
         .into_iter()

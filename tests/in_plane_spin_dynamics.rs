@@ -94,15 +94,7 @@ fn stepped_frequencies(c: &Config, k: u32) -> Vec<f64> {
 /// from the collocation (at k = 0 the two lowest: the roots pair as ±ω).
 fn reference(c: &Config, k: u32, speed: f64) -> [f64; 2] {
     let p = &c.plate;
-    let a = SpinningAnnulus {
-        youngs_modulus: p.youngs_modulus,
-        poisson_ratio: p.poisson_ratio,
-        density: p.density,
-        inner_radius: p.inner_radius,
-        outer_radius: p.outer_radius,
-        inner_fixed: true,
-        outer_fixed: false,
-    };
+    let a = SpinningAnnulus::of(p, true);
     let mut r: Vec<f64> = roots(&a, &Lame::new(p, true), k, speed, 48)
         .into_iter()
         .filter(|&(re, im)| im.abs() < 1e-6 * re.abs().max(1.0))

@@ -257,15 +257,7 @@ fn reference_waves(
     spin: f64,
     n: usize,
 ) -> (Vec<f64>, Vec<f64>) {
-    let a = SpinningAnnulus {
-        youngs_modulus: plate.youngs_modulus,
-        poisson_ratio: plate.poisson_ratio,
-        density: plate.density,
-        inner_radius: plate.inner_radius,
-        outer_radius: plate.outer_radius,
-        inner_fixed,
-        outer_fixed: false,
-    };
+    let a = SpinningAnnulus::of(plate, inner_fixed);
     let mut z = roots(&a, &Lame::new(plate, inner_fixed), k, spin, n);
     if !inner_fixed && k <= 1 {
         // The double rigid root, possibly split into a complex pair by round-off.

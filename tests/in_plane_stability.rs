@@ -43,15 +43,7 @@ fn disc() -> Config {
 /// (ω > 0) and the lowest forward one (ω < 0).
 fn space_fixed_waves(c: &Config, k: u32, speed: f64) -> Vec<f64> {
     let p = &c.plate;
-    let a = SpinningAnnulus {
-        youngs_modulus: p.youngs_modulus,
-        poisson_ratio: p.poisson_ratio,
-        density: p.density,
-        inner_radius: p.inner_radius,
-        outer_radius: p.outer_radius,
-        inner_fixed: true,
-        outer_fixed: false,
-    };
+    let a = SpinningAnnulus::of(p, true);
     let mut real: Vec<f64> = roots(&a, &Lame::new(p, true), k, speed, 48)
         .into_iter()
         .filter(|&(re, im)| im.abs() < 1e-6 * re.abs().max(1.0))

@@ -38,6 +38,22 @@ pub struct SpinningAnnulus {
     pub outer_fixed: bool,
 }
 
+impl SpinningAnnulus {
+    /// The annulus and material of `plate` with the rim free and the hub
+    /// fixed (`inner_fixed`) or free.
+    pub fn of(plate: &annular_plate::config::PlateConfig, inner_fixed: bool) -> SpinningAnnulus {
+        SpinningAnnulus {
+            youngs_modulus: plate.youngs_modulus,
+            poisson_ratio: plate.poisson_ratio,
+            density: plate.density,
+            inner_radius: plate.inner_radius,
+            outer_radius: plate.outer_radius,
+            inner_fixed,
+            outer_fixed: false,
+        }
+    }
+}
+
 /// Chebyshev points x_j = cos(jπ/N) and the differentiation matrix (Trefethen, cheb.m).
 fn cheb(n: usize) -> (Vec<f64>, Mat<f64>) {
     let x: Vec<f64> = (0..=n)

@@ -206,50 +206,38 @@ impl Painter for CampbellPicture<'_> {
                 }
             }
         }
-        let mut markers = Vec::new();
-        for c in d
-            .critical_speeds
-            .iter()
-            .filter(|c| c.rad_s >= x0 && c.rad_s <= x1)
-        {
-            let p = (c.rad_s, c.k as f64 * c.rad_s / TAU);
+        // A marker on the speed line kΩ/2π at the critical speed, labelled.
+        let mut mark = |k: u32, rad_s: f64, style: ShapeStyle| -> CliResult<(i32, i32)> {
+            let p = (rad_s, k as f64 * rad_s / TAU);
             chart
                 .draw_series(std::iter::once(Circle::new(
                     p,
                     CRITICAL_MARKER_RADIUS,
-                    BLACK.filled(),
+                    style,
                 )))
                 .map_err(de)?;
             let (px, py) = chart.backend_coord(&p);
             root.draw(&Text::new(
-                format!("{:.0} rad/s", c.rad_s),
+                format!("{rad_s:.0} rad/s"),
                 (px + 8, py + 4),
                 (FONT, 13).into_font(),
             ))
             .map_err(de)?;
+            Ok((px, py))
+        };
+        let in_range = |rad_s: f64| rad_s >= x0 && rad_s <= x1;
+        let mut markers = Vec::new();
+        for c in d.critical_speeds.iter().filter(|c| in_range(c.rad_s)) {
+            let (px, py) = mark(c.k, c.rad_s, BLACK.filled())?;
             markers.push((c.k, c.l, px, py));
         }
         let mut in_plane_markers = Vec::new();
         for c in d
             .in_plane_critical_speeds
             .iter()
-            .filter(|c| c.rad_s >= x0 && c.rad_s <= x1)
+            .filter(|c| in_range(c.rad_s))
         {
-            let p = (c.rad_s, c.k as f64 * c.rad_s / TAU);
-            chart
-                .draw_series(std::iter::once(Circle::new(
-                    p,
-                    CRITICAL_MARKER_RADIUS,
-                    BLACK.stroke_width(3),
-                )))
-                .map_err(de)?;
-            let (px, py) = chart.backend_coord(&p);
-            root.draw(&Text::new(
-                format!("{:.0} rad/s", c.rad_s),
-                (px + 8, py + 4),
-                (FONT, 13).into_font(),
-            ))
-            .map_err(de)?;
+            let (px, py) = mark(c.k, c.rad_s, BLACK.stroke_width(3))?;
             in_plane_markers.push((c.k, c.order, px, py));
         }
         chart
