@@ -72,7 +72,7 @@ pub enum ModelError {
     #[error("plate.in_plane_nodal_diameters: {0} (plate.radial_splines is the count per field, plate.in_plane_orders the orders)")]
     InPlane(super::in_plane::InPlaneError),
     /// In-plane modes selected for an analysis that does not carry them.
-    #[error("plate.in_plane_nodal_diameters = {nodal_diameters:?} selects in-plane modes, which `modes`, `simulate`, `run`, `campbell` (and its picture), `stability` and `plot` (the bending) carry: study does not carry in-plane modes yet (docs/in_plane.md). Set plate.in_plane_nodal_diameters: [] here")]
+    #[error("plate.in_plane_nodal_diameters = {nodal_diameters:?} selects in-plane modes, which this model of the bending modes alone does not carry (the commands build the in-plane modes beside it: docs/in_plane.md). Set plate.in_plane_nodal_diameters: [] here")]
     InPlaneNotWired {
         /// The requested in-plane k.
         nodal_diameters: Vec<u32>,

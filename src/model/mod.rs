@@ -48,8 +48,8 @@ pub use spinning::{ModalGeometricStiffness, SpinningSpectrum};
 
 use crate::config::{PlateConfig, PlateTheory};
 
-/// Refuse a non-empty `plate.in_plane_nodal_diameters` for the analyses
-/// that do not carry in-plane modes (study).
+/// Refuse a non-empty `plate.in_plane_nodal_diameters` where a model of
+/// the bending modes alone is asked for ([`PlateModel::new`]).
 pub fn refuse_in_plane(plate: &PlateConfig) -> Result<(), ModelError> {
     if plate.in_plane_nodal_diameters.is_empty() {
         return Ok(());

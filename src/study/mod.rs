@@ -30,6 +30,7 @@
 //! timings vary. Pure library code: no ROS, no output formatting.
 
 pub(crate) mod frequency;
+pub mod in_plane_frequency;
 pub mod response;
 pub mod theory;
 pub(crate) mod timing;
@@ -43,6 +44,7 @@ use std::time::{Duration, Instant};
 use thiserror::Error;
 
 pub use frequency::FrequencyAxis;
+pub use in_plane_frequency::InPlaneFrequencyAxis;
 pub use response::ResponseAxis;
 pub use theory::TheoryComparison;
 pub use trajectory::TrajectoryAxis;
@@ -55,6 +57,9 @@ pub(crate) const MAX_RADIAL_SPLINES: usize = 400;
 
 /// Why axis 2 is skipped under Mindlin theory (in the report's `notes`).
 pub const MINDLIN_MODE_COUNT_NOTE: &str = "mode_count (axis 2) is skipped under plate.theory mindlin: a point force's Mindlin deflection is infinite at the force (shear deflection −F ln r / (2π κGh)), so the steady deflection at the load point does not converge with the mode set";
+
+/// What the axes measure with in-plane modes (in the report's `notes`).
+pub const IN_PLANE_NOTE: &str = "with plate.in_plane_nodal_diameters: radial_splines, mode_count and theory measure the bending modes; in_plane_radial_splines the in-plane modes' frequencies; integrator compares every modal amplitude, bending and in-plane (its rows' in_plane_relative_error the in-plane ones alone)";
 
 /// Why a study could not run.
 #[derive(Debug, Error)]
@@ -189,7 +194,12 @@ impl StudyPlan {
             PlateTheory::Mindlin => 0,
         };
         let c = 3 + trajectory::integrators(config, self).len() * self.rates_hz.len();
-        a + b + c + 1
+        let d = if config.plate.in_plane_nodal_diameters.is_empty() {
+            0
+        } else {
+            2 + frequency::spline_grid(&config.plate, self).len()
+        };
+        a + b + c + d + 1
     }
 }
 
@@ -323,6 +333,10 @@ pub struct StudyReport {
     pub plan: StudyPlan,
     /// Axis 1: natural-frequency error against radial splines.
     pub radial_splines: FrequencyAxis,
+    /// With `plate.in_plane_nodal_diameters`: the in-plane modes'
+    /// frequency error against radial splines (absent without them).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub in_plane_radial_splines: Option<InPlaneFrequencyAxis>,
     /// Axis 2: steady deflection error against the mode set (None under
     /// Mindlin theory: the deflection at a point force does not converge; `notes`).
     pub mode_count: Option<ResponseAxis>,
@@ -370,12 +384,11 @@ pub fn run(
             detail: format!("targets must be positive, got {:?}", plan.targets),
         });
     }
-    if !config.plate.in_plane_nodal_diameters.is_empty() {
-        return Err(ModelError::InPlaneNotWired {
-            nodal_diameters: config.plate.in_plane_nodal_diameters.clone(),
-        }
-        .into());
-    }
+    // Axes 1 and 2 and the theory comparison are of the bending modes; the
+    // in-plane ones have their own frequency axis and are in every sample of
+    // axis 3.
+    let mut bending = config.clone();
+    bending.plate.in_plane_nodal_diameters.clear();
     let started = Instant::now();
     let total = plan.units(config);
     let mut done = 0usize;
@@ -384,17 +397,22 @@ pub fn run(
         done += 1;
     };
     let model_modes = config.plate.mode_count();
-    let radial_splines = frequency::run(&config.plate, plan, &mut tick)?;
+    let radial_splines = frequency::run(&bending.plate, plan, &mut tick)?;
+    let in_plane_radial_splines =
+        in_plane_frequency::run(&config.plate, &config.centrifugal, plan, &mut tick)?;
     let mut notes = Vec::new();
+    if in_plane_radial_splines.is_some() {
+        notes.push(IN_PLANE_NOTE.to_string());
+    }
     let mode_count = match config.plate.theory {
-        PlateTheory::Kirchhoff => Some(response::run(config, plan, &mut tick)?),
+        PlateTheory::Kirchhoff => Some(response::run(&bending, plan, &mut tick)?),
         PlateTheory::Mindlin => {
             notes.push(MINDLIN_MODE_COUNT_NOTE.to_string());
             None
         }
     };
     let integrator = trajectory::run(config, plan, &mut tick)?;
-    let theory = theory::run(&config.plate, plan, &mut tick)?;
+    let theory = theory::run(&bending.plate, plan, &mut tick)?;
     progress(total, total, "done");
     let p = &config.plate;
     Ok(StudyReport {
@@ -416,6 +434,7 @@ pub fn run(
         },
         plan: plan.clone(),
         radial_splines,
+        in_plane_radial_splines,
         mode_count,
         integrator,
         theory,

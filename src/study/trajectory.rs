@@ -81,7 +81,9 @@ pub fn record(
             e @ (SimulationError::TooManySubsteps { .. }
             | SimulationError::ModelTooStiffForIntegrator { .. }
             | SimulationError::ContinuousStateNeedsRk4 { .. }
-            | SimulationError::TooManyContactUnknowns { .. }),
+            | SimulationError::TooManyContactUnknowns { .. }
+            | SimulationError::InPlaneKeyNotWired { .. }
+            | SimulationError::InPlaneSpin { .. }),
         ) => return Err((RunStatus::Refused, e.to_string())),
         Err(e) => return Err((RunStatus::Diverged, e.to_string())),
     };
@@ -115,6 +117,15 @@ pub fn relative_error(a: &Samples, b: &Samples) -> f64 {
     diff / scale
 }
 
+/// [`relative_error`] of the amplitudes from index `offset` on (the
+/// in-plane modes); None where the reference leaves them at rest.
+fn in_plane_error(a: &Samples, b: &Samples, offset: usize) -> Option<f64> {
+    let tail = |s: &Samples| -> Samples { s.iter().map(|v| v[offset..].to_vec()).collect() };
+    let reference = tail(b);
+    let moves = reference.iter().flatten().any(|&x| x != 0.0);
+    moves.then(|| relative_error(&tail(a), &reference))
+}
+
 /// One integrator at one output rate.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct TrajectoryRow {
@@ -128,6 +139,12 @@ pub struct TrajectoryRow {
     pub detail: Option<String>,
     /// max_t ‖q(t) − q_ref(t)‖₂ / max_t ‖q_ref(t)‖₂ (None: no trajectory).
     pub relative_error: Option<f64>,
+    /// The same over the in-plane amplitudes alone (absent without in-plane
+    /// modes, where the reference leaves them at rest, or without a
+    /// trajectory): µm beside the bending's mm, they would not show in
+    /// `relative_error`.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub in_plane_relative_error: Option<f64>,
     /// Wall time / simulated time (the fastest of repeated runs).
     pub wall_s_per_simulated_s: Option<f64>,
     /// On the error-vs-cost Pareto front of this axis.
@@ -304,6 +321,11 @@ pub(crate) fn run(
                         status: RunStatus::Ok,
                         detail: None,
                         relative_error: Some(relative_error(&s, &reference)),
+                        in_plane_relative_error: sim
+                            .scene()
+                            .in_plane
+                            .as_ref()
+                            .and_then(|ip| in_plane_error(&s, &reference, ip.offset)),
                         wall_s_per_simulated_s: Some(wall / duration),
                         pareto: false,
                     }
@@ -314,6 +336,7 @@ pub(crate) fn run(
                     status,
                     detail: Some(detail),
                     relative_error: None,
+                    in_plane_relative_error: None,
                     wall_s_per_simulated_s: None,
                     pareto: false,
                 },
