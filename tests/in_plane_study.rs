@@ -114,4 +114,8 @@ fn the_trajectory_axis_measures_the_in_plane_amplitudes_on_their_own() {
     // The exponential integrator is exact for held loads: both errors at round-off.
     let exponential = ok.iter().find(|r| r.integrator == "exponential").unwrap();
     assert!(exponential.in_plane_relative_error.unwrap() < 1e-9);
+    // The text report shows the in-plane axis and the rows' in-plane errors.
+    let text = annular_plate::cli::study::table(&report);
+    assert!(text.contains("1b. In-plane frequencies"), "{text}");
+    assert!(text.contains("in-plane alone"), "{text}");
 }

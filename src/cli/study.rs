@@ -238,6 +238,10 @@ pub fn table(r: &StudyReport) -> String {
         );
     }
 
+    if let Some(a) = &r.in_plane_radial_splines {
+        in_plane_table(&mut o, a);
+    }
+
     // Axis 2.
     match &r.mode_count {
         Some(b) => mode_count_table(&mut o, b),
@@ -291,9 +295,12 @@ pub fn table(r: &StudyReport) -> String {
     for row in &c.rows {
         match (row.relative_error, row.wall_s_per_simulated_s) {
             (Some(e), Some(w)) => {
+                let in_plane = row
+                    .in_plane_relative_error
+                    .map_or(String::new(), |e| format!(" (in-plane alone {e:.3e})"));
                 let _ = writeln!(
                     o,
-                    "   {:>18} {:>9} {:>14.3e} {:>16} {}",
+                    "   {:>18} {:>9} {:>14.3e} {:>16} {}{in_plane}",
                     row.integrator,
                     fmt_rate(row.rate_hz),
                     e,
@@ -497,6 +504,35 @@ fn theory_table(o: &mut String, t: &study::TheoryComparison) {
             100.0 * e,
             m.k,
             m.l
+        );
+    }
+}
+
+/// The in-plane frequency axis (`study::in_plane_frequency`), after axis 1.
+fn in_plane_table(o: &mut String, a: &study::InPlaneFrequencyAxis) {
+    let _ = writeln!(
+        o,
+        "\n1b. In-plane frequencies vs plate.radial_splines (B-splines per field)\n   error: {}\n   reference: {} splines per field; its difference from {}, {:.1e}, bounds its own error",
+        a.error_measure,
+        a.reference.radial_splines,
+        a.reference.check_radial_splines,
+        a.reference.uncertainty
+    );
+    let _ = writeln!(
+        o,
+        "   {:>14} {:>14} {:>20} {:>14}",
+        "radial_splines", "max rel error", "worst ⟨k,l⟩ family", "build time"
+    );
+    for row in &a.rows {
+        let w = row.worst_mode;
+        let _ = writeln!(
+            o,
+            "   {:>14} {:>14.3e} {:>20} {:>14} {}",
+            row.radial_splines.to_string(),
+            row.max_relative_error,
+            format!("⟨{},{}⟩ {}", w.k, w.l, w.family),
+            fmt_time(row.build_time_s),
+            if row.pareto { "*" } else { "" }
         );
     }
 }
