@@ -24,7 +24,7 @@ use super::integrators::stiffened_midpoint::StiffenedMidpoint;
 use super::integrators::{block_exponential, implicit_midpoint, rk4, MAX_INNER_SUBSTEPS};
 use super::joint::{drive, integrated_in_step, StageDrive};
 use super::load_models::{
-    LoadContext, LoadModelState, LoadModelUndo, ModelWrenches, HELD_COUPLING_LIMIT,
+    LoadContext, LoadModelState, LoadModelUndo, ModelWrenches, HELD_DAMPING_LIMIT,
 };
 use super::loads::{add_reference_motion, compute as node_loads, StepLoads};
 use super::scene::Scene;
@@ -260,13 +260,18 @@ impl Stepper {
         let Some((limit, _)) = settings.step_limit() else {
             return 1;
         };
-        ((h * self.lambda_max(scene, speed) / limit).ceil() as usize).max(1)
+        let inner = ((h * self.lambda_max(scene, speed) / limit).ceil() as usize).max(1);
+        if settings.integrator != IntegratorKind::Rk4 {
+            return inner;
+        }
+        // RK4 evaluates the models at every stage: their damping at the
+        // substep's start needs its stability on the negative real axis.
+        inner.max((h * self.held_damping_rate / RK4_DAMPING_LIMIT).ceil() as usize)
     }
 
     /// λ_max = max over the modes of |ω_eff| + 2ζω + kΩ, the load models'
     /// coupling included as bounded in [`LoadModels`](super::load_models::LoadModels),
-    /// the in-plane spin terms' Gershgorin bounds (`InPlaneSpinTerms::rate_bounds`, made once),
-    /// and the models' damping at the substep's start (`LoadModels::held_damping_rate`).
+    /// and the in-plane spin terms' Gershgorin bounds (`InPlaneSpinTerms::rate_bounds`, made once).
     fn lambda_max(&self, scene: &Scene, speed: f64) -> f64 {
         let c = scene.load_models.coupling();
         let stiffening = scene
@@ -284,7 +289,6 @@ impl Stepper {
                 (mc.omega_eff_sq.abs() + stiffening + spin_stiffness + c.stiffness_rate_sq).sqrt()
                     + mc.damping_rate
                     + c.damping_rate
-                    + self.held_damping_rate
                     + coriolis
                     + k as f64 * speed.abs()
             })
@@ -300,12 +304,12 @@ impl Stepper {
         speed: f64,
     ) -> Result<(), StepError> {
         let rate = self.held_damping_rate;
-        if h * rate > HELD_COUPLING_LIMIT {
+        if h * rate > HELD_DAMPING_LIMIT {
             return Err(StepError::HeldDampingTooFast {
                 integrator: settings.integrator.name(),
                 rate,
                 step: h,
-                limit: HELD_COUPLING_LIMIT,
+                limit: HELD_DAMPING_LIMIT,
                 speed,
             });
         }
@@ -871,6 +875,11 @@ impl Stepper {
 /// The joint's entries RK4 carries after the elastic ones when the joint is
 /// integrated in the step: χ − χ0, Ω and ∫τ_drive dt.
 const JOINT_UNKNOWNS: usize = 3;
+
+/// Largest h × (the models' damping at a substep's start) per RK4 inner
+/// step: inside RK4's stability interval on the negative real axis,
+/// hσ < 2.785 (its stages evaluate the models, so no held force lags).
+const RK4_DAMPING_LIMIT: f64 = 2.5;
 
 /// The joint at a substep's end when it was integrated in the step: the
 /// acceleration and drive torque are the substep's means.

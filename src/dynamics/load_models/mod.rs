@@ -205,6 +205,13 @@ impl ModelWrenches {
 /// Largest h × (coupling rate) the integrators that hold a model's forces over a substep accept.
 pub const HELD_COUPLING_LIMIT: f64 = 0.5;
 
+/// Largest h × [`LoadModels::held_damping_rate`] the integrators that hold
+/// a model's forces over a substep accept: a damper σ held over h decays
+/// the motion it damps by 1 − hσ per substep, which stays in [0, 1) (no
+/// overshoot) for hσ ≤ 1. The rate is a Gershgorin bound, above the
+/// largest true one.
+pub const HELD_DAMPING_LIMIT: f64 = 1.0;
+
 impl LoadModels {
     /// The registered models a configuration switches on.
     pub fn new(config: &Config, nodes: &SceneNodes) -> LoadModels {

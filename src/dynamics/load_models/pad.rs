@@ -297,8 +297,8 @@ pub fn build(config: &Config, nodes: &SceneNodes) -> Option<Box<dyn LoadModel>> 
             in_plane: None,
         }
         .with_coupling(nodes)
-        .with_friction_gram(nodes)
-        .with_patch_coupling(),
+        .with_patch_coupling()
+        .with_friction_gram(nodes),
     ))
 }
 
@@ -415,11 +415,7 @@ impl LoadModel for Pads {
             return Ok(());
         }
         let nodes = self.contacts.iter().map(|c| c.node);
-        let before = self.patch_face_coupling();
         self.in_plane = Some(PadInPlane::attach(ip, nodes));
-        let after = self.patch_face_coupling();
-        self.coupling.stiffness_rate_sq += after.stiffness_rate_sq - before.stiffness_rate_sq;
-        self.coupling.damping_rate += after.damping_rate - before.damping_rate;
         Ok(())
     }
     fn channel_len(&self, channel: usize) -> usize {

@@ -20,15 +20,13 @@
 //! (4C)² products.
 //!
 //! The lining's patches (`pad_shear.rs`) carry the friction through their
-//! own states, which only RK4 and `contact_exponential` integrate: on the
-//! disc a patch is at most its k_t ∥ c_t (in stick), constant, so the same
-//! Gram matrix bounds it once in the pads' coupling
-//! ([`Pads::patch_face_coupling`]).
+//! own states, which only RK4 and `contact_exponential` integrate, and are
+//! not bounded here.
 //!
 //! [`LoadModel::held_damping_rate`]: super::model::LoadModel::held_damping_rate
 
 use super::face_friction::{contact_gram, damping_per_normal, sliding_velocity};
-use super::model::{Coupling, SceneNodes};
+use super::model::SceneNodes;
 use super::pad::{PadScratch, Pads, FRICTION_REGULARISATION_SPEED};
 use super::pad_config::ContactSurface;
 
@@ -62,24 +60,6 @@ impl Pads {
             }
         }
         self.face_gram_bound(|c, f| s.forces[c].damping[f].sqrt())
-    }
-
-    /// The lining's patches on the faces' velocity rows: in stick a face is
-    /// held to the backing plate through its patch's k_t ∥ c_t, so the
-    /// coupling bound takes k_t λ(G) and c_t λ(G) with λ(G) ≤ the Gershgorin
-    /// bound of G over the faces (both families' rows), 1/kg; zero without
-    /// patches or friction on the faces.
-    pub(super) fn patch_face_coupling(&self) -> Coupling {
-        match self.shear {
-            Some(law) if !self.friction_gram.is_empty() => {
-                let g = self.face_gram_bound(|_, _| 1.0);
-                Coupling {
-                    stiffness_rate_sq: law.stiffness * g,
-                    damping_rate: law.damping * g,
-                }
-            }
-            _ => Coupling::default(),
-        }
     }
 
     /// max over the rows of Σ_cols |r_row G_row,col r_col|: Gershgorin's bound

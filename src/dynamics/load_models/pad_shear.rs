@@ -117,16 +117,12 @@ impl Pads {
     }
 
     /// The patches' fastest rate k_t/c_t (the sliding patch's relaxation
-    /// along the sliding direction) and their k_t ∥ c_t on the faces
-    /// (`Pads::patch_face_coupling`) added to the coupling bound.
+    /// along the sliding direction) added to the coupling bound.
     pub(super) fn with_patch_coupling(mut self) -> Pads {
         if let Some(law) = self.shear {
-            let faces = self.patch_face_coupling();
             self.coupling = Coupling {
-                stiffness_rate_sq: self.coupling.stiffness_rate_sq + faces.stiffness_rate_sq,
-                damping_rate: self.coupling.damping_rate
-                    + law.stiffness / law.damping
-                    + faces.damping_rate,
+                stiffness_rate_sq: self.coupling.stiffness_rate_sq,
+                damping_rate: self.coupling.damping_rate + law.stiffness / law.damping,
             };
         }
         self
