@@ -106,15 +106,18 @@ fn with_splines(plate: &PlateConfig, n: usize) -> PlateConfig {
     p
 }
 
-pub(crate) fn max_error(
-    got: &BTreeMap<(u32, u32), f64>,
-    reference: &BTreeMap<(u32, u32), f64>,
-) -> (f64, ModeId) {
-    let mut worst = (-1.0, ModeId { k: 0, l: 0 });
-    for (&(k, l), &w_ref) in reference {
-        let e = (got[&(k, l)] - w_ref).abs() / w_ref;
+/// max over the modes of `reference` of |got − ref| / ref, and where (the
+/// first key when nothing differs; `reference` is not empty).
+pub(crate) fn max_error<K: Ord + Copy>(
+    got: &BTreeMap<K, f64>,
+    reference: &BTreeMap<K, f64>,
+) -> (f64, K) {
+    let first = *reference.keys().next().expect("a requested mode");
+    let mut worst = (-1.0, first);
+    for (&id, &w_ref) in reference {
+        let e = (got[&id] - w_ref).abs() / w_ref;
         if e > worst.0 {
-            worst = (e, ModeId { k, l });
+            worst = (e, id);
         }
     }
     worst
@@ -208,14 +211,14 @@ pub(crate) fn run(
         let mut p = plate.clone();
         p.radial_splines = setting;
         let model = PlateModel::new(&p)?;
-        let (e, worst) = max_error(&omegas(&model), &w_ref);
+        let (e, (k, l)) = max_error(&omegas(&model), &w_ref);
         let build_time_s = min_time(plan.timing_budget, 3, 10_000, || {
             std::hint::black_box(PlateModel::new(std::hint::black_box(&p)).ok());
         });
         rows.push(FrequencyRow {
             radial_splines: setting,
             max_relative_error: e,
-            worst_mode: worst,
+            worst_mode: ModeId { k, l },
             build_time_s,
             pareto: false,
         });

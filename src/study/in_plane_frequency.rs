@@ -9,7 +9,7 @@
 //! the in-plane maximum), whose own error is bounded by its difference from
 //! the table at half its count: the Ritz frequencies converge from above.
 
-use super::frequency::spline_grid;
+use super::frequency::{max_error, spline_grid};
 use super::timing::min_time;
 use super::{mark_pareto, recommend, Candidate, Recommendation, StudyError, StudyPlan};
 use crate::config::{CentrifugalConfig, PlateConfig, RadialSplines};
@@ -113,20 +113,6 @@ fn omegas(t: &InPlaneTable) -> Omegas {
             (id, e.omega)
         })
         .collect()
-}
-
-fn max_error(got: &Omegas, reference: &Omegas) -> (f64, InPlaneModeId) {
-    let mut worst = (
-        -1.0,
-        *reference.keys().next().expect("a requested in-plane mode"),
-    );
-    for (id, &w_ref) in reference {
-        let e = (got[id] - w_ref).abs() / w_ref;
-        if e > worst.0 {
-            worst = (e, *id);
-        }
-    }
-    worst
 }
 
 /// The axis for `plate` with in-plane edges `edges` (None without in-plane modes).
