@@ -365,9 +365,10 @@ fn modes_leaves_out_the_rigid_in_plane_motions_of_a_free_annulus() {
     assert!((f - exact).abs() / exact < TOLERANCE, "{f} against {exact}");
 }
 
-/// simulate and the node refuse the bench scene with in-plane modes (its 25 rad/s
-/// is beyond the speed bound of the in-plane modes without their spin
-/// terms), naming the key, before any work and writing nothing.
+/// simulate and the node refuse the bench scene with in-plane modes (its
+/// torque-limited drive with the torsional modes and its pads on
+/// `contact_exponential`), naming the key, before any work and writing
+/// nothing.
 #[test]
 fn the_commands_that_would_simulate_refuse_in_plane_modes() {
     let dir = support::cli::scratch_dir("in_plane_refusals");
@@ -395,9 +396,9 @@ fn the_commands_that_would_simulate_refuse_in_plane_modes() {
             stderr.contains("plate.in_plane_nodal_diameters"),
             "{name}: {stderr}"
         );
-        // The bench's torque-limited drive with a torsional mode: the spin
-        // terms are not built there.
-        let why = "spin terms are not built";
+        // The bench's torque-limited drive with a torsional mode and its
+        // pads on contact_exponential.
+        let why = "joint.max_torque";
         assert!(stderr.contains(why), "{name}: {stderr}");
         assert!(!stderr.contains("panicked"), "{name}: {stderr}");
         assert!(out.is_empty(), "{name} wrote {out}");
@@ -412,8 +413,8 @@ fn the_commands_that_would_simulate_refuse_in_plane_modes() {
 }
 
 /// The node refuses the bench scene with in-plane modes (its torque-limited
-/// drive with a torsional mode has no spin terms, and its speed is beyond
-/// their bound), naming the key.
+/// drive with the torsional modes and its pads on `contact_exponential`),
+/// naming the key.
 #[test]
 fn the_node_refuses_the_bench_scene_with_in_plane_modes() {
     let mut child = std::process::Command::new(support::cli::BIN)

@@ -108,8 +108,10 @@ fn stepping_with_changing_inputs_allocates_nothing() {
 }
 
 /// In-plane modes (k = 0, 1, 2) on every integrator, both descriptions, with
-/// the torsional modes against a speed-following drive and one torsional mode
-/// against a torque-limited one (its free-joint propagator is built once).
+/// the torsional modes against a speed-following drive and, on the
+/// exponential and RK4, against a torque-limited one (the free k = 0 block's
+/// exponential recomputed every step of the spin-up, on scratch sized once;
+/// RK4 with the joint in its unknowns).
 #[test]
 fn stepping_with_in_plane_modes_allocates_nothing() {
     for integrator in [
@@ -119,17 +121,17 @@ fn stepping_with_in_plane_modes_allocates_nothing() {
     ] {
         for coords in [Coordinates::Ale, Coordinates::Lagrangian] {
             for torque_limited in [false, true] {
-                if torque_limited && integrator != IntegratorKind::Exponential {
+                if torque_limited && integrator == IntegratorKind::ImplicitMidpoint {
                     continue;
                 }
                 let mut c = Config::default();
                 c.plate.damping = vec![0.02];
                 c.plate.in_plane_nodal_diameters = vec![0, 1, 2];
-                c.plate.in_plane_orders = if torque_limited { vec![0] } else { vec![0, 1] };
+                c.plate.in_plane_orders = vec![0, 1];
                 c.joint.max_torque = torque_limited.then_some(5.0);
                 // At brake speed where the spin terms are built (their block
                 // exponentials recomputed every step of the spin-up below).
-                let speed = if torque_limited || integrator == IntegratorKind::ImplicitMidpoint {
+                let speed = if integrator == IntegratorKind::ImplicitMidpoint {
                     2.0
                 } else {
                     2000.0

@@ -101,7 +101,7 @@ pub enum StepError {
         speed: f64,
     },
     /// The joint turned faster than the in-plane modes' bound where their spin terms are not built.
-    #[error("the joint speed {speed} rad/s is beyond {limit:.3} rad/s, the bound for in-plane modes (plate.in_plane_nodal_diameters) where their spin terms are not built (simulation.integrator: implicit_midpoint, or joint.max_torque with torsional modes; Coriolis coupling 2Ω/ω_min up to 1e-3); the step was undone")]
+    #[error("the joint speed {speed} rad/s is beyond {limit:.3} rad/s, the bound for in-plane modes (plate.in_plane_nodal_diameters) where their spin terms are not built (simulation.integrator: implicit_midpoint; Coriolis coupling 2Ω/ω_min up to 1e-3); the step was undone")]
     InPlaneSpin {
         /// Ω at the step's end, rad/s.
         speed: f64,
@@ -173,7 +173,7 @@ pub enum SimulationError {
         why: &'static str,
     },
     /// A start faster than the in-plane modes' bound where their spin terms are not built.
-    #[error("joint.speed = {speed} rad/s is beyond {limit:.3} rad/s, the bound for in-plane modes (plate.in_plane_nodal_diameters) where their spin terms are not built (simulation.integrator: implicit_midpoint, or joint.max_torque with torsional modes; Coriolis coupling 2Ω/ω_min up to 1e-3)")]
+    #[error("joint.speed = {speed} rad/s is beyond {limit:.3} rad/s, the bound for in-plane modes (plate.in_plane_nodal_diameters) where their spin terms are not built (simulation.integrator: implicit_midpoint; Coriolis coupling 2Ω/ω_min up to 1e-3)")]
     InPlaneSpin {
         /// joint.speed, rad/s.
         speed: f64,

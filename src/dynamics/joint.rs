@@ -128,6 +128,17 @@ pub fn integrated_in_step(
     joint.max_torque.is_some() && stage_dependent_loads && friction.iter().all(|f| f.slope == 0.0)
 }
 
+/// The friction terms' damping Σ capacity · slope / J of those whose band
+/// |Ω · slope| < [`BAND`] the speed may reach within the step (its least
+/// magnitude `speed_min`), 1/s: what an explicit integration of Ω meets.
+pub fn friction_band_rate(friction: &[FrictionTorque], polar_inertia: f64, speed_min: f64) -> f64 {
+    friction
+        .iter()
+        .filter(|f| speed_min.max(0.0) * f.slope < BAND)
+        .map(|f| f.capacity * f.slope / polar_inertia)
+        .sum()
+}
+
 /// The drive's law at one instant inside a step of length h: the speed
 /// control towards the command over h, the acceleration limit and the torque
 /// limit, against the load torque at that instant (the explicit branch of
@@ -140,7 +151,28 @@ pub struct StageDrive<'a> {
     pub h: f64,
 }
 
+/// How many switching functions [`StageDrive::margins`] gives.
+pub const DRIVE_SWITCHES: usize = 2;
+
 impl StageDrive<'_> {
+    /// The drive law's switching functions at the instant, positive on its
+    /// middle piece: the acceleration limit's margin a_max − |Ω_cmd − Ω|/h
+    /// and the torque limit's, limit − |J α − τ_loads|. Where the joint rides
+    /// in y they select the contact step's pieces with the contacts' (the
+    /// law's linearisation differs on each: at the torque limit τ_drive is
+    /// fixed, below it J α − τ_loads follows the state).
+    pub fn margins(&self, speed: f64, load_torque: f64) -> [f64; DRIVE_SWITCHES] {
+        let a_max = self.joint.max_acceleration;
+        let wanted = (self.command - speed) / self.h;
+        let needed = self.polar_inertia * wanted.clamp(-a_max, a_max) - load_torque;
+        [
+            a_max - wanted.abs(),
+            self.joint
+                .max_torque
+                .map_or(1.0, |limit| limit - needed.abs()),
+        ]
+    }
+
     /// dΩ/dt and the drive torque at speed Ω under the load torque `load_torque`.
     pub fn at(&self, speed: f64, load_torque: f64) -> DriveStep {
         drive(

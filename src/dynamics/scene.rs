@@ -168,7 +168,7 @@ impl Scene {
     /// layout and the node frames' in-plane shapes), refusing what they do
     /// not carry yet (docs/in_plane.md, "In the dynamics").
     pub fn add_in_plane(&mut self, config: &Config) -> Result<(), SimulationError> {
-        let Some(ip) = InPlaneDynamics::new(
+        let Some(mut ip) = InPlaneDynamics::new(
             config,
             self.model.n_modes(),
             &self.ale_nodes,
@@ -178,6 +178,10 @@ impl Scene {
             return Ok(());
         };
         ip.check(config)?;
+        ip.check_free_joint_in_contact_step(config, self.load_models.stage_dependent())?;
+        if config.joint.max_torque.is_some() {
+            ip.free_joint_omega = ip.free_joint_rate(self.polar_inertia);
+        }
         self.load_models.attach_in_plane(&ip)?;
         ip.extend_layout(&mut self.layout);
         self.in_plane = Some(ip);

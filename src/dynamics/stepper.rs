@@ -7,9 +7,10 @@
 //! substep (χ exact and quadratic in time), then the elastic coordinates by
 //! the chosen integrator, then the tool's state (the surface it cut). RK4
 //! re-evaluates the memoryless load models (pads, links) at every stage.
-//! Where [`integrated_in_step`] holds (a torque-limited drive against the
-//! lining's patches), RK4 and `contact_exponential` instead integrate the
-//! joint with the elastic state, the drive's law at every evaluation. A
+//! Where `joint_in_y` holds (a torque-limited drive against the lining's
+//! patches, or with torsional in-plane modes), RK4 and `contact_exponential`
+//! instead integrate the joint with the elastic state, the drive's law at
+//! every evaluation. A
 //! step that produces a non-finite or implausible state is undone and reported.
 
 use super::ale::{harmonics, lagrange_to_ale, pair_to_ale};
@@ -22,7 +23,7 @@ use super::integrators::equations::{
 use super::integrators::exponential::ModePropagator;
 use super::integrators::stiffened_midpoint::StiffenedMidpoint;
 use super::integrators::{block_exponential, implicit_midpoint, rk4, MAX_INNER_SUBSTEPS};
-use super::joint::{drive, integrated_in_step, StageDrive};
+use super::joint::{drive, friction_band_rate, StageDrive, DRIVE_SWITCHES};
 use super::load_models::{
     LoadContext, LoadModelState, LoadModelUndo, ModelWrenches, HELD_DAMPING_LIMIT,
 };
@@ -31,7 +32,7 @@ use super::scene::Scene;
 use super::state::{JointAngle, State};
 use super::wrench::Wrench;
 use crate::config::{Config, Coordinates, IntegratorKind};
-use in_plane_joint::InPlaneJoint;
+use in_plane_joint::{joint_in_y, InPlaneJoint, Twist};
 use model_evaluation::ModelEvaluation;
 use nalgebra::Complex;
 use stage_rhs::StageRhs;
@@ -231,7 +232,7 @@ impl Stepper {
             contact_levels: None,
             contact_key: Vec::with_capacity(64),
             last_contact: ContactReport::default(),
-            in_plane_joint: InPlaneJoint::new(),
+            in_plane_joint: InPlaneJoint::new(scene),
             in_plane_spin: in_plane_exponential::propagators(scene.in_plane.as_ref()),
         }
     }
@@ -269,7 +270,8 @@ impl Stepper {
         inner.max((h * self.held_damping_rate / RK4_DAMPING_LIMIT).ceil() as usize)
     }
 
-    /// λ_max = max over the modes of |ω_eff| + 2ζω + kΩ, the load models'
+    /// λ_max = max over the modes of |ω_eff| + 2ζω + kΩ (a torsional mode's
+    /// at least the free joint's ω* where the joint may be free), the load models'
     /// coupling included as bounded in [`LoadModels`](super::load_models::LoadModels),
     /// and the in-plane spin terms' Gershgorin bounds (`InPlaneSpinTerms::rate_bounds`, made once).
     fn lambda_max(&self, scene: &Scene, speed: f64) -> f64 {
@@ -282,11 +284,22 @@ impl Stepper {
             let (k, g) = ip.spin.rate_bounds;
             (k * speed * speed, g * speed.abs())
         });
+        // A torque-limited drive may leave the joint free: its torsional
+        // modes then ring at up to ω* (InPlaneDynamics::free_joint_rate).
+        let free = scene
+            .in_plane
+            .as_ref()
+            .map_or(0.0, |ip| ip.free_joint_omega * ip.free_joint_omega);
         scene
             .elastic_modes()
             .zip(&self.consts)
-            .map(|((k, ..), mc)| {
-                (mc.omega_eff_sq.abs() + stiffening + spin_stiffness + c.stiffness_rate_sq).sqrt()
+            .enumerate()
+            .map(|(i, ((k, ..), mc))| {
+                let own = match &scene.in_plane {
+                    Some(ip) if ip.coupling_of(i) != 0.0 => mc.omega_eff_sq.abs().max(free),
+                    _ => mc.omega_eff_sq.abs(),
+                };
+                (own + stiffening + spin_stiffness + c.stiffness_rate_sq).sqrt()
                     + mc.damping_rate
                     + c.damping_rate
                     + coriolis
@@ -426,14 +439,22 @@ impl Stepper {
             &self.model_wrenches.friction,
             h,
         );
-        let twist = self
-            .in_plane_joint
-            .begin(scene, state, &mut self.loads, &d, h);
-        let joint = SubstepMotion::new(h, state.chi, state.speed, twist.acceleration);
-
         let stiff_models = models.stage_dependent();
-        let in_step = integrated_in_step(&scene.joint, stiff_models, &self.model_wrenches.friction);
-        let stage_drive = in_step.then_some(StageDrive {
+        let friction = &self.model_wrenches.friction;
+        let joint_in_y = joint_in_y(scene, settings.integrator, stiff_models, friction);
+        if joint_in_y && settings.integrator == IntegratorKind::Rk4 {
+            // The joint's friction band in RK4's stages (the held drive solves it implicitly).
+            let speed_min = state.speed.abs() - 2.0 * d.acceleration.abs() * h;
+            self.held_damping_rate += friction_band_rate(friction, inertia, speed_min);
+        }
+        let twist = if joint_in_y {
+            Twist::in_y(&d)
+        } else {
+            self.in_plane_joint
+                .begin(scene, state, &mut self.loads, &self.consts, &d, h)
+        };
+        let joint = SubstepMotion::new(h, state.chi, state.speed, twist.acceleration);
+        let stage_drive = joint_in_y.then_some(StageDrive {
             joint: &scene.joint,
             polar_inertia: scene.polar_inertia,
             command: inputs.speed_command,
@@ -823,6 +844,7 @@ impl Stepper {
             alpha,
             euler_alpha: alpha,
             drive: stage_drive,
+            drive_margins: [1.0; DRIVE_SWITCHES],
             base_ale_frame,
             harm,
             views,

@@ -21,3 +21,4 @@ pub mod scene_files;
 pub mod scenes;
 pub mod squeal;
 pub mod static_plate;
+pub mod torsion_disc;

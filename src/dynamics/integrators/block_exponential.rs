@@ -83,7 +83,7 @@ impl BlockPropagator {
         }
         let n = self.n;
         let stiffness = |a: usize, b: usize| speed_sq * block.g_over_m[a * n + b];
-        self.fill(modes, consts, h, nu, stiffness, |_, _| 0.0);
+        self.fill(modes, consts, h, nu, stiffness, |_, _| 0.0, None);
         self.speed_key = speed_sq;
     }
 
@@ -104,13 +104,45 @@ impl BlockPropagator {
         let n = self.n;
         let stiffness = |a: usize, b: usize| speed * speed * block.k_over_m[a * n + b];
         let rates = |a: usize, b: usize| speed * block.g_over_m[a * n + b];
-        self.fill(&block.modes, consts, h, nu, stiffness, rates);
+        self.fill(&block.modes, consts, h, nu, stiffness, rates, None);
+        self.speed_key = speed;
+    }
+
+    /// Recompute e^{Âh} for the k = 0 in-plane spin block with the joint
+    /// free under a held torque τ (a torque-limited drive at its limit) if
+    /// (h, Ω) changed. With J Ω̇ + Σ s_b q̈_b = τ the block's mass becomes
+    /// M − s sᵀ/J, whose inverse is M⁻¹ + w wᵀ/J* (Sherman–Morrison,
+    /// w = M⁻¹ s, J* = J − sᵀ w): each acceleration row gains w_a/J* times
+    /// Σ_b s_b (row b). The held force is then f − s τ/J (`coupling` s per
+    /// block position; zero for the radial family).
+    pub fn update_free_joint(
+        &mut self,
+        block: &InPlaneSpinBlock,
+        consts: &[ModeConstants],
+        h: f64,
+        speed: f64,
+        coupling: &[f64],
+        polar_inertia: f64,
+    ) {
+        if self.h == h && self.speed_key == speed && self.nu == 0.0 {
+            return;
+        }
+        let n = self.n;
+        let stiffness = |a: usize, b: usize| speed * speed * block.k_over_m[a * n + b];
+        let rates = |a: usize, b: usize| speed * block.g_over_m[a * n + b];
+        let free = FreeJoint {
+            coupling,
+            polar_inertia,
+        };
+        self.fill(&block.modes, consts, h, 0.0, stiffness, rates, Some(free));
         self.speed_key = speed;
     }
 
     /// e^{Âh} of the family `modes` with the modes' own constants plus the
     /// couplings `stiffness(a, b)` of the amplitudes and `rates(a, b)` of
-    /// the rates (accelerations per unit amplitude and rate).
+    /// the rates (accelerations per unit amplitude and rate), and with
+    /// `free_joint` the joint's inertia coupling.
+    #[allow(clippy::too_many_arguments)]
     fn fill(
         &mut self,
         modes: &[usize],
@@ -119,6 +151,7 @@ impl BlockPropagator {
         nu: f64,
         stiffness: impl Fn(usize, usize) -> f64,
         rates: impl Fn(usize, usize) -> f64,
+        free_joint: Option<FreeJoint>,
     ) {
         let n = self.n;
         let d = 5 * n;
@@ -152,6 +185,9 @@ impl BlockPropagator {
             a_hat[u * d + c] = h;
             a_hat[c * d + s] = -nu * h;
             a_hat[s * d + c] = nu * h;
+        }
+        if let Some(free) = free_joint {
+            free.couple_rows(n, |a| consts[modes[a]].mass, &mut self.work);
         }
         expm(d, &mut self.work, &mut self.exp);
         self.sigma = sigma;
@@ -199,6 +235,43 @@ impl BlockPropagator {
             };
             q[i] = row(a);
             v[i] = sigma * row(n + a);
+        }
+    }
+}
+
+/// The joint free with a k = 0 block: the block's couplings s to it and its
+/// polar inertia J ([`BlockPropagator::update_free_joint`]).
+#[derive(Debug, Clone, Copy)]
+struct FreeJoint<'a> {
+    coupling: &'a [f64],
+    polar_inertia: f64,
+}
+
+impl FreeJoint<'_> {
+    /// Â's acceleration rows u_a += (w_a/J*) Σ_b s_b u_b in `work[0]`
+    /// (Σ_b s_b u_b gathered in `work[1]` first), m_a = `mass(a)`.
+    fn couple_rows(&self, n: usize, mass: impl Fn(usize) -> f64, work: &mut [Vec<f64>; 3]) {
+        let d = 5 * n;
+        let [a_hat, sum, _] = work;
+        let sum = &mut sum[..d];
+        sum.fill(0.0);
+        let mut reduced = self.polar_inertia;
+        for (b, &s) in self.coupling.iter().enumerate() {
+            reduced -= s * s / mass(b);
+            let row = &a_hat[(n + b) * d..(n + b + 1) * d];
+            for (acc, x) in sum.iter_mut().zip(row) {
+                *acc += s * x;
+            }
+        }
+        for (a, &s) in self.coupling.iter().enumerate() {
+            let factor = s / mass(a) / reduced;
+            if factor == 0.0 {
+                continue;
+            }
+            let row = &mut a_hat[(n + a) * d..(n + a + 1) * d];
+            for (x, acc) in row.iter_mut().zip(sum.iter()) {
+                *x += factor * acc;
+            }
         }
     }
 }

@@ -24,7 +24,7 @@ use crate::config::Coordinates;
 use crate::dynamics::ale::{ale_to_lagrange, harmonics};
 use crate::dynamics::commands::Inputs;
 use crate::dynamics::integrators::contact_exponential::ContactExponential;
-use crate::dynamics::joint::StageDrive;
+use crate::dynamics::joint::{StageDrive, DRIVE_SWITCHES};
 use crate::dynamics::load_models::LoadContext;
 use crate::dynamics::scene::Scene;
 use crate::dynamics::state::{JointAngle, State};
@@ -102,6 +102,7 @@ impl Stepper {
             alpha: 0.0,
             euler_alpha: alpha,
             drive: stage_drive,
+            drive_margins: [1.0; DRIVE_SWITCHES],
             base_ale_frame,
             harm,
             views,
@@ -119,7 +120,9 @@ impl Stepper {
             if let Some(d) = stage.eval(chi_mid, speed, yy, dy) {
                 joint_dy.copy_from_slice(&[d.acceleration, d.effort]);
             }
-            s.copy_from_slice(&stage.model_wrenches.switching);
+            let (s_models, s_drive) = s.split_at_mut(stage.model_wrenches.switching.len());
+            s_models.copy_from_slice(&stage.model_wrenches.switching);
+            s_drive.copy_from_slice(&stage.drive_margins[..s_drive.len()]);
         };
         let integrator = contact.as_mut().expect("prepared above");
         self.last_contact = integrator.step(
@@ -163,7 +166,8 @@ impl Stepper {
         let size = m + stage_drive.map_or(0, |_| CONTACT_JOINT_UNKNOWNS);
         let levels = ContactExponential::levels_for(h, SWITCH_RESOLUTION);
         if self.contact_levels != Some((levels, size)) {
-            let mut c = ContactExponential::new(size, models.switching_functions(), levels);
+            let switches = models.switching_functions() + stage_drive.map_or(0, |_| DRIVE_SWITCHES);
+            let mut c = ContactExponential::new(size, switches, levels);
             let (mut scale, mut blocks) = difference_scale(scene, n, m, h);
             if let Some(d) = stage_drive {
                 // Ω, ∫τ_drive dt: each its own block.
@@ -174,7 +178,10 @@ impl Stepper {
                 blocks.extend([m + 1, m + 2]);
             }
             c.set_scale(&scale, &blocks);
-            c.linearise_at_state(models.law_reads_memory());
+            // Ω in y: the ALE terms (2kΩ, k²Ω²), the spin terms and the
+            // friction's sliding speed are not affine in it, so a piece is
+            // linearised where the step starts, not at the origin (Ω = 0).
+            c.linearise_at_state(models.law_reads_memory() || stage_drive.is_some());
             self.contact = Some(c);
             self.contact_levels = Some((levels, size));
         }

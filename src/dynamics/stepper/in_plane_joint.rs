@@ -2,19 +2,35 @@
 //! ([`crate::dynamics::in_plane`], "Joint"): a drive that follows its
 //! profile puts the Euler force −s α on the modes and feels their reaction
 //! in its effort; a torque-limited drive at its limit leaves the joint free
-//! under the held torque, and the one torsional mode and Ω are stepped
-//! together exactly.
+//! under the held torque, and the k = 0 block (every torsional mode, the
+//! radial family and their spin terms) is stepped exactly with the joint's
+//! inertia coupling (`BlockPropagator::update_free_joint`), Ω₁ from the
+//! angular momentum. Where the joint rides in y ([`joint_in_y`]) the drive's
+//! law couples them at every evaluation instead.
 
-use crate::dynamics::integrators::exponential::ModePropagator;
-use crate::dynamics::joint::DriveStep;
+use crate::config::IntegratorKind;
+use crate::dynamics::integrators::block_exponential::BlockPropagator;
+use crate::dynamics::integrators::equations::ModeConstants;
+use crate::dynamics::joint::{integrated_in_step, DriveStep, FrictionTorque};
 use crate::dynamics::loads::StepLoads;
 use crate::dynamics::scene::Scene;
 use crate::dynamics::state::State;
 use nalgebra::Complex;
 
-/// Scratch: the free joint's propagator of the torsional mode (keyed by h).
+/// Scratch: the k = 0 block stepped with the joint free.
 pub(super) struct InPlaneJoint {
-    free: ModePropagator,
+    free: Option<FreeBlock>,
+}
+
+/// The k = 0 spin block (index `block` among the spin blocks) with the
+/// joint free: its exponential, each position's coupling s, and the block's
+/// end state over the whole elastic state (only its modes are written).
+struct FreeBlock {
+    block: usize,
+    propagator: BlockPropagator,
+    coupling: Vec<f64>,
+    q: Vec<f64>,
+    v: Vec<f64>,
 }
 
 /// What the substep does with the joint and the torsional modes.
@@ -33,25 +49,81 @@ enum TwistKind {
     Rigid,
     /// Ω̇ = α imposed; the load torque and Σ s q̇ at the start.
     Imposed { load_torque: f64, momentum0: f64 },
-    /// The joint free under a held torque: the torsional mode's end state.
-    Free { mode: usize, q1: f64, v1: f64 },
+    /// The joint free under a held torque: the k = 0 block's end state in
+    /// the scratch.
+    Free,
+}
+
+/// Whether the joint rides in y — RK4's and the contact step's unknowns,
+/// the drive's law at every evaluation ([`StageDrive`]): where
+/// [`integrated_in_step`] holds, and for a torque-limited drive with
+/// torsional in-plane modes (the joint then free with all of them, the
+/// reduced law of `StageRhs`). `exponential` (and the contact step without
+/// stage-dependent loads) holds the joint and steps the free k = 0 block
+/// exactly instead ([`InPlaneJoint::begin`]).
+pub(super) fn joint_in_y(
+    scene: &Scene,
+    integrator: IntegratorKind,
+    stage_dependent_loads: bool,
+    friction: &[FrictionTorque],
+) -> bool {
+    let integrates = match integrator {
+        IntegratorKind::Rk4 => true,
+        IntegratorKind::ContactExponential => stage_dependent_loads,
+        IntegratorKind::Exponential | IntegratorKind::ImplicitMidpoint => false,
+    };
+    let torsional = scene.joint.max_torque.is_some()
+        && scene
+            .in_plane
+            .as_ref()
+            .is_some_and(|ip| !ip.torsional.is_empty());
+    integrates && (torsional || integrated_in_step(&scene.joint, stage_dependent_loads, friction))
+}
+
+impl Twist {
+    /// The joint rides in y: the drive's step `d` stands until its end.
+    pub fn in_y(d: &DriveStep) -> Twist {
+        Twist {
+            acceleration: d.acceleration,
+            effort: d.effort,
+            kind: TwistKind::Rigid,
+        }
+    }
 }
 
 impl InPlaneJoint {
-    pub fn new() -> InPlaneJoint {
-        InPlaneJoint {
-            free: ModePropagator::UNSET,
-        }
+    /// Scratch for `scene`: the k = 0 block's when a torque-limited drive
+    /// meets torsional modes.
+    pub fn new(scene: &Scene) -> InPlaneJoint {
+        let free = scene
+            .in_plane
+            .as_ref()
+            .filter(|ip| scene.joint.max_torque.is_some() && !ip.torsional.is_empty())
+            .and_then(|ip| {
+                let block = ip.spin.blocks.iter().position(|b| b.k == 0)?;
+                let modes = &ip.spin.blocks[block].modes;
+                let n = scene.n_modes();
+                Some(FreeBlock {
+                    block,
+                    propagator: BlockPropagator::new(modes.len()),
+                    coupling: modes.iter().map(|&i| ip.coupling_of(i)).collect(),
+                    q: vec![0.0; n],
+                    v: vec![0.0; n],
+                })
+            });
+        InPlaneJoint { free }
     }
 
     /// Decide the substep's joint motion from the drive's step `d` (made with
     /// the reduced inertia and torque): the Euler force into `loads`, or the
-    /// free joint's exact step of the torsional mode.
+    /// free joint's exact step of the k = 0 block and Ω₁ from the angular
+    /// momentum, J Ω₁ + Σ s q̇₁ = J Ω₀ + Σ s q̇₀ + τ h.
     pub fn begin(
         &mut self,
         scene: &Scene,
         state: &State,
         loads: &mut StepLoads,
+        consts: &[ModeConstants],
         d: &DriveStep,
         h: f64,
     ) -> Twist {
@@ -81,23 +153,39 @@ impl InPlaneJoint {
                 ..rigid
             };
         }
-        // One torsional mode (InPlaneDynamics::check): (m − s²/J) q̈ + c q̇ + k q = f − s τ/J.
+        let Some(free) = self.free.as_mut() else {
+            unreachable!("a torque-limited drive with torsional modes has its k = 0 block (InPlaneJoint::new)")
+        };
+        // M q̈ + … = f − s τ/J with M − s sᵀ/J (BlockPropagator::update_free_joint),
+        // the spin terms at the mean speed the reduced law gives.
         let j = scene.polar_inertia;
-        if self.free.h != h {
-            self.free = ip.free_joint_propagator(j, h);
-        }
-        let local = ip.torsional[0];
-        let mode = ip.offset + local;
-        let s = ip.modes[local].coupling;
+        let block = &ip.spin.blocks[free.block];
+        let speed_mean = state.speed + 0.5 * d.acceleration * h;
+        free.propagator
+            .update_free_joint(block, consts, h, speed_mean, &free.coupling, j);
         let torque = d.effort + loads.axial_torque;
-        let (q0, v0) = (state.q[mode], state.q_dot[mode]);
-        let force = loads.ale_frame[mode] - s * torque / j;
-        let (q1, v1) = self.free.advance(q0, v0, force, Complex::new(0.0, 0.0));
-        let speed1 = state.speed + (torque * h - s * (v1 - v0)) / j;
+        for &i in &block.modes {
+            free.q[i] = state.q[i];
+            free.v[i] = state.q_dot[i];
+        }
+        let f = &loads.ale_frame;
+        let coupling = &free.coupling;
+        free.propagator
+            .advance(consts, &block.modes, &mut free.q, &mut free.v, |a| {
+                let force = f[block.modes[a]] - coupling[a] * torque / j;
+                (force, Complex::new(0.0, 0.0))
+            });
+        let momentum_change: f64 = block
+            .modes
+            .iter()
+            .zip(coupling)
+            .map(|(&i, s)| s * (free.v[i] - state.q_dot[i]))
+            .sum();
+        let speed1 = state.speed + (torque * h - momentum_change) / j;
         Twist {
             acceleration: (speed1 - state.speed) / h,
             effort: d.effort,
-            kind: TwistKind::Free { mode, q1, v1 },
+            kind: TwistKind::Free,
         }
     }
 
@@ -117,11 +205,16 @@ impl InPlaneJoint {
                 let momentum1 = ip.twist_momentum(&state.q_dot);
                 scene.polar_inertia * twist.acceleration - load_torque + (momentum1 - momentum0) / h
             }
-            TwistKind::Free { mode, q1, v1 } => {
-                state.q[mode] = q1;
-                state.q_dot[mode] = v1;
-                state.q_other[mode] = q1;
-                state.q_dot_other[mode] = v1;
+            TwistKind::Free => {
+                let (Some(free), Some(ip)) = (&self.free, &scene.in_plane) else {
+                    return twist.effort;
+                };
+                for &i in &ip.spin.blocks[free.block].modes {
+                    state.q[i] = free.q[i];
+                    state.q_dot[i] = free.v[i];
+                    state.q_other[i] = free.q[i];
+                    state.q_dot_other[i] = free.v[i];
+                }
                 twist.effort
             }
         }

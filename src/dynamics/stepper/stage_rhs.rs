@@ -12,7 +12,7 @@ use crate::dynamics::commands::Inputs;
 use crate::dynamics::integrators::equations::{
     accelerations, ModalEquations, ModeConstants, ReferenceMotion,
 };
-use crate::dynamics::joint::{DriveStep, StageDrive};
+use crate::dynamics::joint::{DriveStep, StageDrive, DRIVE_SWITCHES};
 use crate::dynamics::load_models::{LoadContext, LoadModelState, ModelWrenches};
 use crate::dynamics::loads::{add_reference_motion, compute as node_loads, StepLoads};
 use crate::dynamics::scene::Scene;
@@ -34,6 +34,9 @@ pub(super) struct StageRhs<'a> {
     /// The drive's law at each instant instead of `alpha`: the joint
     /// integrated in the step ([`crate::dynamics::joint::integrated_in_step`]).
     pub drive: Option<StageDrive<'a>>,
+    /// The drive law's switching functions at the last evaluation
+    /// ([`StageDrive::margins`]; with `drive`).
+    pub drive_margins: [f64; DRIVE_SWITCHES],
     /// The node loads at the substep start (used when nothing in them depends on y).
     pub base_ale_frame: &'a [f64],
     pub harm: &'a mut Vec<(f64, f64)>,
@@ -112,7 +115,7 @@ impl StageRhs<'_> {
         } else {
             self.loads.ale_frame.copy_from_slice(self.base_ale_frame);
         }
-        let drive = self.drive.map(|d| d.at(speed, self.loads.axial_torque));
+        let drive = self.drive.map(|d| self.joint_law(d, speed, q, v));
         add_reference_motion(scene, speed, &mut self.loads.ale_frame);
         let (dq, rest) = dy.split_at_mut(n);
         let (dv, ds) = rest.split_at_mut(n);
@@ -130,5 +133,35 @@ impl StageRhs<'_> {
         accelerations(equations, motion, self.loads, q, v, dv);
         ds.copy_from_slice(&self.model_wrenches.rates);
         drive
+    }
+
+    /// The drive's law at the instant. With torsional in-plane modes it
+    /// decides with the reduced inertia and load torque of the instant's
+    /// state (`InPlaneDynamics::reduced_joint`, exact for the coupled
+    /// J Ω̇ + Σ s q̈ = τ, m q̈ + s Ω̇ + … = f), and the modes feel the Euler
+    /// force −s Ω̇ of the acceleration it gives — a torque-limited drive at
+    /// its limit so leaves the joint free with every torsional mode. The
+    /// k = 0 amplitudes are the same in both descriptions.
+    fn joint_law(&mut self, d: StageDrive, speed: f64, q: &[f64], v: &[f64]) -> DriveStep {
+        let torque = self.loads.axial_torque;
+        let Some(ip) = self
+            .scene
+            .in_plane
+            .as_ref()
+            .filter(|ip| !ip.torsional.is_empty())
+        else {
+            self.drive_margins = d.margins(speed, torque);
+            return d.at(speed, torque);
+        };
+        let f = &self.loads.ale_frame;
+        let (inertia, torque) = ip.reduced_joint(d.polar_inertia, torque, speed, f, q, v);
+        let reduced = StageDrive {
+            polar_inertia: inertia,
+            ..d
+        };
+        self.drive_margins = reduced.margins(speed, torque);
+        let step = reduced.at(speed, torque);
+        ip.add_euler_force(step.acceleration, &mut self.loads.ale_frame);
+        step
     }
 }
