@@ -33,10 +33,7 @@ const FINEST_NORM: f64 = 0.125;
 /// radian misses enough brief contacts to leave 1e-2, a quarter 2.6e-5 and a
 /// twentieth 2e-6 of the peak against the converged reference).
 pub(crate) const SAMPLE_ANGLE: f64 = 0.25;
-/// Most samples per step a piece keeps a table of (S F(i τ_m), ns n each).
-/// A piece that needs more is sampled along its flow instead (one
-/// matrix–vector product per sample), never more coarsely than
-/// [`SAMPLE_ANGLE`] (down to the finest stored level).
+/// Most samples of the switching functions per step.
 pub(crate) const MAX_SAMPLE_LEVEL: usize = 8;
 
 /// The tables of one piece (see the module docs); buffers allocated once.
@@ -209,14 +206,9 @@ impl PieceTables {
         self.sample_level = sample_level(h, self.rate, self.levels - 1);
     }
 
-    /// Fill S F(i τ_m) and the bounds (ns n² per sample), where at most
-    /// 2^[`MAX_SAMPLE_LEVEL`] samples are needed (otherwise the piece is
-    /// sampled along its flow). The table grows to the first piece that
-    /// needs it (then no allocation).
+    /// Fill S F(i τ_m) and the bounds (ns n² per sample). The table grows to
+    /// the first piece that needs it (then no allocation).
     pub(crate) fn fill_sample_table(&mut self, b: &mut BuildScratch) {
-        if self.sample_level > MAX_SAMPLE_LEVEL {
-            return;
-        }
         let size = (1usize << self.sample_level) * self.ns * self.n;
         if self.sf.len() < size {
             self.sf.resize(size, 0.0);
@@ -295,10 +287,11 @@ fn finest_level(h: f64, rho: f64, levels_needed: usize) -> usize {
     level
 }
 
-/// m with τ_m ρ ≤ [`SAMPLE_ANGLE`], at most the stored levels.
+/// m with τ_m ρ ≤ [`SAMPLE_ANGLE`], at most [`MAX_SAMPLE_LEVEL`] and the
+/// stored levels.
 fn sample_level(h: f64, rho: f64, max_level: usize) -> usize {
     let mut m = 0;
-    while h / (m as f64).exp2() * rho > SAMPLE_ANGLE && m < max_level {
+    while h / (m as f64).exp2() * rho > SAMPLE_ANGLE && m < MAX_SAMPLE_LEVEL.min(max_level) {
         m += 1;
     }
     m
@@ -539,8 +532,7 @@ mod tests {
         }
         // Sampled every τ_m with τ_m ω ≤ 1: S F(i τ_m) = the first row of F(i τ_m).
         let m = t.sample_level();
-        assert!(h / (m as f64).exp2() * omega <= 2.0 * SAMPLE_ANGLE && m <= MAX_SAMPLE_LEVEL);
-        assert!(t.has_samples());
+        assert!(h / (m as f64).exp2() * omega <= 2.0 * SAMPLE_ANGLE || m == MAX_SAMPLE_LEVEL);
         for i in 1..=(1usize << m) {
             let ti = i as f64 * h / (m as f64).exp2();
             let (s, c) = (omega * ti).sin_cos();
