@@ -30,7 +30,9 @@
 //! timings vary. Pure library code: no ROS, no output formatting.
 
 pub(crate) mod frequency;
+pub(crate) mod in_plane_compliance;
 pub mod in_plane_frequency;
+pub mod in_plane_response;
 pub mod response;
 pub mod theory;
 pub(crate) mod timing;
@@ -45,6 +47,7 @@ use thiserror::Error;
 
 pub use frequency::FrequencyAxis;
 pub use in_plane_frequency::InPlaneFrequencyAxis;
+pub use in_plane_response::InPlaneResponseAxis;
 pub use response::ResponseAxis;
 pub use theory::TheoryComparison;
 pub use trajectory::TrajectoryAxis;
@@ -197,7 +200,7 @@ impl StudyPlan {
         let d = if config.plate.in_plane_nodal_diameters.is_empty() {
             0
         } else {
-            2 + frequency::spline_grid(&config.plate, self).len()
+            2 + frequency::spline_grid(&config.plate, self).len() + 1 + self.l_max.len()
         };
         a + b + c + d + 1
     }
@@ -337,6 +340,11 @@ pub struct StudyReport {
     /// frequency error against radial splines (absent without them).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub in_plane_radial_splines: Option<InPlaneFrequencyAxis>,
+    /// With `plate.in_plane_nodal_diameters` and an in-plane ALE force: the
+    /// in-plane static displacement error against the in-plane orders
+    /// (absent otherwise; without the force `notes` says so).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub in_plane_mode_count: Option<InPlaneResponseAxis>,
     /// Axis 2: steady deflection error against the mode set (None under
     /// Mindlin theory: the deflection at a point force does not converge; `notes`).
     pub mode_count: Option<ResponseAxis>,
@@ -411,6 +419,7 @@ pub fn run(
             None
         }
     };
+    let in_plane_mode_count = in_plane_response::run(config, plan, &mut tick, &mut notes)?;
     let integrator = trajectory::run(config, plan, &mut tick)?;
     let theory = theory::run(&bending.plate, plan, &mut tick)?;
     progress(total, total, "done");
@@ -435,6 +444,7 @@ pub fn run(
         plan: plan.clone(),
         radial_splines,
         in_plane_radial_splines,
+        in_plane_mode_count,
         mode_count,
         integrator,
         theory,
