@@ -244,6 +244,8 @@ fn the_in_plane_response_axis_meets_the_exact_plane_stress_statics() {
         "{:?}",
         axis.notes
     );
+    let text = annular_plate::cli::study::table(report());
+    assert!(text.contains("2b. In-plane static displacement"), "{text}");
     // The recommendations take the residual for every target it meets.
     for rec in &axis.recommendations {
         if let Some(s) = &rec.setting {

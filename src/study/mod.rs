@@ -10,6 +10,12 @@
 //! 3. [`trajectory`]: trajectory error vs integrator and output rate, cost =
 //!    wall time per simulated second;
 //!
+//! With `plate.in_plane_nodal_diameters` two in-plane axes join them:
+//! [`in_plane_frequency`] (axis 1b, frequency error vs splines) and, with an
+//! in-plane ALE force, [`in_plane_response`] (axis 2b, the in-plane static
+//! displacement vs `plate.in_plane_orders`, with and without the residual
+//! flexibility, cost = wall time per step);
+//!
 //! and the plate theory as a lever ([`theory`]): Kirchhoff's frequency error
 //! against converged Mindlin frequencies, with each theory's build time.
 //!
@@ -62,7 +68,7 @@ pub(crate) const MAX_RADIAL_SPLINES: usize = 400;
 pub const MINDLIN_MODE_COUNT_NOTE: &str = "mode_count (axis 2) is skipped under plate.theory mindlin: a point force's Mindlin deflection is infinite at the force (shear deflection −F ln r / (2π κGh)), so the steady deflection at the load point does not converge with the mode set";
 
 /// What the axes measure with in-plane modes (in the report's `notes`).
-pub const IN_PLANE_NOTE: &str = "with plate.in_plane_nodal_diameters: radial_splines, mode_count and theory measure the bending modes; in_plane_radial_splines the in-plane modes' frequencies; integrator compares every modal amplitude, bending and in-plane (its rows' in_plane_relative_error the in-plane ones alone)";
+pub const IN_PLANE_NOTE: &str = "with plate.in_plane_nodal_diameters: radial_splines, mode_count and theory measure the bending modes; in_plane_radial_splines the in-plane modes' frequencies; in_plane_mode_count (with an in-plane ALE force) their static displacement at rest against plate.in_plane_orders; integrator compares every modal amplitude, bending and in-plane (its rows' in_plane_relative_error the in-plane ones alone)";
 
 /// Why a study could not run.
 #[derive(Debug, Error)]
