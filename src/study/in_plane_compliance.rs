@@ -1,18 +1,56 @@
-//! The in-plane static response at a node as the in-plane response axis
+//! The in-plane load case (the ALE nodes' in-plane forces, read at the
+//! first) and the static response there as the in-plane response axis
 //! (src/study/in_plane_response.rs) reads it: per retained ⟨k, l⟩ (one
 //! entry per family, a cos/sin pair for k ≥ 1) its share X(a) Y(b) / (ω² m)
 //! of the compliance between the read node a and each loaded node b (module
 //! doc of src/model/in_plane/residual.rs), with the modes' point values or
 //! their load-patch means, and the residual of the modes a set leaves out.
 
-use super::in_plane_response::InPlaneLoadCase;
 use super::response::nested_tail;
-use crate::config::NodePosition;
+use crate::config::{Config, NodePosition};
 use crate::model::in_plane::{
     modal_kernel, residual_kernel, InPlaneDiscretisation, InPlaneKernel, InPlaneMode,
     InPlanePatchHarmonics, LoadPatch,
 };
+use serde::Serialize;
 use std::f64::consts::TAU;
+
+/// Where the in-plane response is read and which forces act.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct InPlaneLoadCase {
+    /// ξ of the point read (the first ALE node with an in-plane force).
+    pub point: NodePosition,
+    /// 1-based ALE node number of that point.
+    pub ale_node: usize,
+    /// The ALE nodes with in-plane forces and their (F_r, F_θ), N.
+    pub loads: Vec<(NodePosition, [f64; 2])>,
+    /// Half-width c of the nodes' load patches
+    /// (`PlateConfig::residual_patch_half_width`), m.
+    pub patch_half_width_m: f64,
+}
+
+/// The ALE nodes' in-plane forces (F_r, F_θ), read at the first.
+pub(crate) fn load_case(config: &Config) -> Option<InPlaneLoadCase> {
+    let loads: Vec<(usize, NodePosition, [f64; 2])> = (0..config.nodes.ale.len())
+        .filter_map(|j| {
+            let w = config.loads.ale.get(j).copied().unwrap_or_default();
+            let xi = config.nodes.ale[j];
+            let (s, c) = (xi.angular * TAU).sin_cos();
+            let polar = [
+                c * w.force[0] + s * w.force[1],
+                -s * w.force[0] + c * w.force[1],
+            ];
+            (w.force[0] != 0.0 || w.force[1] != 0.0).then_some((j, xi, polar))
+        })
+        .collect();
+    let &(j, point, _) = loads.first()?;
+    Some(InPlaneLoadCase {
+        point,
+        ale_node: j + 1,
+        loads: loads.iter().map(|&(_, xi, f)| (xi, f)).collect(),
+        patch_half_width_m: config.plate.residual_patch_half_width(),
+    })
+}
 
 /// A predicate on ⟨k, l⟩: the modes a set retains.
 pub(crate) type Keep<'a> = &'a dyn Fn(u32, u32) -> bool;

@@ -29,35 +29,21 @@
 //! is the safety factor times the larger of its change from (K/2, L/2) and
 //! its change from the static series on half as many B-splines per field.
 
-use super::in_plane_compliance::{add, nested_uncertainty, relative, InPlaneStatics};
+pub use super::in_plane_compliance::InPlaneLoadCase;
+use super::in_plane_compliance::{add, load_case, nested_uncertainty, relative, InPlaneStatics};
 use super::response::SAFETY_FACTOR;
 use super::timing::min_time_per_unit;
 use super::{mark_pareto, recommend, Candidate, Recommendation, StudyError, StudyPlan};
-use crate::config::{Config, NodePosition, RadialSplines};
+use crate::config::{Config, RadialSplines};
 use crate::dynamics::{Simulation, SimulationError};
 use crate::model::in_plane::{
     self, in_plane_plate, InPlaneDiscretisation, InPlaneFamily, InPlaneTable,
 };
 use crate::model::ModelError;
 use serde::Serialize;
-use std::f64::consts::TAU;
 
 /// Why the axis is absent with in-plane modes but no in-plane load (in `notes`).
 pub const NO_IN_PLANE_LOAD_NOTE: &str = "in_plane_mode_count is skipped: no ALE node wrench has an in-plane force (force x or y), so the in-plane modes have no static response to compare";
-
-/// Where the in-plane response is read and which forces act.
-#[derive(Debug, Clone, PartialEq, Serialize)]
-pub struct InPlaneLoadCase {
-    /// ξ of the point read (the first ALE node with an in-plane force).
-    pub point: NodePosition,
-    /// 1-based ALE node number of that point.
-    pub ale_node: usize,
-    /// The ALE nodes with in-plane forces and their (F_r, F_θ), N.
-    pub loads: Vec<(NodePosition, [f64; 2])>,
-    /// Half-width c of the nodes' load patches
-    /// (`PlateConfig::residual_patch_half_width`), m.
-    pub patch_half_width_m: f64,
-}
 
 /// One set: the scene's nodal diameters, orders l = 0..l_max.
 #[derive(Debug, Clone, PartialEq, Serialize)]
@@ -144,29 +130,6 @@ pub struct InPlaneResponseAxis {
     pub default_setting: Option<InPlaneOrdersSetting>,
     /// What the axis changed or left out of the scene.
     pub notes: Vec<String>,
-}
-
-/// The ALE nodes' in-plane forces (F_r, F_θ), read at the first.
-fn load_case(config: &Config) -> Option<InPlaneLoadCase> {
-    let loads: Vec<(usize, NodePosition, [f64; 2])> = (0..config.nodes.ale.len())
-        .filter_map(|j| {
-            let w = config.loads.ale.get(j).copied().unwrap_or_default();
-            let xi = config.nodes.ale[j];
-            let (s, c) = (xi.angular * TAU).sin_cos();
-            let polar = [
-                c * w.force[0] + s * w.force[1],
-                -s * w.force[0] + c * w.force[1],
-            ];
-            (w.force[0] != 0.0 || w.force[1] != 0.0).then_some((j, xi, polar))
-        })
-        .collect();
-    let &(j, point, _) = loads.first()?;
-    Some(InPlaneLoadCase {
-        point,
-        ale_node: j + 1,
-        loads: loads.iter().map(|&(_, xi, f)| (xi, f)).collect(),
-        patch_half_width_m: config.plate.residual_patch_half_width(),
-    })
 }
 
 /// The axis for `config` (None without in-plane modes; None and a note
