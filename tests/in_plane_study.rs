@@ -270,3 +270,34 @@ fn the_in_plane_response_axis_is_absent_without_an_in_plane_force() {
     let json = serde_json::to_string(report()).unwrap();
     assert!(json.contains("\"in_plane_mode_count\":{") && !json.contains("NaN"));
 }
+
+/// The axis reads the node as `simulate` does: the scene at rest, damped
+/// (ζ = 0.7) and stepped until settled, puts the first loaded ALE node's
+/// in-plane displacement where the row of its orders says, with and without
+/// the residual flexibility.
+#[test]
+fn the_in_plane_response_is_where_the_stepped_scene_settles() {
+    let axis = report().in_plane_mode_count.as_ref().unwrap();
+    let row = axis.rows.iter().find(|r| r.l_max == 1).unwrap();
+    for (residual, want) in [
+        (false, row.response_m),
+        (true, row.response_with_residual_m),
+    ] {
+        let mut c = scene();
+        c.joint.speed = 0.0;
+        c.plate.damping = vec![0.7];
+        c.plate.residual_flexibility = residual;
+        let mut sim = annular_plate::dynamics::Simulation::new(c).unwrap();
+        for _ in 0..50 {
+            sim.step().unwrap();
+        }
+        // The node is at θ = 0: x is radial, y tangential.
+        let u = sim.ale_node(0).in_plane.u;
+        let e = (u[0] - want[0]).hypot(u[1] - want[1]) / want[0].hypot(want[1]);
+        println!(
+            "residual {residual}: settled ({:.9e}, {:.9e}) m, axis ({:.9e}, {:.9e}) m: {e:.2e}",
+            u[0], u[1], want[0], want[1]
+        );
+        assert!(e < 1e-9, "{e:e}");
+    }
+}

@@ -27,7 +27,8 @@
 //! that is the static series of the discretisation (`patch_harmonics`)
 //! whatever the set, so the modal truncation does not enter; its uncertainty
 //! is the safety factor times the larger of its change from (K/2, L/2) and
-//! its change from the static series on half as many B-splines per field.
+//! its change from the static series on half as many B-splines per field
+//! (twice as many where half would be below the in-plane minimum, 6).
 
 pub use super::in_plane_compliance::InPlaneLoadCase;
 use super::in_plane_compliance::{add, load_case, nested_uncertainty, relative, InPlaneStatics};
@@ -209,7 +210,13 @@ pub fn run(
     // At rest modes + residual is the static series of the discretisation,
     // whatever the set: its error is the B-splines', bounded by its change
     // from half as many splines per field.
-    let coarse = InPlaneDiscretisation::new(disc.plate(), splines / 2).map_err(model_error)?;
+    // (Twice as many where half would be below the in-plane minimum.)
+    let check_splines = if splines / 2 >= in_plane::MIN_SPLINES {
+        splines / 2
+    } else {
+        2 * splines
+    };
+    let coarse = InPlaneDiscretisation::new(disc.plate(), check_splines).map_err(model_error)?;
     let coarse_static = statics.static_series(&coarse);
     let static_change = relative(coarse_static, reference_with_residual);
     let uncertainty_with_residual =
@@ -290,7 +297,7 @@ pub fn run(
             uncertainty,
             uncertainty_method,
             uncertainty_with_residual,
-            check_radial_splines: splines / 2,
+            check_radial_splines: check_splines,
         },
         rows,
         recommendations,
