@@ -253,6 +253,10 @@ pub fn table(r: &StudyReport) -> String {
         }
     }
 
+    if let Some(a) = &r.in_plane_mode_count {
+        in_plane_response_table(&mut o, a);
+    }
+
     // Axis 3.
     let c = &r.integrator;
     let _ = writeln!(
@@ -534,5 +538,56 @@ fn in_plane_table(o: &mut String, a: &study::InPlaneFrequencyAxis) {
             fmt_time(row.build_time_s),
             if row.pareto { "*" } else { "" }
         );
+    }
+}
+
+/// The in-plane response axis (`study::in_plane_response`), after axis 2,
+/// with its recommendations.
+fn in_plane_response_table(o: &mut String, a: &study::InPlaneResponseAxis) {
+    let (lc, rf) = (&a.load_case, &a.reference);
+    let _ = writeln!(
+        o,
+        "\n2b. In-plane static displacement vs plate.in_plane_orders 0..l_max (k = {:?}), at rest\n   load point: ALE node {} at ξ = ({}, {}), {} in-plane loaded node(s), patch half-width {} m\n   reference: k ≤ {}, l ≤ {} ({} splines per field): (u_r, u_θ) = ({:.9e}, {:.9e}) m; estimated own error {:.1e} ({}); with its residual {:.1e} (static series against {} splines)",
+        a.nodal_diameters, lc.ale_node, lc.point.radial, lc.point.angular, lc.loads.len(),
+        lc.patch_half_width_m, rf.k_max, rf.l_max, rf.radial_splines, rf.response_m[0],
+        rf.response_m[1], rf.uncertainty, rf.uncertainty_method, rf.uncertainty_with_residual,
+        rf.check_radial_splines
+    );
+    for n in &a.notes {
+        let _ = writeln!(o, "   note: {n}");
+    }
+    let _ = writeln!(
+        o,
+        "   {:>6} {:>6} {:>14} {:>14} {:>16} {:>16}",
+        "l_max", "modes", "rel error", "with residual", "step", "step w/ residual"
+    );
+    let time = |t: Option<f64>| t.map_or("refused".into(), fmt_time);
+    for x in &a.rows {
+        let mark = |p: bool| if p { "*" } else { " " };
+        let _ = writeln!(
+            o,
+            "   {:>6} {:>6} {:>13.2e}{} {:>13.2e}{} {:>16} {:>16}",
+            x.l_max,
+            x.modes,
+            x.relative_error,
+            mark(x.pareto),
+            x.relative_error_with_residual,
+            mark(x.pareto_with_residual),
+            time(x.step_time_s),
+            time(x.step_time_with_residual_s)
+        );
+    }
+    for rec in &a.recommendations {
+        let line = fmt_rec(
+            rec,
+            |s| {
+                format!(
+                    "l ≤ {} ({} modes), residual flexibility {}",
+                    s.l_max, s.modes, s.residual_flexibility
+                )
+            },
+            |c| format!("{}/step", fmt_time(c)),
+        );
+        let _ = writeln!(o, "   target {:>7.0e}: {line}", rec.target);
     }
 }

@@ -10,6 +10,12 @@
 //! 3. [`trajectory`]: trajectory error vs integrator and output rate, cost =
 //!    wall time per simulated second;
 //!
+//! With `plate.in_plane_nodal_diameters` two in-plane axes join them:
+//! [`in_plane_frequency`] (axis 1b, frequency error vs splines) and, with an
+//! in-plane ALE force, [`in_plane_response`] (axis 2b, the in-plane static
+//! displacement vs `plate.in_plane_orders`, with and without the residual
+//! flexibility, cost = wall time per step);
+//!
 //! and the plate theory as a lever ([`theory`]): Kirchhoff's frequency error
 //! against converged Mindlin frequencies, with each theory's build time.
 //!
@@ -30,7 +36,9 @@
 //! timings vary. Pure library code: no ROS, no output formatting.
 
 pub(crate) mod frequency;
+pub(crate) mod in_plane_compliance;
 pub mod in_plane_frequency;
+pub mod in_plane_response;
 pub mod response;
 pub mod theory;
 pub(crate) mod timing;
@@ -45,6 +53,7 @@ use thiserror::Error;
 
 pub use frequency::FrequencyAxis;
 pub use in_plane_frequency::InPlaneFrequencyAxis;
+pub use in_plane_response::InPlaneResponseAxis;
 pub use response::ResponseAxis;
 pub use theory::TheoryComparison;
 pub use trajectory::TrajectoryAxis;
@@ -59,7 +68,7 @@ pub(crate) const MAX_RADIAL_SPLINES: usize = 400;
 pub const MINDLIN_MODE_COUNT_NOTE: &str = "mode_count (axis 2) is skipped under plate.theory mindlin: a point force's Mindlin deflection is infinite at the force (shear deflection −F ln r / (2π κGh)), so the steady deflection at the load point does not converge with the mode set";
 
 /// What the axes measure with in-plane modes (in the report's `notes`).
-pub const IN_PLANE_NOTE: &str = "with plate.in_plane_nodal_diameters: radial_splines, mode_count and theory measure the bending modes; in_plane_radial_splines the in-plane modes' frequencies; integrator compares every modal amplitude, bending and in-plane (its rows' in_plane_relative_error the in-plane ones alone)";
+pub const IN_PLANE_NOTE: &str = "with plate.in_plane_nodal_diameters: radial_splines, mode_count and theory measure the bending modes; in_plane_radial_splines the in-plane modes' frequencies; in_plane_mode_count (with an in-plane ALE force) their static displacement at rest against plate.in_plane_orders; integrator compares every modal amplitude, bending and in-plane (its rows' in_plane_relative_error the in-plane ones alone)";
 
 /// Why a study could not run.
 #[derive(Debug, Error)]
@@ -197,7 +206,7 @@ impl StudyPlan {
         let d = if config.plate.in_plane_nodal_diameters.is_empty() {
             0
         } else {
-            2 + frequency::spline_grid(&config.plate, self).len()
+            2 + frequency::spline_grid(&config.plate, self).len() + 1 + self.l_max.len()
         };
         a + b + c + d + 1
     }
@@ -337,6 +346,11 @@ pub struct StudyReport {
     /// frequency error against radial splines (absent without them).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub in_plane_radial_splines: Option<InPlaneFrequencyAxis>,
+    /// With `plate.in_plane_nodal_diameters` and an in-plane ALE force: the
+    /// in-plane static displacement error against the in-plane orders
+    /// (absent otherwise; without the force `notes` says so).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub in_plane_mode_count: Option<InPlaneResponseAxis>,
     /// Axis 2: steady deflection error against the mode set (None under
     /// Mindlin theory: the deflection at a point force does not converge; `notes`).
     pub mode_count: Option<ResponseAxis>,
@@ -411,6 +425,7 @@ pub fn run(
             None
         }
     };
+    let in_plane_mode_count = in_plane_response::run(config, plan, &mut tick, &mut notes)?;
     let integrator = trajectory::run(config, plan, &mut tick)?;
     let theory = theory::run(&bending.plate, plan, &mut tick)?;
     progress(total, total, "done");
@@ -435,6 +450,7 @@ pub fn run(
         plan: plan.clone(),
         radial_splines,
         in_plane_radial_splines,
+        in_plane_mode_count,
         mode_count,
         integrator,
         theory,

@@ -379,20 +379,9 @@ pub(crate) fn run(
             )
         })
         .collect();
-    let d1 = nested[1].1 - nested[0].1;
-    let d2 = nested[2].1 - nested[1].1;
-    let (uncertainty, uncertainty_method) = if d1 * d2 > 0.0 && (d1 / d2) > 1.2 {
-        let rho = d1 / d2;
-        (
-            SAFETY_FACTOR * (d2 / (rho - 1.0)).abs() / reference.abs(),
-            format!("geometric tail of the nested sets, ratio of differences ρ = {rho:.2}: {SAFETY_FACTOR} |d₂|/(ρ − 1)"),
-        )
-    } else {
-        (
-            d1.abs().max(d2.abs()) / reference.abs(),
-            "nested sets not in a geometric regime: the larger difference".to_string(),
-        )
-    };
+    let (tail, uncertainty_method) =
+        nested_tail(nested[1].1 - nested[0].1, nested[2].1 - nested[1].1);
+    let uncertainty = tail / reference.abs();
 
     // The corrected reference: its change from the nested set (K/2, L/2) is what
     // the spin does to the modes between them; the modal uncertainty bounds the
@@ -540,6 +529,24 @@ pub(crate) fn run(
         default_setting,
         notes,
     })
+}
+
+/// The estimated truncation error of the finest of three nested sets whose
+/// responses differ by d₁ (coarse to middle) and d₂ (middle to finest), and
+/// how it was estimated (module docs).
+pub(crate) fn nested_tail(d1: f64, d2: f64) -> (f64, String) {
+    if d1 * d2 > 0.0 && (d1 / d2) > 1.2 {
+        let rho = d1 / d2;
+        (
+            SAFETY_FACTOR * (d2 / (rho - 1.0)).abs(),
+            format!("geometric tail of the nested sets, ratio of differences ρ = {rho:.2}: {SAFETY_FACTOR} |d₂|/(ρ − 1)"),
+        )
+    } else {
+        (
+            d1.abs().max(d2.abs()),
+            "nested sets not in a geometric regime: the larger difference".to_string(),
+        )
+    }
 }
 
 /// The residual flexibility at the load point of the set k ≤ k_max, l ≤ l_max
