@@ -59,12 +59,13 @@ use super::layout::{ModeLayout, ModePair};
 use super::node_frame::NodeFrame;
 use crate::config::{Config, IntegratorKind};
 use crate::model::in_plane::{
-    in_plane_plate, patch_means, InPlaneDiscretisation, InPlaneFamily, InPlaneMode, InPlaneShape,
-    InPlaneTable, LoadPatch,
+    in_plane_plate, patch_means, InPlaneDiscretisation, InPlaneFamily, InPlaneMode,
+    InPlaneRadialValue, InPlaneShape, InPlaneTable, LoadPatch,
 };
 use crate::model::prestress::LamePrestress;
 use crate::model::ModelError;
 use nalgebra::DMatrix;
+use std::f64::consts::{PI, TAU};
 
 /// One in-plane mode as the dynamics carry it.
 #[derive(Debug, Clone, PartialEq)]
@@ -84,6 +85,10 @@ pub struct InPlaneModeDyn {
     pub damping: f64,
     /// Torsional modes: s = 2π ∫ ρh V r² dr, kg·m; 0 otherwise.
     pub coupling: f64,
+    /// ∫ ρh u dA in the plate's axes at χ = 0, kg·m: (C, 0) for a k = 1 cos
+    /// mode and (0, C) for its sin partner, C = π ∫ ρh (U − V) r dr (u_r =
+    /// U cos θ, u_θ = V sin θ); 0 otherwise. The work of a uniform body force.
+    pub first_moment: [f64; 2],
 }
 
 /// The in-plane modes of a scene and what the stepper needs of them.
@@ -178,10 +183,18 @@ impl InPlaneDynamics {
             let Some(m) = all.into_iter().find(|m| m.l == e.l) else {
                 unreachable!("the table lists only computed modes")
             };
+            let areal_density = plate.density * plate.thickness;
             let coupling = if family == InPlaneFamily::Torsional {
-                torsional_coupling(&m, plate.density * plate.thickness)
+                TAU * areal_density * radial_integral(&m, |value, r| value.v * r * r)
             } else {
                 0.0
+            };
+            let translation =
+                PI * areal_density * radial_integral(&m, |value, r| (value.u - value.v) * r);
+            let first_moment = match (e.k, e.shape) {
+                (1, InPlaneShape::Cos) => [translation, 0.0],
+                (1, InPlaneShape::Sin) => [0.0, translation],
+                _ => [0.0; 2],
             };
             modes.push(InPlaneModeDyn {
                 k: e.k,
@@ -191,6 +204,7 @@ impl InPlaneDynamics {
                 modal_mass: e.modal_mass,
                 damping,
                 coupling,
+                first_moment,
             });
             radial.push(m);
         }
@@ -557,9 +571,9 @@ fn spin_terms(
     InPlaneSpinTerms::new(blocks)
 }
 
-/// s = 2π ∫ ρh V r² dr over the mode's B-spline spans (3-point Gauss per
-/// span: exact for the cubic V times r²).
-fn torsional_coupling(mode: &InPlaneMode, areal_density: f64) -> f64 {
+/// ∫ g(U, U', V, V'; r) dr over the annulus (three-point Gauss per B-spline
+/// span: exact for the polynomials of a cubic spline times r²).
+fn radial_integral(mode: &InPlaneMode, g: impl Fn(InPlaneRadialValue, f64) -> f64) -> f64 {
     const X: [f64; 3] = [-0.774_596_669_241_483_4, 0.0, 0.774_596_669_241_483_4];
     const W: [f64; 3] = [5.0 / 9.0, 8.0 / 9.0, 5.0 / 9.0];
     let basis = &mode.basis;
@@ -569,10 +583,10 @@ fn torsional_coupling(mode: &InPlaneMode, areal_density: f64) -> f64 {
         let (mid, half) = (0.5 * (a + b), 0.5 * (b - a));
         for (x, w) in X.iter().zip(W) {
             let r = mid + half * x;
-            sum += w * half * mode.eval(r).v * r * r;
+            sum += w * half * g(mode.eval(r), r);
         }
     }
-    std::f64::consts::TAU * areal_density * sum
+    sum
 }
 
 /// (u_x, u_y) of mode `m` (radial functions `r`) at radius ρ and angle a,

@@ -148,7 +148,9 @@ pub fn compute(
 /// adds the in-plane centrifugal acceleration z ω_z (ω_x, ω_y) of ω × (ω × c)
 /// through its rotary moment p = ρh³/12 ∫ ψ dA: f̄ −= p ω_z (ω_x, ω_y)
 /// (zero under Kirchhoff theory, docs/mindlin.md). The softening
-/// (ω_x² + ω_y²) M_e q enters the integrators' stiffness instead.
+/// (ω_x² + ω_y²) M_e q enters the integrators' stiffness instead. The
+/// in-plane k = 1 modes take the in-plane specific force, −C·(a_R − g)_xy
+/// in the ALE frame (C = ∫ ρh u dA, `InPlaneModeDyn::first_moment`).
 pub fn add_reference_motion(scene: &Scene, speed: f64, ale_frame: &mut [f64]) {
     let body = scene.model.body();
     if scene.effects.axial_body_force {
@@ -158,6 +160,17 @@ pub fn add_reference_motion(scene: &Scene, speed: f64, ale_frame: &mut [f64]) {
             if let Some(c) = body.first_moments.get(i) {
                 ale_frame[i] -= c[2] * fz;
             }
+        }
+    }
+    let f = scene.reference.specific_force;
+    if let Some(ip) = scene
+        .in_plane
+        .as_ref()
+        .filter(|_| f[0] != 0.0 || f[1] != 0.0)
+    {
+        for (i, m) in ip.modes.iter().enumerate() {
+            let [cx, cy] = m.first_moment;
+            ale_frame[ip.offset + i] -= cx * f[0] + cy * f[1];
         }
     }
     if scene.effects.off_axis_rotation {
