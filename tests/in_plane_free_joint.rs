@@ -12,7 +12,7 @@
 
 mod support;
 
-use annular_plate::config::IntegratorKind;
+use annular_plate::config::{Coordinates, IntegratorKind};
 use annular_plate::dynamics::load_models::pad_outputs::PadOutputs;
 use annular_plate::dynamics::Simulation;
 use nalgebra::{DMatrix, DVector, SymmetricEigen};
@@ -279,4 +279,58 @@ fn the_brake_bench_with_torsional_modes_keeps_the_momentum_balance_on_rk4_and_is
         sim.state().speed
     );
     assert!(worst < 1e-9, "{worst:e}");
+}
+
+/// With k = 1 pairs beside the k = 0 block and a space-fixed tangential force
+/// at the rim (which twists the disc and drives the pairs), the free joint
+/// keeps both descriptions together: ALE against Lagrangian on the
+/// exponential step and on RK4 (each its own equations), and RK4 against the
+/// exponential step.
+#[test]
+fn the_free_joint_keeps_the_ale_and_lagrangian_descriptions_together() {
+    let run = |coordinates, integrator| {
+        let mut c = disc(&[0, 1], &[0, 1], 100_000.0);
+        c.plate.damping = vec![0.05];
+        c.joint.speed = 12.0;
+        c.joint.max_torque = Some(20.0);
+        c.simulation.coordinates = coordinates;
+        c.simulation.integrator = integrator;
+        c.simulation.rk4_step_limit = 0.05;
+        c.nodes.ale.push(annular_plate::config::NodePosition {
+            radial: 1.0,
+            angular: 0.1,
+        });
+        c.loads.ale.push(annular_plate::config::WrenchConfig {
+            force: [300.0, -1000.0, 0.0],
+            moment: [0.0; 3],
+        });
+        let mut sim = Simulation::new(c).unwrap();
+        sim.set_speed_command(20.0).unwrap();
+        (0..400)
+            .map(|_| {
+                sim.step().unwrap();
+                // At its limit throughout: the joint is free.
+                assert!((sim.state().effort - 20.0).abs() < 1e-9);
+                let mut row = sim.q_lagrange().to_vec();
+                row.push(sim.state().speed);
+                row
+            })
+            .collect::<Vec<_>>()
+    };
+    let ale = run(Coordinates::Ale, IntegratorKind::Exponential);
+    let lagrange = run(Coordinates::Lagrangian, IntegratorKind::Exponential);
+    let rk4 = run(Coordinates::Lagrangian, IntegratorKind::Rk4);
+    let rk4_ale = run(Coordinates::Ale, IntegratorKind::Rk4);
+    let (dq_desc, ds_desc) = differences(&ale, &lagrange);
+    let (dq_rk4_desc, ds_rk4_desc) = differences(&rk4, &rk4_ale);
+    let (dq_rk4, ds_rk4) = differences(&lagrange, &rk4);
+    println!(
+        "exponential ALE vs Lagrangian {dq_desc:.2e} / {ds_desc:.2e}; RK4 ALE vs Lagrangian {dq_rk4_desc:.2e} / {ds_rk4_desc:.2e}; RK4 vs exponential {dq_rk4:.2e} / {ds_rk4:.2e} (amplitudes / speed)"
+    );
+    assert!(dq_desc < 1e-9 && ds_desc < 1e-12, "{dq_desc:e} {ds_desc:e}");
+    assert!(
+        dq_rk4_desc < 1e-6 && ds_rk4_desc < 1e-9,
+        "{dq_rk4_desc:e} {ds_rk4_desc:e}"
+    );
+    assert!(dq_rk4 < 1e-5 && ds_rk4 < 1e-7, "{dq_rk4:e} {ds_rk4:e}");
 }
