@@ -424,32 +424,6 @@ impl InPlaneDynamics {
             .sum()
     }
 
-    /// Refuse a torque-limited drive with torsional modes on
-    /// `contact_exponential` with stage-dependent loads (the pads, the tool),
-    /// where the joint rides in the step's unknowns: free at the drive's
-    /// limit, the hub rings with the torsional modes far above the step
-    /// (ω* = 4.6e5 rad/s on config/brake_bench.yaml with the k = 0 modes,
-    /// [`InPlaneDynamics::free_joint_rate`]) and the limit switches within
-    /// each ring; the step's results there did not converge with h (1e-3 to
-    /// 1e-2 of the speed off converged RK4 at 16–36 kHz).
-    pub fn check_free_joint_in_contact_step(
-        &self,
-        config: &Config,
-        stage_dependent_loads: bool,
-    ) -> Result<(), SimulationError> {
-        if config.simulation.integrator == IntegratorKind::ContactExponential
-            && config.joint.max_torque.is_some()
-            && stage_dependent_loads
-            && !self.torsional.is_empty()
-        {
-            return Err(SimulationError::InPlaneKeyNotWired {
-                key: "joint.max_torque",
-                why: "with torsional modes and stage-dependent loads (pads, tool) on simulation.integrator: contact_exponential the joint is free at the drive's limit and rings with the torsional modes far above the step, where the located switches of the limit do not converge; simulation.integrator: rk4 (or exponential without such loads) steps it, or drop joint.max_torque",
-            });
-        }
-        Ok(())
-    }
-
     /// The free joint's fastest torsional rate ω*, rad/s: the largest
     /// eigenvalue of K ψ = ω² (M − s sᵀ/J) ψ over the torsional modes (0
     /// without them).
@@ -499,8 +473,19 @@ impl InPlaneDynamics {
     /// on the implicit midpoint rule, an off-axis reference
     /// rotation, a start above the speed bound (where the spin terms are not
     /// built), and a torque-limited drive with torsional modes on the
-    /// implicit midpoint rule.
-    pub fn check(&self, config: &Config) -> Result<(), SimulationError> {
+    /// implicit midpoint rule or on `contact_exponential` with
+    /// `stage_dependent_loads` (the pads, the tool). There the joint would
+    /// ride in the step's unknowns: free at the drive's limit, the hub rings
+    /// with the torsional modes far above the step (ω* = 4.6e5 rad/s on
+    /// config/brake_bench.yaml with the k = 0 modes,
+    /// [`InPlaneDynamics::free_joint_rate`]) and the limit switches within
+    /// each ring; the step's results there did not converge with h (1e-3 to
+    /// 1e-2 of the speed off converged RK4 at 16–36 kHz).
+    pub fn check(
+        &self,
+        config: &Config,
+        stage_dependent_loads: bool,
+    ) -> Result<(), SimulationError> {
         let refuse = |key: &'static str, why: &'static str| {
             Err(SimulationError::InPlaneKeyNotWired { key, why })
         };
@@ -531,16 +516,20 @@ impl InPlaneDynamics {
                 limit: self.speed_bound,
             });
         }
-        if config.joint.max_torque.is_some()
-            && !self.torsional.is_empty()
-            && config.simulation.integrator == IntegratorKind::ImplicitMidpoint
-        {
-            return refuse(
-                "joint.max_torque",
-                "a torque-limited drive with in-plane torsional modes is built for simulation.integrator: exponential, contact_exponential and rk4",
-            );
+        if config.joint.max_torque.is_none() || self.torsional.is_empty() {
+            return Ok(());
         }
-        Ok(())
+        match config.simulation.integrator {
+            IntegratorKind::ImplicitMidpoint => refuse(
+                "joint.max_torque",
+                "a torque-limited drive with in-plane torsional modes is built for simulation.integrator: exponential, rk4 and contact_exponential (without pads or tool)",
+            ),
+            IntegratorKind::ContactExponential if stage_dependent_loads => refuse(
+                "joint.max_torque",
+                "with torsional modes and stage-dependent loads (pads, tool) on simulation.integrator: contact_exponential the joint is free at the drive's limit and rings with the torsional modes far above the step, where the located switches of the limit do not converge; simulation.integrator: rk4 (or exponential without such loads) steps it, or drop joint.max_torque",
+            ),
+            _ => Ok(()),
+        }
     }
 }
 

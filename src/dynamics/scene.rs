@@ -177,8 +177,7 @@ impl Scene {
         else {
             return Ok(());
         };
-        ip.check(config)?;
-        ip.check_free_joint_in_contact_step(config, self.load_models.stage_dependent())?;
+        ip.check(config, self.load_models.stage_dependent())?;
         if config.joint.max_torque.is_some() {
             ip.free_joint_omega = ip.free_joint_rate(self.polar_inertia);
         }

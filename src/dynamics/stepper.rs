@@ -448,7 +448,7 @@ impl Stepper {
             self.held_damping_rate += friction_band_rate(friction, inertia, speed_min);
         }
         let twist = if joint_in_y {
-            Twist::in_y(&d)
+            Twist::rigid(&d)
         } else {
             self.in_plane_joint
                 .begin(scene, state, &mut self.loads, &self.consts, &d, h)

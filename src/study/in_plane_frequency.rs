@@ -9,7 +9,7 @@
 //! the in-plane maximum), whose own error is bounded by its difference from
 //! the table at half its count: the Ritz frequencies converge from above.
 
-use super::frequency::{max_error, spline_grid};
+use super::frequency::{max_error, spline_grid, FrequencySetting};
 use super::timing::min_time;
 use super::{mark_pareto, recommend, Candidate, Recommendation, StudyError, StudyPlan};
 use crate::config::{CentrifugalConfig, PlateConfig, RadialSplines};
@@ -57,13 +57,6 @@ pub struct InPlaneFrequencyReference {
     pub frequencies_hz: Vec<(InPlaneModeId, f64)>,
 }
 
-/// A setting of this axis: `plate.radial_splines`.
-#[derive(Debug, Clone, PartialEq, Serialize)]
-pub struct InPlaneFrequencySetting {
-    /// A fixed count or `auto`.
-    pub radial_splines: RadialSplines,
-}
-
 /// The in-plane frequency error against `plate.radial_splines`.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct InPlaneFrequencyAxis {
@@ -78,9 +71,9 @@ pub struct InPlaneFrequencyAxis {
     /// One row per spline count measured (`auto` included).
     pub rows: Vec<InPlaneFrequencyRow>,
     /// One per plan target.
-    pub recommendations: Vec<Recommendation<InPlaneFrequencySetting>>,
+    pub recommendations: Vec<Recommendation<FrequencySetting>>,
     /// The scene's own `plate.radial_splines`.
-    pub default_setting: InPlaneFrequencySetting,
+    pub default_setting: FrequencySetting,
 }
 
 /// Frequencies (rad/s) per in-plane mode (a cos/sin pair once).
@@ -179,7 +172,7 @@ pub(crate) fn run(
             error: r.max_relative_error,
             uncertainty,
             cost: r.build_time_s,
-            setting: InPlaneFrequencySetting {
+            setting: FrequencySetting {
                 radial_splines: r.radial_splines,
             },
             is_default: r.radial_splines == plate.radial_splines,
@@ -200,7 +193,7 @@ pub(crate) fn run(
         },
         rows,
         recommendations,
-        default_setting: InPlaneFrequencySetting {
+        default_setting: FrequencySetting {
             radial_splines: plate.radial_splines,
         },
     }))

@@ -98,14 +98,7 @@ impl BlockPropagator {
         speed: f64,
         nu: f64,
     ) {
-        if self.h == h && self.speed_key == speed && self.nu == nu {
-            return;
-        }
-        let n = self.n;
-        let stiffness = |a: usize, b: usize| speed * speed * block.k_over_m[a * n + b];
-        let rates = |a: usize, b: usize| speed * block.g_over_m[a * n + b];
-        self.fill(&block.modes, consts, h, nu, stiffness, rates, None);
-        self.speed_key = speed;
+        self.fill_spin(block, consts, h, speed, nu, None);
     }
 
     /// Recompute e^{Âh} for the k = 0 in-plane spin block with the joint
@@ -124,17 +117,31 @@ impl BlockPropagator {
         coupling: &[f64],
         polar_inertia: f64,
     ) {
-        if self.h == h && self.speed_key == speed && self.nu == 0.0 {
+        let free = FreeJoint {
+            coupling,
+            polar_inertia,
+        };
+        self.fill_spin(block, consts, h, speed, 0.0, Some(free));
+    }
+
+    /// e^{Âh} of an in-plane spin block at Ω (with `free_joint`, the
+    /// joint's inertia coupling) if (h, Ω, ν) changed.
+    fn fill_spin(
+        &mut self,
+        block: &InPlaneSpinBlock,
+        consts: &[ModeConstants],
+        h: f64,
+        speed: f64,
+        nu: f64,
+        free_joint: Option<FreeJoint>,
+    ) {
+        if self.h == h && self.speed_key == speed && self.nu == nu {
             return;
         }
         let n = self.n;
         let stiffness = |a: usize, b: usize| speed * speed * block.k_over_m[a * n + b];
         let rates = |a: usize, b: usize| speed * block.g_over_m[a * n + b];
-        let free = FreeJoint {
-            coupling,
-            polar_inertia,
-        };
-        self.fill(&block.modes, consts, h, 0.0, stiffness, rates, Some(free));
+        self.fill(&block.modes, consts, h, nu, stiffness, rates, free_joint);
         self.speed_key = speed;
     }
 

@@ -297,8 +297,8 @@ pub fn build(config: &Config, nodes: &SceneNodes) -> Option<Box<dyn LoadModel>> 
             in_plane: None,
         }
         .with_coupling(nodes)
-        .with_patch_coupling()
-        .with_friction_gram(nodes),
+        .with_friction_gram(nodes)
+        .with_patch_coupling(),
     ))
 }
 

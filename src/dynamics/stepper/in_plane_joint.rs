@@ -81,8 +81,9 @@ pub(super) fn joint_in_y(
 }
 
 impl Twist {
-    /// The joint rides in y: the drive's step `d` stands until its end.
-    pub fn in_y(d: &DriveStep) -> Twist {
+    /// The joint under the drive's step `d` alone: no torsional mode, or the
+    /// joint rides in y (its end then comes from y).
+    pub fn rigid(d: &DriveStep) -> Twist {
         Twist {
             acceleration: d.acceleration,
             effort: d.effort,
@@ -127,11 +128,7 @@ impl InPlaneJoint {
         d: &DriveStep,
         h: f64,
     ) -> Twist {
-        let rigid = Twist {
-            acceleration: d.acceleration,
-            effort: d.effort,
-            kind: TwistKind::Rigid,
-        };
+        let rigid = Twist::rigid(d);
         let Some(ip) = scene
             .in_plane
             .as_ref()

@@ -32,7 +32,7 @@ pub(super) struct StageRhs<'a> {
     /// that of a frame turning at the mean speed).
     pub euler_alpha: f64,
     /// The drive's law at each instant instead of `alpha`: the joint
-    /// integrated in the step ([`crate::dynamics::joint::integrated_in_step`]).
+    /// integrated in the step (`joint_in_y` in in_plane_joint.rs).
     pub drive: Option<StageDrive<'a>>,
     /// The drive law's switching functions at the last evaluation
     /// ([`StageDrive::margins`]; with `drive`).
