@@ -100,6 +100,19 @@ pub enum StepError {
         /// Ω at the substep's start, rad/s.
         speed: f64,
     },
+    /// A `contact_exponential` piece faster than the rates its switching
+    /// functions' samples were sized for.
+    #[error("simulation.integrator = contact_exponential: a piece's fastest rate {rate:.3e} 1/s at Ω = {speed} rad/s is beyond the scene's bound at rest, {bound:.3e} 1/s, that sizes the samples of its switching functions (a quarter radian each, down to {unit:e} s): a contact closing and opening between two samples would be missed; use simulation.integrator: rk4; the step was undone")]
+    SwitchesUndersampled {
+        /// The piece's fastest rate, 1/s.
+        rate: f64,
+        /// λ_max at Ω = 0, 1/s.
+        bound: f64,
+        /// The finest sample interval, s.
+        unit: f64,
+        /// Ω at the substep's start, rad/s.
+        speed: f64,
+    },
     /// The joint turned faster than the in-plane modes' bound where their spin terms are not built.
     #[error("the joint speed {speed} rad/s is beyond {limit:.3} rad/s, the bound for in-plane modes (plate.in_plane_nodal_diameters) where their spin terms are not built (simulation.integrator: implicit_midpoint; Coriolis coupling 2Ω/ω_min up to 1e-3); the step was undone")]
     InPlaneSpin {

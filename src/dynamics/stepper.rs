@@ -465,7 +465,7 @@ impl Stepper {
             IntegratorKind::ContactExponential if stiff_models => {
                 let tolerance = settings.contact_tolerance;
                 joint_end =
-                    self.contact_exponential(scene, state, inputs, &joint, tolerance, stage_drive);
+                    self.contact_exponential(scene, state, inputs, &joint, tolerance, stage_drive)?;
             }
             IntegratorKind::Exponential | IntegratorKind::ContactExponential => {
                 self.check_held_damping(settings, h, state.speed)?;

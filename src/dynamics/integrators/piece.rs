@@ -33,8 +33,10 @@ const FINEST_NORM: f64 = 0.125;
 /// radian misses enough brief contacts to leave 1e-2, a quarter 2.6e-5 and a
 /// twentieth 2e-6 of the peak against the converged reference).
 pub(crate) const SAMPLE_ANGLE: f64 = 0.25;
-/// Most samples of the switching functions per step.
-pub(crate) const MAX_SAMPLE_LEVEL: usize = 8;
+/// Most samples in a piece's sample table, 2^8 per step: a piece whose
+/// fastest rate needs finer samples has no table and is scanned along its
+/// flow at its own sample level (which the stored levels always reach).
+pub(crate) const MAX_TABLE_LEVEL: usize = 8;
 
 /// The tables of one piece (see the module docs); buffers allocated once.
 #[derive(Debug, Clone, PartialEq)]
@@ -160,6 +162,12 @@ impl PieceTables {
         self.sample_level
     }
 
+    /// Whether the samples τ_m of a step h are within [`SAMPLE_ANGLE`] of
+    /// the piece's fastest rate (the stored levels may stop short of it).
+    pub(crate) fn samples_every_quarter_radian(&self, h: f64) -> bool {
+        h / (self.sample_level as f64).exp2() * self.rate <= SAMPLE_ANGLE
+    }
+
     /// S F(i τ_m), ns × n, for i = 1..=2^m.
     pub(crate) fn sampled(&self, i: usize) -> &[f64] {
         let size = self.ns * self.n;
@@ -206,9 +214,14 @@ impl PieceTables {
         self.sample_level = sample_level(h, self.rate, self.levels - 1);
     }
 
-    /// Fill S F(i τ_m) and the bounds (ns n² per sample). The table grows to
-    /// the first piece that needs it (then no allocation).
+    /// Fill S F(i τ_m) and the bounds (ns n² per sample) where the piece
+    /// samples at most 2^[`MAX_TABLE_LEVEL`] times a step (else it is
+    /// scanned along its flow). The table grows to the first piece that
+    /// needs it (then no allocation).
     pub(crate) fn fill_sample_table(&mut self, b: &mut BuildScratch) {
+        if self.sample_level > MAX_TABLE_LEVEL {
+            return;
+        }
         let size = (1usize << self.sample_level) * self.ns * self.n;
         if self.sf.len() < size {
             self.sf.resize(size, 0.0);
@@ -287,11 +300,11 @@ fn finest_level(h: f64, rho: f64, levels_needed: usize) -> usize {
     level
 }
 
-/// m with τ_m ρ ≤ [`SAMPLE_ANGLE`], at most [`MAX_SAMPLE_LEVEL`] and the
-/// stored levels.
+/// m with τ_m ρ ≤ [`SAMPLE_ANGLE`], at most the stored levels (which
+/// `ContactExponential::levels_for` makes fine enough for the scene's rates).
 fn sample_level(h: f64, rho: f64, max_level: usize) -> usize {
     let mut m = 0;
-    while h / (m as f64).exp2() * rho > SAMPLE_ANGLE && m < MAX_SAMPLE_LEVEL.min(max_level) {
+    while h / (m as f64).exp2() * rho > SAMPLE_ANGLE && m < max_level {
         m += 1;
     }
     m
@@ -532,7 +545,7 @@ mod tests {
         }
         // Sampled every τ_m with τ_m ω ≤ 1: S F(i τ_m) = the first row of F(i τ_m).
         let m = t.sample_level();
-        assert!(h / (m as f64).exp2() * omega <= 2.0 * SAMPLE_ANGLE || m == MAX_SAMPLE_LEVEL);
+        assert!(h / (m as f64).exp2() * omega <= 2.0 * SAMPLE_ANGLE);
         for i in 1..=(1usize << m) {
             let ti = i as f64 * h / (m as f64).exp2();
             let (s, c) = (omega * ti).sin_cos();

@@ -23,7 +23,9 @@ use super::{load_context, JointEnd, Stepper, SubstepMotion};
 use crate::config::Coordinates;
 use crate::dynamics::ale::{ale_to_lagrange, harmonics};
 use crate::dynamics::commands::Inputs;
+use crate::dynamics::error::StepError;
 use crate::dynamics::integrators::contact_exponential::ContactExponential;
+use crate::dynamics::integrators::piece::SAMPLE_ANGLE;
 use crate::dynamics::joint::{StageDrive, DRIVE_SWITCHES};
 use crate::dynamics::load_models::LoadContext;
 use crate::dynamics::scene::Scene;
@@ -45,7 +47,7 @@ impl Stepper {
         joint: &SubstepMotion,
         tolerance: f64,
         stage_drive: Option<StageDrive>,
-    ) -> Option<JointEnd> {
+    ) -> Result<Option<JointEnd>, StepError> {
         let SubstepMotion {
             h,
             chi0,
@@ -133,6 +135,15 @@ impl Stepper {
             &mut state.contact_spans,
             &mut eval,
         );
+        if self.last_contact.undersampled_rate > 0.0 {
+            let bound = self.lambda_max(scene, 0.0);
+            return Err(StepError::SwitchesUndersampled {
+                rate: self.last_contact.undersampled_rate,
+                bound,
+                unit: h / (self.contact_levels.map_or(0, |(l, _)| l) as f64).exp2(),
+                speed: speed0,
+            });
+        }
         let end = stage_drive.map(|_| {
             let speed1 = self.y[m];
             let mut chi1 = chi0;
@@ -147,7 +158,7 @@ impl Stepper {
         frame_kick(scene, kick, &mut self.y);
         let (chi1, speed1) = end.map_or((joint.chi1, joint.speed1), |e| (e.chi1, e.speed1));
         self.contact_finish(scene, state, chi1, speed1);
-        end
+        Ok(end)
     }
 
     /// y ← the ALE state and the models' continuous states, then with a
@@ -164,7 +175,11 @@ impl Stepper {
         let models = &scene.load_models;
         let m = scene.first_order_unknowns();
         let size = m + stage_drive.map_or(0, |_| CONTACT_JOINT_UNKNOWNS);
-        let levels = ContactExponential::levels_for(h, SWITCH_RESOLUTION);
+        // Units fine enough to locate a switch to SWITCH_RESOLUTION and to
+        // sample the fastest piece every quarter radian (the modes with
+        // every contact closed, at rest: λ_max at Ω = 0).
+        let unit = SWITCH_RESOLUTION.min(SAMPLE_ANGLE / self.lambda_max(scene, 0.0));
+        let levels = ContactExponential::levels_for(h, unit);
         if self.contact_levels != Some((levels, size)) {
             let switches = models.switching_functions() + stage_drive.map_or(0, |_| DRIVE_SWITCHES);
             let mut c = ContactExponential::new(size, switches, levels);
