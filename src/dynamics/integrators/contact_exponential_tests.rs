@@ -106,17 +106,19 @@ fn a_contact_that_closes_and_opens_inside_steps_follows_the_exact_half_sines() {
     assert!(worst < 1e-3, "{worst}");
 }
 
-/// A fast oscillator, ẍ = −ω² x at hω = 1000, from x = 0, ẋ = 1, whose
-/// switching function x − 0.95/ω is positive only within ±acos 0.95 =
-/// ±0.318 rad of each crest: 2^12 samples a step (a quarter radian each),
-/// beyond the 2^8 of a sample table, so the piece is scanned along its flow.
-fn crests(y: &[f64], f: &mut [f64], s: &mut [f64]) {
-    let w = 1.0e6;
-    f[0] = y[1];
-    f[1] = -w * w * y[0];
-    s[0] = y[0] - 0.95 / w;
+/// A fast oscillator, ẍ = −ω² x, from x = 0, ẋ = 1, whose switching
+/// function x − 0.95/ω is positive only within ±acos 0.95 = ±0.318 rad of
+/// each crest.
+fn crests(w: f64) -> impl FnMut(&[f64], &mut [f64], &mut [f64]) {
+    move |y, f, s| {
+        f[0] = y[1];
+        f[1] = -w * w * y[0];
+        s[0] = y[0] - 0.95 / w;
+    }
 }
 
+/// At hω = 1000 a step needs 2^12 samples (a quarter radian each), beyond
+/// the 2^8 of a sample table, so the piece is scanned along its flow.
 #[test]
 fn a_fast_piece_finds_every_brief_crest_sampled_every_quarter_radian() {
     let (h, w) = (1.0e-3, 1.0e6);
@@ -125,7 +127,7 @@ fn a_fast_piece_finds_every_brief_crest_sampled_every_quarter_radian() {
     c.set_scale(&[1e-12, 1e-6], &[0, 1, 2]);
     let mut y = [0.0, 1.0];
     let mut spans = ContactSpans::default();
-    let r = c.step(h, &mut y, &[], 1e-12, &mut spans, &mut crests);
+    let r = c.step(h, &mut y, &[], 1e-12, &mut spans, &mut crests(w));
     // Exactly: each crest t_k = (π/2 + 2πk)/ω enters at t_k − δ and leaves
     // at t_k + δ, δ = acos(0.95)/ω.
     let delta = 0.95f64.acos();
@@ -141,4 +143,32 @@ fn a_fast_piece_finds_every_brief_crest_sampled_every_quarter_radian() {
     assert_eq!(r.switches, exact);
     assert!(r.undersampled_rate == 0.0 && !r.unlocated);
     assert!(off < 1e-9, "{off:e}");
+}
+
+/// At hω = 15000 the crests switch 4774 times in a step: the step stops at
+/// MAX_EVENTS and says so (the stepper then refuses it).
+#[test]
+fn chatter_beyond_max_events_stops_the_step_and_says_so() {
+    let (h, w) = (1.0e-3, 1.5e7);
+    let levels = ContactExponential::levels_for(h, 0.25 / w);
+    let mut c = ContactExponential::new(2, 1, levels);
+    c.set_scale(&[1e-12, 1e-6], &[0, 1, 2]);
+    let mut y = [0.0, 1.0];
+    let mut spans = ContactSpans::default();
+    let r = c.step(h, &mut y, &[], 1e-12, &mut spans, &mut crests(w));
+    assert!(r.unlocated && r.undersampled_rate == 0.0);
+    assert_eq!(r.switches, MAX_EVENTS);
+}
+
+/// Levels short of a piece's rate are reported, not sampled in silence.
+#[test]
+fn a_piece_faster_than_the_levels_is_reported() {
+    let (h, w) = (1.0e-3, 1.0e6);
+    let mut c = ContactExponential::new(2, 1, 8);
+    c.set_scale(&[1e-12, 1e-6], &[0, 1, 2]);
+    let mut y = [0.0, 1.0];
+    let mut spans = ContactSpans::default();
+    let r = c.step(h, &mut y, &[], 1e-12, &mut spans, &mut crests(w));
+    println!("rate {:e}", r.undersampled_rate);
+    assert!((r.undersampled_rate / w - 1.0).abs() < 0.1);
 }
