@@ -13,35 +13,35 @@
 //! every evaluation. A
 //! step that produces a non-finite or implausible state is undone and reported.
 
-use super::ale::{harmonics, lagrange_to_ale, pair_to_ale};
+use super::ale::lagrange_to_ale;
 use super::commands::Inputs;
-use super::error::{Divergence, StepError};
+use super::error::StepError;
+use super::integrators::block_exponential;
 use super::integrators::contact_exponential::ContactExponential;
-use super::integrators::equations::{
-    mode_constants, ModalEquations, ModeConstants, ReferenceMotion,
-};
+use super::integrators::equations::{mode_constants, ModeConstants};
 use super::integrators::exponential::ModePropagator;
 use super::integrators::stiffened_midpoint::StiffenedMidpoint;
-use super::integrators::{block_exponential, implicit_midpoint, rk4, MAX_INNER_SUBSTEPS};
-use super::joint::{drive, friction_band_rate, StageDrive, DRIVE_SWITCHES};
-use super::load_models::{
-    LoadContext, LoadModelState, LoadModelUndo, ModelWrenches, HELD_DAMPING_LIMIT,
-};
+
+use super::joint::{drive, friction_band_rate, StageDrive};
+use super::load_models::{LoadContext, LoadModelState, LoadModelUndo, ModelWrenches};
 use super::loads::{add_reference_motion, compute as node_loads, StepLoads};
 use super::scene::Scene;
 use super::state::{JointAngle, State};
 use super::wrench::Wrench;
 use crate::config::{Config, Coordinates, IntegratorKind};
+use divergence::check;
 use in_plane_joint::{joint_in_y, InPlaneJoint, Twist};
 use model_evaluation::ModelEvaluation;
-use nalgebra::Complex;
-use stage_rhs::StageRhs;
 
 mod contact_step;
+mod divergence;
+mod held_load_steps;
 mod in_plane_exponential;
 mod in_plane_joint;
 mod model_evaluation;
+mod rk4_step;
 mod stage_rhs;
+mod substep_limits;
 
 pub use super::integrators::contact_exponential::StepReport as ContactReport;
 
@@ -246,109 +246,6 @@ impl Stepper {
     /// What the last `contact_exponential` substep did (switches located, pieces built).
     pub fn last_contact(&self) -> ContactReport {
         self.last_contact
-    }
-
-    /// Inner substeps a substep of h needs at speeds up to |Ω| so that
-    /// h·λ_max stays below the integrator's step limit (1 for the exponential
-    /// integrator).
-    pub fn inner_substeps(
-        &self,
-        scene: &Scene,
-        settings: &StepperSettings,
-        h: f64,
-        speed: f64,
-    ) -> usize {
-        let Some((limit, _)) = settings.step_limit() else {
-            return 1;
-        };
-        let inner = ((h * self.lambda_max(scene, speed) / limit).ceil() as usize).max(1);
-        if settings.integrator != IntegratorKind::Rk4 {
-            return inner;
-        }
-        // RK4 evaluates the models at every stage: their damping at the
-        // substep's start needs its stability on the negative real axis.
-        inner.max((h * self.held_damping_rate / RK4_DAMPING_LIMIT).ceil() as usize)
-    }
-
-    /// λ_max = max over the modes of |ω_eff| + 2ζω + kΩ (a torsional mode's
-    /// at least the free joint's ω* where the joint may be free), the load models'
-    /// coupling included as bounded in [`LoadModels`](super::load_models::LoadModels),
-    /// and the in-plane spin terms' Gershgorin bounds (`InPlaneSpinTerms::rate_bounds`, made once).
-    fn lambda_max(&self, scene: &Scene, speed: f64) -> f64 {
-        let c = scene.load_models.coupling();
-        let stiffening = scene
-            .stiffening
-            .as_ref()
-            .map_or(0.0, |s| s.rate_bound * speed * speed);
-        let (spin_stiffness, coriolis) = scene.in_plane.as_ref().map_or((0.0, 0.0), |ip| {
-            let (k, g) = ip.spin.rate_bounds;
-            (k * speed * speed, g * speed.abs())
-        });
-        // A torque-limited drive may leave the joint free: its torsional
-        // modes then ring at up to ω* (InPlaneDynamics::free_joint_rate).
-        let free = scene
-            .in_plane
-            .as_ref()
-            .map_or(0.0, |ip| ip.free_joint_omega * ip.free_joint_omega);
-        scene
-            .elastic_modes()
-            .zip(&self.consts)
-            .enumerate()
-            .map(|(i, ((k, ..), mc))| {
-                let own = match &scene.in_plane {
-                    Some(ip) if ip.coupling_of(i) != 0.0 => mc.omega_eff_sq.abs().max(free),
-                    _ => mc.omega_eff_sq.abs(),
-                };
-                (own + stiffening + spin_stiffness + c.stiffness_rate_sq).sqrt()
-                    + mc.damping_rate
-                    + c.damping_rate
-                    + coriolis
-                    + k as f64 * speed.abs()
-            })
-            .fold(0.0, f64::max)
-    }
-
-    /// Refuse a substep of `h` whose held model forces would not resolve the
-    /// models' damping at its start (`LoadModels::held_damping_rate`).
-    fn check_held_damping(
-        &self,
-        settings: &StepperSettings,
-        h: f64,
-        speed: f64,
-    ) -> Result<(), StepError> {
-        let rate = self.held_damping_rate;
-        if h * rate > HELD_DAMPING_LIMIT {
-            return Err(StepError::HeldDampingTooFast {
-                integrator: settings.integrator.name(),
-                rate,
-                step: h,
-                limit: HELD_DAMPING_LIMIT,
-                speed,
-            });
-        }
-        Ok(())
-    }
-
-    /// The inner substeps for a substep of h from Ω0 under α, or the refusal.
-    fn checked_inner_substeps(
-        &self,
-        scene: &Scene,
-        settings: &StepperSettings,
-        h: f64,
-        speed0: f64,
-        alpha: f64,
-    ) -> Result<usize, StepError> {
-        let speed_max = speed0.abs().max((speed0 + alpha * h).abs());
-        let inner = self.inner_substeps(scene, settings, h, speed_max);
-        if inner > MAX_INNER_SUBSTEPS {
-            return Err(StepError::TooManySubsteps {
-                integrator: settings.integrator.name(),
-                needed: inner,
-                limit: MAX_INNER_SUBSTEPS,
-                step: h,
-            });
-        }
-        Ok(inner)
     }
 
     /// Advance `state` by one output step (dt) under `inputs`. On error the
@@ -561,347 +458,11 @@ impl Stepper {
             .copy_from_slice(&held.loads.plate_frame);
         self.loads.axial_torque = held.loads.axial_torque;
     }
-
-    /// The exponential step's harmonics of χ into `exp_harm` (kept when they
-    /// are already of χ).
-    fn exp_harmonics(&mut self, chi: &JointAngle, k_max: u32) {
-        if self.exp_harm_at != Some(*chi) {
-            harmonics(chi, k_max, &mut self.exp_harm);
-            self.exp_harm_at = Some(*chi);
-        }
-    }
-
-    /// Exact step of the Lagrangian description over the substep (the loads
-    /// held), then the ALE one derived at χ1: both written into `state`.
-    fn exponential(&mut self, scene: &Scene, state: &mut State, joint: &SubstepMotion) {
-        let SubstepMotion {
-            h,
-            chi0,
-            speed_mean,
-            chi1,
-            speed1,
-            ..
-        } = *joint;
-        self.exp_harmonics(&chi0, scene.layout.k_max);
-        if let Some(stiffening) = &scene.stiffening {
-            let substep = block_exponential::JointSubstep {
-                h,
-                harmonics_start: &self.exp_harm,
-                speed_mean,
-                speed_end: speed1,
-            };
-            let (lagrange_q, lagrange_v, ale_q, ale_v) = state.lagrange_and_ale_mut();
-            block_exponential::advance(
-                stiffening,
-                &mut self.stiffened,
-                &self.consts,
-                substep,
-                &self.loads,
-                lagrange_q,
-                lagrange_v,
-            );
-            // The in-plane modes (no bending stiffness of theirs: their spin
-            // terms carry the prestress) step by their own blocks.
-            if let Some(ip) = &scene.in_plane {
-                harmonics(&chi1, scene.layout.k_max, &mut self.exp_harm_next);
-                in_plane_exponential::advance(
-                    ip,
-                    &mut self.in_plane_spin,
-                    &self.consts,
-                    substep,
-                    &self.exp_harm_next,
-                    &self.loads,
-                    in_plane_exponential::Amplitudes {
-                        lagrange_q,
-                        lagrange_v,
-                        ale_q,
-                        ale_v,
-                    },
-                );
-            }
-            return self.derive_ale(scene, state, chi1, speed1);
-        }
-        if self.propagators_for != Some((h, speed_mean)) {
-            let soft = scene.off_axis_rate_squared();
-            for (i, (k, mass, damping, omega)) in scene.elastic_modes().enumerate() {
-                let nu = k as f64 * speed_mean;
-                let p = &mut self.propagators[i];
-                if p.h != h || p.nu != nu {
-                    *p = ModePropagator::new(mass, damping, omega, soft, h, nu);
-                }
-            }
-            self.propagators_for = Some((h, speed_mean));
-        }
-        // Each mode's new Lagrangian (q, q̇) at χ1 and, from it, its ALE one
-        // (the same operations as `derive_ale`, while the pair is at hand).
-        harmonics(&chi1, scene.layout.k_max, &mut self.exp_harm_next);
-        let (lagrange_q, lagrange_v, ale_q, ale_v) = state.lagrange_and_ale_mut();
-        // All of length n, so one index check serves every array (the compiler merges them).
-        let n = lagrange_q.len();
-        let (lagrange_v, ale_q, ale_v) = (&mut lagrange_v[..n], &mut ale_q[..n], &mut ale_v[..n]);
-        let (propagators, ale_frame, plate_frame) = (
-            &self.propagators[..n],
-            &self.loads.ale_frame[..n],
-            &self.loads.plate_frame[..n],
-        );
-        let harmonics_len = self.exp_harm.len();
-        let (harm0, harm1) = (&self.exp_harm[..], &self.exp_harm_next[..harmonics_len]);
-        // The in-plane modes (after the bending ones in the layout) step by their spin blocks.
-        let bending_end = scene.in_plane.as_ref().map_or(n, |ip| ip.offset);
-        let lay = &scene.layout;
-        let axisymmetric =
-            &lay.axisymmetric[..lay.axisymmetric.partition_point(|&i| i < bending_end)];
-        let pairs = &lay.pairs[..lay.pairs.partition_point(|p| p.cos < bending_end)];
-        for &i in axisymmetric {
-            let (q, qd) = propagators[i].advance(
-                lagrange_q[i],
-                lagrange_v[i],
-                ale_frame[i],
-                Complex::new(0.0, 0.0),
-            );
-            lagrange_q[i] = q;
-            lagrange_v[i] = qd;
-            ale_q[i] = q;
-            ale_v[i] = qd;
-        }
-        for p in pairs {
-            let (co, si) = harm0[p.k as usize];
-            let e0 = Complex::new(co, si);
-            let (fc, fs) = (ale_frame[p.cos], ale_frame[p.sin]);
-            let gc = Complex::new(fc, -fs) * e0;
-            let gs = Complex::new(fs, fc) * e0;
-            let (qc, vc) = propagators[p.cos].advance(
-                lagrange_q[p.cos],
-                lagrange_v[p.cos],
-                plate_frame[p.cos],
-                gc,
-            );
-            let (qs, vs) = propagators[p.sin].advance(
-                lagrange_q[p.sin],
-                lagrange_v[p.sin],
-                plate_frame[p.sin],
-                gs,
-            );
-            lagrange_q[p.cos] = qc;
-            lagrange_v[p.cos] = vc;
-            lagrange_q[p.sin] = qs;
-            lagrange_v[p.sin] = vs;
-            let [bar_c, bar_s, dot_c, dot_s] =
-                pair_to_ale(harm1[p.k as usize], p.k as f64 * speed1, [qc, qs], [vc, vs]);
-            ale_q[p.cos] = bar_c;
-            ale_q[p.sin] = bar_s;
-            ale_v[p.cos] = dot_c;
-            ale_v[p.sin] = dot_s;
-        }
-        if let Some(ip) = &scene.in_plane {
-            in_plane_exponential::advance(
-                ip,
-                &mut self.in_plane_spin,
-                &self.consts,
-                block_exponential::JointSubstep {
-                    h,
-                    harmonics_start: harm0,
-                    speed_mean,
-                    speed_end: speed1,
-                },
-                harm1,
-                &self.loads,
-                in_plane_exponential::Amplitudes {
-                    lagrange_q,
-                    lagrange_v,
-                    ale_q,
-                    ale_v,
-                },
-            );
-        }
-        // Every mode is axisymmetric or in a pair (model::build), so both descriptions are whole.
-        std::mem::swap(&mut self.exp_harm, &mut self.exp_harm_next);
-        self.exp_harm_at = Some(chi1);
-    }
-
-    /// The exponential step's result is the Lagrangian description at χ1:
-    /// derive the ALE one.
-    fn derive_ale(&mut self, scene: &Scene, state: &mut State, chi1: JointAngle, speed1: f64) {
-        let (lagrange_q, lagrange_v, ale_q, ale_v) = state.lagrange_and_ale_mut();
-        ale_q.copy_from_slice(lagrange_q);
-        ale_v.copy_from_slice(lagrange_v);
-        self.exp_harmonics(&chi1, scene.layout.k_max);
-        lagrange_to_ale(&scene.layout, &self.exp_harm, speed1, ale_q, ale_v);
-    }
-
-    /// The implicit midpoint rule over the substep in `inner` equal steps,
-    /// the loads held, each step's joint angle and speed at its midpoint (χ
-    /// quadratic in time under constant α).
-    fn implicit_midpoint(
-        &mut self,
-        scene: &Scene,
-        state: &mut State,
-        inner: usize,
-        joint: &SubstepMotion,
-    ) {
-        let SubstepMotion {
-            h,
-            chi0,
-            speed0,
-            alpha,
-            ..
-        } = *joint;
-        let hi = h / inner as f64;
-        let equations = ModalEquations {
-            scene,
-            consts: &self.consts,
-            coords: state.coordinates,
-        };
-        for j in 0..inner {
-            let t_mid = (j as f64 + 0.5) * hi;
-            let mut chi_mid = chi0;
-            chi_mid.advance(speed0 * t_mid + 0.5 * alpha * t_mid * t_mid);
-            harmonics(&chi_mid, scene.layout.k_max, &mut self.harm_end);
-            let mid = ReferenceMotion {
-                harmonics: &self.harm_end,
-                speed: speed0 + alpha * t_mid,
-                accel: alpha,
-            };
-            if scene.stiffening.is_some() {
-                self.stiffened_midpoint.advance(
-                    equations,
-                    hi,
-                    mid,
-                    &self.loads,
-                    &mut state.q,
-                    &mut state.q_dot,
-                );
-            } else {
-                implicit_midpoint::advance(
-                    equations,
-                    hi,
-                    mid,
-                    &self.loads,
-                    &mut state.q,
-                    &mut state.q_dot,
-                );
-            }
-        }
-    }
-
-    /// RK4 over the substep, sub-stepped below its step limit, the load
-    /// models and node loads evaluated at every stage. With `stage_drive` the
-    /// joint (χ − χ0, Ω, ∫τ_drive dt) is integrated with the elastic state,
-    /// the drive's law at every stage, and its end returned; otherwise the
-    /// joint moves under the held α.
-    fn rk4(
-        &mut self,
-        scene: &Scene,
-        settings: &StepperSettings,
-        state: &mut State,
-        inputs: &Inputs,
-        joint: &SubstepMotion,
-        stage_drive: Option<StageDrive>,
-    ) -> Result<Option<JointEnd>, StepError> {
-        let SubstepMotion {
-            h,
-            chi0,
-            speed0,
-            alpha,
-            ..
-        } = *joint;
-        let inner = self.checked_inner_substeps(scene, settings, h, speed0, alpha)?;
-        self.last_inner_substeps = self.last_inner_substeps.max(inner);
-        let n = scene.n_modes();
-        let m = scene.first_order_unknowns();
-        let coords = state.coordinates;
-        if stage_drive.is_some() {
-            self.y.extend_from_slice(&[0.0, speed0, 0.0]);
-        }
-        self.y[..n].copy_from_slice(&state.q);
-        self.y[n..2 * n].copy_from_slice(&state.q_dot);
-        let continuous = scene.load_models.continuous_states() > 0;
-        if continuous {
-            scene
-                .load_models
-                .gather_continuous(&state.load_models, &mut self.y[2 * n..]);
-            self.stage_slots.copy_from(&state.load_models);
-        }
-        self.base_ale_frame.copy_from_slice(&self.loads.ale_frame);
-        let Stepper {
-            consts,
-            loads,
-            base_ale_frame,
-            harm,
-            views,
-            y,
-            rk,
-            model_wrenches,
-            evaluation,
-            stage_slots,
-            ..
-        } = self;
-        let mut stage = StageRhs {
-            scene,
-            inputs,
-            consts,
-            coords,
-            alpha,
-            euler_alpha: alpha,
-            drive: stage_drive,
-            drive_margins: [1.0; DRIVE_SWITCHES],
-            base_ale_frame,
-            harm,
-            views,
-            loads,
-            model_wrenches,
-            evaluation,
-            stage_slots: continuous.then_some(stage_slots),
-            slots: &state.load_models,
-        };
-        let dt = h / inner as f64;
-        let mut rhs = |t: f64, yy: &[f64], dy: &mut [f64]| {
-            let (yy, joint_y) = yy.split_at(m);
-            let (dy, joint_dy) = dy.split_at_mut(m);
-            let mut chi = chi0;
-            if stage_drive.is_some() {
-                // y's joint entries: χ − χ0, Ω, ∫τ_drive dt.
-                chi.advance(joint_y[0]);
-                let d = stage.eval(chi, joint_y[1], yy, dy).expect("a stage drive");
-                joint_dy.copy_from_slice(&[joint_y[1], d.acceleration, d.effort]);
-            } else {
-                chi.advance(speed0 * t + 0.5 * alpha * t * t);
-                stage.eval(chi, speed0 + alpha * t, yy, dy);
-            }
-        };
-        for j in 0..inner {
-            rk4::step(j as f64 * dt, dt, y, rk, &mut rhs);
-        }
-        state.q.copy_from_slice(&y[..n]);
-        state.q_dot.copy_from_slice(&y[n..2 * n]);
-        if continuous {
-            scene
-                .load_models
-                .scatter_continuous(&y[2 * n..m], &mut state.load_models);
-        }
-        let end = stage_drive.map(|_| {
-            let mut chi1 = chi0;
-            chi1.advance(y[m]);
-            JointEnd {
-                chi1,
-                speed1: y[m + 1],
-                acceleration: (y[m + 1] - speed0) / h,
-                effort: y[m + 2] / h,
-            }
-        });
-        y.truncate(m);
-        Ok(end)
-    }
 }
 
 /// The joint's entries RK4 carries after the elastic ones when the joint is
 /// integrated in the step: χ − χ0, Ω and ∫τ_drive dt.
 const JOINT_UNKNOWNS: usize = 3;
-
-/// Largest h × (the models' damping at a substep's start) per RK4 inner
-/// step: inside RK4's stability interval on the negative real axis,
-/// hσ < 2.785 (its stages evaluate the models, so no held force lags).
-const RK4_DAMPING_LIMIT: f64 = 2.5;
 
 /// The joint at a substep's end when it was integrated in the step: the
 /// acceleration and drive torque are the substep's means.
@@ -1015,78 +576,4 @@ fn load_context<'a>(scene: &'a Scene, state: &'a State, inputs: &'a Inputs) -> L
         speed: state.speed,
         held: scene.held_deflection(inputs),
     }
-}
-
-/// max |v| over finite values, in four independent lanes (no early exit).
-fn largest_magnitude(values: &[f64]) -> f64 {
-    let mut m = [0.0f64; 4];
-    let chunks = values.chunks_exact(4);
-    for &v in chunks.remainder() {
-        m[0] = m[0].max(v.abs());
-    }
-    for c in chunks {
-        for j in 0..4 {
-            m[j] = m[j].max(c[j].abs());
-        }
-    }
-    m[0].max(m[1]).max(m[2].max(m[3]))
-}
-
-/// Divergence guard: everything finite, amplitudes within the plausibility limit.
-fn check(scene: &Scene, state: &State) -> Result<(), StepError> {
-    let diverged = |cause| {
-        Err(StepError::Diverged {
-            time: state.time,
-            cause,
-        })
-    };
-    if !state.is_finite_except_load_models()
-        || !scene.load_models.state_is_finite(&state.load_models)
-    {
-        return diverged(Divergence::NonFinite);
-    }
-    let limit = scene.limits.max_deflection_thicknesses * scene.model.plate().thickness;
-    // One vectorizable pass; the search for the culprit only when some amplitude is beyond the limit.
-    if largest_magnitude(&state.q) > limit {
-        let bending = &state.q[..scene.model.n_modes()];
-        if let Some((i, &q)) = bending.iter().enumerate().find(|(_, q)| q.abs() > limit) {
-            let m = &scene.model.modes()[i];
-            return diverged(Divergence::ModeBeyondLimit {
-                mode: i,
-                k: m.k,
-                l: m.l,
-                shape: m.shape,
-                value: q,
-                limit,
-            });
-        }
-        if let Some(ip) = &scene.in_plane {
-            let in_plane = &state.q[ip.offset..];
-            if let Some((j, &q)) = in_plane.iter().enumerate().find(|(_, q)| q.abs() > limit) {
-                let m = &ip.modes[j];
-                return diverged(Divergence::InPlaneModeBeyondLimit {
-                    mode: ip.offset + j,
-                    k: m.k,
-                    l: m.l,
-                    value: q,
-                    limit,
-                });
-            }
-        }
-    }
-    if let Some(ip) = &scene.in_plane {
-        if state.speed.abs() > ip.speed_bound {
-            return Err(StepError::InPlaneSpin {
-                speed: state.speed,
-                limit: ip.speed_bound,
-            });
-        }
-    }
-    if state.speed.abs() > scene.limits.max_speed * 1.5 {
-        return diverged(Divergence::SpeedBeyondLimit {
-            speed: state.speed,
-            limit: scene.limits.max_speed,
-        });
-    }
-    Ok(())
 }
