@@ -347,7 +347,8 @@ fn bad_shear_data_is_refused_naming_the_key() {
 
 /// `contact_exponential` carries the patches in its linearisation: its
 /// motion (q̄ and the patches' radial deflections, 0.05 s above threshold)
-/// converges to RK4's as its tolerance tightens.
+/// converges to RK4's (at step limit 0.005 on the modes) as its tolerance
+/// tightens: measured 2.7e-7, 3.7e-9, 2.4e-9 at 1e-5, 1e-7, 1e-9.
 #[test]
 fn contact_exponential_carries_the_patches_as_rk4_does() {
     let mu = 1.5 * threshold(Some(SHEAR));
@@ -356,7 +357,7 @@ fn contact_exponential_carries_the_patches_as_rk4_does() {
         c.simulation.integrator = integrator;
         c.simulation.contact_tolerance = tolerance;
         c.simulation.rate_hz = 20_000.0;
-        c.simulation.rk4_step_limit = 0.05;
+        c.simulation.rk4_step_limit = 0.005;
         c.initial.q = vec![2e-6, 1e-6];
         let mut sim = Simulation::new(c).unwrap();
         let mut out = Vec::new();
@@ -379,7 +380,7 @@ fn contact_exponential_carries_the_patches_as_rk4_does() {
         assert!(d < last, "{d} after {last}");
         last = d;
     }
-    assert!(last < 1e-5, "{last}");
+    assert!(last < 1e-8, "{last}");
 }
 
 /// A configuration built in code passes no reader: the simulation itself

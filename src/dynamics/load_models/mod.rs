@@ -245,6 +245,7 @@ impl LoadModels {
             .fold(Coupling::default(), |a, c| Coupling {
                 stiffness_rate_sq: a.stiffness_rate_sq + c.stiffness_rate_sq,
                 damping_rate: a.damping_rate + c.damping_rate,
+                relaxation_rate: a.relaxation_rate.max(c.relaxation_rate),
             });
         LoadModels {
             models,
@@ -423,7 +424,7 @@ impl LoadModels {
         }
         for m in &self.models {
             let c = m.coupling();
-            let rate = c.stiffness_rate_sq.sqrt() + c.damping_rate;
+            let rate = c.stiffness_rate_sq.sqrt() + c.damping_rate + c.relaxation_rate;
             if h * rate > HELD_COUPLING_LIMIT {
                 return Err(SimulationError::ModelTooStiffForIntegrator {
                     model: m.name(),

@@ -139,13 +139,18 @@ impl CommandSpec {
 
 /// How strongly a memoryless model couples the modes, for the integrators'
 /// step checks: the largest eigenvalues of M^(−½) K M^(−½) (1/s²) and
-/// M^(−½) C M^(−½) (1/s) with every contact closed.
+/// M^(−½) C M^(−½) (1/s) with every contact closed, and the fastest
+/// relaxation of the model's massless states.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct Coupling {
     /// Largest eigenvalue of M^(−½) K M^(−½), 1/s².
     pub stiffness_rate_sq: f64,
     /// Largest eigenvalue of M^(−½) C M^(−½), 1/s.
     pub damping_rate: f64,
+    /// Fastest rate at which a massless continuous state relaxes on its own
+    /// (the lining patch's k_t/c_t), 1/s: a real eigenvalue, which RK4 keeps
+    /// stable and monotone per inner step but need not resolve like a mode.
+    pub relaxation_rate: f64,
 }
 
 /// Where a model writes its forces at one instant.

@@ -319,6 +319,7 @@ impl Pads {
         self.coupling = Coupling {
             stiffness_rate_sq: 2.0 * self.stiffness * lam,
             damping_rate: 2.0 * self.damping * lam,
+            relaxation_rate: 0.0,
         };
         if self.is_massive() {
             self.coupling = self.massive_coupling(lam);

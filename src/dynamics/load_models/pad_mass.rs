@@ -118,6 +118,7 @@ impl Pads {
         Coupling {
             stiffness_rate_sq: 4.0 * self.stiffness * lam + own.stiffness_rate_sq,
             damping_rate: 4.0 * self.damping * lam + own.damping_rate,
+            relaxation_rate: 0.0,
         }
     }
 
@@ -128,6 +129,7 @@ impl Pads {
         Coupling {
             stiffness_rate_sq: (2.0 * n * self.stiffness + self.backing_stiffness) / self.mass,
             damping_rate: 2.0 * n * self.damping / self.mass,
+            relaxation_rate: 0.0,
         }
     }
 }

@@ -39,12 +39,14 @@ impl Pads {
         let disc = Coupling {
             stiffness_rate_sq: rate,
             damping_rate: self.damping / self.stiffness * rate,
+            relaxation_rate: 0.0,
         };
         if self.is_massive() {
             let own = self.pad_own_coupling();
             return Coupling {
                 stiffness_rate_sq: disc.stiffness_rate_sq + own.stiffness_rate_sq,
                 damping_rate: disc.damping_rate + own.damping_rate,
+                relaxation_rate: 0.0,
             };
         }
         disc

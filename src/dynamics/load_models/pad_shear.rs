@@ -121,8 +121,8 @@ impl Pads {
     pub(super) fn with_patch_coupling(mut self) -> Pads {
         if let Some(law) = self.shear {
             self.coupling = Coupling {
-                stiffness_rate_sq: self.coupling.stiffness_rate_sq,
-                damping_rate: self.coupling.damping_rate + law.stiffness / law.damping,
+                relaxation_rate: law.stiffness / law.damping,
+                ..self.coupling
             };
         }
         self

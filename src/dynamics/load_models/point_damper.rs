@@ -96,6 +96,7 @@ pub fn build(config: &Config, nodes: &SceneNodes) -> Option<Box<dyn LoadModel>> 
     let coupling = Coupling {
         stiffness_rate_sq: 0.0,
         damping_rate: d.damping * ale_contact_rate(nodes, &d.nodes),
+        relaxation_rate: 0.0,
     };
     Some(Box::new(PointDampers {
         nodes: d.nodes.clone(),

@@ -102,6 +102,7 @@ pub fn build(config: &Config, nodes: &SceneNodes) -> Option<Box<dyn LoadModel>> 
     let coupling = Coupling {
         stiffness_rate_sq: s.stiffness * lam,
         damping_rate: s.damping * lam,
+        relaxation_rate: 0.0,
     };
     Some(Box::new(PointSprings {
         nodes: s.nodes.clone(),

@@ -24,13 +24,18 @@ impl Stepper {
         let Some((limit, _)) = settings.step_limit() else {
             return 1;
         };
-        let inner = ((h * self.lambda_max(scene, speed) / limit).ceil() as usize).max(1);
+        let lambda = self.lambda_max(scene, speed);
+        let relaxation = scene.load_models.coupling().relaxation_rate;
+        let substeps = |rate: f64, limit: f64| ((h * rate / limit).ceil() as usize).max(1);
         if settings.integrator != IntegratorKind::Rk4 {
-            return inner;
+            return substeps(lambda + relaxation, limit);
         }
         // RK4 evaluates the models at every stage: their damping at the
-        // substep's start needs its stability on the negative real axis.
-        inner.max((h * self.held_damping_rate / RK4_DAMPING_LIMIT).ceil() as usize)
+        // substep's start needs its stability on the negative real axis,
+        // and a massless state's relaxation a monotone decay.
+        substeps(lambda, limit)
+            .max(substeps(self.held_damping_rate, RK4_DAMPING_LIMIT))
+            .max(substeps(relaxation, RK4_RELAXATION_LIMIT))
     }
 
     /// λ_max = max over the modes of |ω_eff| + 2ζω + kΩ (a torsional mode's
@@ -119,3 +124,11 @@ impl Stepper {
 /// step: inside RK4's stability interval on the negative real axis,
 /// hσ < 2.785 (its stages evaluate the models, so no held force lags).
 const RK4_DAMPING_LIMIT: f64 = 2.5;
+
+/// Largest h × (the models' relaxation rate, `Coupling::relaxation_rate`)
+/// per RK4 inner step. A massless state relaxing at σ decays by RK4's
+/// R(−hσ) = 1 − hσ + (hσ)²/2 − (hσ)³/6 + (hσ)⁴/24 per inner step, which at
+/// hσ ≤ 1 is within 2 % of e^(−hσ) and positive: the relaxation is a real
+/// eigenvalue that sets no frequency, so RK4 keeps it monotone instead of
+/// resolving it to its step limit like a mode.
+const RK4_RELAXATION_LIMIT: f64 = 1.0;
