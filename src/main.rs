@@ -302,6 +302,9 @@ fn run() -> anyhow::Result<()> {
             drop(out);
             let bag_line = bag.map(|b| b.finish()).transpose()?;
             let steps = result?;
+            if sim.unlocated_substeps() > 0 {
+                eprintln!("warning: {}", sim.unlocated_warning());
+            }
             if stop.load(std::sync::atomic::Ordering::Relaxed) {
                 if let Some(line) = bag_line {
                     eprintln!("{line}");

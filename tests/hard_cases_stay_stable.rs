@@ -485,3 +485,34 @@ fn a_diverged_lathe_step_is_undone_with_every_surface_bin_it_cut() {
     assert!(guarded.step().is_err());
     assert!(guarded.state() == &before);
 }
+
+/// The fuzz test's held inputs on the bench (a clamp force at rounding
+/// level, 1.1e-255 N, a speed command of −8.3e-278 rad/s, a 10 MN radial
+/// force on node 1 with 1.2e-123 N axially): the contacts switch at rounding level, past the 4096 a
+/// substep that `contact_exponential` locates. The step is finished span by
+/// span, stays finite, is counted, and the warning names what to change.
+#[test]
+fn rounding_level_chatter_is_finished_counted_and_warned_of() {
+    use annular_plate::dynamics::load_models::pad_outputs::PadOutputs;
+    let mut sim = Simulation::new(support::scene_files::load("brake_bench.yaml")).unwrap();
+    sim.set_pad_clamp_force(0, 1.1054868701845855e-255).unwrap();
+    sim.set_speed_command(-8.273667864747689e-278).unwrap();
+    let radial = Wrench {
+        force: [1.0e7, 0.0, -1.233233025687852e-123],
+        moment: [0.0; 3],
+    };
+    sim.set_ale_wrench(0, radial).unwrap();
+    assert_eq!(sim.unlocated_substeps(), 0);
+    sim.step().unwrap();
+    let report = sim.contact_report();
+    println!("{report:?}");
+    assert!(report.unlocated && report.switches == 4096);
+    assert!(sim.state().is_finite());
+    assert_eq!(sim.unlocated_substeps(), 1);
+    let warning = sim.unlocated_warning();
+    assert!(
+        warning.starts_with("1 contact_exponential substeps"),
+        "{warning}"
+    );
+    assert!(warning.contains("simulation.rate_hz") && warning.contains("rk4"));
+}

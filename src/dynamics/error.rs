@@ -100,14 +100,6 @@ pub enum StepError {
         /// Ω at the substep's start, rad/s.
         speed: f64,
     },
-    /// Zeno-like chatter: more switches in one substep than `contact_exponential` locates.
-    #[error("simulation.integrator = contact_exponential located {switches} switches of the contacts within one substep of {step:e} s and more were coming (Zeno-like chatter: a contact closing and opening ever faster); raise simulation.rate_hz or simulation.substeps for shorter substeps, or use simulation.integrator: rk4; the step was undone")]
-    SwitchesChatter {
-        /// Switches located before the step stopped.
-        switches: usize,
-        /// The substep, s.
-        step: f64,
-    },
     /// A `contact_exponential` piece faster than the rates its switching
     /// functions' samples were sized for.
     #[error("simulation.integrator = contact_exponential: a piece's fastest rate {rate:.3e} 1/s at Ω = {speed} rad/s is beyond the scene's bound at rest, {bound:.3e} 1/s, that sizes the samples of its switching functions (a quarter radian each, down to {unit:e} s): a contact closing and opening between two samples would be missed; use simulation.integrator: rk4; the step was undone")]

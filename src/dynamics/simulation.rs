@@ -108,6 +108,20 @@ impl Simulation {
     pub fn contact_report(&self) -> super::stepper::ContactReport {
         self.stepper.last_contact()
     }
+    /// `contact_exponential` substeps finished without locating their
+    /// switches (Zeno-like chatter, more than 4096 in one substep) since the
+    /// simulation was made: `simulate` and the node warn of them.
+    pub fn unlocated_substeps(&self) -> u64 {
+        self.stepper.unlocated_substeps()
+    }
+    /// The warning of [`Simulation::unlocated_substeps`], for `simulate` and the node.
+    pub fn unlocated_warning(&self) -> String {
+        format!(
+            "{} contact_exponential substeps met more than {} switches of the contacts (Zeno-like chatter: a contact closing and opening ever faster, as at a clamp force near zero) and were finished span by span without locating them, each ending within h/2^L (at most 2.5e-7 s) of its end; raise simulation.rate_hz or use simulation.integrator: rk4 for an exact account",
+            self.unlocated_substeps(),
+            super::integrators::contact_exponential::MAX_EVENTS
+        )
+    }
     /// The held inputs.
     pub fn inputs(&self) -> &Inputs {
         &self.inputs

@@ -181,6 +181,9 @@ pub struct Stepper {
     contact_levels: Option<(usize, usize)>,
     contact_key: Vec<u64>,
     last_contact: ContactReport,
+    /// `contact_exponential` substeps finished without locating their
+    /// switches past `MAX_EVENTS` (Zeno-like chatter), since the stepper was made.
+    unlocated_substeps: u64,
     /// The torsional in-plane modes' coupling with the joint over a substep.
     in_plane_joint: InPlaneJoint,
     /// The in-plane modes' exact propagators with their spin terms, one per k.
@@ -232,6 +235,7 @@ impl Stepper {
             contact_levels: None,
             contact_key: Vec::with_capacity(64),
             last_contact: ContactReport::default(),
+            unlocated_substeps: 0,
             in_plane_joint: InPlaneJoint::new(scene),
             in_plane_spin: in_plane_exponential::propagators(scene.in_plane.as_ref()),
         }
@@ -246,6 +250,13 @@ impl Stepper {
     /// What the last `contact_exponential` substep did (switches located, pieces built).
     pub fn last_contact(&self) -> ContactReport {
         self.last_contact
+    }
+
+    /// `contact_exponential` substeps finished span by span without locating
+    /// their switches (more than `MAX_EVENTS` in one substep: Zeno-like
+    /// chatter) since the stepper was made.
+    pub fn unlocated_substeps(&self) -> u64 {
+        self.unlocated_substeps
     }
 
     /// Advance `state` by one output step (dt) under `inputs`. On error the

@@ -91,6 +91,9 @@ pub(crate) struct SimLoop {
     paused: bool,
     step_requests: VecDeque<(u32, oneshot::Sender<StepResponse>)>,
     diverged: Option<String>,
+    /// Unlocated `contact_exponential` substeps at the last warning (warned
+    /// at the first and each time the count doubles).
+    unlocated_warned: u64,
     publish_failures: u64,
     /// Header stamp of the newest input applied (ns; 0 = none).
     input_stamp: i64,
@@ -149,6 +152,7 @@ impl SimLoop {
             logger,
             step_requests: VecDeque::new(),
             diverged: None,
+            unlocated_warned: 0,
             publish_failures: 0,
             input_stamp: 0,
             timing: Timing::new(now),
@@ -548,6 +552,7 @@ impl SimLoop {
                     }
                 });
                 self.offer_marker();
+                self.warn_unlocated();
             }
             Err(e) => {
                 let msg = e.to_string();
@@ -561,6 +566,16 @@ impl SimLoop {
             deadline.and(self.pacer.period()),
             start.elapsed(),
         );
+    }
+
+    /// Warn of `contact_exponential` substeps finished without locating
+    /// their switches: at the first, then each time their count doubles.
+    fn warn_unlocated(&mut self) {
+        let unlocated = self.sim.unlocated_substeps();
+        if unlocated > 0 && unlocated >= 2 * self.unlocated_warned {
+            self.logger.warn(&self.sim.unlocated_warning());
+            self.unlocated_warned = unlocated;
+        }
     }
 
     fn offer_marker(&mut self) {

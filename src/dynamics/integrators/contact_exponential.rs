@@ -96,8 +96,9 @@ pub struct StepReport {
     pub halvings: usize,
     /// Evaluations of the right-hand side in the step.
     pub evaluations: usize,
-    /// [`MAX_EVENTS`] switches located and more to come: the step stopped
-    /// there (y is not at its end) and the stepper refuses it.
+    /// More than [`MAX_EVENTS`] switches: the rest of the step was taken
+    /// span by span without locating switches (`Simulation::unlocated_steps`
+    /// counts such steps; `simulate` and the node warn of them).
     pub unlocated: bool,
     /// The fastest rate (1/s) of a piece whose switching functions the
     /// levels L could not sample every quarter radian (0: none). The stepper
@@ -106,7 +107,7 @@ pub struct StepReport {
     pub undersampled_rate: f64,
 }
 
-/// Switches per step at which the step stops (Zeno-like chatter).
+/// Switches per step beyond which the step stops locating (Zeno-like chatter).
 pub const MAX_EVENTS: usize = 4096;
 
 /// What the spans of the last step learnt, carried to the next step in the
@@ -296,9 +297,15 @@ impl ContactExponential {
             let events = report.switches;
             let whole = (remaining.floor() as u64).min(total >> span_level);
             if events >= MAX_EVENTS {
-                // Zeno-like chatter: the stepper refuses the step.
+                // Zeno-like chatter: finish the step piece by piece without
+                // locating (each span starts from the true law).
                 report.unlocated = true;
-                break;
+                let span = whole.max(1).min(remaining.ceil() as u64);
+                self.advance_from_rest(e, span);
+                self.y_r.copy_from_slice(&self.y_a);
+                eval(&self.y_r, &mut self.f_r, &mut self.s_r);
+                pos += span as f64;
+                continue;
             }
             // A span tried again from the same start (after a failed
             // check) needs no new scan where the last one found none at the

@@ -24,7 +24,7 @@ use crate::config::Coordinates;
 use crate::dynamics::ale::{ale_to_lagrange, harmonics};
 use crate::dynamics::commands::Inputs;
 use crate::dynamics::error::StepError;
-use crate::dynamics::integrators::contact_exponential::{ContactExponential, MAX_EVENTS};
+use crate::dynamics::integrators::contact_exponential::ContactExponential;
 use crate::dynamics::integrators::piece::SAMPLE_ANGLE;
 use crate::dynamics::joint::{StageDrive, DRIVE_SWITCHES};
 use crate::dynamics::load_models::LoadContext;
@@ -135,12 +135,7 @@ impl Stepper {
             &mut state.contact_spans,
             &mut eval,
         );
-        if self.last_contact.unlocated {
-            return Err(StepError::SwitchesChatter {
-                switches: MAX_EVENTS,
-                step: h,
-            });
-        }
+        self.unlocated_substeps += u64::from(self.last_contact.unlocated);
         if self.last_contact.undersampled_rate > 0.0 {
             let bound = self.lambda_max(scene, 0.0);
             return Err(StepError::SwitchesUndersampled {
