@@ -10,9 +10,7 @@
 
 mod support;
 
-use annular_plate::config::{
-    Boundary, Config, Coordinates, IntegratorKind, NodePosition, WrenchConfig,
-};
+use annular_plate::config::{Config, Coordinates, NodePosition, WrenchConfig};
 use annular_plate::dynamics::load_models::pad_config::{
     Caliper, ContactSurface, PadContact, PadsConfig,
 };
@@ -21,34 +19,15 @@ use std::f64::consts::PI;
 use support::in_plane_exact::Edge;
 use support::in_plane_static::InPlaneStatic;
 use support::mindlin_static::Patch;
-
-const RI: f64 = 0.07;
-const RA: f64 = 0.153;
-const H: f64 = 0.0181;
-const RHO: f64 = 7850.0;
-const E: f64 = 2.1e11;
-const NU: f64 = 0.3;
+use support::torsion_disc::{self, E, H, NU, RA, RI};
 
 /// The brake bench disc (clamped hub: in-plane fixed at r_i, free rim), one
 /// bending mode and the in-plane modes k = 0, 1, 2, l = 0, one damping ratio
-/// for all, at rest.
+/// for all, at rest, with residual flexibility (each node a load patch).
 fn disc(zeta: f64, rate_hz: f64) -> Config {
-    let mut c = Config::default();
-    let p = &mut c.plate;
-    (p.inner_radius, p.outer_radius, p.thickness) = (RI, RA, H);
-    (p.density, p.youngs_modulus, p.poisson_ratio) = (RHO, E, NU);
-    (p.inner_boundary, p.outer_boundary) = (Boundary::Clamped, Boundary::Free);
-    p.nodal_diameters = vec![0];
-    p.nodal_circles = vec![0];
-    p.damping = vec![zeta];
-    p.in_plane_nodal_diameters = vec![0, 1, 2];
-    p.in_plane_orders = vec![0];
-    c.gravity = [0.0; 3];
-    c.joint.speed = 0.0;
-    c.joint.max_acceleration = 1e9;
-    c.simulation.rate_hz = rate_hz;
-    c.simulation.substeps = 1;
-    c.simulation.integrator = IntegratorKind::Exponential;
+    let mut c = torsion_disc::disc(&[0, 1, 2], &[0], rate_hz);
+    c.plate.damping = vec![zeta];
+    c.plate.residual_flexibility = true;
     c
 }
 

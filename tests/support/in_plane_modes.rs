@@ -14,12 +14,15 @@ use annular_plate::model::in_plane::{
 };
 
 /// The exact torsional mode l of the fixed–free annulus: ω, V(r) scaled to
-/// a positive unit peak and its modal mass 2π∫ρh V² r dr (Simpson, 20 000
-/// cells), as tests/in_plane_dynamics.rs builds it.
+/// a positive unit peak, its value at the rim, its modal mass
+/// m = 2π∫ρh V² r dr and its joint coupling s = 2π∫ρh V r² dr (Simpson,
+/// 20 000 cells), as tests/in_plane_dynamics.rs builds it.
 pub struct Torsion {
     pub omega: f64,
     pub v: Box<dyn Fn(f64) -> f64>,
+    pub v_rim: f64,
     pub mass: f64,
+    pub coupling: f64,
 }
 
 pub fn exact_torsion(plate: &PlateConfig, l: usize) -> Torsion {
@@ -38,25 +41,29 @@ pub fn exact_torsion(plate: &PlateConfig, l: usize) -> Torsion {
         .map(|i| raw(ri + i as f64 * dr))
         .fold(0.0f64, |a, v| if v.abs() > a.abs() { v } else { a });
     let v = move |r: f64| raw(r) / peak;
-    let simpson: f64 = (0..=n)
-        .map(|i| {
-            let w = if i == 0 || i == n {
-                1.0
-            } else if i % 2 == 1 {
-                4.0
-            } else {
-                2.0
-            };
-            let r = ri + i as f64 * dr;
-            w * v(r) * v(r) * r
-        })
-        .sum::<f64>()
-        * dr
-        / 3.0;
+    let simpson = |f: &dyn Fn(f64) -> f64| {
+        (0..=n)
+            .map(|i| {
+                let w = if i == 0 || i == n {
+                    1.0
+                } else if i % 2 == 1 {
+                    4.0
+                } else {
+                    2.0
+                };
+                w * f(ri + i as f64 * dr)
+            })
+            .sum::<f64>()
+            * dr
+            / 3.0
+    };
+    let tau = std::f64::consts::TAU * rho * h;
     Torsion {
         omega: beta * (g / rho).sqrt(),
+        v_rim: v(ra),
+        mass: tau * simpson(&|r| v(r) * v(r) * r),
+        coupling: tau * simpson(&|r| v(r) * r * r),
         v: Box::new(v),
-        mass: std::f64::consts::TAU * rho * h * simpson,
     }
 }
 

@@ -3,8 +3,7 @@
 //! no library numerics): shared by the tests of the in-plane joint.
 #![allow(dead_code)]
 
-use super::bessel::jy_seq;
-use super::in_plane_exact::torsional_fixed_free_beta;
+pub use super::in_plane_modes::Torsion;
 use annular_plate::config::{Boundary, Config, IntegratorKind, NodePosition, WrenchConfig};
 
 pub const RI: f64 = 0.07;
@@ -57,53 +56,9 @@ pub fn brake_at_rim(c: &mut Config, force: f64) {
     }
 }
 
-/// The exact torsional mode l of the fixed–free annulus: ω, V(r) scaled to
-/// a positive unit peak, modal mass m = 2π∫ρh V² r dr and the joint coupling
-/// s = 2π∫ρh V r² dr (Simpson, 20 000 cells).
-pub struct Torsion {
-    pub omega: f64,
-    pub v_rim: f64,
-    pub mass: f64,
-    pub coupling: f64,
-}
-
+/// The exact torsional mode l of this disc (`in_plane_modes::exact_torsion`).
 pub fn exact_torsion(l: usize) -> Torsion {
-    let beta = torsional_fixed_free_beta(RI, RA, l);
-    let g = E / (2.0 * (1.0 + NU));
-    let (ji, yi) = jy_seq(1, beta * RI);
-    let raw = |r: f64| {
-        let (j, y) = jy_seq(1, beta * r);
-        j[1] * yi[1] - y[1] * ji[1]
-    };
-    let n = 20_000;
-    let dr = (RA - RI) / n as f64;
-    let peak = (0..=n)
-        .map(|i| raw(RI + i as f64 * dr))
-        .fold(0.0f64, |a, v| if v.abs() > a.abs() { v } else { a });
-    let v = |r: f64| raw(r) / peak;
-    let simpson = |f: &dyn Fn(f64) -> f64| {
-        (0..=n)
-            .map(|i| {
-                let w = if i == 0 || i == n {
-                    1.0
-                } else if i % 2 == 1 {
-                    4.0
-                } else {
-                    2.0
-                };
-                w * f(RI + i as f64 * dr)
-            })
-            .sum::<f64>()
-            * dr
-            / 3.0
-    };
-    let tau = std::f64::consts::TAU * RHO * H;
-    Torsion {
-        omega: beta * (g / RHO).sqrt(),
-        v_rim: v(RA),
-        mass: tau * simpson(&|r| v(r) * v(r) * r),
-        coupling: tau * simpson(&|r| v(r) * r * r),
-    }
+    super::in_plane_modes::exact_torsion(&disc(&[0], &[0], 1000.0).plate, l)
 }
 
 /// The rigid disc's polar inertia ρh π (r_a⁴ − r_i⁴)/2.
