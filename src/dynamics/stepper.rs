@@ -184,6 +184,9 @@ pub struct Stepper {
     /// `contact_exponential` substeps finished without locating their
     /// switches past `MAX_EVENTS` (Zeno-like chatter), since the stepper was made.
     unlocated_substeps: u64,
+    /// λ_max at Ω = 0 (the modes with every contact closed): the rate
+    /// `contact_exponential`'s levels sample every quarter radian.
+    rate_at_rest: f64,
     /// The torsional in-plane modes' coupling with the joint over a substep.
     in_plane_joint: InPlaneJoint,
     /// The in-plane modes' exact propagators with their spin terms, one per k.
@@ -195,7 +198,7 @@ impl Stepper {
     pub fn new(scene: &Scene) -> Stepper {
         let n = scene.n_modes();
         let k = scene.layout.k_max as usize + 1;
-        Stepper {
+        let mut stepper = Stepper {
             consts: mode_constants(scene),
             loads: StepLoads::new(n),
             base_ale_frame: vec![0.0; n],
@@ -236,9 +239,12 @@ impl Stepper {
             contact_key: Vec::with_capacity(64),
             last_contact: ContactReport::default(),
             unlocated_substeps: 0,
+            rate_at_rest: 0.0,
             in_plane_joint: InPlaneJoint::new(scene),
             in_plane_spin: in_plane_exponential::propagators(scene.in_plane.as_ref()),
-        }
+        };
+        stepper.rate_at_rest = stepper.lambda_max(scene, 0.0);
+        stepper
     }
 
     /// The most inner substeps a substep of the last step took (RK4 and the

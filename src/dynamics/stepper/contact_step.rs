@@ -137,10 +137,9 @@ impl Stepper {
         );
         self.unlocated_substeps += u64::from(self.last_contact.unlocated);
         if self.last_contact.undersampled_rate > 0.0 {
-            let bound = self.lambda_max(scene, 0.0);
             return Err(StepError::SwitchesUndersampled {
                 rate: self.last_contact.undersampled_rate,
-                bound,
+                bound: self.rate_at_rest,
                 unit: h / (self.contact_levels.map_or(0, |(l, _)| l) as f64).exp2(),
                 speed: speed0,
             });
@@ -179,7 +178,7 @@ impl Stepper {
         // Units fine enough to locate a switch to SWITCH_RESOLUTION and to
         // sample the fastest piece every quarter radian (the modes with
         // every contact closed, at rest: λ_max at Ω = 0).
-        let unit = SWITCH_RESOLUTION.min(SAMPLE_ANGLE / self.lambda_max(scene, 0.0));
+        let unit = SWITCH_RESOLUTION.min(SAMPLE_ANGLE / self.rate_at_rest);
         let levels = ContactExponential::levels_for(h, unit);
         if self.contact_levels != Some((levels, size)) {
             let switches = models.switching_functions() + stage_drive.map_or(0, |_| DRIVE_SWITCHES);

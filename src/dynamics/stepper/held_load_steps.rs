@@ -41,7 +41,7 @@ impl Stepper {
                 speed_mean,
                 speed_end: speed1,
             };
-            let (lagrange_q, lagrange_v, ale_q, ale_v) = state.lagrange_and_ale_mut();
+            let (lagrange_q, lagrange_v, ..) = state.lagrange_and_ale_mut();
             block_exponential::advance(
                 stiffening,
                 &mut self.stiffened,
@@ -53,22 +53,9 @@ impl Stepper {
             );
             // The in-plane modes (no bending stiffness of theirs: their spin
             // terms carry the prestress) step by their own blocks.
-            if let Some(ip) = &scene.in_plane {
+            if scene.in_plane.is_some() {
                 harmonics(&chi1, scene.layout.k_max, &mut self.exp_harm_next);
-                in_plane_exponential::advance(
-                    ip,
-                    &mut self.in_plane_spin,
-                    &self.consts,
-                    substep,
-                    &self.exp_harm_next,
-                    &self.loads,
-                    in_plane_exponential::Amplitudes {
-                        lagrange_q,
-                        lagrange_v,
-                        ale_q,
-                        ale_v,
-                    },
-                );
+                self.advance_in_plane(scene, state, joint);
             }
             return self.derive_ale(scene, state, chi1, speed1);
         }
@@ -144,30 +131,38 @@ impl Stepper {
             ale_v[p.cos] = dot_c;
             ale_v[p.sin] = dot_s;
         }
-        if let Some(ip) = &scene.in_plane {
-            in_plane_exponential::advance(
-                ip,
-                &mut self.in_plane_spin,
-                &self.consts,
-                block_exponential::JointSubstep {
-                    h,
-                    harmonics_start: harm0,
-                    speed_mean,
-                    speed_end: speed1,
-                },
-                harm1,
-                &self.loads,
-                in_plane_exponential::Amplitudes {
-                    lagrange_q,
-                    lagrange_v,
-                    ale_q,
-                    ale_v,
-                },
-            );
-        }
+        self.advance_in_plane(scene, state, joint);
         // Every mode is axisymmetric or in a pair (model::build), so both descriptions are whole.
         std::mem::swap(&mut self.exp_harm, &mut self.exp_harm_next);
         self.exp_harm_at = Some(chi1);
+    }
+
+    /// The in-plane modes' exact step by their spin blocks, the harmonics of
+    /// χ0 in `exp_harm` and of χ1 in `exp_harm_next`.
+    fn advance_in_plane(&mut self, scene: &Scene, state: &mut State, joint: &SubstepMotion) {
+        let Some(ip) = &scene.in_plane else {
+            return;
+        };
+        let (lagrange_q, lagrange_v, ale_q, ale_v) = state.lagrange_and_ale_mut();
+        in_plane_exponential::advance(
+            ip,
+            &mut self.in_plane_spin,
+            &self.consts,
+            block_exponential::JointSubstep {
+                h: joint.h,
+                harmonics_start: &self.exp_harm,
+                speed_mean: joint.speed_mean,
+                speed_end: joint.speed1,
+            },
+            &self.exp_harm_next,
+            &self.loads,
+            in_plane_exponential::Amplitudes {
+                lagrange_q,
+                lagrange_v,
+                ale_q,
+                ale_v,
+            },
+        );
     }
 
     /// The exponential step's result is the Lagrangian description at χ1:
